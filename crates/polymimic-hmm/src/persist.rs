@@ -1,0 +1,71 @@
+//! Saved models: JSON with a format name and version, checked on load.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::HmmError;
+use crate::model::DiscreteHmm;
+use crate::params::HmmParams;
+use crate::probabilities::Probabilities;
+
+const FORMAT: &str = "polymimic.DiscreteHMM";
+const VERSION: u32 = 1;
+
+#[derive(Serialize, Deserialize)]
+struct Saved {
+    format: String,
+    version: u32,
+    params: HmmParams,
+    probabilities: Option<Probabilities>,
+    history: Vec<f64>,
+    converged: bool,
+}
+
+impl DiscreteHmm {
+    /// The model as JSON text (floats round-trip exactly).
+    ///
+    /// # Errors
+    /// Never in practice; serialisation of plain numbers cannot fail.
+    pub fn to_json(&self) -> Result<String, HmmError> {
+        let saved = Saved {
+            format: FORMAT.to_owned(),
+            version: VERSION,
+            params: (*self.params).clone(),
+            probabilities: self.probs.clone(),
+            history: self.history.clone(),
+            converged: self.converged,
+        };
+        serde_json::to_string(&saved).map_err(|e| HmmError::Corrupt(e.to_string()))
+    }
+
+    /// A model from [`Self::to_json`] text, re-validated as if built by hand.
+    ///
+    /// # Errors
+    /// Text that is not JSON, another format or version, or tables that do not validate.
+    pub fn from_json(text: &str) -> Result<Self, HmmError> {
+        let value: serde_json::Value =
+            serde_json::from_str(text).map_err(|e| HmmError::Corrupt(format!("not a saved model ({e})")))?;
+        let format = value.get("format").and_then(serde_json::Value::as_str);
+        if format != Some(FORMAT) {
+            return Err(HmmError::Corrupt(format!("expected format {FORMAT:?}, found {format:?}")));
+        }
+        let version = value.get("version").and_then(serde_json::Value::as_u64);
+        if version != Some(u64::from(VERSION)) {
+            return Err(HmmError::Corrupt(format!(
+                "format version {version:?} is not supported by this polymimic (it reads version {VERSION})"
+            )));
+        }
+        let saved: Saved = serde_json::from_value(value).map_err(|e| HmmError::Corrupt(e.to_string()))?;
+        let params = saved.params.check().map_err(|e| HmmError::Corrupt(e.to_string()))?;
+        let mut model = match saved.probabilities {
+            None => DiscreteHmm::new(params),
+            Some(p) => DiscreteHmm::from_probabilities(params, p.startprob, p.transmat, p.emissionprob)
+                .map_err(|e| HmmError::Corrupt(e.to_string()))?,
+        };
+        if saved.history.iter().any(|x| x.is_nan()) {
+            return Err(HmmError::Corrupt("history holds NaN".to_owned()));
+        }
+        model.history = saved.history;
+        model.converged = saved.converged;
+        Ok(model)
+    }
+}

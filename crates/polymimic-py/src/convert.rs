@@ -1,0 +1,129 @@
+//! numpy and Python values in and out, with the checks that give clear errors.
+
+use std::path::Path;
+
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyList;
+use pyo3::PyTypeInfo;
+
+use crate::errors::ModelFileError;
+
+/// A whole number ≥ 0 given as a Python int, with a ValueError naming `name` otherwise.
+pub fn non_negative(name: &str, value: i64) -> PyResult<usize> {
+    usize::try_from(value).map_err(|_| PyValueError::new_err(format!("{name} must be ≥ 0, got {value}")))
+}
+
+fn asarray<'py>(value: &Bound<'py, PyAny>, dtype: Option<&str>) -> PyResult<Bound<'py, PyAny>> {
+    let numpy = value.py().import("numpy")?;
+    match dtype {
+        None => numpy.call_method1("asarray", (value,)),
+        Some(dtype) => numpy.call_method1("asarray", (value, dtype)),
+    }
+}
+
+fn shape_text(array: &Bound<'_, PyAny>) -> PyResult<String> {
+    Ok(array.getattr("shape")?.repr()?.to_string())
+}
+
+/// One 1-D sequence of integer symbols, checked against `n_symbols`. `what` names it in
+/// errors ("sequence 3").
+pub fn symbols(value: &Bound<'_, PyAny>, what: &str, n_symbols: usize) -> PyResult<Vec<u32>> {
+    let array = asarray(value, None)?;
+    let ndim: usize = array.getattr("ndim")?.extract()?;
+    if ndim != 1 {
+        return Err(PyValueError::new_err(format!(
+            "{what} must be a 1-D array of symbols, got shape {}",
+            shape_text(&array)?
+        )));
+    }
+    let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
+    if kind != "i" && kind != "u" {
+        let dtype = array.getattr("dtype")?.str()?.to_string();
+        return Err(PyTypeError::new_err(format!("{what} has dtype {dtype}; symbols must be integers")));
+    }
+    let array = array.call_method1("astype", ("int64",))?;
+    let array: PyReadonlyArray1<i64> = array.extract()?;
+    let values = array.as_array();
+    if values.is_empty() {
+        return Err(PyValueError::new_err(format!("{what} is empty")));
+    }
+    values
+        .iter()
+        .enumerate()
+        .map(|(position, &symbol)| {
+            if symbol < 0 || symbol as u64 >= n_symbols as u64 {
+                Err(PyValueError::new_err(format!(
+                    "{what} holds symbol {symbol} at position {position}; symbols must be in 0..{n_symbols}"
+                )))
+            } else {
+                Ok(symbol as u32)
+            }
+        })
+        .collect()
+}
+
+/// A list (or any iterable) of sequences.
+pub fn symbol_sequences(value: &Bound<'_, PyAny>, n_symbols: usize) -> PyResult<Vec<Vec<u32>>> {
+    if value.hasattr("ndim")? && value.getattr("ndim")?.extract::<usize>()? == 1 {
+        return Err(PyTypeError::new_err(
+            "sequences must be a list of 1-D arrays (one per sequence), got a single 1-D array; wrap it in a list",
+        ));
+    }
+    let list = PyList::type_object(value.py()).call1((value,)).map_err(|_| {
+        PyTypeError::new_err("sequences must be a list of 1-D integer arrays")
+    })?;
+    let list = list.cast_into::<PyList>()?;
+    if list.is_empty() {
+        return Err(PyValueError::new_err("sequences is empty: give at least one sequence"));
+    }
+    list.iter().enumerate().map(|(i, s)| symbols(&s, &format!("sequence {i}"), n_symbols)).collect()
+}
+
+/// A float64 array of the given rank, as a row-major vector and its shape.
+pub fn floats(value: &Bound<'_, PyAny>, name: &str, rank: usize) -> PyResult<(Vec<f64>, Vec<usize>)> {
+    let array = asarray(value, None)?;
+    let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
+    if !matches!(kind.as_str(), "f" | "i" | "u") {
+        let dtype = array.getattr("dtype")?.str()?.to_string();
+        return Err(PyTypeError::new_err(format!("{name} has dtype {dtype}; expected real numbers")));
+    }
+    let array = asarray(&array, Some("float64"))?;
+    let ndim: usize = array.getattr("ndim")?.extract()?;
+    if ndim != rank {
+        return Err(PyValueError::new_err(format!(
+            "{name} must be {rank}-D, got shape {}",
+            shape_text(&array)?
+        )));
+    }
+    if rank == 1 {
+        let array: PyReadonlyArray1<f64> = array.extract()?;
+        Ok((array.as_array().to_vec(), array.shape().to_vec()))
+    } else {
+        let array: PyReadonlyArray2<f64> = array.extract()?;
+        Ok((array.as_array().iter().copied().collect(), array.shape().to_vec()))
+    }
+}
+
+/// A row-major vector as a 2-D array.
+pub fn matrix<'py, T: numpy::Element>(py: Python<'py>, values: Vec<T>, rows: usize, cols: usize) -> PyResult<Bound<'py, numpy::PyArray2<T>>> {
+    PyArray1::from_vec(py, values).reshape([rows, cols])
+}
+
+/// Writes `text` to `path` through a temporary file and a rename, so a crash never leaves a
+/// half-written model behind.
+pub fn write_atomically(path: &Path, text: &str) -> PyResult<()> {
+    let mut temporary = path.as_os_str().to_owned();
+    temporary.push(".partial");
+    std::fs::write(&temporary, text)?;
+    std::fs::rename(&temporary, path)?;
+    Ok(())
+}
+
+/// Reads a saved model's text, naming the file when it is not text.
+pub fn read_text(path: &Path) -> PyResult<String> {
+    let bytes = std::fs::read(path)?;
+    String::from_utf8(bytes)
+        .map_err(|_| ModelFileError::new_err(format!("{} is not a polymimic file (not UTF-8 text)", path.display())))
+}

@@ -1,0 +1,51 @@
+//! Every core error becomes a Python exception here, and only here.
+//!
+//! Bad arguments are `ValueError`; failures that depend on the data meeting a model derive
+//! from `polymimic.PolymimicError`.
+
+use polymimic_hmm::HmmError;
+use polymimic_vq::{VqError, VqParamsError};
+use pyo3::create_exception;
+use pyo3::exceptions::{PyException, PyValueError};
+use pyo3::PyErr;
+
+create_exception!(polymimic, PolymimicError, PyException, "Base class of every polymimic error.");
+create_exception!(
+    polymimic,
+    NotFittedError,
+    PolymimicError,
+    "A model was used before it was fitted or given parameters."
+);
+create_exception!(
+    polymimic,
+    ImpossibleSequenceError,
+    PolymimicError,
+    "A sequence has probability zero under the model."
+);
+create_exception!(
+    polymimic,
+    ModelFileError,
+    PolymimicError,
+    "A saved file is corrupt, of another kind, or of an unsupported version."
+);
+
+pub fn hmm_error(error: HmmError) -> PyErr {
+    let message = error.to_string();
+    match error {
+        HmmError::Params(_) => PyValueError::new_err(message),
+        HmmError::ImpossibleSequence { .. } => ImpossibleSequenceError::new_err(message),
+        HmmError::NotFitted => NotFittedError::new_err(message),
+        HmmError::Corrupt(_) => ModelFileError::new_err(message),
+    }
+}
+
+pub fn vq_params_error(error: VqParamsError) -> PyErr {
+    PyValueError::new_err(error.to_string())
+}
+
+pub fn vq_error(error: VqError) -> PyErr {
+    match error {
+        VqError::Params(e) => vq_params_error(e),
+        VqError::Corrupt(_) => ModelFileError::new_err(error.to_string()),
+    }
+}

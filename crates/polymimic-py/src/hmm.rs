@@ -1,0 +1,327 @@
+//! `polymimic.DiscreteHMM`: the core HMM behind a scikit-learn-like class.
+
+use std::path::PathBuf;
+use std::sync::RwLock;
+
+use numpy::{PyArray1, PyArray2};
+use polymimic_hmm::{DiscreteHmm, HmmError, HmmParams, Init, Topology};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyTuple, PyType};
+
+use crate::convert::{floats, matrix, non_negative, read_text, symbol_sequences, symbols, write_atomically};
+use crate::errors::{hmm_error, ModelFileError};
+
+/// A discrete hidden Markov model trained by scaled Baum-Welch.
+#[pyclass(name = "DiscreteHMM", module = "polymimic", frozen)]
+pub struct PyDiscreteHmm {
+    model: RwLock<DiscreteHmm>,
+}
+
+fn topology(name: &str, links: i64) -> PyResult<Topology> {
+    match name {
+        "left-right" => Ok(Topology::LeftRight { links: non_negative("links", links)? }),
+        "ergodic" => Ok(Topology::Ergodic),
+        other => Err(PyValueError::new_err(format!(
+            "topology must be \"left-right\" or \"ergodic\", got {other:?}"
+        ))),
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn params(
+    n_states: i64,
+    n_symbols: i64,
+    topology_name: &str,
+    links: i64,
+    max_iter: i64,
+    tol: f64,
+    emission_floor: f64,
+    seed: i64,
+) -> PyResult<HmmParams> {
+    let mut params = HmmParams::new(non_negative("n_states", n_states)?, non_negative("n_symbols", n_symbols)?);
+    params.topology = topology(topology_name, links)?;
+    params.max_iter = non_negative("max_iter", max_iter)?;
+    params.tol = tol;
+    params.emission_floor = emission_floor;
+    params.seed = non_negative("seed", seed)? as u64;
+    Ok(params)
+}
+
+impl PyDiscreteHmm {
+    fn wrap(model: DiscreteHmm) -> Self {
+        Self { model: RwLock::new(model) }
+    }
+
+    /// A copy of the model: work happens on copies, so the GIL can be released and a failed
+    /// call leaves the model as it was.
+    fn snapshot(&self) -> DiscreteHmm {
+        self.model.read().unwrap_or_else(std::sync::PoisonError::into_inner).clone()
+    }
+
+    fn with_model<T>(&self, f: impl FnOnce(&DiscreteHmm) -> T) -> T {
+        f(&self.model.read().unwrap_or_else(std::sync::PoisonError::into_inner))
+    }
+
+    fn n_symbols(&self) -> usize {
+        self.with_model(|m| m.params().n_symbols)
+    }
+}
+
+#[pymethods]
+impl PyDiscreteHmm {
+    #[new]
+    #[pyo3(signature = (n_states, n_symbols, *, topology="left-right", links=2, max_iter=100, tol=1e-4, emission_floor=1e-8, seed=0))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        n_states: i64,
+        n_symbols: i64,
+        topology: &str,
+        links: i64,
+        max_iter: i64,
+        tol: f64,
+        emission_floor: f64,
+        seed: i64,
+    ) -> PyResult<Self> {
+        let params = params(n_states, n_symbols, topology, links, max_iter, tol, emission_floor, seed)?;
+        let valid = params.check().map_err(|e| hmm_error(e.into()))?;
+        Ok(Self::wrap(DiscreteHmm::new(valid)))
+    }
+
+    #[classmethod]
+    #[pyo3(signature = (startprob, transmat, emissionprob, *, topology="left-right", links=2, max_iter=100, tol=1e-4, emission_floor=1e-8, seed=0))]
+    #[allow(clippy::too_many_arguments)]
+    fn from_params(
+        _cls: &Bound<'_, PyType>,
+        startprob: &Bound<'_, PyAny>,
+        transmat: &Bound<'_, PyAny>,
+        emissionprob: &Bound<'_, PyAny>,
+        topology: &str,
+        links: i64,
+        max_iter: i64,
+        tol: f64,
+        emission_floor: f64,
+        seed: i64,
+    ) -> PyResult<Self> {
+        let (start, start_shape) = floats(startprob, "startprob", 1)?;
+        let (trans, trans_shape) = floats(transmat, "transmat", 2)?;
+        let (emit, emit_shape) = floats(emissionprob, "emissionprob", 2)?;
+        let n = start_shape[0];
+        if trans_shape != [n, n] {
+            return Err(PyValueError::new_err(format!(
+                "transmat has shape {trans_shape:?} but startprob has {n} states: expected [{n}, {n}]"
+            )));
+        }
+        if emit_shape[0] != n {
+            return Err(PyValueError::new_err(format!(
+                "emissionprob has shape {emit_shape:?} but startprob has {n} states: expected [{n}, n_symbols]"
+            )));
+        }
+        let params = params(n as i64, emit_shape[1] as i64, topology, links, max_iter, tol, emission_floor, seed)?;
+        let valid = params.check().map_err(|e| hmm_error(e.into()))?;
+        let model = DiscreteHmm::from_probabilities(valid, start, trans, emit).map_err(|e| hmm_error(e.into()))?;
+        Ok(Self::wrap(model))
+    }
+
+    /// Trains on a list of 1-D integer sequences; returns the model.
+    #[pyo3(signature = (sequences, *, init="segments"))]
+    fn fit<'py>(slf: Bound<'py, Self>, sequences: &Bound<'py, PyAny>, init: &str) -> PyResult<Bound<'py, Self>> {
+        let init = match init {
+            "segments" => Init::Segments,
+            "given" => Init::Given,
+            other => return Err(PyValueError::new_err(format!("init must be \"segments\" or \"given\", got {other:?}"))),
+        };
+        let this = slf.get();
+        let sequences = symbol_sequences(sequences, this.n_symbols())?;
+        let mut model = this.snapshot();
+        slf.py()
+            .detach(|| {
+                let refs: Vec<&[u32]> = sequences.iter().map(Vec::as_slice).collect();
+                model.fit(&refs, init)
+            })
+            .map_err(hmm_error)?;
+        *this.model.write().unwrap_or_else(std::sync::PoisonError::into_inner) = model;
+        Ok(slf)
+    }
+
+    /// log P(sequence | model).
+    fn score(&self, py: Python<'_>, sequence: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let seq = symbols(sequence, "sequence", self.n_symbols())?;
+        let model = self.snapshot();
+        py.detach(|| model.score(&seq)).map_err(hmm_error)
+    }
+
+    /// log P(sequence | model) of each sequence. `impossible="raise"` raises on a sequence of
+    /// probability zero; `impossible="-inf"` scores it -inf.
+    #[pyo3(signature = (sequences, *, impossible="raise"))]
+    fn score_samples<'py>(
+        &self,
+        py: Python<'py>,
+        sequences: &Bound<'py, PyAny>,
+        impossible: &str,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let raise = match impossible {
+            "raise" => true,
+            "-inf" => false,
+            other => return Err(PyValueError::new_err(format!("impossible must be \"raise\" or \"-inf\", got {other:?}"))),
+        };
+        let sequences = symbol_sequences(sequences, self.n_symbols())?;
+        let model = self.snapshot();
+        let scores = py
+            .detach(|| {
+                let refs: Vec<&[u32]> = sequences.iter().map(Vec::as_slice).collect();
+                model.score_many(&refs)
+            })
+            .map_err(hmm_error)?;
+        let mut out = Vec::with_capacity(scores.len());
+        for (index, score) in scores.into_iter().enumerate() {
+            match score {
+                Ok(log_p) => out.push(log_p),
+                Err(position) if raise => return Err(hmm_error(HmmError::ImpossibleSequence { index, position })),
+                Err(_) => out.push(f64::NEG_INFINITY),
+            }
+        }
+        Ok(PyArray1::from_vec(py, out))
+    }
+
+    /// The Viterbi state path (int64 array) and its log-probability.
+    fn decode<'py>(&self, py: Python<'py>, sequence: &Bound<'py, PyAny>) -> PyResult<(Bound<'py, PyArray1<i64>>, f64)> {
+        let seq = symbols(sequence, "sequence", self.n_symbols())?;
+        let model = self.snapshot();
+        let (path, log_p) = py.detach(|| model.decode(&seq)).map_err(hmm_error)?;
+        Ok((PyArray1::from_vec(py, path.into_iter().map(|s| s as i64).collect()), log_p))
+    }
+
+    /// `n` sequences of `length` symbols and their hidden states, as two `(n, length)` arrays.
+    #[pyo3(signature = (n, length, *, seed=0))]
+    fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        n: i64,
+        length: i64,
+        seed: i64,
+    ) -> PyResult<(Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>)> {
+        let (count, len, seed) = (non_negative("n", n)?, non_negative("length", length)?, non_negative("seed", seed)?);
+        let (symbols, states) = self.with_model(|m| m.sample(count, len, seed as u64)).map_err(hmm_error)?;
+        let flat_symbols = symbols.into_iter().flatten().map(i64::from).collect();
+        let flat_states = states.into_iter().flatten().map(|s| s as i64).collect();
+        Ok((matrix(py, flat_symbols, count, len)?, matrix(py, flat_states, count, len)?))
+    }
+
+    #[getter]
+    fn startprob_<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let start = self.with_model(|m| m.probabilities().map(|p| p.startprob.clone())).map_err(hmm_error)?;
+        Ok(PyArray1::from_vec(py, start))
+    }
+
+    #[getter]
+    fn transmat_<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let (trans, n) = self
+            .with_model(|m| m.probabilities().map(|p| (p.transmat.clone(), p.n_states)))
+            .map_err(hmm_error)?;
+        matrix(py, trans, n, n)
+    }
+
+    #[getter]
+    fn emissionprob_<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let (emit, n, m) = self
+            .with_model(|m| m.probabilities().map(|p| (p.emissionprob.clone(), p.n_states, p.n_symbols)))
+            .map_err(hmm_error)?;
+        matrix(py, emit, n, m)
+    }
+
+    /// Log-likelihood of the training data before each re-estimation of the last fit.
+    #[getter]
+    fn history_<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_vec(py, self.with_model(|m| m.history().to_vec()))
+    }
+
+    #[getter]
+    fn converged_(&self) -> bool {
+        self.with_model(DiscreteHmm::converged)
+    }
+
+    #[getter]
+    fn n_states(&self) -> usize {
+        self.with_model(|m| m.params().n_states)
+    }
+
+    #[getter(n_symbols)]
+    fn get_n_symbols(&self) -> usize {
+        self.n_symbols()
+    }
+
+    #[getter]
+    fn topology(&self) -> &'static str {
+        self.with_model(|m| match m.params().topology {
+            Topology::LeftRight { .. } => "left-right",
+            Topology::Ergodic => "ergodic",
+        })
+    }
+
+    #[getter]
+    fn links(&self) -> Option<usize> {
+        self.with_model(|m| match m.params().topology {
+            Topology::LeftRight { links } => Some(links),
+            Topology::Ergodic => None,
+        })
+    }
+
+    #[getter]
+    fn max_iter(&self) -> usize {
+        self.with_model(|m| m.params().max_iter)
+    }
+
+    #[getter]
+    fn tol(&self) -> f64 {
+        self.with_model(|m| m.params().tol)
+    }
+
+    #[getter]
+    fn emission_floor(&self) -> f64 {
+        self.with_model(|m| m.params().emission_floor)
+    }
+
+    #[getter]
+    fn seed(&self) -> u64 {
+        self.with_model(|m| m.params().seed)
+    }
+
+    /// Writes the model to `path` (JSON, versioned).
+    fn save(&self, path: PathBuf) -> PyResult<()> {
+        let text = self.with_model(DiscreteHmm::to_json).map_err(hmm_error)?;
+        write_atomically(&path, &text)
+    }
+
+    /// Reads a model written by `save`.
+    #[classmethod]
+    fn load(_cls: &Bound<'_, PyType>, path: PathBuf) -> PyResult<Self> {
+        let text = read_text(&path)?;
+        let model = DiscreteHmm::from_json(&text)
+            .map_err(|e| ModelFileError::new_err(format!("{}: {}", path.display(), e)))?;
+        Ok(Self::wrap(model))
+    }
+
+    #[staticmethod]
+    fn _from_json(text: &str) -> PyResult<Self> {
+        Ok(Self::wrap(DiscreteHmm::from_json(text).map_err(hmm_error)?))
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let text = slf.get().with_model(DiscreteHmm::to_json).map_err(hmm_error)?;
+        let constructor = slf.get_type().getattr("_from_json")?;
+        Ok((constructor, PyTuple::new(slf.py(), [text])?))
+    }
+
+    fn __repr__(&self) -> String {
+        self.with_model(|m| {
+            let p = m.params();
+            let topology = match p.topology {
+                Topology::LeftRight { links } => format!("topology='left-right', links={links}"),
+                Topology::Ergodic => "topology='ergodic'".to_owned(),
+            };
+            let state = if m.probabilities().is_ok() { "" } else { ", unfitted" };
+            format!("DiscreteHMM(n_states={}, n_symbols={}, {topology}{state})", p.n_states, p.n_symbols)
+        })
+    }
+}

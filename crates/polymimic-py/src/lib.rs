@@ -1,0 +1,31 @@
+//! Python bindings of polymimic: conversions and error mapping only; the algorithms live in
+//! the core crates.
+
+mod convert;
+mod errors;
+mod hmm;
+mod vq;
+
+use pyo3::prelude::*;
+
+#[pymodule]
+mod _native {
+    use super::{errors, PyModule, PyModuleMethods, PyResult};
+    use pyo3::{Bound, PyTypeInfo};
+
+    #[pymodule_export]
+    use super::hmm::PyDiscreteHmm;
+    #[pymodule_export]
+    use super::vq::PyCodebook;
+
+    #[pymodule_init]
+    fn init(m: &Bound<'_, PyModule>) -> PyResult<()> {
+        let py = m.py();
+        m.add("PolymimicError", errors::PolymimicError::type_object(py))?;
+        m.add("NotFittedError", errors::NotFittedError::type_object(py))?;
+        m.add("ImpossibleSequenceError", errors::ImpossibleSequenceError::type_object(py))?;
+        m.add("ModelFileError", errors::ModelFileError::type_object(py))?;
+        m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+        Ok(())
+    }
+}

@@ -1,0 +1,30 @@
+"""polymimic: imitation learning from many demonstrators of different bodies and skill.
+
+The core (discrete HMMs, LBG codebooks) is written in Rust and exposed here.
+
+>>> import numpy as np
+>>> import polymimic
+>>> model = polymimic.DiscreteHMM(2, 3, seed=1).fit([np.array([0, 0, 1, 2, 2]), np.array([0, 1, 2])])
+>>> model.transmat_.shape
+(2, 2)
+"""
+
+from polymimic._native import (
+    Codebook,
+    DiscreteHMM,
+    ImpossibleSequenceError,
+    ModelFileError,
+    NotFittedError,
+    PolymimicError,
+    __version__,
+)
+
+__all__ = [
+    "Codebook",
+    "DiscreteHMM",
+    "ImpossibleSequenceError",
+    "ModelFileError",
+    "NotFittedError",
+    "PolymimicError",
+    "__version__",
+]

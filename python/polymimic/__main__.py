@@ -1,0 +1,3 @@
+from polymimic.cli import main
+
+main()

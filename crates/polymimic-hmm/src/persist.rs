@@ -12,8 +12,6 @@ const VERSION: u32 = 1;
 
 #[derive(Serialize, Deserialize)]
 struct Saved {
-    format: String,
-    version: u32,
     params: HmmParams,
     probabilities: Option<Probabilities>,
     history: Vec<f64>,
@@ -27,14 +25,12 @@ impl DiscreteHmm {
     /// Never in practice; serialisation of plain numbers cannot fail.
     pub fn to_json(&self) -> Result<String, HmmError> {
         let saved = Saved {
-            format: FORMAT.to_owned(),
-            version: VERSION,
             params: (*self.params).clone(),
             probabilities: self.probs.clone(),
             history: self.history.clone(),
             converged: self.converged,
         };
-        serde_json::to_string(&saved).map_err(|e| HmmError::Corrupt(e.to_string()))
+        polymimic_persist::to_envelope(FORMAT, VERSION, &saved).map_err(HmmError::Corrupt)
     }
 
     /// A model from [`Self::to_json`] text, re-validated as if built by hand.
@@ -42,19 +38,7 @@ impl DiscreteHmm {
     /// # Errors
     /// Text that is not JSON, another format or version, or tables that do not validate.
     pub fn from_json(text: &str) -> Result<Self, HmmError> {
-        let value: serde_json::Value =
-            serde_json::from_str(text).map_err(|e| HmmError::Corrupt(format!("not a saved model ({e})")))?;
-        let format = value.get("format").and_then(serde_json::Value::as_str);
-        if format != Some(FORMAT) {
-            return Err(HmmError::Corrupt(format!("expected format {FORMAT:?}, found {format:?}")));
-        }
-        let version = value.get("version").and_then(serde_json::Value::as_u64);
-        if version != Some(u64::from(VERSION)) {
-            return Err(HmmError::Corrupt(format!(
-                "format version {version:?} is not supported by this polymimic (it reads version {VERSION})"
-            )));
-        }
-        let saved: Saved = serde_json::from_value(value).map_err(|e| HmmError::Corrupt(e.to_string()))?;
+        let saved: Saved = polymimic_persist::from_envelope(text, FORMAT, VERSION).map_err(HmmError::Corrupt)?;
         let params = saved.params.check().map_err(|e| HmmError::Corrupt(e.to_string()))?;
         let mut model = match saved.probabilities {
             None => DiscreteHmm::new(params),

@@ -59,24 +59,24 @@ impl PyCodebook {
     /// Lloyd iterations from these codewords on `points`; returns a new codebook.
     #[pyo3(signature = (points, *, tol=0.0, max_iter=300))]
     fn refine(&self, py: Python<'_>, points: &Bound<'_, PyAny>, tol: f64, max_iter: i64) -> PyResult<Self> {
-        let (data, _) = self::points(points)?;
+        let (data, dim) = self::points(points)?;
         let max_iter = non_negative("max_iter", max_iter)?;
         let mut codebook = self.codebook.clone();
-        py.detach(|| codebook.refine(&data, tol, max_iter)).map_err(vq_params_error)?;
+        py.detach(|| codebook.refine(&data, dim, tol, max_iter)).map_err(vq_params_error)?;
         Ok(Self { codebook })
     }
 
     /// The index of the nearest codeword of every point (int64 array).
     fn encode<'py>(&self, py: Python<'py>, points: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray1<i64>>> {
-        let (data, _) = self::points(points)?;
-        let codes = py.detach(|| self.codebook.encode(&data)).map_err(vq_params_error)?;
+        let (data, dim) = self::points(points)?;
+        let codes = py.detach(|| self.codebook.encode(&data, dim)).map_err(vq_params_error)?;
         Ok(PyArray1::from_vec(py, codes.into_iter().map(i64::from).collect()))
     }
 
     /// Mean squared distance of `points` to their nearest codewords.
     fn distortion(&self, py: Python<'_>, points: &Bound<'_, PyAny>) -> PyResult<f64> {
-        let (data, _) = self::points(points)?;
-        py.detach(|| self.codebook.distortion(&data)).map_err(vq_params_error)
+        let (data, dim) = self::points(points)?;
+        py.detach(|| self.codebook.distortion(&data, dim)).map_err(vq_params_error)
     }
 
     /// The `(k, d)` codewords.

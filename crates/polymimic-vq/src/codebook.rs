@@ -45,8 +45,8 @@ impl Codebook {
     ///
     /// # Errors
     /// Bad data or a dimension other than the codebook's.
-    pub fn refine(&mut self, data: &[f64], tol: f64, max_iter: usize) -> Result<Refinement, VqParamsError> {
-        let points = self.points(data)?;
+    pub fn refine(&mut self, data: &[f64], dim: usize, tol: f64, max_iter: usize) -> Result<Refinement, VqParamsError> {
+        let points = self.points(data, dim)?;
         if !(tol.is_finite() && tol >= 0.0) {
             return Err(VqParamsError::BadTolerance(tol));
         }
@@ -60,9 +60,11 @@ impl Codebook {
         Ok(refinement)
     }
 
-    fn points<'a>(&self, data: &'a [f64]) -> Result<Points<'a>, VqParamsError> {
-        let points = Points::new(data, self.dim)?;
-        Ok(points)
+    fn points<'a>(&self, data: &'a [f64], dim: usize) -> Result<Points<'a>, VqParamsError> {
+        if dim != self.dim {
+            return Err(VqParamsError::DimensionMismatch { actual: dim, expected: self.dim });
+        }
+        Points::new(data, dim)
     }
 
     #[must_use]
@@ -92,28 +94,25 @@ impl Codebook {
         self.report
     }
 
-    /// The index of the nearest codeword of every point.
+    /// The index of the nearest codeword of every point (row-major `data` of dimension `dim`).
     ///
     /// # Errors
     /// Bad data or a dimension other than the codebook's.
-    pub fn encode(&self, data: &[f64]) -> Result<Vec<u32>, VqParamsError> {
-        Ok(self.nearest(data)?.into_iter().map(|(c, _)| c as u32).collect())
+    pub fn encode(&self, data: &[f64], dim: usize) -> Result<Vec<u32>, VqParamsError> {
+        Ok(self.nearest(data, dim)?.into_iter().map(|(c, _)| c as u32).collect())
     }
 
     /// Mean squared distance of the points to their nearest codewords.
     ///
     /// # Errors
     /// Bad data or a dimension other than the codebook's.
-    pub fn distortion(&self, data: &[f64]) -> Result<f64, VqParamsError> {
-        let nearest = self.nearest(data)?;
+    pub fn distortion(&self, data: &[f64], dim: usize) -> Result<f64, VqParamsError> {
+        let nearest = self.nearest(data, dim)?;
         Ok(nearest.iter().map(|(_, d2)| d2).sum::<f64>() / nearest.len() as f64)
     }
 
-    fn nearest(&self, data: &[f64]) -> Result<Vec<(usize, f64)>, VqParamsError> {
-        if data.len() % self.dim != 0 {
-            return Err(VqParamsError::DimensionMismatch { actual: data.len(), expected: self.dim });
-        }
-        let points = self.points(data)?;
+    fn nearest(&self, data: &[f64], dim: usize) -> Result<Vec<(usize, f64)>, VqParamsError> {
+        let points = self.points(data, dim)?;
         let tree = &KdTree::new(&self.codewords, self.dim);
         Ok(points
             .raw()
@@ -134,8 +133,7 @@ impl Codebook {
     /// # Errors
     /// Never in practice.
     pub fn to_json(&self) -> Result<String, VqError> {
-        let value = serde_json::json!({ "format": FORMAT, "version": VERSION, "codebook": self });
-        serde_json::to_string(&value).map_err(|e| VqError::Corrupt(e.to_string()))
+        polymimic_persist::to_envelope(FORMAT, VERSION, self).map_err(VqError::Corrupt)
     }
 
     /// A codebook from [`Self::to_json`] text, re-validated.
@@ -143,23 +141,7 @@ impl Codebook {
     /// # Errors
     /// Text that is not JSON, another format or version, or codewords that do not validate.
     pub fn from_json(text: &str) -> Result<Self, VqError> {
-        let value: serde_json::Value =
-            serde_json::from_str(text).map_err(|e| VqError::Corrupt(format!("not a saved codebook ({e})")))?;
-        let format = value.get("format").and_then(serde_json::Value::as_str);
-        if format != Some(FORMAT) {
-            return Err(VqError::Corrupt(format!("expected format {FORMAT:?}, found {format:?}")));
-        }
-        let version = value.get("version").and_then(serde_json::Value::as_u64);
-        if version != Some(u64::from(VERSION)) {
-            return Err(VqError::Corrupt(format!(
-                "format version {version:?} is not supported by this polymimic (it reads version {VERSION})"
-            )));
-        }
-        let codebook: Self = value
-            .get("codebook")
-            .cloned()
-            .ok_or_else(|| VqError::Corrupt("no codebook in the file".to_owned()))
-            .and_then(|c| serde_json::from_value(c).map_err(|e| VqError::Corrupt(e.to_string())))?;
+        let codebook: Self = polymimic_persist::from_envelope(text, FORMAT, VERSION).map_err(VqError::Corrupt)?;
         Points::new(&codebook.codewords, codebook.dim).map_err(|e| VqError::Corrupt(e.to_string()))?;
         Ok(codebook)
     }
@@ -172,14 +154,17 @@ mod tests {
     #[test]
     fn encodes_to_the_nearest_codeword() {
         let codebook = Codebook::from_codewords(vec![0.0, 0.0, 10.0, 0.0, 0.0, 10.0], 2).unwrap();
-        assert_eq!(codebook.encode(&[1.0, 1.0, 9.0, 2.0, 2.0, 8.0]).unwrap(), vec![0, 1, 2]);
-        assert!((codebook.distortion(&[1.0, 1.0]).unwrap() - 2.0).abs() < 1e-15);
+        assert_eq!(codebook.encode(&[1.0, 1.0, 9.0, 2.0, 2.0, 8.0], 2).unwrap(), vec![0, 1, 2]);
+        assert!((codebook.distortion(&[1.0, 1.0], 2).unwrap() - 2.0).abs() < 1e-15);
     }
 
     #[test]
     fn refuses_points_of_another_dimension() {
         let codebook = Codebook::from_codewords(vec![0.0, 0.0], 2).unwrap();
-        assert!(codebook.encode(&[1.0, 2.0, 3.0]).is_err());
+        assert_eq!(
+            codebook.encode(&[1.0, 2.0, 3.0], 3).unwrap_err(),
+            VqParamsError::DimensionMismatch { actual: 3, expected: 2 }
+        );
     }
 
     #[test]

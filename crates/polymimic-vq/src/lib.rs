@@ -10,7 +10,7 @@
 //! let data: Vec<f64> = (0..400).map(|i| f64::from(i % 20)).collect(); // 200 points in 2-D
 //! let codebook = Codebook::fit(&data, 2, LbgParams::new(16))?;
 //! assert_eq!(codebook.len(), 16);
-//! let symbols = codebook.encode(&[3.0, 3.0, 18.0, 19.0])?;
+//! let symbols = codebook.encode(&[3.0, 3.0, 18.0, 19.0], 2)?;
 //! assert_eq!(symbols.len(), 2);
 //! # Ok::<(), polymimic_vq::VqParamsError>(())
 //! ```

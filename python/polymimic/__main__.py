@@ -1,3 +1,5 @@
+import sys
+
 from polymimic.cli import main
 
-main()
+sys.exit(main())

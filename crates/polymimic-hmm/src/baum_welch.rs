@@ -4,14 +4,15 @@
 use rayon::prelude::*;
 
 use crate::error::HmmError;
-use crate::forward_backward::{Lattice, Scratch};
+use crate::forward_backward::{with_lattice, Counts as LatticeCounts, Lattice, Scratch, WithLattice};
+use crate::transitions::Transitions;
 use crate::probabilities::Probabilities;
 
 /// Sequences per parallel work item. Fixed, so sums are added in the same order whatever
 /// the number of threads, and results are bit-identical.
 pub(crate) const SEQUENCES_PER_CHUNK: usize = 64;
 
-/// Expected counts of one E-step.
+/// Expected counts of one E-step, in the model's own layout.
 pub(crate) struct Counts {
     pub log_likelihood: f64,
     /// Σ over sequences of γ_0(i).
@@ -22,83 +23,49 @@ pub(crate) struct Counts {
     emissions: Vec<f64>,
 }
 
-impl Counts {
-    fn zeros(n: usize, m: usize) -> Self {
-        Self { log_likelihood: 0.0, start: vec![0.0; n], transitions: vec![0.0; n * n], emissions: vec![0.0; n * m] }
-    }
-
-    fn add(&mut self, other: &Self) {
-        self.log_likelihood += other.log_likelihood;
-        add_into(&mut self.start, &other.start);
-        add_into(&mut self.transitions, &other.transitions);
-        add_into(&mut self.emissions, &other.emissions);
-    }
-
-    /// Adds one sequence's γ and ξ, read from a scratch filled by forward and backward.
-    fn accumulate(&mut self, lattice: &Lattice, seq: &[u32], scratch: &Scratch) {
-        let n = lattice.probs.n_states;
-        for (t, &symbol) in seq.iter().enumerate() {
-            let alpha_t = &scratch.alpha[t * n..(t + 1) * n];
-            let beta_t = &scratch.beta[t * n..(t + 1) * n];
-            let k = symbol as usize;
-            let emitted = &mut self.emissions[k * n..(k + 1) * n];
-            for i in 0..n {
-                let gamma = alpha_t[i] * beta_t[i];
-                emitted[i] += gamma;
-                if t == 0 {
-                    self.start[i] += gamma;
-                }
-            }
-            if t + 1 < seq.len() {
-                let w_next = &scratch.weight[(t + 1) * n..(t + 2) * n];
-                for (i, &alpha_i) in alpha_t.iter().enumerate() {
-                    if alpha_i == 0.0 {
-                        continue;
-                    }
-                    let band = lattice.bands[i].clone();
-                    let row = &lattice.probs.transmat[i * n..(i + 1) * n];
-                    let xi_row = &mut self.transitions[i * n..(i + 1) * n];
-                    for ((xi, &a), &w) in xi_row[band.clone()].iter_mut().zip(&row[band.clone()]).zip(&w_next[band]) {
-                        *xi += alpha_i * a * w;
-                    }
-                }
-            }
-        }
-    }
-}
-
-fn add_into(into: &mut [f64], from: &[f64]) {
-    into.iter_mut().zip(from).for_each(|(a, b)| *a += b);
-}
-
 /// The E-step over all sequences. Fails on the first sequence (in order) that is
 /// impossible under the model.
 pub(crate) fn expected_counts(probs: &Probabilities, sequences: &[&[u32]]) -> Result<Counts, HmmError> {
-    let lattice = Lattice::new(probs);
-    let (n, m) = (probs.n_states, probs.n_symbols);
-    let chunks: Vec<Result<Counts, HmmError>> = sequences
-        .par_chunks(SEQUENCES_PER_CHUNK)
-        .enumerate()
-        .map(|(chunk_index, chunk)| {
-            let mut counts = Counts::zeros(n, m);
-            let mut scratch = Scratch::default();
-            for (offset, seq) in chunk.iter().enumerate() {
-                let log_p = lattice.forward(seq, &mut scratch).map_err(|position| HmmError::ImpossibleSequence {
-                    index: chunk_index * SEQUENCES_PER_CHUNK + offset,
-                    position,
-                })?;
-                lattice.backward(seq, &mut scratch);
-                counts.accumulate(&lattice, seq, &scratch);
-                counts.log_likelihood += log_p;
-            }
-            Ok(counts)
+    with_lattice(probs, EStep { probs, sequences })
+}
+
+struct EStep<'a> {
+    probs: &'a Probabilities,
+    sequences: &'a [&'a [u32]],
+}
+
+impl WithLattice for EStep<'_> {
+    type Output = Result<Counts, HmmError>;
+
+    fn run<const W: usize, T: Transitions<W>>(self, lattice: &Lattice<W, T>) -> Self::Output {
+        let n = self.probs.n_states;
+        let chunks: Vec<Result<LatticeCounts<W, T>, HmmError>> = self
+            .sequences
+            .par_chunks(SEQUENCES_PER_CHUNK)
+            .enumerate()
+            .map(|(chunk_index, chunk)| {
+                let mut counts = LatticeCounts::zeros(lattice);
+                let mut scratch = Scratch::default();
+                for (offset, seq) in chunk.iter().enumerate() {
+                    lattice.add_counts(seq, &mut scratch, &mut counts).map_err(|position| {
+                        HmmError::ImpossibleSequence { index: chunk_index * SEQUENCES_PER_CHUNK + offset, position }
+                    })?;
+                }
+                Ok(counts)
+            })
+            .collect();
+        let mut total = LatticeCounts::zeros(lattice);
+        for chunk in chunks {
+            total.add(&chunk?);
+        }
+        Ok(Counts {
+            log_likelihood: total.log_likelihood,
+            start: total.start[..n].to_vec(),
+            // a_ij is applied once, here, so a zero of the topology stays exactly zero.
+            transitions: lattice.transitions.expected_transitions(&total.transitions, n),
+            emissions: total.emissions.iter().flat_map(|column| column[..n].iter().copied()).collect(),
         })
-        .collect();
-    let mut total = Counts::zeros(n, m);
-    for chunk in chunks {
-        total.add(&chunk?);
     }
-    Ok(total)
 }
 
 /// The M-step: each row of counts divided by its sum. A state that was never visited keeps

@@ -7,6 +7,8 @@ use thiserror::Error;
 pub enum HmmParamsError {
     #[error("n_states must be at least 1, got {0}")]
     NoStates(usize),
+    #[error("n_states must be at most {max}, got {n_states}")]
+    TooManyStates { n_states: usize, max: usize },
     #[error("n_symbols must be at least 1, got {0}")]
     NoSymbols(usize),
     #[error("tol must be a number (it may be -inf to run exactly max_iter iterations), got NaN")]

@@ -2,151 +2,207 @@
 //!
 //! α̂_t(j) = [Σ_i α̂_{t−1}(i) a_ij] b_j(O_t) / c_t, where c_t normalises α̂_t to sum to 1, and
 //! log P(O|λ) = Σ_t log c_t. The backward variable is scaled with the same c_t, so that
-//! γ_t(i) = α̂_t(i) β̂_t(i) and ξ_t(i, j) = α̂_t(i) a_ij b_j(O_{t+1}) β̂_{t+1}(j) / c_{t+1}.
-
-use std::ops::Range;
+//! γ_t(i) = α̂_t(i) β̂_t(i) and ξ_t(i, j) = α̂_t(i) a_ij w_{t+1}(j), with
+//! w_t(j) = b_j(O_t) β̂_t(j) / c_t and β̂_{t−1} = A w_t.
+//!
+//! The recursions run on arrays of a width `W` fixed at compile time: every loop over
+//! states unrolls and the vectors of a time step stay in registers. A model whose number
+//! of states is not one of the compiled widths is padded to the next one with states that
+//! no probability reaches, which changes no result.
 
 use crate::probabilities::Probabilities;
+use crate::transitions::{add_rows, Banded, Dense, Transitions};
 
-/// Read-only views of a model arranged for the recursions.
-pub(crate) struct Lattice<'a> {
-    pub probs: &'a Probabilities,
-    /// `[k * n + j]` is b_j(k).
-    pub emissions_by_symbol: Vec<f64>,
-    pub bands: Vec<Range<usize>>,
+/// The most states a model may have.
+pub const MAX_STATES: usize = 256;
+
+/// Run the product of scale factors into the log-likelihood before it can underflow.
+const SMALLEST_PRODUCT: f64 = 1e-250;
+
+/// A model padded to `W` states and arranged for the recursions.
+pub(crate) struct Lattice<const W: usize, T> {
+    start: [f64; W],
+    pub transitions: T,
+    /// `emissions[k][j]` is b_j(k).
+    emissions: Vec<[f64; W]>,
 }
 
-impl<'a> Lattice<'a> {
-    pub fn new(probs: &'a Probabilities) -> Self {
-        Self { probs, emissions_by_symbol: probs.emissions_by_symbol(), bands: probs.transition_bands() }
-    }
+/// Work to do with a lattice of whatever width and transition layout suit the model.
+pub(crate) trait WithLattice {
+    type Output;
+    fn run<const W: usize, T: Transitions<W>>(self, lattice: &Lattice<W, T>) -> Self::Output;
+}
 
-    fn n(&self) -> usize {
-        self.probs.n_states
+/// Runs `work` on the model laid out for speed: compiled for its width, and banded when it
+/// is left-right with at most two links.
+pub(crate) fn with_lattice<V: WithLattice>(probs: &Probabilities, work: V) -> V::Output {
+    match probs.n_states {
+        0..=1 => with_layout::<1, V>(probs, work),
+        2 => with_layout::<2, V>(probs, work),
+        3 => with_layout::<3, V>(probs, work),
+        4 => with_layout::<4, V>(probs, work),
+        5 => with_layout::<5, V>(probs, work),
+        6 => with_layout::<6, V>(probs, work),
+        7..=8 => with_layout::<8, V>(probs, work),
+        9..=10 => with_layout::<10, V>(probs, work),
+        11..=12 => with_layout::<12, V>(probs, work),
+        13..=16 => with_layout::<16, V>(probs, work),
+        17..=20 => with_layout::<20, V>(probs, work),
+        21..=32 => with_layout::<32, V>(probs, work),
+        33..=64 => with_layout::<64, V>(probs, work),
+        _ => with_layout::<MAX_STATES, V>(probs, work),
     }
+}
 
-    fn emissions(&self, symbol: u32) -> &[f64] {
-        let n = self.n();
-        let k = symbol as usize;
-        &self.emissions_by_symbol[k * n..(k + 1) * n]
+fn with_layout<const W: usize, V: WithLattice>(probs: &Probabilities, work: V) -> V::Output {
+    let (a, n) = (&probs.transmat, probs.n_states);
+    if let Some(banded) = Banded::<W, 1>::new(a, n) {
+        work.run(&Lattice::new(probs, banded))
+    } else if let Some(banded) = Banded::<W, 2>::new(a, n) {
+        work.run(&Lattice::new(probs, banded))
+    } else if let Some(banded) = Banded::<W, 3>::new(a, n) {
+        work.run(&Lattice::new(probs, banded))
+    } else {
+        work.run(&Lattice::new(probs, Dense::<W>::new(a, n)))
     }
+}
 
-    /// One forward step: `next = (prevᵀ A) ⊙ b(symbol)`, normalised. Returns c_t, which is 0
-    /// when the symbol cannot be emitted by any state reachable now.
-    fn step(&self, prev: &[f64], symbol: u32, next: &mut [f64]) -> f64 {
-        next.fill(0.0);
-        for (i, &alpha_i) in prev.iter().enumerate() {
-            if alpha_i == 0.0 {
-                continue;
-            }
-            let band = self.bands[i].clone();
-            let row = &self.probs.transmat[i * self.n()..(i + 1) * self.n()];
-            for (acc, &a_ij) in next[band.clone()].iter_mut().zip(&row[band]) {
-                *acc += alpha_i * a_ij;
+impl<const W: usize, T: Transitions<W>> Lattice<W, T> {
+    fn new(probs: &Probabilities, transitions: T) -> Self {
+        let (n, m) = (probs.n_states, probs.n_symbols);
+        let mut start = [0.0; W];
+        start[..n].copy_from_slice(&probs.startprob);
+        let mut emissions = vec![[0.0; W]; m];
+        for (k, column) in emissions.iter_mut().enumerate() {
+            for (j, b) in column.iter_mut().enumerate().take(n) {
+                *b = probs.b(j, k);
             }
         }
-        normalise_emitted(next, self.emissions(symbol))
-    }
-
-    fn first(&self, symbol: u32, alpha0: &mut [f64]) -> f64 {
-        alpha0.copy_from_slice(&self.probs.startprob);
-        normalise_emitted(alpha0, self.emissions(symbol))
+        Self { start, transitions, emissions }
     }
 
     /// log P(O|λ) by the scaled forward pass, or `Err(t)` with the first position whose
-    /// probability is zero.
-    pub fn log_likelihood(&self, seq: &[u32], prev: &mut Vec<f64>, next: &mut Vec<f64>) -> Result<f64, usize> {
-        let n = self.n();
-        prev.resize(n, 0.0);
-        next.resize(n, 0.0);
+    /// probability is zero. `keep` receives every α̂_t and c_t.
+    #[inline(always)]
+    fn forward_with(&self, seq: &[u32], mut keep: impl FnMut([f64; W], f64)) -> Result<f64, usize> {
         let mut log_p = 0.0;
+        let mut product = 1.0;
+        let mut alpha = self.start;
         for (t, &symbol) in seq.iter().enumerate() {
-            let c = if t == 0 { self.first(symbol, prev) } else { self.step(prev, symbol, next) };
-            if c <= 0.0 || !c.is_finite() {
-                return Err(t);
-            }
             if t > 0 {
-                std::mem::swap(prev, next);
+                alpha = self.transitions.forward(&alpha);
             }
-            log_p += c.ln();
-        }
-        Ok(log_p)
-    }
-
-    /// Fills `scratch` with α̂ (T × n) and the scale factors; returns log P(O|λ) or `Err(t)`.
-    pub fn forward(&self, seq: &[u32], scratch: &mut Scratch) -> Result<f64, usize> {
-        let n = self.n();
-        let len = seq.len();
-        scratch.resize(len, n);
-        let mut log_p = 0.0;
-        for (t, &symbol) in seq.iter().enumerate() {
-            let c = if t == 0 {
-                self.first(symbol, &mut scratch.alpha[..n])
-            } else {
-                let (done, rest) = scratch.alpha.split_at_mut(t * n);
-                self.step(&done[(t - 1) * n..], symbol, &mut rest[..n])
-            };
-            if c <= 0.0 || !c.is_finite() {
+            let c = normalise_emitted(&mut alpha, &self.emissions[symbol as usize]);
+            if !(c > 0.0 && c.is_finite()) {
                 return Err(t);
             }
-            scratch.scale[t] = c;
-            log_p += c.ln();
+            keep(alpha, c);
+            product *= c;
+            if product < SMALLEST_PRODUCT {
+                log_p += product.ln();
+                product = 1.0;
+            }
         }
-        Ok(log_p)
+        Ok(log_p + product.ln())
     }
 
-    /// After [`Self::forward`], fills β̂ and the weights w_t(j) = b_j(O_t) β̂_t(j) / c_t that both
-    /// the backward recursion and ξ need.
-    pub fn backward(&self, seq: &[u32], scratch: &mut Scratch) {
-        let n = self.n();
-        let len = seq.len();
-        scratch.beta[(len - 1) * n..len * n].fill(1.0);
-        for t in (1..len).rev() {
-            let b = self.emissions(seq[t]);
-            let c = scratch.scale[t];
-            let (before, after) = scratch.beta.split_at_mut(t * n);
-            let beta_t = &after[..n];
-            let w_t = &mut scratch.weight[t * n..(t + 1) * n];
-            for j in 0..n {
-                w_t[j] = b[j] * beta_t[j] / c;
+    pub fn log_likelihood(&self, seq: &[u32]) -> Result<f64, usize> {
+        self.forward_with(seq, |_, _| {})
+    }
+
+    /// Adds one sequence's expected counts to `counts`; returns its log-likelihood or the
+    /// first position at which its probability is zero (then `counts` is unchanged).
+    pub fn add_counts(&self, seq: &[u32], scratch: &mut Scratch<W>, counts: &mut Counts<W, T>) -> Result<f64, usize> {
+        scratch.alpha.clear();
+        scratch.scale.clear();
+        scratch.alpha.reserve(seq.len());
+        scratch.scale.reserve(seq.len());
+        let log_p = self.forward_with(seq, |alpha, c| {
+            scratch.alpha.push(alpha);
+            scratch.scale.push(c);
+        })?;
+        let mut beta = [1.0; W];
+        for t in (0..seq.len()).rev() {
+            let alpha_t = &scratch.alpha[t];
+            let emitted = &mut counts.emissions[seq[t] as usize];
+            for i in 0..W {
+                emitted[i] += alpha_t[i] * beta[i];
             }
-            let beta_prev = &mut before[(t - 1) * n..];
-            for (i, beta_i) in beta_prev.iter_mut().enumerate() {
-                let band = self.bands[i].clone();
-                let row = &self.probs.transmat[i * n..(i + 1) * n];
-                *beta_i = row[band.clone()].iter().zip(&w_t[band]).map(|(a, w)| a * w).sum();
+            if t == 0 {
+                for i in 0..W {
+                    counts.start[i] += alpha_t[i] * beta[i];
+                }
+                break;
             }
+            let b = &self.emissions[seq[t] as usize];
+            let inverse_scale = 1.0 / scratch.scale[t];
+            let mut w = [0.0; W];
+            for j in 0..W {
+                w[j] = b[j] * beta[j] * inverse_scale;
+            }
+            // ξ_{t−1}(i, j) / a_ij accumulates as an outer product; a_ij is applied once at the end.
+            self.transitions.add_outer(&scratch.alpha[t - 1], &w, &mut counts.transitions);
+            beta = self.transitions.backward(&w);
         }
+        counts.log_likelihood += log_p;
+        Ok(log_p)
     }
 }
 
 /// b ⊙ values, normalised to sum to 1; returns the sum before normalising.
-fn normalise_emitted(values: &mut [f64], emissions: &[f64]) -> f64 {
+#[inline(always)]
+fn normalise_emitted<const W: usize>(values: &mut [f64; W], emissions: &[f64; W]) -> f64 {
     let mut sum = 0.0;
-    for (v, &b) in values.iter_mut().zip(emissions) {
-        *v *= b;
-        sum += *v;
+    for j in 0..W {
+        values[j] *= emissions[j];
+        sum += values[j];
     }
     if sum > 0.0 {
-        values.iter_mut().for_each(|v| *v /= sum);
+        let inverse = 1.0 / sum;
+        for v in values.iter_mut() {
+            *v *= inverse;
+        }
     }
     sum
 }
 
 /// Buffers reused across the sequences one worker processes.
-#[derive(Default)]
-pub(crate) struct Scratch {
-    pub alpha: Vec<f64>,
-    pub beta: Vec<f64>,
-    pub weight: Vec<f64>,
-    pub scale: Vec<f64>,
+pub(crate) struct Scratch<const W: usize> {
+    alpha: Vec<[f64; W]>,
+    scale: Vec<f64>,
 }
 
-impl Scratch {
-    fn resize(&mut self, len: usize, n: usize) {
-        self.alpha.resize(len * n, 0.0);
-        self.beta.resize(len * n, 0.0);
-        self.weight.resize(len * n, 0.0);
-        self.scale.resize(len, 0.0);
+impl<const W: usize> Default for Scratch<W> {
+    fn default() -> Self {
+        Self { alpha: Vec::new(), scale: Vec::new() }
+    }
+}
+
+/// Expected counts over some sequences, in the lattice's layout.
+pub(crate) struct Counts<const W: usize, T: Transitions<W>> {
+    pub log_likelihood: f64,
+    /// Σ γ_0(i).
+    pub start: [f64; W],
+    /// Σ_t α̂_t(i) w_{t+1}(j) in the transitions' own layout; times a_ij this is Σ_t ξ_t(i, j).
+    pub transitions: T::Sums,
+    /// `emissions[k][i]`: Σ γ_t(i) over the t with O_t = k.
+    pub emissions: Vec<[f64; W]>,
+}
+
+impl<const W: usize, T: Transitions<W>> Counts<W, T> {
+    pub fn zeros(lattice: &Lattice<W, T>) -> Self {
+        Self {
+            log_likelihood: 0.0,
+            start: [0.0; W],
+            transitions: lattice.transitions.zero_sums(),
+            emissions: vec![[0.0; W]; lattice.emissions.len()],
+        }
+    }
+
+    pub fn add(&mut self, other: &Self) {
+        self.log_likelihood += other.log_likelihood;
+        add_rows(std::slice::from_mut(&mut self.start), std::slice::from_ref(&other.start));
+        T::add_sums(&mut self.transitions, &other.transitions);
+        add_rows(&mut self.emissions, &other.emissions);
     }
 }

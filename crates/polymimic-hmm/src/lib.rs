@@ -26,9 +26,11 @@ mod persist;
 mod probabilities;
 mod sample;
 mod topology;
+mod transitions;
 mod viterbi;
 
 pub use error::{HmmError, HmmParamsError};
+pub use forward_backward::MAX_STATES;
 pub use init::segment_emissions;
 pub use model::{check_sequences, DiscreteHmm, Init};
 pub use params::{HmmParams, ValidHmmParams};

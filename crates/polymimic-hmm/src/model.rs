@@ -6,7 +6,8 @@ use rayon::prelude::*;
 
 use crate::baum_welch::{expected_counts, reestimate};
 use crate::error::{HmmError, HmmParamsError};
-use crate::forward_backward::Lattice;
+use crate::forward_backward::{with_lattice, Lattice, WithLattice};
+use crate::transitions::Transitions;
 use crate::init::segment_emissions;
 use crate::params::ValidHmmParams;
 use crate::probabilities::Probabilities;
@@ -127,8 +128,8 @@ impl DiscreteHmm {
     pub fn score(&self, seq: &[u32]) -> Result<f64, HmmError> {
         let probs = self.probabilities()?;
         check_sequences(&[seq], self.params.n_symbols)?;
-        Lattice::new(probs)
-            .log_likelihood(seq, &mut Vec::new(), &mut Vec::new())
+        with_lattice(probs, Score { sequences: &[seq] })
+            .remove(0)
             .map_err(|position| HmmError::ImpossibleSequence { index: 0, position })
     }
 
@@ -140,11 +141,7 @@ impl DiscreteHmm {
     pub fn score_many(&self, sequences: &[&[u32]]) -> Result<Vec<Result<f64, usize>>, HmmError> {
         let probs = self.probabilities()?;
         check_sequences(sequences, self.params.n_symbols)?;
-        let lattice = Lattice::new(probs);
-        Ok(sequences
-            .par_iter()
-            .map_init(|| (Vec::new(), Vec::new()), |(prev, next), seq| lattice.log_likelihood(seq, prev, next))
-            .collect())
+        Ok(with_lattice(probs, Score { sequences }))
     }
 
     /// The Viterbi state path and its log-probability.
@@ -167,6 +164,19 @@ impl DiscreteHmm {
             return Err(HmmParamsError::ZeroLength(length).into());
         }
         Ok(crate::sample::sample(probs, count, length, seed))
+    }
+}
+
+/// The log-likelihood of each sequence, in parallel.
+struct Score<'a> {
+    sequences: &'a [&'a [u32]],
+}
+
+impl WithLattice for Score<'_> {
+    type Output = Vec<Result<f64, usize>>;
+
+    fn run<const W: usize, T: Transitions<W>>(self, lattice: &Lattice<W, T>) -> Self::Output {
+        self.sequences.par_iter().map(|seq| lattice.log_likelihood(seq)).collect()
     }
 }
 

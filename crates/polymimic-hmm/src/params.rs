@@ -48,6 +48,9 @@ impl HmmParams {
         if self.n_states == 0 {
             return Err(HmmParamsError::NoStates(self.n_states));
         }
+        if self.n_states > crate::MAX_STATES {
+            return Err(HmmParamsError::TooManyStates { n_states: self.n_states, max: crate::MAX_STATES });
+        }
         if self.n_symbols == 0 {
             return Err(HmmParamsError::NoSymbols(self.n_symbols));
         }

@@ -30,6 +30,12 @@ fn shape_text(array: &Bound<'_, PyAny>) -> PyResult<String> {
 /// One 1-D sequence of integer symbols, checked against `n_symbols`. `what` names it in
 /// errors ("sequence 3").
 pub fn symbols(value: &Bound<'_, PyAny>, what: &str, n_symbols: usize) -> PyResult<Vec<u32>> {
+    // Fast path: the int64 arrays numpy makes by default need no conversion at all.
+    if let Ok(array) = value.cast::<PyArray1<i64>>() {
+        if let Ok(values) = array.to_vec() {
+            return checked_symbols(values.into_iter(), what, n_symbols);
+        }
+    }
     let array = asarray(value, None)?;
     let ndim: usize = array.getattr("ndim")?.extract()?;
     if ndim != 1 {
@@ -45,14 +51,16 @@ pub fn symbols(value: &Bound<'_, PyAny>, what: &str, n_symbols: usize) -> PyResu
     }
     let array = array.call_method1("astype", ("int64",))?;
     let array: PyReadonlyArray1<i64> = array.extract()?;
-    let values = array.as_array();
-    if values.is_empty() {
+    checked_symbols(array.as_array().iter().copied(), what, n_symbols)
+}
+
+fn checked_symbols(values: impl ExactSizeIterator<Item = i64>, what: &str, n_symbols: usize) -> PyResult<Vec<u32>> {
+    if values.len() == 0 {
         return Err(PyValueError::new_err(format!("{what} is empty")));
     }
     values
-        .iter()
         .enumerate()
-        .map(|(position, &symbol)| {
+        .map(|(position, symbol)| {
             if symbol < 0 || symbol as u64 >= n_symbols as u64 {
                 Err(PyValueError::new_err(format!(
                     "{what} holds symbol {symbol} at position {position}; symbols must be in 0..{n_symbols}"

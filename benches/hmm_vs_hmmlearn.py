@@ -1,0 +1,58 @@
+"""Baum-Welch per iteration, one thread: polymimic.DiscreteHMM against hmmlearn.
+
+Both start from the same parameters on the same 5000 sequences of 25–30 symbols over 512
+symbols (the thesis's size), left-right topology. Run: ``python benches/hmm_vs_hmmlearn.py``.
+"""
+
+import os
+
+os.environ["RAYON_NUM_THREADS"] = "1"  # one thread for ours; must be set before the import
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+
+import argparse  # noqa: E402
+import warnings  # noqa: E402
+
+import numpy as np  # noqa: E402
+from hmmlearn import hmm  # noqa: E402
+
+import polymimic  # noqa: E402
+from _data import best_of, thesis_sequences  # noqa: E402
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--states", type=int, nargs="+", default=[1, 5, 20])
+    parser.add_argument("--repeats", type=int, default=3)
+    args = parser.parse_args()
+
+    sequences = thesis_sequences()
+    stacked = np.concatenate(sequences)[:, None]
+    lengths = [len(s) for s in sequences]
+    print(f"{len(sequences)} sequences, {len(stacked)} symbols, 512 symbols, left-right, one thread")
+    print(f"{'states':>6} {'ours ms':>9} {'scaling ms':>11} {'log ms':>9} {'vs scaling':>11} {'vs log':>8}")
+    for n_states in args.states:
+        start = polymimic.DiscreteHMM(n_states, 512, max_iter=0, seed=0).fit(sequences)
+        params = (start.startprob_, start.transmat_, start.emissionprob_)
+
+        ours_iterations = 10
+        ours = polymimic.DiscreteHMM.from_params(*params, max_iter=ours_iterations, tol=float("-inf"))
+        ours_s = best_of(lambda: ours.fit(sequences, init="given"), args.repeats) / ours_iterations
+
+        peer_s = {}
+        for implementation in ("scaling", "log"):
+            peer = hmm.CategoricalHMM(n_components=n_states, n_features=512, implementation=implementation,
+                                      init_params="", params="ste", n_iter=1, tol=-np.inf)
+
+            def fit_peer():
+                peer.startprob_, peer.transmat_, peer.emissionprob_ = (p.copy() for p in params)
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    peer.fit(stacked, lengths=lengths)
+
+            peer_s[implementation] = best_of(fit_peer, args.repeats)
+        print(f"{n_states:>6} {ours_s * 1e3:>9.2f} {peer_s['scaling'] * 1e3:>11.1f} {peer_s['log'] * 1e3:>9.1f} "
+              f"{peer_s['scaling'] / ours_s:>10.1f}x {peer_s['log'] / ours_s:>7.1f}x")
+
+
+if __name__ == "__main__":
+    main()

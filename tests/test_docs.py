@@ -1,0 +1,44 @@
+"""The examples in the README and in docstrings run, and say what they print."""
+
+import doctest
+import importlib
+import pathlib
+import pkgutil
+
+import pytest
+
+import polymimic
+
+README = pathlib.Path(__file__).resolve().parent.parent / "README.md"
+
+
+def test_readme_examples():
+    text = README.read_text()
+    blocks = [block.split("```", 1)[0] for block in text.split("```python\n")[1:]]
+    assert blocks, "the README has Python examples"
+    parser = doctest.DocTestParser()
+    test = parser.get_doctest("\n".join(blocks), {}, "README.md", str(README), 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+    runner.run(test)
+    assert runner.failures == 0
+
+
+def test_readme_quick_start_is_what_ci_runs():
+    ci = (README.parent / ".ci" / "run").read_text().strip().splitlines()[-1]
+    quick_start = README.read_text().split("## Quick start", 1)[1].split("```sh\n", 1)[1].split("```", 1)[0]
+    lines = quick_start.strip().splitlines()
+    assert len(lines) == 2
+    assert ci == lines[1]
+
+
+MODULES = [polymimic] + [
+    importlib.import_module(f"polymimic.{info.name}")
+    for info in pkgutil.iter_modules(polymimic.__path__)
+    if not info.name.startswith("_") and info.name != "__main__"
+]
+
+
+@pytest.mark.parametrize("module", MODULES, ids=lambda m: m.__name__)
+def test_docstring_examples(module):
+    result = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
+    assert result.failed == 0

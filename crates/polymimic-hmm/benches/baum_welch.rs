@@ -1,7 +1,7 @@
 //! Baum-Welch at the thesis's size: 5000 sequences of 25–30 symbols over 512 symbols,
 //! left-right models of 1, 5 and 20 states. One iteration per measurement.
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use criterion::{BenchmarkId, Criterion, criterion_group, criterion_main};
 use polymimic_hmm::{DiscreteHmm, HmmParams, Init};
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -35,8 +35,9 @@ fn one_iteration(c: &mut Criterion) {
         params.max_iter = 1;
         params.tol = f64::NEG_INFINITY;
         let p = start.probabilities().expect("initialised").clone();
-        let model = DiscreteHmm::from_probabilities(params.check().expect("valid"), p.startprob, p.transmat, p.emissionprob)
-            .expect("valid");
+        let model =
+            DiscreteHmm::from_probabilities(params.check().expect("valid"), p.startprob, p.transmat, p.emissionprob)
+                .expect("valid");
         group.bench_with_input(BenchmarkId::new("left_right_states", n_states), &model, |b, model| {
             b.iter(|| {
                 let mut m = model.clone();

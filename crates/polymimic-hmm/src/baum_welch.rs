@@ -4,9 +4,9 @@
 use rayon::prelude::*;
 
 use crate::error::HmmError;
-use crate::forward_backward::{with_lattice, Counts as LatticeCounts, Lattice, Scratch, WithLattice};
-use crate::transitions::Transitions;
+use crate::forward_backward::{Counts as LatticeCounts, Lattice, Scratch, WithLattice, with_lattice};
 use crate::probabilities::Probabilities;
+use crate::transitions::Transitions;
 
 /// Sequences per parallel work item. Fixed, so sums are added in the same order whatever
 /// the number of threads, and results are bit-identical.

@@ -30,7 +30,9 @@ pub enum HmmParamsError {
     NoSequences,
     #[error("sequence {index} is empty")]
     EmptySequence { index: usize },
-    #[error("sequence {index} holds symbol {symbol} at position {position}, but the model has only {n_symbols} symbols (0..{n_symbols})")]
+    #[error(
+        "sequence {index} holds symbol {symbol} at position {position}, but the model has only {n_symbols} symbols (0..{n_symbols})"
+    )]
     SymbolOutOfRange { index: usize, position: usize, symbol: u64, n_symbols: usize },
     #[error("length must be at least 1, got {0}")]
     ZeroLength(usize),
@@ -41,7 +43,9 @@ pub enum HmmParamsError {
 pub enum HmmError {
     #[error(transparent)]
     Params(#[from] HmmParamsError),
-    #[error("sequence {index} is impossible under the model: its probability is 0 at position {position} (a symbol no reachable state can emit)")]
+    #[error(
+        "sequence {index} is impossible under the model: its probability is 0 at position {position} (a symbol no reachable state can emit)"
+    )]
     ImpossibleSequence { index: usize, position: usize },
     #[error("the model is not fitted: call fit first, or build it with from_params")]
     NotFitted,

@@ -11,7 +11,7 @@
 //! no probability reaches, which changes no result.
 
 use crate::probabilities::Probabilities;
-use crate::transitions::{add_rows, Banded, Dense, Transitions};
+use crate::transitions::{Banded, Dense, Transitions, add_rows};
 
 /// The most states a model may have.
 pub const MAX_STATES: usize = 256;

@@ -20,9 +20,13 @@ pub fn segment_emissions(sequences: &[&[u32]], n_states: usize, n_symbols: usize
             row.fill(1.0 / n_symbols as f64);
             continue;
         }
-        row.iter_mut().for_each(|p| *p = (*p / total).max(floor));
+        for p in row.iter_mut() {
+            *p = (*p / total).max(floor);
+        }
         let floored_total: f64 = row.iter().sum();
-        row.iter_mut().for_each(|p| *p /= floored_total);
+        for p in row.iter_mut() {
+            *p /= floored_total;
+        }
     }
     counts
 }

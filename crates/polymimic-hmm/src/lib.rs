@@ -32,7 +32,7 @@ mod viterbi;
 pub use error::{HmmError, HmmParamsError};
 pub use forward_backward::MAX_STATES;
 pub use init::segment_emissions;
-pub use model::{check_sequences, DiscreteHmm, Init};
+pub use model::{DiscreteHmm, Init, Sampled, check_sequences};
 pub use params::{HmmParams, ValidHmmParams};
 pub use probabilities::Probabilities;
 pub use topology::Topology;

@@ -6,11 +6,14 @@ use rayon::prelude::*;
 
 use crate::baum_welch::{expected_counts, reestimate};
 use crate::error::{HmmError, HmmParamsError};
-use crate::forward_backward::{with_lattice, Lattice, WithLattice};
-use crate::transitions::Transitions;
+use crate::forward_backward::{Lattice, WithLattice, with_lattice};
 use crate::init::segment_emissions;
 use crate::params::ValidHmmParams;
 use crate::probabilities::Probabilities;
+use crate::transitions::Transitions;
+
+/// Sampled sequences of symbols and the hidden states that emitted them.
+pub type Sampled = (Vec<Vec<u32>>, Vec<Vec<usize>>);
 
 /// Where training starts from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -158,7 +161,7 @@ impl DiscreteHmm {
     ///
     /// # Errors
     /// An unfitted model or a zero length.
-    pub fn sample(&self, count: usize, length: usize, seed: u64) -> Result<(Vec<Vec<u32>>, Vec<Vec<usize>>), HmmError> {
+    pub fn sample(&self, count: usize, length: usize, seed: u64) -> Result<Sampled, HmmError> {
         let probs = self.probabilities()?;
         if length == 0 {
             return Err(HmmParamsError::ZeroLength(length).into());

@@ -59,10 +59,7 @@ impl HmmParams {
         }
         let max_floor = 1.0 / self.n_symbols as f64;
         if !(0.0..=max_floor).contains(&self.emission_floor) {
-            return Err(HmmParamsError::EmissionFloorOutOfRange {
-                value: self.emission_floor,
-                max: max_floor,
-            });
+            return Err(HmmParamsError::EmissionFloorOutOfRange { value: self.emission_floor, max: max_floor });
         }
         Ok(ValidHmmParams(self))
     }
@@ -90,6 +87,7 @@ mod tolerance_text {
         Text(String),
     }
 
+    #[allow(clippy::trivially_copy_pass_by_ref)] // serde's `with` passes fields by reference
     pub fn serialize<S: Serializer>(value: &f64, serializer: S) -> Result<S::Ok, S::Error> {
         match *value {
             f64::NEG_INFINITY => serializer.serialize_str("-inf"),

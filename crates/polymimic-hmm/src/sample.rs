@@ -3,10 +3,11 @@
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
+use crate::model::Sampled;
 use crate::probabilities::Probabilities;
 
 /// `count` sequences of `length` symbols with their hidden states, reproducible from `seed`.
-pub(crate) fn sample(probs: &Probabilities, count: usize, length: usize, seed: u64) -> (Vec<Vec<u32>>, Vec<Vec<usize>>) {
+pub(crate) fn sample(probs: &Probabilities, count: usize, length: usize, seed: u64) -> Sampled {
     let (n, m) = (probs.n_states, probs.n_symbols);
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut symbols = Vec::with_capacity(count);

@@ -18,14 +18,14 @@ fn weather(b: &[f64]) -> DiscreteHmm {
 fn rainy_sunny_textbook_probability() {
     let m = weather(&[0.1, 0.4, 0.5, 0.6, 0.3, 0.1]);
     let p = m.score(&[0, 1, 2]).unwrap().exp();
-    assert!((p - 0.033612).abs() < 5e-7, "P = {p}");
+    assert!((p - 0.033_612).abs() < 5e-7, "P = {p}");
 }
 
 #[test]
 fn stamp_textbook_probability() {
     let m = weather(&[0.1, 0.4, 0.5, 0.7, 0.2, 0.1]);
     let p = m.score(&[0, 1, 0, 2]).unwrap().exp();
-    assert!((p - 0.0096296).abs() < 5e-8, "P = {p}");
+    assert!((p - 0.009_629_6).abs() < 5e-8, "P = {p}");
 }
 
 /// Every state path of a small model with its joint probability P(path, O).
@@ -93,7 +93,9 @@ fn one_reestimation_matches_brute_force_expected_counts() {
     let normalise = |v: &mut [f64], width: usize| {
         for row in v.chunks_mut(width) {
             let s: f64 = row.iter().sum();
-            row.iter_mut().for_each(|x| *x /= s);
+            for x in row.iter_mut() {
+                *x /= s;
+            }
         }
     };
     normalise(&mut start, n);

@@ -44,7 +44,9 @@ impl Topology {
                 }
             }
             let sum: f64 = row.iter().sum();
-            row.iter_mut().for_each(|cell| *cell /= sum);
+            for cell in row.iter_mut() {
+                *cell /= sum;
+            }
         }
         transmat
     }

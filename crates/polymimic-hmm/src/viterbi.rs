@@ -37,10 +37,8 @@ pub(crate) fn viterbi(probs: &Probabilities, seq: &[u32]) -> Result<(Vec<usize>,
         }
         std::mem::swap(&mut delta, &mut next);
     }
-    let (mut state, &log_p) = delta
-        .iter()
-        .enumerate()
-        .fold((0, &f64::NEG_INFINITY), |best, (i, d)| if *d > *best.1 { (i, d) } else { best });
+    let (mut state, &log_p) =
+        delta.iter().enumerate().fold((0, &f64::NEG_INFINITY), |best, (i, d)| if *d > *best.1 { (i, d) } else { best });
     let mut path = vec![0; seq.len()];
     for t in (0..seq.len()).rev() {
         path[t] = state;

@@ -2,8 +2,8 @@
 //! people and other tools, and checked on load so that a file of another kind or of a newer
 //! version is refused with a message instead of being misread.
 
-use serde::de::DeserializeOwned;
 use serde::Serialize;
+use serde::de::DeserializeOwned;
 
 /// `payload` wrapped with its format name and version.
 ///

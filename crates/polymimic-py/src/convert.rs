@@ -3,10 +3,10 @@
 use std::path::Path;
 
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::PyTypeInfo;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyList;
-use pyo3::PyTypeInfo;
 
 use crate::errors::ModelFileError;
 
@@ -79,9 +79,9 @@ pub fn symbol_sequences(value: &Bound<'_, PyAny>, n_symbols: usize) -> PyResult<
             "sequences must be a list of 1-D arrays (one per sequence), got a single 1-D array; wrap it in a list",
         ));
     }
-    let list = PyList::type_object(value.py()).call1((value,)).map_err(|_| {
-        PyTypeError::new_err("sequences must be a list of 1-D integer arrays")
-    })?;
+    let list = PyList::type_object(value.py())
+        .call1((value,))
+        .map_err(|_| PyTypeError::new_err("sequences must be a list of 1-D integer arrays"))?;
     let list = list.cast_into::<PyList>()?;
     if list.is_empty() {
         return Err(PyValueError::new_err("sequences is empty: give at least one sequence"));
@@ -100,10 +100,7 @@ pub fn floats(value: &Bound<'_, PyAny>, name: &str, rank: usize) -> PyResult<(Ve
     let array = asarray(&array, Some("float64"))?;
     let ndim: usize = array.getattr("ndim")?.extract()?;
     if ndim != rank {
-        return Err(PyValueError::new_err(format!(
-            "{name} must be {rank}-D, got shape {}",
-            shape_text(&array)?
-        )));
+        return Err(PyValueError::new_err(format!("{name} must be {rank}-D, got shape {}", shape_text(&array)?)));
     }
     if rank == 1 {
         let array: PyReadonlyArray1<f64> = array.extract()?;
@@ -115,7 +112,12 @@ pub fn floats(value: &Bound<'_, PyAny>, name: &str, rank: usize) -> PyResult<(Ve
 }
 
 /// A row-major vector as a 2-D array.
-pub fn matrix<'py, T: numpy::Element>(py: Python<'py>, values: Vec<T>, rows: usize, cols: usize) -> PyResult<Bound<'py, numpy::PyArray2<T>>> {
+pub fn matrix<T: numpy::Element>(
+    py: Python<'_>,
+    values: Vec<T>,
+    rows: usize,
+    cols: usize,
+) -> PyResult<Bound<'_, numpy::PyArray2<T>>> {
     PyArray1::from_vec(py, values).reshape([rows, cols])
 }
 

@@ -5,9 +5,9 @@
 
 use polymimic_hmm::HmmError;
 use polymimic_vq::{VqError, VqParamsError};
+use pyo3::PyErr;
 use pyo3::create_exception;
 use pyo3::exceptions::{PyException, PyValueError};
-use pyo3::PyErr;
 
 create_exception!(polymimic, PolymimicError, PyException, "Base class of every polymimic error.");
 create_exception!(
@@ -29,6 +29,7 @@ create_exception!(
     "A saved file is corrupt, of another kind, or of an unsupported version."
 );
 
+#[allow(clippy::needless_pass_by_value)] // used as `map_err(hmm_error)`
 pub fn hmm_error(error: HmmError) -> PyErr {
     let message = error.to_string();
     match error {
@@ -39,6 +40,7 @@ pub fn hmm_error(error: HmmError) -> PyErr {
     }
 }
 
+#[allow(clippy::needless_pass_by_value)] // used as `map_err(vq_params_error)`
 pub fn vq_params_error(error: VqParamsError) -> PyErr {
     PyValueError::new_err(error.to_string())
 }

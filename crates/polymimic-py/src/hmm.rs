@@ -10,7 +10,10 @@ use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};
 
 use crate::convert::{floats, matrix, non_negative, read_text, symbol_sequences, symbols, write_atomically};
-use crate::errors::{hmm_error, ModelFileError};
+use crate::errors::{ModelFileError, hmm_error};
+
+/// Sampled symbols and hidden states, each `(n, length)`.
+type SymbolsAndStates<'py> = (Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>);
 
 /// A discrete hidden Markov model trained by scaled Baum-Welch.
 #[pyclass(name = "DiscreteHMM", module = "polymimic", frozen)]
@@ -22,9 +25,7 @@ fn topology(name: &str, links: i64) -> PyResult<Topology> {
     match name {
         "left-right" => Ok(Topology::LeftRight { links: non_negative("links", links)? }),
         "ergodic" => Ok(Topology::Ergodic),
-        other => Err(PyValueError::new_err(format!(
-            "topology must be \"left-right\" or \"ergodic\", got {other:?}"
-        ))),
+        other => Err(PyValueError::new_err(format!("topology must be \"left-right\" or \"ergodic\", got {other:?}"))),
     }
 }
 
@@ -129,7 +130,9 @@ impl PyDiscreteHmm {
         let init = match init {
             "segments" => Init::Segments,
             "given" => Init::Given,
-            other => return Err(PyValueError::new_err(format!("init must be \"segments\" or \"given\", got {other:?}"))),
+            other => {
+                return Err(PyValueError::new_err(format!("init must be \"segments\" or \"given\", got {other:?}")));
+            }
         };
         let this = slf.get();
         let sequences = symbol_sequences(sequences, this.n_symbols())?;
@@ -163,7 +166,9 @@ impl PyDiscreteHmm {
         let raise = match impossible {
             "raise" => true,
             "-inf" => false,
-            other => return Err(PyValueError::new_err(format!("impossible must be \"raise\" or \"-inf\", got {other:?}"))),
+            other => {
+                return Err(PyValueError::new_err(format!("impossible must be \"raise\" or \"-inf\", got {other:?}")));
+            }
         };
         let sequences = symbol_sequences(sequences, self.n_symbols())?;
         let model = self.snapshot();
@@ -194,13 +199,7 @@ impl PyDiscreteHmm {
 
     /// `n` sequences of `length` symbols and their hidden states, as two `(n, length)` arrays.
     #[pyo3(signature = (n, length, *, seed=0))]
-    fn sample<'py>(
-        &self,
-        py: Python<'py>,
-        n: i64,
-        length: i64,
-        seed: i64,
-    ) -> PyResult<(Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>)> {
+    fn sample<'py>(&self, py: Python<'py>, n: i64, length: i64, seed: i64) -> PyResult<SymbolsAndStates<'py>> {
         let (count, len, seed) = (non_negative("n", n)?, non_negative("length", length)?, non_negative("seed", seed)?);
         let (symbols, states) = self.with_model(|m| m.sample(count, len, seed as u64)).map_err(hmm_error)?;
         let flat_symbols = symbols.into_iter().flatten().map(i64::from).collect();
@@ -216,9 +215,8 @@ impl PyDiscreteHmm {
 
     #[getter]
     fn transmat_<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        let (trans, n) = self
-            .with_model(|m| m.probabilities().map(|p| (p.transmat.clone(), p.n_states)))
-            .map_err(hmm_error)?;
+        let (trans, n) =
+            self.with_model(|m| m.probabilities().map(|p| (p.transmat.clone(), p.n_states))).map_err(hmm_error)?;
         matrix(py, trans, n, n)
     }
 
@@ -288,6 +286,7 @@ impl PyDiscreteHmm {
     }
 
     /// Writes the model to `path` (JSON, versioned).
+    #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the path by value
     fn save(&self, path: PathBuf) -> PyResult<()> {
         let text = self.with_model(DiscreteHmm::to_json).map_err(hmm_error)?;
         write_atomically(&path, &text)
@@ -295,10 +294,11 @@ impl PyDiscreteHmm {
 
     /// Reads a model written by `save`.
     #[classmethod]
+    #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the path by value
     fn load(_cls: &Bound<'_, PyType>, path: PathBuf) -> PyResult<Self> {
         let text = read_text(&path)?;
-        let model = DiscreteHmm::from_json(&text)
-            .map_err(|e| ModelFileError::new_err(format!("{}: {}", path.display(), e)))?;
+        let model =
+            DiscreteHmm::from_json(&text).map_err(|e| ModelFileError::new_err(format!("{}: {}", path.display(), e)))?;
         Ok(Self::wrap(model))
     }
 

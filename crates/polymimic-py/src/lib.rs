@@ -10,7 +10,7 @@ use pyo3::prelude::*;
 
 #[pymodule]
 mod _native {
-    use super::{errors, PyModule, PyModuleMethods, PyResult};
+    use super::{PyModule, PyModuleMethods, PyResult, errors};
     use pyo3::{Bound, PyTypeInfo};
 
     #[pymodule_export]

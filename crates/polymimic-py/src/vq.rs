@@ -8,7 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};
 
 use crate::convert::{floats, matrix, non_negative, read_text, write_atomically};
-use crate::errors::{vq_error, vq_params_error, ModelFileError};
+use crate::errors::{ModelFileError, vq_error, vq_params_error};
 
 /// A vector-quantisation codebook: codewords and nearest-codeword encoding.
 #[pyclass(name = "Codebook", module = "polymimic", frozen)]
@@ -112,6 +112,7 @@ impl PyCodebook {
     }
 
     /// Writes the codebook to `path` (JSON, versioned).
+    #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the path by value
     fn save(&self, path: PathBuf) -> PyResult<()> {
         let text = self.codebook.to_json().map_err(vq_error)?;
         write_atomically(&path, &text)
@@ -119,6 +120,7 @@ impl PyCodebook {
 
     /// Reads a codebook written by `save`.
     #[classmethod]
+    #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the path by value
     fn load(_cls: &Bound<'_, PyType>, path: PathBuf) -> PyResult<Self> {
         let text = read_text(&path)?;
         let codebook =

@@ -1,6 +1,6 @@
 //! The thesis's codebook: 125 000 three-dimensional points quantised to 512 codewords.
 
-use criterion::{criterion_group, criterion_main, Criterion};
+use criterion::{Criterion, criterion_group, criterion_main};
 use polymimic_vq::{Codebook, LbgParams};
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;

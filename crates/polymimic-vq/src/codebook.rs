@@ -5,8 +5,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{VqError, VqParamsError};
 use crate::kdtree::KdTree;
-use crate::lbg::{grow, LbgParams, LbgReport};
-use crate::lloyd::{refine, Refinement, Stopping};
+use crate::lbg::{LbgParams, LbgReport, grow};
+use crate::lloyd::{Refinement, Stopping, refine};
 use crate::points::Points;
 
 const FORMAT: &str = "polymimic.Codebook";

@@ -6,8 +6,8 @@ use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
 use crate::error::VqParamsError;
-use crate::lloyd::{refine, Stopping};
-use crate::points::{distance2, Points};
+use crate::lloyd::{Stopping, refine};
+use crate::points::{Points, distance2};
 
 /// How a codebook is grown. Build with [`LbgParams::new`], then [`LbgParams::check`].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -78,7 +78,9 @@ pub fn grow(points: Points, params: LbgParams) -> Result<(Vec<f64>, LbgReport), 
         let (split, first_child) = split(&codewords, dim, &chosen, params.split_epsilon, &mut rng);
         codewords = split;
         count = codewords.len() / dim;
-        labels.iter_mut().for_each(|label| *label = first_child[*label]);
+        for label in &mut labels {
+            *label = first_child[*label];
+        }
         let refinement = refine(points, &mut codewords, &mut labels, stopping);
         report.lloyd_iterations += refinement.iterations;
         report.reseeded_cells += refinement.reseeded;

@@ -25,6 +25,6 @@ mod points;
 pub use codebook::Codebook;
 pub use error::{VqError, VqParamsError};
 pub use kdtree::KdTree;
-pub use lbg::{grow, LbgParams, LbgReport};
+pub use lbg::{LbgParams, LbgReport, grow};
 pub use lloyd::{Refinement, Stopping};
-pub use points::{distance2, Points};
+pub use points::{Points, distance2};

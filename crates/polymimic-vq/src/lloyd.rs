@@ -3,7 +3,7 @@
 use rayon::prelude::*;
 
 use crate::kdtree::KdTree;
-use crate::points::{distance2, Points};
+use crate::points::{Points, distance2};
 
 /// Points per parallel work item; fixed so that sums are added in one order whatever the
 /// number of threads.

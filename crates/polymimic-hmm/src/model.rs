@@ -123,6 +123,29 @@ impl DiscreteHmm {
         }
     }
 
+    /// A copy whose emission probabilities are floored at `floor` and renormalised, so that
+    /// symbols never seen in training lower a score instead of making it impossible.
+    ///
+    /// # Errors
+    /// An unfitted model, or a floor outside [0, 1/n_symbols].
+    pub fn with_emission_floor(&self, floor: f64) -> Result<Self, HmmError> {
+        let mut probs = self.probabilities()?.clone();
+        let max = 1.0 / probs.n_symbols as f64;
+        if !(0.0..=max).contains(&floor) {
+            return Err(HmmParamsError::EmissionFloorOutOfRange { value: floor, max }.into());
+        }
+        for row in probs.emissionprob.chunks_exact_mut(probs.n_symbols) {
+            for p in row.iter_mut() {
+                *p = p.max(floor);
+            }
+            let total: f64 = row.iter().sum();
+            for p in row.iter_mut() {
+                *p /= total;
+            }
+        }
+        Ok(Self { probs: Some(probs), ..self.clone() })
+    }
+
     /// log P(O|λ) of one sequence.
     ///
     /// # Errors

@@ -1,0 +1,333 @@
+//! The primitive recogniser: one codebook per representation, one HMM per moving primitive,
+//! each HMM reading frames through its own representation and codebook (thesis §3.1.4).
+
+use std::collections::BTreeMap;
+
+use polymimic_hmm::{DiscreteHmm, HmmParams, Init, Topology};
+use polymimic_vq::{Codebook, LbgParams};
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use crate::error::PerceiveError;
+use crate::motion::{MotionStats, motion_stats};
+use crate::pose::Pose;
+use crate::primitive::Primitive;
+use crate::representation::Representation;
+
+const FORMAT: &str = "polymimic.PrimitiveRecognizer";
+const VERSION: u32 = 1;
+
+/// One self-observed primitive: the poses the tracker saw while it ran.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct LabelledSequence {
+    pub primitive: Primitive,
+    pub poses: Vec<Pose>,
+}
+
+/// How the recogniser is trained. Defaults are the thesis's.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct RecognizerConfig {
+    /// States of every HMM; the thesis found 1 as accurate as 5 to 20.
+    pub n_states: usize,
+    /// Forward links of the left-right topology.
+    pub links: usize,
+    /// Codewords per representation.
+    pub codebook_size: usize,
+    pub max_iter: usize,
+    pub tol: f64,
+    /// Relative distortion drop at which LBG's k-means stops at each size.
+    pub codebook_tol: f64,
+    /// Probability given to a symbol a model never saw in training, so that one unfamiliar
+    /// frame lowers a score instead of ruling the model out.
+    pub emission_floor: f64,
+    /// The representation of the forward and backward models.
+    pub forward_backward_representation: Representation,
+    /// The representation of the left and right models.
+    pub left_right_representation: Representation,
+    pub seed: u64,
+}
+
+impl Default for RecognizerConfig {
+    fn default() -> Self {
+        Self {
+            n_states: 5,
+            links: 2,
+            codebook_size: 512,
+            max_iter: 100,
+            tol: 1e-4,
+            codebook_tol: 1e-4,
+            emission_floor: 1e-8,
+            forward_backward_representation: Representation::Positional,
+            left_right_representation: Representation::Rotational,
+            seed: 0,
+        }
+    }
+}
+
+impl RecognizerConfig {
+    /// The representation a primitive's model reads.
+    #[must_use]
+    pub fn representation_of(&self, primitive: Primitive) -> Representation {
+        match primitive {
+            Primitive::Forward | Primitive::Backward | Primitive::Stop => self.forward_backward_representation,
+            Primitive::Left | Primitive::Right => self.left_right_representation,
+        }
+    }
+
+    fn check(&self) -> Result<(), PerceiveError> {
+        if self.n_states == 0 {
+            return Err(PerceiveError::Parameter { name: "n_states", value: 0.0, why: "at least 1" });
+        }
+        if self.codebook_size == 0 {
+            return Err(PerceiveError::Parameter { name: "codebook_size", value: 0.0, why: "at least 1" });
+        }
+        if !(0.0..1.0).contains(&self.emission_floor) {
+            return Err(PerceiveError::Parameter {
+                name: "emission_floor",
+                value: self.emission_floor,
+                why: "in [0, 1)",
+            });
+        }
+        Ok(())
+    }
+}
+
+/// An HMM for one primitive, with the representation it reads.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PrimitiveModel {
+    pub primitive: Primitive,
+    pub representation: Representation,
+    pub hmm: DiscreteHmm,
+}
+
+/// Four HMMs (forward, backward, left, right) and the codebooks they read through.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Recognizer {
+    config: RecognizerConfig,
+    codebooks: BTreeMap<Representation, Codebook>,
+    models: Vec<PrimitiveModel>,
+    motion: Vec<MotionStats>,
+}
+
+impl Recognizer {
+    /// Trains the codebooks on every frame of every sequence and each primitive's HMM on its
+    /// own sequences; also measures Table 3.1.
+    ///
+    /// # Errors
+    /// A moving primitive without sequences, a sequence with a non-finite or missing frame,
+    /// or a parameter out of range.
+    pub fn train(sequences: &[LabelledSequence], config: RecognizerConfig) -> Result<Self, PerceiveError> {
+        config.check()?;
+        for (index, seq) in sequences.iter().enumerate() {
+            check_poses(&seq.poses, &format!("training sequence {index}"), 1)?;
+        }
+        for primitive in Primitive::MOVING {
+            if !sequences.iter().any(|s| s.primitive == primitive) {
+                return Err(PerceiveError::MissingPrimitive(primitive.name()));
+            }
+        }
+        let representations: Vec<Representation> =
+            [config.forward_backward_representation, config.left_right_representation]
+                .into_iter()
+                .collect::<std::collections::BTreeSet<_>>()
+                .into_iter()
+                .collect();
+        let codebooks: BTreeMap<Representation, Codebook> = representations
+            .par_iter()
+            .map(|&representation| {
+                let points: Vec<f64> = sequences.iter().flat_map(|s| representation.points(&s.poses)).collect();
+                let mut lbg = LbgParams::new(config.codebook_size);
+                lbg.tol = config.codebook_tol;
+                lbg.seed = config.seed;
+                Codebook::fit(&points, 3, lbg).map(|codebook| (representation, codebook))
+            })
+            .collect::<Result<_, _>>()?;
+        let models = Primitive::MOVING
+            .par_iter()
+            .map(|&primitive| train_model(primitive, sequences, &codebooks, &config))
+            .collect::<Result<Vec<_>, _>>()?;
+        let motion = Primitive::ALL
+            .iter()
+            .map(|&p| motion_stats(p, sequences.iter().filter(|s| s.primitive == p).map(|s| s.poses.as_slice())))
+            .collect();
+        Ok(Self { config, codebooks, models, motion })
+    }
+
+    #[must_use]
+    pub fn config(&self) -> &RecognizerConfig {
+        &self.config
+    }
+
+    #[must_use]
+    pub fn models(&self) -> &[PrimitiveModel] {
+        &self.models
+    }
+
+    #[must_use]
+    pub fn codebook(&self, representation: Representation) -> Option<&Codebook> {
+        self.codebooks.get(&representation)
+    }
+
+    /// Table 3.1 of the training set, for all five primitives.
+    #[must_use]
+    pub fn motion_stats(&self) -> &[MotionStats] {
+        &self.motion
+    }
+
+    /// The symbols `poses` become through `representation` and its codebook.
+    fn symbols(&self, representation: Representation, poses: &[Pose]) -> Vec<u32> {
+        let points = representation.points(poses);
+        self.codebooks[&representation].encode(&points, 3).unwrap_or_default()
+    }
+
+    /// log P(poses | model) for forward, backward, left and right, in that order; −inf where
+    /// a model cannot have produced the poses.
+    ///
+    /// # Errors
+    /// No poses, or a non-finite one.
+    pub fn log_likelihoods(&self, poses: &[Pose]) -> Result<[f64; 4], PerceiveError> {
+        check_poses(poses, "sequence", 1)?;
+        Ok(self.scores_unchecked(poses))
+    }
+
+    pub(crate) fn scores_unchecked(&self, poses: &[Pose]) -> [f64; 4] {
+        let mut scores = [f64::NEG_INFINITY; 4];
+        for (score, model) in scores.iter_mut().zip(&self.models) {
+            let symbols = self.symbols(model.representation, poses);
+            *score = model.hmm.score(&symbols).unwrap_or(f64::NEG_INFINITY);
+        }
+        scores
+    }
+
+    /// The moving primitive whose model scores `poses` highest.
+    ///
+    /// # Errors
+    /// As [`Self::log_likelihoods`].
+    pub fn classify(&self, poses: &[Pose]) -> Result<Primitive, PerceiveError> {
+        Ok(best_two(&self.log_likelihoods(poses)?).0)
+    }
+
+    /// [`Self::log_likelihoods`] of many sequences, in parallel.
+    ///
+    /// # Errors
+    /// As [`Self::log_likelihoods`], naming the sequence.
+    pub fn log_likelihoods_many(&self, sequences: &[&[Pose]]) -> Result<Vec<[f64; 4]>, PerceiveError> {
+        for (index, poses) in sequences.iter().enumerate() {
+            check_poses(poses, &format!("sequence {index}"), 1)?;
+        }
+        Ok(sequences.par_iter().map(|poses| self.scores_unchecked(poses)).collect())
+    }
+
+    /// The recogniser as versioned JSON.
+    ///
+    /// # Errors
+    /// Never in practice.
+    pub fn to_json(&self) -> Result<String, PerceiveError> {
+        let saved = Saved {
+            config: self.config.clone(),
+            codebooks: self.codebooks.iter().map(|(r, c)| (*r, c.to_json().unwrap_or_default())).collect(),
+            models: self
+                .models
+                .iter()
+                .map(|m| SavedModel {
+                    primitive: m.primitive,
+                    representation: m.representation,
+                    hmm: m.hmm.to_json().unwrap_or_default(),
+                })
+                .collect(),
+            motion: self.motion.clone(),
+        };
+        polymimic_persist::to_envelope(FORMAT, VERSION, &saved).map_err(PerceiveError::Corrupt)
+    }
+
+    /// A recogniser from [`Self::to_json`] text.
+    ///
+    /// # Errors
+    /// Another format or version, or parts that do not validate.
+    pub fn from_json(text: &str) -> Result<Self, PerceiveError> {
+        let saved: Saved = polymimic_persist::from_envelope(text, FORMAT, VERSION).map_err(PerceiveError::Corrupt)?;
+        let corrupt = |e: &dyn std::fmt::Display| PerceiveError::Corrupt(e.to_string());
+        let codebooks = saved
+            .codebooks
+            .iter()
+            .map(|(r, text)| Codebook::from_json(text).map(|c| (*r, c)).map_err(|e| corrupt(&e)))
+            .collect::<Result<BTreeMap<_, _>, _>>()?;
+        let models = saved
+            .models
+            .iter()
+            .map(|m| {
+                let hmm = DiscreteHmm::from_json(&m.hmm).map_err(|e| corrupt(&e))?;
+                let codebook =
+                    codebooks.get(&m.representation).ok_or_else(|| corrupt(&"a model's codebook is missing"))?;
+                if hmm.params().n_symbols != codebook.len() {
+                    return Err(corrupt(&"a model's symbols do not match its codebook"));
+                }
+                Ok(PrimitiveModel { primitive: m.primitive, representation: m.representation, hmm })
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        if models.iter().map(|m| m.primitive).ne(Primitive::MOVING) {
+            return Err(corrupt(&"expected models for forward, backward, left and right"));
+        }
+        Ok(Self { config: saved.config, codebooks, models, motion: saved.motion })
+    }
+}
+
+#[derive(Serialize, Deserialize)]
+struct Saved {
+    config: RecognizerConfig,
+    codebooks: Vec<(Representation, String)>,
+    models: Vec<SavedModel>,
+    motion: Vec<MotionStats>,
+}
+
+#[derive(Serialize, Deserialize)]
+struct SavedModel {
+    primitive: Primitive,
+    representation: Representation,
+    hmm: String,
+}
+
+fn train_model(
+    primitive: Primitive,
+    sequences: &[LabelledSequence],
+    codebooks: &BTreeMap<Representation, Codebook>,
+    config: &RecognizerConfig,
+) -> Result<PrimitiveModel, PerceiveError> {
+    let representation = config.representation_of(primitive);
+    let codebook = &codebooks[&representation];
+    let symbols: Vec<Vec<u32>> = sequences
+        .iter()
+        .filter(|s| s.primitive == primitive)
+        .map(|s| codebook.encode(&representation.points(&s.poses), 3))
+        .collect::<Result<_, _>>()?;
+    let refs: Vec<&[u32]> = symbols.iter().map(Vec::as_slice).collect();
+    let mut params = HmmParams::new(config.n_states, codebook.len());
+    params.topology = Topology::LeftRight { links: config.links };
+    params.max_iter = config.max_iter;
+    params.tol = config.tol;
+    params.emission_floor = config.emission_floor.min(1.0 / codebook.len() as f64);
+    params.seed = config.seed;
+    let mut hmm = DiscreteHmm::new(params.check().map_err(polymimic_hmm::HmmError::from)?);
+    hmm.fit(&refs, Init::Segments)?;
+    let hmm = hmm.with_emission_floor(config.emission_floor)?;
+    Ok(PrimitiveModel { primitive, representation, hmm })
+}
+
+/// The best and second-best primitives by score, with their scores.
+#[must_use]
+pub fn best_two(scores: &[f64; 4]) -> (Primitive, f64, f64) {
+    let mut order = [0, 1, 2, 3];
+    order.sort_by(|&a, &b| scores[b].total_cmp(&scores[a]).then(a.cmp(&b)));
+    (Primitive::MOVING[order[0]], scores[order[0]], scores[order[1]])
+}
+
+/// Poses must be at least `needed` and all finite.
+pub(crate) fn check_poses(poses: &[Pose], what: &str, needed: usize) -> Result<(), PerceiveError> {
+    if poses.len() < needed {
+        return Err(PerceiveError::TooFewFrames { what: what.to_owned(), frames: poses.len(), needed });
+    }
+    if let Some(frame) = poses.iter().position(|p| !p.is_finite()) {
+        return Err(PerceiveError::NotFinite { what: what.to_owned(), frame });
+    }
+    Ok(())
+}

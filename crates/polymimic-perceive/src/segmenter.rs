@@ -1,0 +1,138 @@
+//! Cutting a demonstration into segments the imitator can name (thesis §3.2.2).
+//!
+//! Left to right, a segment takes at least `min_frames` frames. If by then the robot has
+//! barely moved it is a stop (and a stop right after a stop extends it). Otherwise it grows
+//! until its motion since its first frame is more than any primitive can produce, and ends on
+//! the frame before; the recogniser then names it, or calls it a gap when the best two models
+//! score within `gap_margin` of each other. Consecutive segments share their boundary frame,
+//! so each starts where the last one ended.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::PerceiveError;
+use crate::motion::MotionLimits;
+use crate::pose::{Pose, TrackedFrame};
+use crate::primitive::{Label, Primitive};
+use crate::recognizer::{Recognizer, best_two, check_poses};
+
+/// The segmenter's thresholds; the defaults are the thesis's.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct SegmenterConfig {
+    pub min_frames: usize,
+    /// A segment that moved less than this…
+    pub stop_distance_mm: f64,
+    /// …and turned less than this by `min_frames` frames is a stop.
+    pub stop_rotation_deg: f64,
+    /// A segment is cut once it moves or turns more than mean + this many standard
+    /// deviations of the largest primitive's motion (Table 3.1).
+    pub limit_sds: f64,
+    /// Best two log-likelihoods closer than this make a gap.
+    pub gap_margin: f64,
+}
+
+impl Default for SegmenterConfig {
+    fn default() -> Self {
+        Self { min_frames: 10, stop_distance_mm: 1.0, stop_rotation_deg: 20.0, limit_sds: 2.0, gap_margin: 2.0 }
+    }
+}
+
+impl SegmenterConfig {
+    fn check(&self) -> Result<(), PerceiveError> {
+        let bad = |name, value: f64, why| Err(PerceiveError::Parameter { name, value, why });
+        if self.min_frames < 2 {
+            return bad("min_frames", self.min_frames as f64, "at least 2");
+        }
+        for (name, value) in [
+            ("stop_distance_mm", self.stop_distance_mm),
+            ("stop_rotation_deg", self.stop_rotation_deg),
+            ("limit_sds", self.limit_sds),
+            ("gap_margin", self.gap_margin),
+        ] {
+            if !(value.is_finite() && value >= 0.0) {
+                return bad(name, value, "a finite number ≥ 0");
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A named stretch of a demonstration.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Segment {
+    pub label: Label,
+    pub first_frame: usize,
+    pub last_frame: usize,
+    pub start: TrackedFrame,
+    pub end: TrackedFrame,
+    /// log-likelihoods of forward, backward, left, right (−inf for a stop, never scored).
+    pub scores: [f64; 4],
+}
+
+/// Segments `frames` with `recognizer`. A tail shorter than `min_frames` after the last
+/// segment is left unsegmented.
+///
+/// # Errors
+/// Fewer than `min_frames` frames, a non-finite frame, or a threshold out of range.
+pub fn segment(
+    frames: &[TrackedFrame],
+    recognizer: &Recognizer,
+    config: &SegmenterConfig,
+) -> Result<Vec<Segment>, PerceiveError> {
+    config.check()?;
+    let poses: Vec<Pose> = frames.iter().map(|f| f.robot).collect();
+    check_poses(&poses, "demonstration", config.min_frames)?;
+    if let Some(frame) = frames.iter().position(|f| !(f.ball_x_mm.is_finite() && f.ball_y_mm.is_finite())) {
+        return Err(PerceiveError::NotFinite { what: "demonstration (ball)".to_owned(), frame });
+    }
+    let limits = MotionLimits::from_stats(recognizer.motion_stats(), config.limit_sds);
+    let mut segments: Vec<Segment> = Vec::new();
+    let mut first = 0;
+    while first + config.min_frames <= frames.len() {
+        let mut last = first + config.min_frames - 1;
+        let origin = &poses[first];
+        let is_stop = poses[last].distance_from_mm(origin) < config.stop_distance_mm
+            && poses[last].rotation_from_rad(origin).to_degrees().abs() < config.stop_rotation_deg;
+        if is_stop {
+            match segments.last_mut() {
+                Some(previous) if previous.label == Label::Primitive(Primitive::Stop) => {
+                    previous.last_frame = last;
+                    previous.end = frames[last];
+                }
+                _ => segments.push(Segment {
+                    label: Label::Primitive(Primitive::Stop),
+                    first_frame: first,
+                    last_frame: last,
+                    start: frames[first],
+                    end: frames[last],
+                    scores: [f64::NEG_INFINITY; 4],
+                }),
+            }
+        } else {
+            while last + 1 < frames.len() && within(&poses[last + 1], origin, &limits) {
+                last += 1;
+            }
+            let scores = recognizer.scores_unchecked(&poses[first..=last]);
+            let (best, best_score, second_score) = best_two(&scores);
+            let label = if best_score - second_score < config.gap_margin || best_score == f64::NEG_INFINITY {
+                Label::Gap
+            } else {
+                Label::Primitive(best)
+            };
+            segments.push(Segment {
+                label,
+                first_frame: first,
+                last_frame: last,
+                start: frames[first],
+                end: frames[last],
+                scores,
+            });
+        }
+        first = last;
+    }
+    Ok(segments)
+}
+
+fn within(pose: &Pose, origin: &Pose, limits: &MotionLimits) -> bool {
+    pose.distance_from_mm(origin) <= limits.max_distance_mm
+        && pose.rotation_from_rad(origin).to_degrees().abs() <= limits.max_rotation_deg
+}

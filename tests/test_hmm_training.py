@@ -28,7 +28,8 @@ def test_trained_rows_are_distributions_and_likelihood_never_falls(seqs, n_state
         np.testing.assert_allclose(table.sum(axis=1), 1.0, atol=1e-12)
     history = model.history_
     assert np.all(np.isfinite(history))
-    assert np.all(np.diff(history) >= -1e-9 * np.abs(history[1:])), history
+    # Non-decreasing up to rounding: relative 1e-9, and 1e-9 nats where the likelihood is ~1.
+    assert np.all(np.diff(history) >= -1e-9 * (np.abs(history[1:]) + 1.0)), history
     if topology == "left-right":
         assert np.all(model.transmat_[~left_right_mask(n_states, 2)] == 0.0)
 

@@ -16,6 +16,7 @@ from polymimic._native import (
     ModelFileError,
     NotFittedError,
     PolymimicError,
+    PrimitiveRecognizer,
     __version__,
 )
 
@@ -26,5 +27,6 @@ __all__ = [
     "ModelFileError",
     "NotFittedError",
     "PolymimicError",
+    "PrimitiveRecognizer",
     "__version__",
 ]

@@ -111,6 +111,40 @@ pub fn floats(value: &Bound<'_, PyAny>, name: &str, rank: usize) -> PyResult<(Ve
     }
 }
 
+/// Columns of tracker frames: from a structured array, the named fields; from a 2-D float
+/// array, its first `columns.len()` columns in that order. Returns rows of `columns.len()`.
+pub fn frame_columns(value: &Bound<'_, PyAny>, what: &str, columns: &[&str]) -> PyResult<Vec<Vec<f64>>> {
+    let array = asarray(value, None)?;
+    let names = array.getattr("dtype")?.getattr("names")?;
+    let width = columns.len();
+    let table = if names.is_none() {
+        let (data, shape) = floats(&array, what, 2)?;
+        if shape[1] < width {
+            return Err(PyValueError::new_err(format!(
+                "{what} has {} columns; expected at least {width} ({})",
+                shape[1],
+                columns.join(", ")
+            )));
+        }
+        data.chunks_exact(shape[1]).map(|row| row[..width].to_vec()).collect()
+    } else {
+        let names: Vec<String> = names.extract()?;
+        let mut fields = Vec::with_capacity(width);
+        for &column in columns {
+            if !names.iter().any(|n| n == column) {
+                return Err(PyValueError::new_err(format!(
+                    "{what} has no field {column:?} (fields: {})",
+                    names.join(", ")
+                )));
+            }
+            fields.push(floats(&array.get_item(column)?, what, 1)?.0);
+        }
+        let rows = fields.first().map_or(0, Vec::len);
+        (0..rows).map(|r| fields.iter().map(|f| f[r]).collect()).collect()
+    };
+    Ok(table)
+}
+
 /// A row-major vector as a 2-D array.
 pub fn matrix<T: numpy::Element>(
     py: Python<'_>,

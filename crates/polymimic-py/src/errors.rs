@@ -4,6 +4,7 @@
 //! from `polymimic.PolymimicError`.
 
 use polymimic_hmm::HmmError;
+use polymimic_perceive::PerceiveError;
 use polymimic_vq::{VqError, VqParamsError};
 use pyo3::PyErr;
 use pyo3::create_exception;
@@ -49,5 +50,14 @@ pub fn vq_error(error: VqError) -> PyErr {
     match error {
         VqError::Params(e) => vq_params_error(e),
         VqError::Corrupt(_) => ModelFileError::new_err(error.to_string()),
+    }
+}
+
+#[allow(clippy::needless_pass_by_value)] // used as `map_err(perceive_error)`
+pub fn perceive_error(error: PerceiveError) -> PyErr {
+    match error {
+        PerceiveError::Hmm(e) => hmm_error(e),
+        PerceiveError::Corrupt(_) => ModelFileError::new_err(error.to_string()),
+        _ => PyValueError::new_err(error.to_string()),
     }
 }

@@ -50,7 +50,7 @@ fn params(
 }
 
 impl PyDiscreteHmm {
-    fn wrap(model: DiscreteHmm) -> Self {
+    pub(crate) fn wrap(model: DiscreteHmm) -> Self {
         Self { model: RwLock::new(model) }
     }
 

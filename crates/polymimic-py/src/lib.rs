@@ -4,6 +4,7 @@
 mod convert;
 mod errors;
 mod hmm;
+mod perceive;
 mod vq;
 
 use pyo3::prelude::*;
@@ -15,6 +16,8 @@ mod _native {
 
     #[pymodule_export]
     use super::hmm::PyDiscreteHmm;
+    #[pymodule_export]
+    use super::perceive::PyPrimitiveRecognizer;
     #[pymodule_export]
     use super::vq::PyCodebook;
 

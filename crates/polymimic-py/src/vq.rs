@@ -16,6 +16,12 @@ pub struct PyCodebook {
     codebook: Codebook,
 }
 
+impl PyCodebook {
+    pub(crate) fn wrap(codebook: Codebook) -> Self {
+        Self { codebook }
+    }
+}
+
 /// Row-major points of an `(n, d)` array.
 fn points(value: &Bound<'_, PyAny>) -> PyResult<(Vec<f64>, usize)> {
     let (data, shape) = floats(value, "points", 2)?;

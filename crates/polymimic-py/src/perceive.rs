@@ -1,0 +1,267 @@
+//! `polymimic.PrimitiveRecognizer`: the HMM bank and the segmenter.
+
+use std::path::PathBuf;
+
+use numpy::{PyArray1, PyArray2};
+use polymimic_perceive::{
+    segment, LabelledSequence, Pose, Primitive, Recognizer, RecognizerConfig, Representation, SegmenterConfig,
+    TrackedFrame,
+};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList, PyTuple, PyType};
+
+use crate::convert::{frame_columns, matrix, non_negative, read_text, write_atomically};
+use crate::errors::{perceive_error, ModelFileError};
+use crate::hmm::PyDiscreteHmm;
+use crate::vq::PyCodebook;
+
+const POSE_COLUMNS: [&str; 3] = ["robot_x_mm", "robot_y_mm", "robot_theta_rad"];
+const FRAME_COLUMNS: [&str; 5] = ["robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm"];
+
+/// Recognises the imitator's primitives in tracker frames and segments demonstrations.
+#[pyclass(name = "PrimitiveRecognizer", module = "polymimic", frozen)]
+pub struct PyPrimitiveRecognizer {
+    recognizer: Recognizer,
+}
+
+fn poses(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Pose>> {
+    Ok(frame_columns(value, what, &POSE_COLUMNS)?
+        .into_iter()
+        .map(|r| Pose { x_mm: r[0], y_mm: r[1], theta_rad: r[2] })
+        .collect())
+}
+
+fn tracked_frames(value: &Bound<'_, PyAny>) -> PyResult<Vec<TrackedFrame>> {
+    Ok(frame_columns(value, "demonstration", &FRAME_COLUMNS)?
+        .into_iter()
+        .map(|r| TrackedFrame { robot: Pose { x_mm: r[0], y_mm: r[1], theta_rad: r[2] }, ball_x_mm: r[3], ball_y_mm: r[4] })
+        .collect())
+}
+
+fn primitive(name: &str) -> PyResult<Primitive> {
+    Primitive::from_name(name).ok_or_else(|| {
+        PyValueError::new_err(format!("unknown primitive {name:?}; expected forward, backward, left, right or stop"))
+    })
+}
+
+fn representations(name: &str) -> PyResult<(Representation, Representation)> {
+    match name {
+        "thesis" => Ok((Representation::Positional, Representation::Rotational)),
+        "egocentric" => Ok((Representation::Egocentric, Representation::Egocentric)),
+        other => Err(PyValueError::new_err(format!("representation must be \"thesis\" or \"egocentric\", got {other:?}"))),
+    }
+}
+
+fn frame_row(frame: &TrackedFrame) -> [f64; 5] {
+    [frame.robot.x_mm, frame.robot.y_mm, frame.robot.theta_rad, frame.ball_x_mm, frame.ball_y_mm]
+}
+
+#[pymethods]
+impl PyPrimitiveRecognizer {
+    /// Trains the codebooks and the four HMMs on self-observation sequences.
+    #[classmethod]
+    #[pyo3(signature = (sequences, labels, *, n_states=5, codebook_size=512, links=2, max_iter=100, tol=1e-4,
+                        representation="thesis", emission_floor=1e-8, seed=0))]
+    #[allow(clippy::too_many_arguments)]
+    fn train(
+        _cls: &Bound<'_, PyType>,
+        py: Python<'_>,
+        sequences: &Bound<'_, PyAny>,
+        labels: Vec<String>,
+        n_states: i64,
+        codebook_size: i64,
+        links: i64,
+        max_iter: i64,
+        tol: f64,
+        representation: &str,
+        emission_floor: f64,
+        seed: i64,
+    ) -> PyResult<Self> {
+        let sequences: Vec<Bound<'_, PyAny>> = sequences.try_iter()?.collect::<PyResult<_>>()?;
+        if sequences.len() != labels.len() {
+            return Err(PyValueError::new_err(format!(
+                "{} sequences but {} labels: give one label per sequence",
+                sequences.len(),
+                labels.len()
+            )));
+        }
+        let training = sequences
+            .iter()
+            .zip(&labels)
+            .enumerate()
+            .map(|(i, (s, label))| {
+                Ok(LabelledSequence { primitive: primitive(label)?, poses: poses(s, &format!("sequence {i}"))? })
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        let (forward_backward, left_right) = representations(representation)?;
+        let config = RecognizerConfig {
+            n_states: non_negative("n_states", n_states)?,
+            links: non_negative("links", links)?,
+            codebook_size: non_negative("codebook_size", codebook_size)?,
+            max_iter: non_negative("max_iter", max_iter)?,
+            tol,
+            emission_floor,
+            forward_backward_representation: forward_backward,
+            left_right_representation: left_right,
+            seed: non_negative("seed", seed)? as u64,
+            ..RecognizerConfig::default()
+        };
+        let recognizer = py.detach(|| Recognizer::train(&training, config)).map_err(perceive_error)?;
+        Ok(Self { recognizer })
+    }
+
+    /// log-likelihoods of forward, backward, left and right for one sequence of frames.
+    fn log_likelihoods<'py>(&self, py: Python<'py>, frames: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let poses = poses(frames, "frames")?;
+        let scores = self.recognizer.log_likelihoods(&poses).map_err(perceive_error)?;
+        Ok(PyArray1::from_vec(py, scores.to_vec()))
+    }
+
+    /// `(k, 4)` log-likelihoods of many sequences, in parallel.
+    fn log_likelihoods_many<'py>(
+        &self,
+        py: Python<'py>,
+        sequences: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let all: Vec<Vec<Pose>> = sequences
+            .try_iter()?
+            .enumerate()
+            .map(|(i, s)| poses(&s?, &format!("sequence {i}")))
+            .collect::<PyResult<_>>()?;
+        let refs: Vec<&[Pose]> = all.iter().map(Vec::as_slice).collect();
+        let scores = py.detach(|| self.recognizer.log_likelihoods_many(&refs)).map_err(perceive_error)?;
+        let count = scores.len();
+        matrix(py, scores.into_iter().flatten().collect(), count, 4)
+    }
+
+    /// The moving primitive whose HMM scores the frames highest.
+    fn classify(&self, frames: &Bound<'_, PyAny>) -> PyResult<&'static str> {
+        let poses = poses(frames, "frames")?;
+        Ok(self.recognizer.classify(&poses).map_err(perceive_error)?.name())
+    }
+
+    /// Segments a demonstration; returns columns: `label` (list of str), `first_frame`,
+    /// `last_frame` (int arrays), `start` and `end` (`(k, 5)` frames) and `scores` (`(k, 4)`).
+    #[pyo3(signature = (frames, *, min_frames=10, stop_distance_mm=1.0, stop_rotation_deg=20.0, limit_sds=2.0,
+                        gap_margin=2.0))]
+    #[allow(clippy::too_many_arguments)]
+    fn segment<'py>(
+        &self,
+        py: Python<'py>,
+        frames: &Bound<'py, PyAny>,
+        min_frames: i64,
+        stop_distance_mm: f64,
+        stop_rotation_deg: f64,
+        limit_sds: f64,
+        gap_margin: f64,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let frames = tracked_frames(frames)?;
+        let config = SegmenterConfig {
+            min_frames: non_negative("min_frames", min_frames)?,
+            stop_distance_mm,
+            stop_rotation_deg,
+            limit_sds,
+            gap_margin,
+        };
+        let segments = py.detach(|| segment(&frames, &self.recognizer, &config)).map_err(perceive_error)?;
+        let k = segments.len();
+        let out = PyDict::new(py);
+        out.set_item("label", PyList::new(py, segments.iter().map(|s| s.label.name()))?)?;
+        out.set_item("first_frame", PyArray1::from_vec(py, segments.iter().map(|s| s.first_frame as i64).collect()))?;
+        out.set_item("last_frame", PyArray1::from_vec(py, segments.iter().map(|s| s.last_frame as i64).collect()))?;
+        out.set_item("start", matrix(py, segments.iter().flat_map(|s| frame_row(&s.start)).collect(), k, 5)?)?;
+        out.set_item("end", matrix(py, segments.iter().flat_map(|s| frame_row(&s.end)).collect(), k, 5)?)?;
+        out.set_item("scores", matrix(py, segments.iter().flat_map(|s| s.scores).collect(), k, 4)?)?;
+        Ok(out)
+    }
+
+    /// Table 3.1 of the training set: per primitive, distance and rotation mean and sd.
+    fn motion_stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let out = PyDict::new(py);
+        for s in self.recognizer.motion_stats() {
+            let row = PyDict::new(py);
+            row.set_item("count", s.count)?;
+            row.set_item("distance_mean_mm", s.distance_mean_mm)?;
+            row.set_item("distance_sd_mm", s.distance_sd_mm)?;
+            row.set_item("rotation_mean_deg", s.rotation_mean_deg)?;
+            row.set_item("rotation_sd_deg", s.rotation_sd_deg)?;
+            out.set_item(s.primitive.name(), row)?;
+        }
+        Ok(out)
+    }
+
+    /// The HMM of a moving primitive.
+    fn hmm(&self, primitive: &str) -> PyResult<PyDiscreteHmm> {
+        let wanted = self::primitive(primitive)?;
+        self.recognizer
+            .models()
+            .iter()
+            .find(|m| m.primitive == wanted)
+            .map(|m| PyDiscreteHmm::wrap(m.hmm.clone()))
+            .ok_or_else(|| PyValueError::new_err("stop has no HMM: it is recognised by the lack of motion"))
+    }
+
+    /// The codebook a primitive's HMM reads through.
+    fn codebook(&self, primitive: &str) -> PyResult<PyCodebook> {
+        let representation = self.recognizer.config().representation_of(self::primitive(primitive)?);
+        let codebook = self.recognizer.codebook(representation).cloned();
+        codebook.map(PyCodebook::wrap).ok_or_else(|| PyValueError::new_err("no codebook for that primitive"))
+    }
+
+    /// The representation each primitive's HMM reads (`positional`, `rotational`, `egocentric`).
+    #[getter]
+    fn representations<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let out = PyDict::new(py);
+        for m in self.recognizer.models() {
+            let name = match m.representation {
+                Representation::Positional => "positional",
+                Representation::Rotational => "rotational",
+                Representation::Egocentric => "egocentric",
+            };
+            out.set_item(m.primitive.name(), name)?;
+        }
+        Ok(out)
+    }
+
+    #[getter]
+    fn n_states(&self) -> usize {
+        self.recognizer.config().n_states
+    }
+
+    #[getter]
+    fn codebook_size(&self) -> usize {
+        self.recognizer.config().codebook_size
+    }
+
+    /// Writes the recogniser to `path` (JSON, versioned).
+    #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the path by value
+    fn save(&self, path: PathBuf) -> PyResult<()> {
+        write_atomically(&path, &self.recognizer.to_json().map_err(perceive_error)?)
+    }
+
+    /// Reads a recogniser written by `save`.
+    #[classmethod]
+    #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the path by value
+    fn load(_cls: &Bound<'_, PyType>, path: PathBuf) -> PyResult<Self> {
+        let text = read_text(&path)?;
+        let recognizer =
+            Recognizer::from_json(&text).map_err(|e| ModelFileError::new_err(format!("{}: {e}", path.display())))?;
+        Ok(Self { recognizer })
+    }
+
+    #[staticmethod]
+    fn _from_json(text: &str) -> PyResult<Self> {
+        Ok(Self { recognizer: Recognizer::from_json(text).map_err(perceive_error)? })
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let text = slf.get().recognizer.to_json().map_err(perceive_error)?;
+        Ok((slf.get_type().getattr("_from_json")?, PyTuple::new(slf.py(), [text])?))
+    }
+
+    fn __repr__(&self) -> String {
+        let c = self.recognizer.config();
+        format!("PrimitiveRecognizer(n_states={}, codebook_size={})", c.n_states, c.codebook_size)
+    }
+}

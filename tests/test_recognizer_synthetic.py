@@ -81,7 +81,7 @@ def test_bad_frames_are_named(recognizer):
         recognizer.segment(np.zeros(12, dtype=FRAME_FIELDS[:3]))
     with pytest.raises(ValueError, match="expected at least 3"):
         recognizer.classify(np.zeros((5, 2)))
-    with pytest.raises(ValueError, match="unknown primitive 'jump'"):
+    with pytest.raises(ValueError, match='unknown primitive "jump"'):
         polymimic.PrimitiveRecognizer.train([np.zeros((5, 3))], ["jump"])
     with pytest.raises(ValueError, match="no training sequences of backward"):
         polymimic.PrimitiveRecognizer.train([np.zeros((5, 3))], ["forward"])

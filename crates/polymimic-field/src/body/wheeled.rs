@@ -1,0 +1,216 @@
+//! Two-wheeled differential-drive bodies (the Lego imitator and the tiny robot).
+//!
+//! Each command is a nominal wheel-speed pair. What the wheels actually deliver varies from one
+//! command to the next: a common traction factor (carpet, battery) scales both wheels and a
+//! differential factor makes one wheel slip or stick against the other. The spread of both
+//! depends on the manoeuvre: reversing drags the rear skid sideways, so backward runs veer a
+//! lot, and spins scrub the skid, so their rate varies far more than a straight run's.
+//! The body's velocity follows the wheels through traction with a first-order lag: the robot's
+//! mass makes translation lag noticeably (residual motion carries into the next primitive),
+//! while its small yaw inertia and the skid's scrubbing make rotation settle quickly.
+
+use serde::{Deserialize, Serialize};
+
+use crate::command::Command;
+use crate::error::FieldParamError;
+use crate::geometry::Pose;
+use crate::math::{Rng, cos, exp, gaussian, sin, wrap_angle_rad};
+
+/// Random traction of one manoeuvre class, drawn on every command onset.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Traction {
+    /// sd of the common factor scaling both wheels (mean 1, clamped at 0: stalled).
+    pub common_sd: f64,
+    /// sd of the differential factor: left wheel × (1 − δ), right wheel × (1 + δ).
+    pub differential_sd: f64,
+}
+
+/// Constants of a two-wheeled body. The Lego values are calibrated against Table 3.1.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct WheeledParams {
+    /// Name (for errors and reports).
+    pub name: &'static str,
+    /// Body length along the heading, mm.
+    pub length_mm: f64,
+    /// Body width, mm.
+    pub width_mm: f64,
+    /// Effective distance between the wheels' contact points, mm.
+    pub wheel_base_mm: f64,
+    /// Nominal (left, right) wheel speeds of the primitives F B L R S, mm/s.
+    pub primitive_wheels_mm_s: [(f64, f64); 5],
+    /// Traction randomness per manoeuvre class (the command's equivalent primitive), F B L R S.
+    pub traction: [Traction; 5],
+    /// Lag of the forward speed behind the wheels, s.
+    pub tau_linear_s: f64,
+    /// Lag of the turn rate behind the wheels, s.
+    pub tau_angular_s: f64,
+    /// A command held this many frames gets fresh traction (the floor under it changes).
+    pub traction_refresh_frames: u32,
+    /// Whether the Expert's wheel-speed language can drive this body.
+    pub accepts_expert_commands: bool,
+}
+
+/// The Lego Mindstorms imitator (about 150 mm across), calibrated so that one-second primitives
+/// executed in random order reproduce Table 3.1 (see `tests/calibration.rs`).
+pub const LEGO: WheeledParams = WheeledParams {
+    name: "lego",
+    length_mm: 140.0,
+    width_mm: 150.0,
+    wheel_base_mm: 175.0,
+    primitive_wheels_mm_s: [(51.55, 47.86), (-61.45, -54.21), (-43.0, 53.2), (51.08, -42.9), (0.0, 0.0)],
+    traction: [
+        Traction { common_sd: 0.29, differential_sd: 0.008 },
+        Traction { common_sd: 0.248, differential_sd: 0.343 },
+        Traction { common_sd: 0.65, differential_sd: 0.069 },
+        Traction { common_sd: 0.294, differential_sd: 0.055 },
+        Traction { common_sd: 0.0, differential_sd: 0.0 },
+    ],
+    tau_linear_s: 0.12,
+    tau_angular_s: 0.02,
+    traction_refresh_frames: 30,
+    accepts_expert_commands: true,
+};
+
+/// The tiny robot (the Citizen Eco-Be): a tenth of the Lego's size, slow, erratic.
+pub const TINY: WheeledParams = WheeledParams {
+    name: "tiny",
+    length_mm: 15.0,
+    width_mm: 15.0,
+    wheel_base_mm: 12.0,
+    primitive_wheels_mm_s: [(25.0, 25.0), (-25.0, -25.0), (-8.0, 8.0), (8.0, -8.0), (0.0, 0.0)],
+    traction: [Traction { common_sd: 0.2, differential_sd: 0.04 }; 5],
+    tau_linear_s: 0.05,
+    tau_angular_s: 0.03,
+    traction_refresh_frames: 30,
+    accepts_expert_commands: false,
+};
+
+/// State of a two-wheeled body.
+#[derive(Debug, Clone)]
+pub(crate) struct WheeledBody {
+    params: WheeledParams,
+    pose: Pose,
+    v_mm_s: f64,
+    omega_rad_s: f64,
+    target_v_mm_s: f64,
+    target_omega_rad_s: f64,
+    command: Option<Command>,
+    frames_held: u32,
+}
+
+impl WheeledBody {
+    pub(crate) fn new(params: WheeledParams, pose: Pose) -> Self {
+        Self {
+            params,
+            pose,
+            v_mm_s: 0.0,
+            omega_rad_s: 0.0,
+            target_v_mm_s: 0.0,
+            target_omega_rad_s: 0.0,
+            command: None,
+            frames_held: 0,
+        }
+    }
+
+    pub(crate) fn params(&self) -> &WheeledParams {
+        &self.params
+    }
+
+    pub(crate) fn pose(&self) -> Pose {
+        self.pose
+    }
+
+    /// Lift the robot and put it down at `pose`, at rest.
+    pub(crate) fn place(&mut self, pose: Pose) {
+        self.pose = pose;
+        self.v_mm_s = 0.0;
+        self.omega_rad_s = 0.0;
+    }
+
+    /// The command for the next frame; fresh traction on onset or after a long hold.
+    pub(crate) fn command(&mut self, command: Command, rng: &mut Rng) -> Result<(), FieldParamError> {
+        let (left, right) = match command {
+            Command::Primitive(p) => self.params.primitive_wheels_mm_s[p.index()],
+            Command::Expert(e) if self.params.accepts_expert_commands => e.wheels_mm_s(),
+            _ => {
+                return Err(FieldParamError::CommandNotSupported { command: command.name(), body: self.params.name });
+            }
+        };
+        let onset = self.command != Some(command) || self.frames_held >= self.params.traction_refresh_frames;
+        if onset {
+            let traction = self.params.traction[command.primitive().index()];
+            // Both draws always happen, so the random stream does not depend on the command.
+            let (z_common, z_diff) = (gaussian(rng), gaussian(rng));
+            let common = (1.0 + traction.common_sd * z_common).max(0.0);
+            let diff = traction.differential_sd * z_diff;
+            let (l, r) = (left * common * (1.0 - diff), right * common * (1.0 + diff));
+            self.target_v_mm_s = 0.5 * (l + r);
+            self.target_omega_rad_s = (r - l) / self.params.wheel_base_mm;
+            self.command = Some(command);
+            self.frames_held = 0;
+        }
+        self.frames_held += 1;
+        Ok(())
+    }
+
+    /// Advance by `dt_s`: velocities relax toward the wheels, the pose integrates at mid-step.
+    pub(crate) fn substep(&mut self, dt_s: f64) {
+        let a_v = 1.0 - exp(-dt_s / self.params.tau_linear_s);
+        let a_w = 1.0 - exp(-dt_s / self.params.tau_angular_s);
+        self.v_mm_s += a_v * (self.target_v_mm_s - self.v_mm_s);
+        self.omega_rad_s += a_w * (self.target_omega_rad_s - self.omega_rad_s);
+        let theta_mid = self.pose.theta_rad + 0.5 * self.omega_rad_s * dt_s;
+        self.pose.x_mm += self.v_mm_s * cos(theta_mid) * dt_s;
+        self.pose.y_mm += self.v_mm_s * sin(theta_mid) * dt_s;
+        self.pose.theta_rad = wrap_angle_rad(self.pose.theta_rad + self.omega_rad_s * dt_s);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::command::{ExpertCommand, HumanoidCommand, Primitive};
+    use crate::math::rng;
+
+    fn run(body: &mut WheeledBody, command: Command, frames: u32, r: &mut Rng) {
+        for _ in 0..frames {
+            body.command(command, r).expect("supported");
+            for _ in 0..8 {
+                body.substep(1.0 / 240.0);
+            }
+        }
+    }
+
+    #[test]
+    fn forward_moves_ahead_and_left_turns_counter_clockwise() {
+        let mut r = rng(1, 0);
+        let mut b = WheeledBody::new(LEGO, Pose::default());
+        run(&mut b, Command::Primitive(Primitive::Forward), 30, &mut r);
+        assert!(b.pose().x_mm > 10.0 && b.pose().y_mm.abs() < 5.0);
+        let theta0 = b.pose().theta_rad;
+        run(&mut b, Command::Primitive(Primitive::Left), 30, &mut r);
+        assert!(wrap_angle_rad(b.pose().theta_rad - theta0) > 0.0);
+    }
+
+    #[test]
+    fn residual_motion_carries_into_stop() {
+        let mut r = rng(2, 0);
+        let mut b = WheeledBody::new(LEGO, Pose::default());
+        run(&mut b, Command::Primitive(Primitive::Forward), 30, &mut r);
+        let x0 = b.pose().x_mm;
+        run(&mut b, Command::Primitive(Primitive::Stop), 30, &mut r);
+        let coast = b.pose().x_mm - x0;
+        assert!(coast > 1.0 && coast < 15.0, "coast {coast}");
+    }
+
+    #[test]
+    fn bodies_reject_foreign_languages() {
+        let mut r = rng(3, 0);
+        let mut tiny = WheeledBody::new(TINY, Pose::default());
+        let e = ExpertCommand::from_index(0).expect("exists");
+        assert!(tiny.command(Command::Expert(e), &mut r).is_err());
+        let mut lego = WheeledBody::new(LEGO, Pose::default());
+        assert!(lego.command(Command::Expert(e), &mut r).is_ok());
+        assert!(lego.command(Command::Humanoid(HumanoidCommand::KickLeft), &mut r).is_err());
+    }
+}

@@ -1,0 +1,493 @@
+//! Commands: the imitator's five primitives, the Expert's wheel-speed language and the
+//! humanoid's language (Table 4.4), each with a stable numeric id and an equivalent primitive.
+
+use serde::{Deserialize, Serialize};
+
+use crate::body::LEGO;
+use crate::error::FieldParamError;
+
+/// The imitator's primitives (§3.1.1). The discriminant is the command id.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[repr(u8)]
+pub enum Primitive {
+    /// Both wheels forward.
+    Forward = 0,
+    /// Both wheels backward.
+    Backward = 1,
+    /// Spin counter-clockwise.
+    Left = 2,
+    /// Spin clockwise.
+    Right = 3,
+    /// Motors off.
+    Stop = 4,
+}
+
+impl Primitive {
+    /// All five, in id order.
+    pub const ALL: [Primitive; 5] =
+        [Primitive::Forward, Primitive::Backward, Primitive::Left, Primitive::Right, Primitive::Stop];
+
+    /// Position in [`Primitive::ALL`] (also the command id).
+    #[must_use]
+    pub const fn index(self) -> usize {
+        self as usize
+    }
+
+    /// One-letter name: F B L R S.
+    #[must_use]
+    pub const fn letter(self) -> char {
+        match self {
+            Primitive::Forward => 'F',
+            Primitive::Backward => 'B',
+            Primitive::Left => 'L',
+            Primitive::Right => 'R',
+            Primitive::Stop => 'S',
+        }
+    }
+
+    /// Full name.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Primitive::Forward => "forward",
+            Primitive::Backward => "backward",
+            Primitive::Left => "left",
+            Primitive::Right => "right",
+            Primitive::Stop => "stop",
+        }
+    }
+
+    /// The primitive at an index of [`Primitive::ALL`].
+    ///
+    /// # Errors
+    /// `UnknownCommand` for an index of 5 or more.
+    pub fn from_index(index: usize) -> Result<Self, FieldParamError> {
+        Primitive::ALL.get(index).copied().ok_or(FieldParamError::UnknownCommand(index.min(u16::MAX as usize) as u16))
+    }
+}
+
+/// The Expert's command language: named wheel-speed pairs (left, right), mm/s, for the Lego body.
+/// The thesis's RC2004 controller used over a hundred; 35 cover straights, spins, nudges, pivots
+/// and arcs at several speeds.
+const EXPERT_COMMANDS: [(&str, f64, f64); 35] = [
+    ("forward_crawl", 25.0, 25.0),
+    ("forward_slow", 45.0, 45.0),
+    ("forward_medium", 70.0, 70.0),
+    ("forward_fast", 100.0, 100.0),
+    ("forward_sprint", 130.0, 130.0),
+    ("backward_slow", -45.0, -45.0),
+    ("backward_medium", -70.0, -70.0),
+    ("backward_fast", -100.0, -100.0),
+    ("spin_left_slow", -20.0, 20.0),
+    ("spin_left_medium", -40.0, 40.0),
+    ("spin_left_fast", -70.0, 70.0),
+    ("spin_right_slow", 20.0, -20.0),
+    ("spin_right_medium", 40.0, -40.0),
+    ("spin_right_fast", 70.0, -70.0),
+    ("nudge_left", -10.0, 10.0),
+    ("nudge_right", 10.0, -10.0),
+    ("arc_left_wide_slow", 48.0, 60.0),
+    ("arc_left_medium_slow", 33.0, 60.0),
+    ("arc_left_tight_slow", 18.0, 60.0),
+    ("arc_left_wide_fast", 80.0, 100.0),
+    ("arc_left_medium_fast", 55.0, 100.0),
+    ("arc_left_tight_fast", 30.0, 100.0),
+    ("arc_right_wide_slow", 60.0, 48.0),
+    ("arc_right_medium_slow", 60.0, 33.0),
+    ("arc_right_tight_slow", 60.0, 18.0),
+    ("arc_right_wide_fast", 100.0, 80.0),
+    ("arc_right_medium_fast", 100.0, 55.0),
+    ("arc_right_tight_fast", 100.0, 30.0),
+    ("back_arc_left", -70.0, -45.0),
+    ("back_arc_right", -45.0, -70.0),
+    ("pivot_forward_left", 0.0, 50.0),
+    ("pivot_forward_right", 50.0, 0.0),
+    ("pivot_back_left", -50.0, 0.0),
+    ("pivot_back_right", 0.0, -50.0),
+    ("brake", 0.0, 0.0),
+];
+
+/// One command of the Expert's language (an index into its table; deserialising checks it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[serde(try_from = "u8", into = "u8")]
+pub struct ExpertCommand(u8);
+
+impl TryFrom<u8> for ExpertCommand {
+    type Error = FieldParamError;
+
+    fn try_from(index: u8) -> Result<Self, Self::Error> {
+        Self::from_index(usize::from(index))
+    }
+}
+
+impl From<ExpertCommand> for u8 {
+    fn from(c: ExpertCommand) -> u8 {
+        c.0
+    }
+}
+
+impl ExpertCommand {
+    /// Number of commands in the language.
+    pub const COUNT: usize = EXPERT_COMMANDS.len();
+
+    /// The command at an index.
+    ///
+    /// # Errors
+    /// `UnknownCommand` past the end of the table.
+    pub fn from_index(index: usize) -> Result<Self, FieldParamError> {
+        if index < Self::COUNT {
+            Ok(Self(index as u8))
+        } else {
+            Err(FieldParamError::UnknownCommand((100 + index).min(u16::MAX as usize) as u16))
+        }
+    }
+
+    /// The command with this name, if any.
+    #[must_use]
+    pub fn by_name(name: &str) -> Option<Self> {
+        EXPERT_COMMANDS.iter().position(|(n, _, _)| *n == name).map(|i| Self(i as u8))
+    }
+
+    /// Every command, in id order.
+    pub fn all() -> impl Iterator<Item = ExpertCommand> {
+        (0..Self::COUNT).map(|i| Self(i as u8))
+    }
+
+    /// Index in the table.
+    #[must_use]
+    pub const fn index(self) -> usize {
+        self.0 as usize
+    }
+
+    /// Name.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        EXPERT_COMMANDS[self.index()].0
+    }
+
+    /// Nominal (left, right) wheel speeds, mm/s.
+    #[must_use]
+    pub fn wheels_mm_s(self) -> (f64, f64) {
+        let (_, l, r) = EXPERT_COMMANDS[self.index()];
+        (l, r)
+    }
+}
+
+/// The humanoid's command language (Table 4.4 plus walking and turning).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+#[repr(u8)]
+pub enum HumanoidCommand {
+    /// Stand still.
+    Wait = 0,
+    /// Get ready to walk (weight shift on the spot).
+    Go,
+    /// Look straight ahead.
+    ScanForward,
+    /// Look at the feet.
+    ScanDown,
+    /// Pan the head left; the torso twists slowly left with it.
+    ScanLeft,
+    /// Pan the head right; the torso twists slowly right with it.
+    ScanRight,
+    /// Ball lost: stand still.
+    Lost,
+    /// Kick with the left foot (leans back while the foot strikes).
+    KickLeft,
+    /// Kick with the right foot.
+    KickRight,
+    /// Side-step to the left.
+    ShuffleLeft,
+    /// Side-step to the right.
+    ShuffleRight,
+    /// Walk straight ahead.
+    WalkForward,
+    /// Walk ahead curving left.
+    WalkForwardLeft,
+    /// Walk ahead curving right.
+    WalkForwardRight,
+    /// Step backward.
+    WalkBackward,
+    /// Turn on the spot, left.
+    TurnLeft,
+    /// Turn on the spot, right.
+    TurnRight,
+}
+
+impl HumanoidCommand {
+    /// Every command, in id order.
+    pub const ALL: [HumanoidCommand; 17] = [
+        HumanoidCommand::Wait,
+        HumanoidCommand::Go,
+        HumanoidCommand::ScanForward,
+        HumanoidCommand::ScanDown,
+        HumanoidCommand::ScanLeft,
+        HumanoidCommand::ScanRight,
+        HumanoidCommand::Lost,
+        HumanoidCommand::KickLeft,
+        HumanoidCommand::KickRight,
+        HumanoidCommand::ShuffleLeft,
+        HumanoidCommand::ShuffleRight,
+        HumanoidCommand::WalkForward,
+        HumanoidCommand::WalkForwardLeft,
+        HumanoidCommand::WalkForwardRight,
+        HumanoidCommand::WalkBackward,
+        HumanoidCommand::TurnLeft,
+        HumanoidCommand::TurnRight,
+    ];
+
+    /// Name as the thesis writes it.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            HumanoidCommand::Wait => "Wait",
+            HumanoidCommand::Go => "Go",
+            HumanoidCommand::ScanForward => "Scan Forward",
+            HumanoidCommand::ScanDown => "Scan Down",
+            HumanoidCommand::ScanLeft => "Scan Left",
+            HumanoidCommand::ScanRight => "Scan Right",
+            HumanoidCommand::Lost => "Lost",
+            HumanoidCommand::KickLeft => "Kick Left",
+            HumanoidCommand::KickRight => "Kick Right",
+            HumanoidCommand::ShuffleLeft => "Shuffle Left",
+            HumanoidCommand::ShuffleRight => "Shuffle Right",
+            HumanoidCommand::WalkForward => "Walk Forward",
+            HumanoidCommand::WalkForwardLeft => "Walk Forward Left",
+            HumanoidCommand::WalkForwardRight => "Walk Forward Right",
+            HumanoidCommand::WalkBackward => "Walk Backward",
+            HumanoidCommand::TurnLeft => "Turn Left",
+            HumanoidCommand::TurnRight => "Turn Right",
+        }
+    }
+
+    /// The visually equivalent imitator primitive (Table 4.4, extended to walking and turning).
+    #[must_use]
+    pub const fn primitive(self) -> Primitive {
+        match self {
+            HumanoidCommand::Wait
+            | HumanoidCommand::Go
+            | HumanoidCommand::ScanForward
+            | HumanoidCommand::ScanDown
+            | HumanoidCommand::Lost => Primitive::Stop,
+            HumanoidCommand::KickLeft | HumanoidCommand::KickRight | HumanoidCommand::WalkBackward => {
+                Primitive::Backward
+            }
+            HumanoidCommand::ScanLeft | HumanoidCommand::ShuffleLeft | HumanoidCommand::TurnLeft => Primitive::Left,
+            HumanoidCommand::ScanRight | HumanoidCommand::ShuffleRight | HumanoidCommand::TurnRight => Primitive::Right,
+            HumanoidCommand::WalkForward | HumanoidCommand::WalkForwardLeft | HumanoidCommand::WalkForwardRight => {
+                Primitive::Forward
+            }
+        }
+    }
+}
+
+/// Which language a command belongs to.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Language {
+    /// The imitator's primitives (also used by Poor and Tiny).
+    Primitive,
+    /// The Expert's wheel-speed language.
+    Expert,
+    /// The humanoid's language.
+    Humanoid,
+}
+
+/// A command sent by a controller for one tracker frame.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+pub enum Command {
+    /// An imitator primitive; each wheeled body maps it to its own wheel speeds.
+    Primitive(Primitive),
+    /// A command of the Expert's language (Lego body only).
+    Expert(ExpertCommand),
+    /// A command of the humanoid's language (humanoid body only).
+    Humanoid(HumanoidCommand),
+}
+
+const EXPERT_ID_BASE: u16 = 100;
+const HUMANOID_ID_BASE: u16 = 200;
+
+impl Command {
+    /// Stable numeric id: primitives 0–4, Expert 100–134, humanoid 200–216.
+    #[must_use]
+    pub fn id(self) -> u16 {
+        match self {
+            Command::Primitive(p) => p as u16,
+            Command::Expert(e) => EXPERT_ID_BASE + u16::from(e.0),
+            Command::Humanoid(h) => HUMANOID_ID_BASE + h as u16,
+        }
+    }
+
+    /// The command with this id.
+    ///
+    /// # Errors
+    /// `UnknownCommand` if no language defines the id.
+    pub fn from_id(id: u16) -> Result<Self, FieldParamError> {
+        let unknown = FieldParamError::UnknownCommand(id);
+        match id {
+            0..=4 => Primitive::from_index(usize::from(id)).map(Command::Primitive),
+            EXPERT_ID_BASE..HUMANOID_ID_BASE => {
+                ExpertCommand::from_index(usize::from(id - 100)).map(Command::Expert).map_err(|_| unknown)
+            }
+            _ => HumanoidCommand::ALL
+                .get(usize::from(id.saturating_sub(HUMANOID_ID_BASE)))
+                .filter(|_| id >= HUMANOID_ID_BASE)
+                .map(|h| Command::Humanoid(*h))
+                .ok_or(unknown),
+        }
+    }
+
+    /// Name (unique across languages).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Command::Primitive(p) => p.name(),
+            Command::Expert(e) => e.name(),
+            Command::Humanoid(h) => h.name(),
+        }
+    }
+
+    /// The language it belongs to.
+    #[must_use]
+    pub const fn language(self) -> Language {
+        match self {
+            Command::Primitive(_) => Language::Primitive,
+            Command::Expert(_) => Language::Expert,
+            Command::Humanoid(_) => Language::Humanoid,
+        }
+    }
+
+    /// The imitator primitive that looks the same from above (for evaluation only, §4.3).
+    #[must_use]
+    pub fn primitive(self) -> Primitive {
+        match self {
+            Command::Primitive(p) => p,
+            Command::Expert(e) => {
+                let (l, r) = e.wheels_mm_s();
+                primitive_of_wheels(l, r)
+            }
+            Command::Humanoid(h) => h.primitive(),
+        }
+    }
+}
+
+impl From<Primitive> for Command {
+    fn from(p: Primitive) -> Self {
+        Command::Primitive(p)
+    }
+}
+
+impl From<HumanoidCommand> for Command {
+    fn from(h: HumanoidCommand) -> Self {
+        Command::Humanoid(h)
+    }
+}
+
+impl From<ExpertCommand> for Command {
+    fn from(e: ExpertCommand) -> Self {
+        Command::Expert(e)
+    }
+}
+
+/// The primitive a wheel-speed pair resembles over one second on the Lego body: stop if it
+/// barely moves, else whichever of distance and rotation is larger relative to the primitives'
+/// own (Table 3.1: about 45 mm and 30° per second).
+fn primitive_of_wheels(left_mm_s: f64, right_mm_s: f64) -> Primitive {
+    let v_mm_s = 0.5 * (left_mm_s + right_mm_s);
+    let omega_deg_s = (right_mm_s - left_mm_s) / LEGO.wheel_base_mm * 180.0 / std::f64::consts::PI;
+    let (lin, rot) = (v_mm_s.abs() / 45.0, omega_deg_s.abs() / 30.0);
+    if lin < 0.1 && rot < 0.1 {
+        Primitive::Stop
+    } else if rot > lin {
+        if omega_deg_s > 0.0 { Primitive::Left } else { Primitive::Right }
+    } else if v_mm_s > 0.0 {
+        Primitive::Forward
+    } else {
+        Primitive::Backward
+    }
+}
+
+/// One row of the exported command table.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct CommandInfo {
+    /// Stable numeric id (what [`crate::Frame::command`] holds).
+    pub id: u16,
+    /// Name.
+    pub name: &'static str,
+    /// Language.
+    pub language: Language,
+    /// Equivalent imitator primitive.
+    pub primitive: Primitive,
+}
+
+/// Every command of every language with its id and equivalent primitive, in id order.
+#[must_use]
+pub fn command_table() -> Vec<CommandInfo> {
+    Primitive::ALL
+        .iter()
+        .map(|p| Command::Primitive(*p))
+        .chain(ExpertCommand::all().map(Command::Expert))
+        .chain(HumanoidCommand::ALL.iter().map(|h| Command::Humanoid(*h)))
+        .map(|c| CommandInfo { id: c.id(), name: c.name(), language: c.language(), primitive: c.primitive() })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids_round_trip_for_every_command() {
+        let table = command_table();
+        assert_eq!(table.len(), 5 + ExpertCommand::COUNT + HumanoidCommand::ALL.len());
+        for row in &table {
+            let c = Command::from_id(row.id).expect("known id");
+            assert_eq!(c.id(), row.id);
+            assert_eq!(c.name(), row.name);
+        }
+        for bad in [5, 99, 100 + ExpertCommand::COUNT as u16, 199, 217, u16::MAX] {
+            assert_eq!(Command::from_id(bad), Err(FieldParamError::UnknownCommand(bad)));
+        }
+    }
+
+    #[test]
+    fn deserialising_an_out_of_range_expert_command_fails_cleanly() {
+        let ok: Command = serde_json::from_str(r#"{"Expert":3}"#).expect("valid index");
+        assert_eq!(ok.id(), 103);
+        assert!(serde_json::from_str::<Command>(r#"{"Expert":200}"#).is_err());
+    }
+
+    #[test]
+    fn names_are_unique() {
+        let table = command_table();
+        let mut names: Vec<&str> = table.iter().map(|r| r.name).collect();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), table.len());
+    }
+
+    #[test]
+    fn expert_language_is_rich_and_maps_to_every_primitive() {
+        const { assert!(ExpertCommand::COUNT >= 30) };
+        let prims: Vec<Primitive> = ExpertCommand::all().map(|e| Command::Expert(e).primitive()).collect();
+        for p in Primitive::ALL {
+            assert!(prims.contains(&p), "no expert command maps to {p:?}");
+        }
+        let spin = ExpertCommand::by_name("spin_left_fast").expect("exists");
+        assert_eq!(Command::Expert(spin).primitive(), Primitive::Left);
+        let arc = ExpertCommand::by_name("arc_right_wide_fast").expect("exists");
+        assert_eq!(Command::Expert(arc).primitive(), Primitive::Forward);
+    }
+
+    #[test]
+    fn humanoid_equivalents_follow_table_4_4() {
+        use HumanoidCommand as H;
+        for h in [H::Wait, H::Go, H::ScanForward, H::ScanDown, H::Lost] {
+            assert_eq!(h.primitive(), Primitive::Stop);
+        }
+        assert_eq!(H::KickLeft.primitive(), Primitive::Backward);
+        assert_eq!(H::KickRight.primitive(), Primitive::Backward);
+        assert_eq!(H::ScanLeft.primitive(), Primitive::Left);
+        assert_eq!(H::ShuffleLeft.primitive(), Primitive::Left);
+        assert_eq!(H::ScanRight.primitive(), Primitive::Right);
+        assert_eq!(H::ShuffleRight.primitive(), Primitive::Right);
+    }
+}

@@ -1,0 +1,101 @@
+//! The self-observation babbler (§3.1.1): one primitive per second chosen uniformly from
+//! F B L R S; near an edge the robot is put back at the centre with a random heading.
+
+use crate::body::BodyKind;
+use crate::command::{Command, Primitive};
+use crate::episode::Observation;
+use crate::geometry::Pose;
+use crate::math::{Rng, TAU, rng, stream, uniform, wrap_angle_rad};
+
+use super::Controller;
+
+/// Random-primitive babbler.
+pub struct Babbler {
+    rng: Rng,
+    current: Primitive,
+    frames_left: u32,
+    margin_mm: f64,
+}
+
+impl Babbler {
+    /// Frames per primitive (one second).
+    pub const PRIMITIVE_FRAMES: u32 = 30;
+
+    /// A babbler for `body`, seeded.
+    #[must_use]
+    pub fn new(body: BodyKind, seed: u64) -> Self {
+        // Room for the body's half-diagonal plus a couple of primitives' travel.
+        let (l, w) = body.footprint_mm();
+        let margin_mm = 0.5 * l.hypot(w) + 1.5 * l.max(w).max(60.0);
+        Self { rng: rng(seed, stream::CONTROLLER), current: Primitive::Stop, frames_left: 0, margin_mm }
+    }
+
+    /// The primitive being executed.
+    #[must_use]
+    pub fn current(&self) -> Primitive {
+        self.current
+    }
+}
+
+impl Controller for Babbler {
+    fn command(&mut self, _observation: &Observation) -> Command {
+        if self.frames_left == 0 {
+            let i = ((uniform(&mut self.rng) * 5.0) as usize).min(4);
+            self.current = Primitive::ALL[i];
+            self.frames_left = Self::PRIMITIVE_FRAMES;
+        }
+        self.frames_left -= 1;
+        Command::Primitive(self.current)
+    }
+
+    fn reposition(&mut self, observation: &Observation) -> Option<Pose> {
+        let near_edge = observation.field.margin_mm(observation.robot.point()) < self.margin_mm;
+        (self.frames_left == 0 && near_edge).then(|| {
+            let heading = wrap_angle_rad(TAU * uniform(&mut self.rng));
+            Pose::new(0.0, 0.0, heading)
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::{FieldGeometry, FieldSize, Point};
+
+    fn obs(robot: Pose) -> Observation {
+        Observation {
+            t_s: 0.0,
+            frame_index: 0,
+            robot,
+            ball: None::<Point>,
+            field: FieldGeometry::of(FieldSize::Large),
+            body: BodyKind::Lego,
+        }
+    }
+
+    #[test]
+    fn holds_each_primitive_for_one_second_and_uses_all_five() {
+        let mut b = Babbler::new(BodyKind::Lego, 1);
+        let o = obs(Pose::default());
+        let mut seen = [0usize; 5];
+        for _ in 0..200 {
+            let first = b.command(&o);
+            for _ in 1..30 {
+                assert_eq!(b.command(&o), first);
+            }
+            seen[first.primitive().index()] += 1;
+        }
+        assert!(seen.iter().all(|&n| n > 20), "{seen:?}");
+    }
+
+    #[test]
+    fn puts_the_robot_back_near_an_edge_between_primitives() {
+        let mut b = Babbler::new(BodyKind::Lego, 2);
+        assert!(b.reposition(&obs(Pose::new(0.0, 0.0, 0.0))).is_none());
+        let edge = obs(Pose::new(480.0, 0.0, 0.0));
+        let placed = b.reposition(&edge).expect("near the edge");
+        assert_eq!(placed.point(), Point::new(0.0, 0.0));
+        b.command(&edge);
+        assert!(b.reposition(&edge).is_none(), "not in the middle of a primitive");
+    }
+}

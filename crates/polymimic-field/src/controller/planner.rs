@@ -1,0 +1,170 @@
+//! Shared geometry of a competition-style attacker: get behind the ball on the ball–goal line
+//! without touching it on the way, then push (or kick) it along that line.
+
+use crate::geometry::{FieldGeometry, Point, Pose};
+use crate::math::{PI, cos, sin, wrap_angle_rad};
+
+/// What the attacker should do next.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) enum Plan {
+    /// Go to this point (a detour round the ball, or the spot behind it).
+    GoTo(Point),
+    /// At the spot behind the ball: turn to face this heading (rad).
+    Face(f64),
+    /// Behind the ball and aligned: push toward this point.
+    Push(Point),
+}
+
+/// Sizes the planner needs, mm.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Sizes {
+    /// Ball radius.
+    pub ball_r: f64,
+    /// Robot centre to its front face.
+    pub front: f64,
+    /// Robot centre to its farthest corner (it sweeps this circle when it spins).
+    pub reach: f64,
+    /// Gap between the front face and the ball at the spot behind it.
+    pub gap: f64,
+    /// Position tolerance at the spot.
+    pub spot_tol: f64,
+    /// Heading tolerance before pushing, rad.
+    pub face_tol_rad: f64,
+}
+
+/// Where to aim: a little inside the target goal's mouth.
+pub(crate) fn aim_point(field: &FieldGeometry) -> Point {
+    Point::new(field.half_length_mm() + field.ball_diameter_mm, 0.0)
+}
+
+/// Unit vector and its left normal for the ball–goal line.
+fn line(ball: Point, aim: Point) -> ((f64, f64), (f64, f64)) {
+    let a = ball.bearing_rad(aim);
+    let g = (cos(a), sin(a));
+    (g, (-g.1, g.0))
+}
+
+/// The spot behind the ball on the ball–goal line, `extra` mm farther back than the gap.
+pub(crate) fn behind_spot(ball: Point, aim: Point, s: &Sizes, extra: f64) -> Point {
+    let (g, _) = line(ball, aim);
+    let back = s.ball_r + s.front + s.gap + extra;
+    Point::new(ball.x_mm - g.0 * back, ball.y_mm - g.1 * back)
+}
+
+/// Is the way from `a` to `b` blocked by a disc of radius `r` at `c`? Only the interior of the
+/// segment counts: ending next to the ball (the spot behind it) is the point.
+fn blocked(a: Point, b: Point, c: Point, r: f64) -> bool {
+    let (dx, dy) = (b.x_mm - a.x_mm, b.y_mm - a.y_mm);
+    let len2 = dx * dx + dy * dy;
+    if len2 <= 0.0 {
+        return false;
+    }
+    let t = ((c.x_mm - a.x_mm) * dx + (c.y_mm - a.y_mm) * dy) / len2;
+    t > 0.0 && t < 1.0 && c.dist_mm(Point::new(a.x_mm + t * dx, a.y_mm + t * dy)) < r
+}
+
+/// Keep a target where the robot can stand without leaving the field.
+fn clamp_to_field(p: Point, field: &FieldGeometry, reach: f64) -> Point {
+    let (mx, my) = ((field.half_length_mm() - reach - 5.0).max(0.0), (field.half_width_mm() - reach - 5.0).max(0.0));
+    Point::new(p.x_mm.clamp(-mx, mx), p.y_mm.clamp(-my, my))
+}
+
+/// Which way round the ball (+1: through the line's left-normal side, counter-clockwise). The robot's own side of the
+/// line; on the line, the side away from the nearer side line; on the centre line, left.
+fn detour_side(lateral: f64, ball: Point, n: (f64, f64), s: &Sizes) -> f64 {
+    if lateral.abs() > 0.3 * s.ball_r {
+        lateral.signum()
+    } else if ball.y_mm.abs() > 0.3 * s.ball_r && n.1.abs() > 1e-6 {
+        -ball.y_mm.signum() * n.1.signum()
+    } else {
+        1.0
+    }
+}
+
+/// The attacker's plan. `pushing` is the previous decision (hysteresis: once pushing, keep
+/// pushing while roughly behind the ball).
+pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, pushing: bool) -> Plan {
+    let aim = aim_point(field);
+    let (g, n) = line(ball, aim);
+    let rel = (robot.x_mm - ball.x_mm, robot.y_mm - ball.y_mm);
+    let along = rel.0 * g.0 + rel.1 * g.1;
+    let lateral = rel.0 * n.0 + rel.1 * n.1;
+    let goal_heading = ball.bearing_rad(aim);
+    let heading_err = wrap_angle_rad(goal_heading - robot.theta_rad);
+    let contact = s.ball_r + s.front;
+    // Behind the ball, on the line, facing the goal: push; looser once already pushing.
+    let k = if pushing { 1.6 } else { 1.0 };
+    let behind = along < -0.5 * contact && along > -(contact + s.gap + 3.0 * s.spot_tol);
+    let on_line = lateral.abs() < k * 0.45 * s.ball_r.max(s.spot_tol);
+    let facing = heading_err.abs() < k * s.face_tol_rad && robot.relative_bearing_rad(ball).abs() < k * s.face_tol_rad;
+    if behind && on_line && facing {
+        return Plan::Push(Point::new(ball.x_mm + g.0 * 2.0 * contact, ball.y_mm + g.1 * 2.0 * contact));
+    }
+    let spot = clamp_to_field(behind_spot(ball, aim, s, 0.0), field, s.reach);
+    if robot.point().dist_mm(spot) < s.spot_tol {
+        return Plan::Face(goal_heading);
+    }
+    // Keep the spinning robot's corners off the ball on the way round.
+    let clearance = s.ball_r + s.reach + 0.25 * s.gap;
+    if !blocked(robot.point(), spot, ball, clearance) {
+        return Plan::GoTo(spot);
+    }
+    let side = detour_side(lateral, ball, n, s);
+    let d = robot.point().dist_mm(ball);
+    let away = robot.point().bearing_rad(ball) + PI;
+    let target = if d <= 1.05 * clearance {
+        // Too close: back off round the ball, a quarter turn ahead on the chosen side.
+        // Counter-clockwise round the ball passes the left-normal side (+1).
+        let a = away + side * 0.6;
+        Point::new(ball.x_mm + 1.4 * clearance * cos(a), ball.y_mm + 1.4 * clearance * sin(a))
+    } else {
+        // Aim just outside the tangent to the clearance circle on the chosen side; as the
+        // robot moves the tangent point slides round the ball until the spot is in view.
+        let r = 1.15 * clearance;
+        let alpha = (r / d).min(1.0).asin();
+        let dir = robot.point().bearing_rad(ball) - side * alpha;
+        let reach = (d * d - r * r).max(0.0).sqrt() + 0.5 * r;
+        Point::new(robot.x_mm + reach * cos(dir), robot.y_mm + reach * sin(dir))
+    };
+    Plan::GoTo(clamp_to_field(target, field, s.reach))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::FieldSize;
+
+    const S: Sizes = Sizes { ball_r: 50.0, front: 70.0, reach: 103.0, gap: 40.0, spot_tol: 25.0, face_tol_rad: 0.25 };
+
+    #[test]
+    fn behind_and_aligned_means_push() {
+        let f = FieldGeometry::of(FieldSize::Large);
+        let ball = Point::new(0.0, 0.0);
+        let robot = Pose::new(-125.0, 0.0, 0.0);
+        assert!(matches!(plan(robot, ball, &f, &S, false), Plan::Push(_)));
+    }
+
+    #[test]
+    fn facing_the_own_goal_means_a_detour_not_a_push() {
+        let f = FieldGeometry::of(FieldSize::Large);
+        let ball = Point::new(-170.0, 0.0);
+        let robot = Pose::new(170.0, 0.0, std::f64::consts::PI);
+        match plan(robot, ball, &f, &S, false) {
+            Plan::GoTo(w) => {
+                assert!(w.y_mm.abs() > 100.0, "{w:?}");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn clear_path_goes_to_the_spot() {
+        let f = FieldGeometry::of(FieldSize::Large);
+        let ball = Point::new(170.0, 0.0);
+        let robot = Pose::new(-170.0, 0.0, 0.0);
+        let spot = behind_spot(ball, aim_point(&f), &S, 0.0);
+        assert_eq!(plan(robot, ball, &f, &S, false), Plan::GoTo(spot));
+        let at_spot = Pose::new(spot.x_mm, spot.y_mm, 1.0);
+        assert!(matches!(plan(at_spot, ball, &f, &S, false), Plan::Face(_)));
+    }
+}

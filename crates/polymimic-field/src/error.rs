@@ -1,0 +1,102 @@
+//! Errors: bad parameters (the caller's fault, checked up front) apart from run-time failures.
+
+use thiserror::Error;
+
+/// A parameter the caller passed is out of range or inconsistent.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FieldParamError {
+    /// A numeric parameter is outside its allowed range (or not finite).
+    #[error("parameter `{name}` = {value} is out of range: {expected}")]
+    OutOfRange {
+        /// Parameter name.
+        name: &'static str,
+        /// The offending value.
+        value: f64,
+        /// What is allowed, in words.
+        expected: &'static str,
+    },
+    /// A command id that no command language defines.
+    #[error("unknown command id {0}")]
+    UnknownCommand(u16),
+    /// A command the body cannot execute (a humanoid kick sent to a wheeled robot, …).
+    #[error("command `{command}` cannot drive the {body} body")]
+    CommandNotSupported {
+        /// Command name.
+        command: &'static str,
+        /// Body name.
+        body: &'static str,
+    },
+    /// A pose or ball position lies outside the field.
+    #[error("{what} at ({x_mm:.1}, {y_mm:.1}) mm is outside the field")]
+    OutsideField {
+        /// What was placed.
+        what: &'static str,
+        /// x, mm.
+        x_mm: f64,
+        /// y, mm.
+        y_mm: f64,
+    },
+    /// A demonstrator name that does not exist.
+    #[error("unknown demonstrator `{0}`")]
+    UnknownDemonstrator(String),
+    /// Malformed JSON for a config.
+    #[error("invalid JSON: {0}")]
+    Json(String),
+}
+
+/// Anything that can go wrong in the field.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum FieldError {
+    /// Invalid input; nothing was simulated.
+    #[error(transparent)]
+    Param(#[from] FieldParamError),
+    /// `Episode::step` was called after the episode ended.
+    #[error("the episode has already ended ({0})")]
+    EpisodeFinished(&'static str),
+    /// Too many demonstrations were invalid (lost tracking) to collect the requested number.
+    #[error("only {valid} of {requested} valid demonstrations after {attempts} attempts")]
+    RetriesExhausted {
+        /// Valid demonstrations collected.
+        valid: usize,
+        /// Valid demonstrations requested.
+        requested: usize,
+        /// Attempts made.
+        attempts: usize,
+    },
+    /// The physics produced a non-finite state (should never happen; reported, not panicked).
+    #[error("the simulation diverged: {0}")]
+    Diverged(&'static str),
+}
+
+/// Check that `value` is finite and within `[lo, hi]`.
+pub(crate) fn check_range(
+    name: &'static str,
+    value: f64,
+    lo: f64,
+    hi: f64,
+    expected: &'static str,
+) -> Result<(), FieldParamError> {
+    if value.is_finite() && value >= lo && value <= hi {
+        Ok(())
+    } else {
+        Err(FieldParamError::OutOfRange { name, value, expected })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn check_range_rejects_nan_and_bounds() {
+        assert!(check_range("a", 0.5, 0.0, 1.0, "[0, 1]").is_ok());
+        assert!(check_range("a", f64::NAN, 0.0, 1.0, "[0, 1]").is_err());
+        assert!(check_range("a", 1.5, 0.0, 1.0, "[0, 1]").is_err());
+    }
+
+    #[test]
+    fn param_errors_convert_into_field_errors() {
+        let e: FieldError = FieldParamError::UnknownCommand(7).into();
+        assert_eq!(e.to_string(), "unknown command id 7");
+    }
+}

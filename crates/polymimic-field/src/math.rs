@@ -1,0 +1,127 @@
+//! Portable maths: transcendental functions from `libm` (bit-identical on every platform, unlike
+//! the system libm behind `f64::sin`), angle wrapping, seed derivation and Gaussian draws.
+
+use rand::{RngExt, SeedableRng};
+use rand_chacha::ChaCha8Rng;
+
+pub(crate) const TAU: f64 = std::f64::consts::TAU;
+pub(crate) const PI: f64 = std::f64::consts::PI;
+
+pub(crate) fn sin(x: f64) -> f64 {
+    libm::sin(x)
+}
+
+pub(crate) fn cos(x: f64) -> f64 {
+    libm::cos(x)
+}
+
+pub(crate) fn atan2(y: f64, x: f64) -> f64 {
+    libm::atan2(y, x)
+}
+
+pub(crate) fn exp(x: f64) -> f64 {
+    libm::exp(x)
+}
+
+pub(crate) fn hypot(x: f64, y: f64) -> f64 {
+    libm::hypot(x, y)
+}
+
+/// Degrees to radians (for constants written in the thesis's degrees).
+pub(crate) const fn deg(x: f64) -> f64 {
+    x * PI / 180.0
+}
+
+/// Wrap an angle into (−π, π].
+#[must_use]
+pub fn wrap_angle_rad(a: f64) -> f64 {
+    if !a.is_finite() {
+        return a;
+    }
+    let mut w = a % TAU;
+    if w <= -PI {
+        w += TAU;
+    } else if w > PI {
+        w -= TAU;
+    }
+    w
+}
+
+/// `splitmix64`: a well-mixed 64-bit hash, used to derive independent seeds from (seed, index).
+pub(crate) fn splitmix64(mut z: u64) -> u64 {
+    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+/// A seed for the `index`-th item of stream `stream` under the user's `seed`; independent of
+/// which thread runs the item, so batches give the same bits on any number of threads.
+#[must_use]
+pub fn derive_seed(seed: u64, stream: u64, index: u64) -> u64 {
+    splitmix64(splitmix64(seed ^ splitmix64(stream)) ^ index)
+}
+
+/// Named random streams, so that (for example) changing the tracker noise leaves the robot's
+/// wheel slip unchanged.
+pub(crate) mod stream {
+    pub const BODY: u64 = 1;
+    pub const TRACKER: u64 = 2;
+    pub const CONTROLLER: u64 = 3;
+    pub const SESSION: u64 = 5;
+    pub const BALL: u64 = 6;
+}
+
+/// The crate's random generator: `ChaCha8`, seeded, identical on every platform.
+pub(crate) type Rng = ChaCha8Rng;
+
+pub(crate) fn rng(seed: u64, stream: u64) -> Rng {
+    ChaCha8Rng::seed_from_u64(derive_seed(seed, stream, 0))
+}
+
+/// Uniform in [0, 1).
+pub(crate) fn uniform(rng: &mut Rng) -> f64 {
+    rng.random::<f64>()
+}
+
+/// Standard normal draw (Box–Muller; one value per call keeps the stream easy to reason about).
+pub(crate) fn gaussian(rng: &mut Rng) -> f64 {
+    // 1 − u lies in (0, 1], so the logarithm is finite.
+    let u1 = 1.0 - uniform(rng);
+    let u2 = uniform(rng);
+    (-2.0 * libm::log(u1)).sqrt() * cos(TAU * u2)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wrap_angle_stays_in_half_open_interval() {
+        for k in -20..=20 {
+            let a = f64::from(k) * 0.7;
+            let w = wrap_angle_rad(a);
+            assert!(w > -PI && w <= PI, "{a} -> {w}");
+            assert!((sin(w) - sin(a)).abs() < 1e-12 && (cos(w) - cos(a)).abs() < 1e-12);
+        }
+        assert!((wrap_angle_rad(-PI) - PI).abs() < 1e-15);
+    }
+
+    #[test]
+    fn derived_seeds_differ_by_index_and_stream() {
+        assert_ne!(derive_seed(1, 1, 0), derive_seed(1, 1, 1));
+        assert_ne!(derive_seed(1, 1, 0), derive_seed(1, 2, 0));
+        assert_eq!(derive_seed(9, 3, 4), derive_seed(9, 3, 4));
+    }
+
+    #[test]
+    fn gaussian_has_unit_moments() {
+        let mut r = rng(7, 0);
+        let n = 200_000;
+        let xs: Vec<f64> = (0..n).map(|_| gaussian(&mut r)).collect();
+        let mean = xs.iter().sum::<f64>() / f64::from(n);
+        let var = xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / f64::from(n);
+        assert!(mean.abs() < 0.01, "{mean}");
+        assert!((var - 1.0).abs() < 0.01, "{var}");
+    }
+}

@@ -1,0 +1,164 @@
+//! Episode set-ups: simulation parameters, the two field configurations (Fig 4.4) and start
+//! states.
+
+use serde::{Deserialize, Serialize};
+
+use crate::body::BodyKind;
+use crate::error::{FieldParamError, check_range};
+use crate::geometry::{FieldGeometry, Point, Pose};
+use crate::physics::BallParams;
+use crate::tracker::TrackerConfig;
+
+/// Simulation parameters shared by every episode.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct FieldConfig {
+    /// Tracker noise.
+    pub tracker: TrackerConfig,
+    /// Physics steps per tracker frame (8 → 240 Hz).
+    pub substeps_per_frame: u32,
+    /// Episode time limit, s (choice: 60).
+    pub time_limit_s: f64,
+    /// Ball material.
+    pub ball: BallParams,
+}
+
+impl Default for FieldConfig {
+    fn default() -> Self {
+        Self {
+            tracker: TrackerConfig::default(),
+            substeps_per_frame: 8,
+            time_limit_s: 60.0,
+            ball: BallParams::default(),
+        }
+    }
+}
+
+impl FieldConfig {
+    /// Validate.
+    ///
+    /// # Errors
+    /// `OutOfRange` for any parameter outside its range.
+    pub fn check(&self) -> Result<(), FieldParamError> {
+        self.tracker.check()?;
+        self.ball.check()?;
+        check_range("substeps_per_frame", f64::from(self.substeps_per_frame), 1.0, 64.0, "1 ≤ substeps ≤ 64")?;
+        check_range("time_limit_s", self.time_limit_s, 1.0 / 30.0, 86_400.0, "1/30 s ≤ limit ≤ 1 day")
+    }
+
+    /// The config as JSON (stored next to datasets so they can be regenerated).
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        // Serialising plain numbers cannot fail.
+        serde_json::to_string(self).unwrap_or_default()
+    }
+
+    /// A config from JSON, validated.
+    ///
+    /// # Errors
+    /// `Json` for malformed input; `OutOfRange` for invalid values.
+    pub fn from_json(json: &str) -> Result<Self, FieldParamError> {
+        let config: Self = serde_json::from_str(json).map_err(|e| FieldParamError::Json(e.to_string()))?;
+        config.check()?;
+        Ok(config)
+    }
+}
+
+/// The two field configurations of Fig 4.4.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum Configuration {
+    /// Robot at 1/3 of the length, ball at 2/3, robot facing the ball and the target goal.
+    One,
+    /// Ball at 1/3, robot at 2/3 facing the ball and, behind it, its own goal.
+    Two,
+}
+
+impl Configuration {
+    /// Both, in order.
+    pub const ALL: [Configuration; 2] = [Configuration::One, Configuration::Two];
+
+    /// 1 or 2.
+    #[must_use]
+    pub const fn number(self) -> u8 {
+        match self {
+            Configuration::One => 1,
+            Configuration::Two => 2,
+        }
+    }
+
+    /// Start pose of the robot and position of the ball on a field.
+    #[must_use]
+    pub fn start(self, field: &FieldGeometry) -> (Pose, Point) {
+        let sixth = field.length_mm / 6.0;
+        match self {
+            Configuration::One => (Pose::new(-sixth, 0.0, 0.0), Point::new(sixth, 0.0)),
+            Configuration::Two => (Pose::new(sixth, 0.0, std::f64::consts::PI), Point::new(-sixth, 0.0)),
+        }
+    }
+}
+
+/// Where an episode starts and when it ends.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct EpisodeSetup {
+    /// The robot.
+    pub body: BodyKind,
+    /// Its start pose.
+    pub robot: Pose,
+    /// The ball's start position (none: the robot is alone, as in self-observation).
+    pub ball: Option<Point>,
+    /// Time limit, s (infinite: never times out).
+    pub time_limit_s: f64,
+}
+
+impl EpisodeSetup {
+    /// A configuration of Fig 4.4 on the body's own field, with the config's time limit.
+    #[must_use]
+    pub fn configuration(body: BodyKind, configuration: Configuration, config: &FieldConfig) -> Self {
+        let field = FieldGeometry::of(body.field_size());
+        let (robot, ball) = configuration.start(&field);
+        Self { body, robot, ball: Some(ball), time_limit_s: config.time_limit_s }
+    }
+
+    /// The robot alone at the centre facing +x, without a time limit (self-observation).
+    #[must_use]
+    pub fn alone(body: BodyKind) -> Self {
+        Self { body, robot: Pose::default(), ball: None, time_limit_s: f64::INFINITY }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geometry::FieldSize;
+
+    #[test]
+    fn configurations_follow_fig_4_4() {
+        let f = FieldGeometry::of(FieldSize::Large);
+        let (r1, b1) = Configuration::One.start(&f);
+        assert!((r1.x_mm + 170.0).abs() < 1e-9 && (b1.x_mm - 170.0).abs() < 1e-9);
+        assert!(r1.relative_bearing_rad(b1).abs() < 1e-12);
+        let (r2, b2) = Configuration::Two.start(&f);
+        assert!(b2.x_mm < 0.0 && r2.x_mm > 0.0);
+        assert!(r2.relative_bearing_rad(b2).abs() < 1e-9);
+        let s = FieldGeometry::of(FieldSize::Small);
+        let (r, _) = Configuration::One.start(&s);
+        assert!((r.x_mm + 560.0 / 6.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn default_config_is_valid_and_bad_values_are_caught() {
+        assert!(FieldConfig::default().check().is_ok());
+        let bad = FieldConfig { substeps_per_frame: 0, ..FieldConfig::default() };
+        assert!(bad.check().is_err());
+        let bad = FieldConfig { time_limit_s: f64::NAN, ..FieldConfig::default() };
+        assert!(bad.check().is_err());
+    }
+
+    #[test]
+    fn config_round_trips_through_json_and_is_checked() {
+        let c = FieldConfig::default();
+        assert_eq!(FieldConfig::from_json(&c.to_json()), Ok(c));
+        assert!(matches!(FieldConfig::from_json("{"), Err(FieldParamError::Json(_))));
+        let bad = c.to_json().replace("\"substeps_per_frame\":8", "\"substeps_per_frame\":0");
+        assert!(matches!(FieldConfig::from_json(&bad), Err(FieldParamError::OutOfRange { .. })));
+    }
+}

@@ -12,6 +12,8 @@ The core (discrete HMMs, LBG codebooks) is written in Rust and exposed here.
 from polymimic._native import (
     Codebook,
     DiscreteHMM,
+    Episode,
+    FieldRunError,
     ImpossibleSequenceError,
     ModelFileError,
     NotFittedError,
@@ -19,14 +21,22 @@ from polymimic._native import (
     PrimitiveRecognizer,
     __version__,
 )
+from polymimic.field import Demonstration, PrimitiveSequence, command_table, record, self_observation
 
 __all__ = [
     "Codebook",
+    "Demonstration",
     "DiscreteHMM",
+    "Episode",
+    "FieldRunError",
     "ImpossibleSequenceError",
     "ModelFileError",
     "NotFittedError",
     "PolymimicError",
     "PrimitiveRecognizer",
+    "PrimitiveSequence",
     "__version__",
+    "command_table",
+    "record",
+    "self_observation",
 ]

@@ -3,6 +3,7 @@
 //! Bad arguments are `ValueError`; failures that depend on the data meeting a model derive
 //! from `polymimic.PolymimicError`.
 
+use polymimic_field::FieldError;
 use polymimic_hmm::HmmError;
 use polymimic_perceive::PerceiveError;
 use polymimic_vq::{VqError, VqParamsError};
@@ -59,5 +60,20 @@ pub fn perceive_error(error: PerceiveError) -> PyErr {
         PerceiveError::Hmm(e) => hmm_error(e),
         PerceiveError::Corrupt(_) => ModelFileError::new_err(error.to_string()),
         _ => PyValueError::new_err(error.to_string()),
+    }
+}
+
+create_exception!(
+    polymimic,
+    FieldRunError,
+    PolymimicError,
+    "A simulation could not run: a finished episode stepped, a command the body cannot execute, too many lost recordings."
+);
+
+#[allow(clippy::needless_pass_by_value)] // used as `map_err(field_error)`
+pub fn field_error(error: FieldError) -> PyErr {
+    match error {
+        FieldError::Param(e) => PyValueError::new_err(e.to_string()),
+        other => FieldRunError::new_err(other.to_string()),
     }
 }

@@ -3,6 +3,7 @@
 
 mod convert;
 mod errors;
+mod field;
 mod hmm;
 mod perceive;
 mod vq;
@@ -14,6 +15,10 @@ mod _native {
     use super::{PyModule, PyModuleMethods, PyResult, errors};
     use pyo3::{Bound, PyTypeInfo};
 
+    #[pymodule_export]
+    use super::field::{
+        PyEpisode, commands, default_field_config, record_demonstrations, record_self_observation, thesis_table_3_1,
+    };
     #[pymodule_export]
     use super::hmm::PyDiscreteHmm;
     #[pymodule_export]
@@ -28,6 +33,8 @@ mod _native {
         m.add("NotFittedError", errors::NotFittedError::type_object(py))?;
         m.add("ImpossibleSequenceError", errors::ImpossibleSequenceError::type_object(py))?;
         m.add("ModelFileError", errors::ModelFileError::type_object(py))?;
+        m.add("FieldRunError", errors::FieldRunError::type_object(py))?;
+        m.add("FRAME_COLUMNS", super::field::FRAME_COLUMNS.to_vec())?;
         m.add("__version__", env!("CARGO_PKG_VERSION"))?;
         Ok(())
     }

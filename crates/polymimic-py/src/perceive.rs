@@ -4,15 +4,15 @@ use std::path::PathBuf;
 
 use numpy::{PyArray1, PyArray2};
 use polymimic_perceive::{
-    segment, LabelledSequence, Pose, Primitive, Recognizer, RecognizerConfig, Representation, SegmenterConfig,
-    TrackedFrame,
+    LabelledSequence, Pose, Primitive, Recognizer, RecognizerConfig, Representation, SegmenterConfig, TrackedFrame,
+    segment,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple, PyType};
 
 use crate::convert::{frame_columns, matrix, non_negative, read_text, write_atomically};
-use crate::errors::{perceive_error, ModelFileError};
+use crate::errors::{ModelFileError, perceive_error};
 use crate::hmm::PyDiscreteHmm;
 use crate::vq::PyCodebook;
 
@@ -35,7 +35,11 @@ fn poses(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Pose>> {
 fn tracked_frames(value: &Bound<'_, PyAny>) -> PyResult<Vec<TrackedFrame>> {
     Ok(frame_columns(value, "demonstration", &FRAME_COLUMNS)?
         .into_iter()
-        .map(|r| TrackedFrame { robot: Pose { x_mm: r[0], y_mm: r[1], theta_rad: r[2] }, ball_x_mm: r[3], ball_y_mm: r[4] })
+        .map(|r| TrackedFrame {
+            robot: Pose { x_mm: r[0], y_mm: r[1], theta_rad: r[2] },
+            ball_x_mm: r[3],
+            ball_y_mm: r[4],
+        })
         .collect())
 }
 
@@ -49,7 +53,9 @@ fn representations(name: &str) -> PyResult<(Representation, Representation)> {
     match name {
         "thesis" => Ok((Representation::Positional, Representation::Rotational)),
         "egocentric" => Ok((Representation::Egocentric, Representation::Egocentric)),
-        other => Err(PyValueError::new_err(format!("representation must be \"thesis\" or \"egocentric\", got {other:?}"))),
+        other => {
+            Err(PyValueError::new_err(format!("representation must be \"thesis\" or \"egocentric\", got {other:?}")))
+        }
     }
 }
 

@@ -1,0 +1,244 @@
+//! The simulated field: recording demonstrations and self-observation, and an episode a
+//! policy steps through.
+
+use numpy::{PyArray1, PyArray2};
+use polymimic_field::{
+    BodyKind, Command, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, Pose, THESIS_TABLE_3_1,
+    command_table, record, self_observation,
+};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+use std::sync::Mutex;
+
+use crate::convert::{matrix, non_negative};
+use crate::errors::field_error;
+
+/// Columns of the frame arrays handed to Python.
+pub const FRAME_COLUMNS: [&str; 7] =
+    ["t_s", "robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm", "command"];
+
+fn frame_row(f: &Frame) -> [f64; 7] {
+    [f.t_s, f.robot_x_mm, f.robot_y_mm, f.robot_theta_rad, f.ball_x_mm, f.ball_y_mm, f64::from(f.command)]
+}
+
+fn frames_array<'py>(py: Python<'py>, frames: &[Frame]) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    matrix(py, frames.iter().flat_map(frame_row).collect(), frames.len(), 7)
+}
+
+fn field_config(json: Option<&str>) -> PyResult<FieldConfig> {
+    let config = match json {
+        None => FieldConfig::default(),
+        Some(text) => FieldConfig::from_json(text).map_err(|e| PyValueError::new_err(format!("field config: {e}")))?,
+    };
+    config.check().map_err(|e| PyValueError::new_err(format!("field config: {e}")))?;
+    Ok(config)
+}
+
+fn configuration(number: i64) -> PyResult<Configuration> {
+    match number {
+        1 => Ok(Configuration::One),
+        2 => Ok(Configuration::Two),
+        other => Err(PyValueError::new_err(format!("configuration must be 1 or 2, got {other}"))),
+    }
+}
+
+fn configuration_number(configuration: Configuration) -> u8 {
+    match configuration {
+        Configuration::One => 1,
+        Configuration::Two => 2,
+    }
+}
+
+fn body(name: &str) -> PyResult<BodyKind> {
+    match name {
+        "lego" => Ok(BodyKind::Lego),
+        "tiny" => Ok(BodyKind::Tiny),
+        "humanoid" => Ok(BodyKind::Humanoid),
+        other => Err(PyValueError::new_err(format!("body must be \"lego\", \"tiny\" or \"humanoid\", got {other:?}"))),
+    }
+}
+
+fn positive(name: &str, value: i64) -> PyResult<usize> {
+    match non_negative(name, value)? {
+        0 => Err(PyValueError::new_err(format!("{name} must be at least 1, got 0"))),
+        n => Ok(n),
+    }
+}
+
+/// Valid demonstrations of one demonstrator from one configuration, run in parallel.
+#[pyfunction]
+#[pyo3(signature = (demonstrator, *, configuration, n, seed=0, config=None))]
+pub fn record_demonstrations<'py>(
+    py: Python<'py>,
+    demonstrator: &str,
+    configuration: i64,
+    n: i64,
+    seed: i64,
+    config: Option<&str>,
+) -> PyResult<Bound<'py, PyList>> {
+    let who = Demonstrator::from_name(demonstrator).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let (configuration, n) = (self::configuration(configuration)?, positive("n", n)?);
+    let (seed, config) = (non_negative("seed", seed)? as u64, field_config(config)?);
+    let demonstrations = py.detach(|| record(who, configuration, n, seed, &config)).map_err(field_error)?;
+    let out = PyList::empty(py);
+    for d in &demonstrations {
+        let item = PyDict::new(py);
+        item.set_item("frames", frames_array(py, &d.frames)?)?;
+        item.set_item("outcome", d.outcome.name())?;
+        item.set_item("demonstrator", d.demonstrator.name())?;
+        item.set_item("configuration", configuration_number(d.configuration))?;
+        item.set_item("seed", d.seed)?;
+        out.append(item)?;
+    }
+    Ok(out)
+}
+
+/// One-second primitives of the imitator alone on the field: `(frames, primitive names)`.
+#[pyfunction]
+#[pyo3(signature = (n_per_primitive, *, seed=0, config=None))]
+pub fn record_self_observation<'py>(
+    py: Python<'py>,
+    n_per_primitive: i64,
+    seed: i64,
+    config: Option<&str>,
+) -> PyResult<(Bound<'py, PyList>, Vec<&'static str>)> {
+    let n = positive("n_per_primitive", n_per_primitive)?;
+    let (seed, config) = (non_negative("seed", seed)? as u64, field_config(config)?);
+    let sequences = py.detach(|| self_observation(n, seed, &config)).map_err(field_error)?;
+    let frames = PyList::empty(py);
+    for s in &sequences {
+        frames.append(frames_array(py, &s.frames)?)?;
+    }
+    Ok((frames, sequences.iter().map(|s| s.primitive.name()).collect()))
+}
+
+/// Every command of every controller with its equivalent imitator primitive.
+#[pyfunction]
+pub fn commands(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
+    let out = PyList::empty(py);
+    for info in command_table() {
+        let row = PyDict::new(py);
+        row.set_item("id", info.id)?;
+        row.set_item("name", info.name)?;
+        row.set_item("language", format!("{:?}", info.language).to_lowercase())?;
+        row.set_item("primitive", info.primitive.name())?;
+        out.append(row)?;
+    }
+    Ok(out)
+}
+
+/// The thesis's Table 3.1 as stored by the field's calibration.
+#[pyfunction]
+pub fn thesis_table_3_1(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+    let out = PyDict::new(py);
+    for (primitive, s) in THESIS_TABLE_3_1 {
+        let row = PyDict::new(py);
+        row.set_item("distance_mean_mm", s.distance_mean_mm)?;
+        row.set_item("distance_sd_mm", s.distance_sd_mm)?;
+        row.set_item("rotation_mean_deg", s.rotation_mean_rad.to_degrees())?;
+        row.set_item("rotation_sd_deg", s.rotation_sd_rad.to_degrees())?;
+        out.set_item(primitive.name(), row)?;
+    }
+    Ok(out)
+}
+
+/// The default field configuration, as JSON.
+#[pyfunction]
+pub fn default_field_config() -> String {
+    FieldConfig::default().to_json()
+}
+
+/// An episode on the field, stepped one tracker frame at a time by a policy.
+#[pyclass(name = "Episode", module = "polymimic", frozen)]
+pub struct PyEpisode {
+    episode: Mutex<Episode>,
+}
+
+impl PyEpisode {
+    fn with<T>(&self, f: impl FnOnce(&mut Episode) -> T) -> T {
+        f(&mut self.episode.lock().unwrap_or_else(std::sync::PoisonError::into_inner))
+    }
+}
+
+#[pymethods]
+impl PyEpisode {
+    /// A new episode: `body` on the field of its size, in `configuration` 1 or 2 (or alone,
+    /// without a ball, when `configuration` is None).
+    #[new]
+    #[pyo3(signature = (body="lego", *, configuration=Some(1), seed=0, config=None),
+           text_signature = "(body='lego', *, configuration=1, seed=0, config=None)")]
+    fn new(body: &str, configuration: Option<i64>, seed: i64, config: Option<&str>) -> PyResult<Self> {
+        let body = self::body(body)?;
+        let config = field_config(config)?;
+        let setup = match configuration {
+            Some(number) => EpisodeSetup::configuration(body, self::configuration(number)?, &config),
+            None => EpisodeSetup::alone(body),
+        };
+        let episode = Episode::new(&setup, &config, non_negative("seed", seed)? as u64).map_err(field_error)?;
+        Ok(Self { episode: Mutex::new(episode) })
+    }
+
+    /// Sends one command for one tracker frame; returns the frame recorded and the outcome
+    /// (None while the episode goes on). `command` is a primitive name or a command id.
+    fn step<'py>(
+        &self,
+        py: Python<'py>,
+        command: &Bound<'py, PyAny>,
+    ) -> PyResult<(Bound<'py, PyArray1<f64>>, Option<&'static str>)> {
+        let command = if let Ok(name) = command.extract::<String>() {
+            polymimic_field::Primitive::ALL
+                .into_iter()
+                .find(|p| p.name() == name)
+                .map(Command::Primitive)
+                .ok_or_else(|| PyValueError::new_err(format!("unknown command {name:?}; expected a primitive name (forward, backward, left, right, stop) or a command id")))?
+        } else {
+            let id: i64 = command
+                .extract()
+                .map_err(|_| PyValueError::new_err("command must be a primitive name or an integer command id"))?;
+            let id = u16::try_from(id).map_err(|_| PyValueError::new_err(format!("unknown command id {id}")))?;
+            Command::from_id(id).map_err(|e| PyValueError::new_err(e.to_string()))?
+        };
+        let result = self.with(|e| e.step(command)).map_err(field_error)?;
+        Ok((PyArray1::from_vec(py, frame_row(&result.frame).to_vec()), result.outcome.map(|o| o.name())))
+    }
+
+    /// Puts the robot at a pose (the experimenter's hand).
+    fn place_robot(&self, x_mm: f64, y_mm: f64, theta_rad: f64) -> PyResult<()> {
+        self.with(|e| e.place_robot(Pose { x_mm, y_mm, theta_rad })).map_err(field_error)
+    }
+
+    /// Every frame so far, `(k, 7)`.
+    #[getter]
+    fn frames<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let frames = self.with(|e| e.frames().to_vec());
+        frames_array(py, &frames)
+    }
+
+    /// What the robot's controller sees now: time, robot pose, ball (None if not seen).
+    fn observation<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let seen = self.with(|e| e.observation());
+        let out = PyDict::new(py);
+        out.set_item("t_s", seen.t_s)?;
+        out.set_item("robot", (seen.robot.x_mm, seen.robot.y_mm, seen.robot.theta_rad))?;
+        out.set_item("ball", seen.ball.map(|b| (b.x_mm, b.y_mm)))?;
+        out.set_item("field", (seen.field.length_mm, seen.field.width_mm))?;
+        Ok(out)
+    }
+
+    #[getter]
+    fn outcome(&self) -> Option<&'static str> {
+        self.with(|e| e.outcome().map(|o| o.name()))
+    }
+
+    #[getter]
+    fn finished(&self) -> bool {
+        self.with(|e| e.is_finished())
+    }
+
+    /// False once tracking was lost.
+    #[getter]
+    fn valid(&self) -> bool {
+        self.with(|e| e.is_valid())
+    }
+}

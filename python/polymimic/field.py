@@ -1,0 +1,126 @@
+"""The simulated field: demonstrations, self-observation and the commands of every controller.
+
+Frames are numpy structured arrays with one named column per tracker value
+(:data:`FRAME_DTYPE`), so ``frames["ball_x_mm"]`` reads a column and
+``pandas.DataFrame(frames)`` makes a table.
+
+>>> demos = record("expert", configuration=1, n=2, seed=7)
+>>> demos[0].frames.dtype.names[:3]
+('t_s', 'robot_x_mm', 'robot_y_mm')
+>>> demos[0].outcome in {"goal", "own_goal", "ball_out", "robot_out", "time_up"}
+True
+>>> sequences = self_observation(3, seed=1)
+>>> len(sequences), sequences[0].frames.shape
+(15, (30,))
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from typing import Any
+
+import numpy as np
+
+from polymimic import _native
+
+FRAME_DTYPE = np.dtype([
+    ("t_s", "f8"),
+    ("robot_x_mm", "f8"),
+    ("robot_y_mm", "f8"),
+    ("robot_theta_rad", "f8"),
+    ("ball_x_mm", "f8"),
+    ("ball_y_mm", "f8"),
+    ("command", "u2"),
+])
+"""Tracker frames: time, robot pose, ball position (NaN when none), and the id of the command
+being sent (for evaluation only; see :func:`command_table`)."""
+
+DEMONSTRATORS = ("expert", "poor", "tiny", "humanoid")
+PRIMITIVES = ("forward", "backward", "left", "right", "stop")
+OUTCOMES = ("goal", "own_goal", "ball_out", "robot_out", "time_up")
+
+assert tuple(_native.FRAME_COLUMNS) == FRAME_DTYPE.names
+
+
+def as_frames(array: np.ndarray) -> np.ndarray:
+    """A ``(k, 7)`` float array in :data:`FRAME_DTYPE` column order, as structured frames."""
+    frames = np.empty(len(array), dtype=FRAME_DTYPE)
+    for i, name in enumerate(FRAME_DTYPE.names):
+        frames[name] = array[:, i]
+    return frames
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Demonstration:
+    """One recorded attempt at a penalty kick."""
+
+    frames: np.ndarray
+    outcome: str
+    demonstrator: str
+    configuration: int
+    seed: int
+
+    def __repr__(self) -> str:
+        return (f"Demonstration({self.demonstrator}, configuration={self.configuration}, "
+                f"{len(self.frames)} frames, {self.outcome}, seed={self.seed})")
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class PrimitiveSequence:
+    """One second of the imitator executing one primitive, as the tracker saw it."""
+
+    primitive: str
+    frames: np.ndarray
+
+
+def _field_config(config: dict[str, Any] | str | None) -> str | None:
+    if config is None or isinstance(config, str):
+        return config
+    import json
+
+    return json.dumps(config)
+
+
+def record(demonstrator: str, *, configuration: int, n: int, seed: int = 0,
+           config: dict[str, Any] | str | None = None) -> list[Demonstration]:
+    """``n`` valid demonstrations of ``demonstrator`` from field ``configuration`` (1 or 2).
+
+    Episodes run in parallel in Rust with the GIL released; a demonstration whose tracking was
+    lost is discarded and replaced, deterministically. ``config`` overrides the field
+    configuration (see :func:`default_config`).
+    """
+    if demonstrator not in DEMONSTRATORS:
+        raise ValueError(f"unknown demonstrator {demonstrator!r}; expected one of {', '.join(DEMONSTRATORS)}")
+    raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n, seed=seed,
+                                        config=_field_config(config))
+    return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=d["demonstrator"],
+                          configuration=d["configuration"], seed=d["seed"]) for d in raw]
+
+
+def self_observation(n_per_primitive: int, *, seed: int = 0,
+                     config: dict[str, Any] | str | None = None) -> list[PrimitiveSequence]:
+    """The imitator alone on the field executing random one-second primitives: exactly
+    ``n_per_primitive`` valid sequences of each of forward, backward, left, right and stop."""
+    frames, primitives = _native.record_self_observation(n_per_primitive, seed=seed, config=_field_config(config))
+    return [PrimitiveSequence(primitive=p, frames=as_frames(f)) for f, p in zip(frames, primitives)]
+
+
+def command_table() -> list[dict[str, Any]]:
+    """Every command of every controller (id, name, language) with its equivalent primitive."""
+    return list(_native.commands())
+
+
+def command_primitives() -> np.ndarray:
+    """A lookup array: ``command_primitives()[frames["command"]]`` names each frame's primitive."""
+    table = command_table()
+    lookup = np.full(max(row["id"] for row in table) + 1, "", dtype=object)
+    for row in table:
+        lookup[row["id"]] = row["primitive"]
+    return lookup
+
+
+def default_config() -> dict[str, Any]:
+    """The field's configuration (tracker noise, physics substeps, time limit, ball)."""
+    import json
+
+    return json.loads(_native.default_field_config())

@@ -149,6 +149,24 @@ pub fn default_field_config() -> String {
     FieldConfig::default().to_json()
 }
 
+/// A primitive name or a command id (see `commands()`).
+fn parse_command(command: &Bound<'_, PyAny>) -> PyResult<Command> {
+    if let Ok(name) = command.extract::<String>() {
+        return polymimic_field::Primitive::ALL.into_iter().find(|p| p.name() == name).map(Command::Primitive).ok_or_else(
+            || {
+                PyValueError::new_err(format!(
+                    "unknown command {name:?}; expected a primitive name (forward, backward, left, right, stop) or a command id"
+                ))
+            },
+        );
+    }
+    let id: i64 = command
+        .extract()
+        .map_err(|_| PyValueError::new_err("command must be a primitive name or an integer command id"))?;
+    let id = u16::try_from(id).map_err(|_| PyValueError::new_err(format!("unknown command id {id}")))?;
+    Command::from_id(id).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
 /// An episode on the field, stepped one tracker frame at a time by a policy.
 #[pyclass(name = "Episode", module = "polymimic", frozen)]
 pub struct PyEpisode {
@@ -200,7 +218,36 @@ impl PyEpisode {
             Command::from_id(id).map_err(|e| PyValueError::new_err(e.to_string()))?
         };
         let result = self.with(|e| e.step(command)).map_err(field_error)?;
-        Ok((PyArray1::from_vec(py, frame_row(&result.frame).to_vec()), result.outcome.map(|o| o.name())))
+        Ok((
+            PyArray1::from_vec(py, frame_row(&result.frame).to_vec()),
+            result.outcome.map(polymimic_field::Outcome::name),
+        ))
+    }
+
+    /// Sends a whole list of commands (one per frame) in Rust with the GIL released, stopping
+    /// early if the episode ends; returns the frames recorded and the outcome.
+    #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the list by value
+    fn run<'py>(
+        &self,
+        py: Python<'py>,
+        commands: Vec<Bound<'py, PyAny>>,
+    ) -> PyResult<(Bound<'py, PyArray2<f64>>, Option<&'static str>)> {
+        let commands = commands.iter().map(parse_command).collect::<PyResult<Vec<_>>>()?;
+        let (frames, outcome) = py
+            .detach(|| {
+                self.with(|e| {
+                    let first = e.frames().len();
+                    for &command in &commands {
+                        if e.is_finished() {
+                            break;
+                        }
+                        e.step(command)?;
+                    }
+                    Ok((e.frames()[first..].to_vec(), e.outcome()))
+                })
+            })
+            .map_err(field_error)?;
+        Ok((frames_array(py, &frames)?, outcome.map(polymimic_field::Outcome::name)))
     }
 
     /// Puts the robot at a pose (the experimenter's hand).
@@ -228,7 +275,7 @@ impl PyEpisode {
 
     #[getter]
     fn outcome(&self) -> Option<&'static str> {
-        self.with(|e| e.outcome().map(|o| o.name()))
+        self.with(|e| e.outcome().map(polymimic_field::Outcome::name))
     }
 
     #[getter]

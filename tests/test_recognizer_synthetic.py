@@ -97,3 +97,13 @@ def test_save_load_and_pickle(tmp_path, recognizer, observed):
     polymimic.Codebook(np.eye(3)).save(tmp_path / "c.json")
     with pytest.raises(polymimic.ModelFileError, match="expected format"):
         polymimic.PrimitiveRecognizer.load(tmp_path / "c.json")
+
+
+def test_reads_fields_of_structured_arrays_with_odd_strides(recognizer):
+    # A uint16 column makes the record 50 bytes long: no float field is 8-byte aligned.
+    odd = np.dtype(FRAME_FIELDS[:3] + [("command", "u2")])
+    rng = np.random.default_rng(1)
+    poses = unicycle("forward", 30, rng)
+    frames = np.zeros(30, dtype=odd)
+    frames["robot_x_mm"], frames["robot_y_mm"], frames["robot_theta_rad"] = poses.T
+    np.testing.assert_array_equal(recognizer.log_likelihoods(frames), recognizer.log_likelihoods(poses))

@@ -19,7 +19,9 @@ fn asarray<'py>(value: &Bound<'py, PyAny>, dtype: Option<&str>) -> PyResult<Boun
     let numpy = value.py().import("numpy")?;
     match dtype {
         None => numpy.call_method1("asarray", (value,)),
-        Some(dtype) => numpy.call_method1("asarray", (value, dtype)),
+        // Contiguous, so that strided views (a field of a structured array, whose stride is not
+        // a multiple of 8 bytes) are copied into plain memory before Rust reads them.
+        Some(dtype) => numpy.call_method1("ascontiguousarray", (value, dtype)),
     }
 }
 

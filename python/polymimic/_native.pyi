@@ -133,7 +133,7 @@ class PrimitiveRecognizer:
         sequences: Iterable[npt.ArrayLike],
         labels: list[str],
         *,
-        n_states: int = 5,
+        n_states: int = 1,
         codebook_size: int = 512,
         links: int = 2,
         max_iter: int = 100,

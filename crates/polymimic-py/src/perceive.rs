@@ -67,7 +67,7 @@ fn frame_row(frame: &TrackedFrame) -> [f64; 5] {
 impl PyPrimitiveRecognizer {
     /// Trains the codebooks and the four HMMs on self-observation sequences.
     #[classmethod]
-    #[pyo3(signature = (sequences, labels, *, n_states=5, codebook_size=512, links=2, max_iter=100, tol=1e-4,
+    #[pyo3(signature = (sequences, labels, *, n_states=1, codebook_size=512, links=2, max_iter=100, tol=1e-4,
                         representation="thesis", emission_floor=1e-8, seed=0))]
     #[allow(clippy::too_many_arguments, clippy::needless_pass_by_value)] // pyo3 extracts by value
     fn train(

@@ -19,7 +19,9 @@ use crate::math::{Rng, cos, exp, gaussian, sin, wrap_angle_rad};
 /// Random traction of one manoeuvre class, drawn on every command onset.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Traction {
-    /// sd of the common factor scaling both wheels (mean 1, clamped at 0: stalled).
+    /// sd of the common factor scaling both wheels. The factor is log-normal with mean 1:
+    /// traction multiplies, so it is never negative, and a wheel rarely stalls outright while
+    /// now and then it grips far better than usual.
     pub common_sd: f64,
     /// sd of the differential factor: left wheel × (1 − δ), right wheel × (1 + δ).
     pub differential_sd: f64,
@@ -61,7 +63,7 @@ pub const LEGO: WheeledParams = WheeledParams {
     traction: [
         Traction { common_sd: 0.29, differential_sd: 0.008 },
         Traction { common_sd: 0.248, differential_sd: 0.343 },
-        Traction { common_sd: 0.65, differential_sd: 0.069 },
+        Traction { common_sd: 0.62, differential_sd: 0.069 },
         Traction { common_sd: 0.294, differential_sd: 0.055 },
         Traction { common_sd: 0.0, differential_sd: 0.0 },
     ],
@@ -141,7 +143,7 @@ impl WheeledBody {
             let traction = self.params.traction[command.primitive().index()];
             // Both draws always happen, so the random stream does not depend on the command.
             let (z_common, z_diff) = (gaussian(rng), gaussian(rng));
-            let common = (1.0 + traction.common_sd * z_common).max(0.0);
+            let common = log_normal_factor(traction.common_sd, z_common);
             let diff = traction.differential_sd * z_diff;
             let (l, r) = (left * common * (1.0 - diff), right * common * (1.0 + diff));
             self.target_v_mm_s = 0.5 * (l + r);
@@ -164,6 +166,12 @@ impl WheeledBody {
         self.pose.y_mm += self.v_mm_s * sin(theta_mid) * dt_s;
         self.pose.theta_rad = wrap_angle_rad(self.pose.theta_rad + self.omega_rad_s * dt_s);
     }
+}
+
+/// A log-normal factor with mean 1 and standard deviation `sd`, from a standard normal `z`.
+fn log_normal_factor(sd: f64, z: f64) -> f64 {
+    let sigma2 = libm::log(1.0 + sd * sd);
+    exp(sigma2.sqrt() * z - 0.5 * sigma2)
 }
 
 #[cfg(test)]

@@ -1,0 +1,150 @@
+"""The thesis's recognition figures, re-measured on the simulated field (thesis §4.2, §4.3).
+
+Each function takes plain data (self-observation sequences, demonstrations, a trained
+recogniser) and returns plain data: dictionaries keyed by primitive or demonstrator, ready for
+a report.
+
+>>> import polymimic
+>>> train = polymimic.self_observation(60, seed=1)
+>>> test = polymimic.self_observation(30, seed=2)
+>>> recognizer = train_recognizer(train, codebook_size=64)
+>>> sorted(accuracy_table(recognizer, test))
+['backward', 'forward', 'left', 'right']
+"""
+
+from __future__ import annotations
+
+import collections
+import time
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+from polymimic._native import PrimitiveRecognizer, thesis_table_3_1
+from polymimic.field import Demonstration, PrimitiveSequence, command_primitives
+
+MOVING = ("forward", "backward", "left", "right")
+
+THESIS_ACCURACY = {"forward": 0.9800, "backward": 0.9869, "left": 0.9684, "right": 0.9124}
+"""Table 4.3 of the thesis: held-out accuracy of each primitive's HMM."""
+
+THESIS_SEGMENTS = {
+    "tiny": {"command_match": 0.314},
+    "expert": {"command_match": 0.355},
+    "humanoid": {"command_match": 0.116},
+    "poor": {"command_match": 0.501},
+    "average": {"command_match": 0.362},
+}
+"""Table 4.5 of the thesis: share of classifiable segments whose label matched the commands."""
+
+CLASSIFIABLE_SHARE = 0.75
+"""A segment is classifiable when this share of its frames carry one equivalent primitive."""
+
+
+def train_recognizer(sequences: Sequence[PrimitiveSequence], *, n_states: int = 1, codebook_size: int = 512,
+                     representation: str = "thesis", seed: int = 0) -> PrimitiveRecognizer:
+    """A :class:`~polymimic.PrimitiveRecognizer` trained on self-observation sequences."""
+    return PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences],
+                                     n_states=n_states, codebook_size=codebook_size,
+                                     representation=representation, seed=seed)
+
+
+def primitive_table(recognizer: PrimitiveRecognizer) -> dict[str, dict[str, float]]:
+    """Table 3.1 as measured on the recogniser's training set, with the thesis's beside it.
+
+    Rows are primitives; columns ``distance_mean_mm``, ``distance_sd_mm``,
+    ``rotation_mean_deg``, ``rotation_sd_deg`` and the same prefixed ``thesis_``.
+    """
+    ours, thesis = recognizer.motion_stats(), thesis_table_3_1()
+    table = {}
+    for primitive, row in ours.items():
+        table[primitive] = dict(row)
+        for key, value in thesis.get(primitive, {}).items():
+            table[primitive][f"thesis_{key}"] = value
+    return table
+
+
+def _scores(recognizer: PrimitiveRecognizer, test: Sequence[PrimitiveSequence]) -> tuple[np.ndarray, np.ndarray]:
+    moving = [s for s in test if s.primitive in MOVING]
+    if not moving:
+        raise ValueError("the test set holds no moving primitive (forward, backward, left, right)")
+    truth = np.array([s.primitive for s in moving])
+    return recognizer.log_likelihoods_many([s.frames for s in moving]), truth
+
+
+def log_likelihood_table(recognizer: PrimitiveRecognizer,
+                         test: Sequence[PrimitiveSequence]) -> dict[str, dict[str, float]]:
+    """Fig 4.5: mean log-likelihood of each HMM (outer key) on each primitive's test set
+    (inner key). Sequences a model cannot have produced (−inf) are left out of its mean."""
+    scores, truth = _scores(recognizer, test)
+    table: dict[str, dict[str, float]] = {}
+    for column, model in enumerate(MOVING):
+        table[model] = {}
+        for primitive in MOVING:
+            values = scores[truth == primitive, column]
+            finite = values[np.isfinite(values)]
+            table[model][primitive] = float(finite.mean()) if finite.size else float("-inf")
+    return table
+
+
+def confusion_matrix(recognizer: PrimitiveRecognizer, test: Sequence[PrimitiveSequence]) -> np.ndarray:
+    """Counts of test sequences of each primitive (row) named as each primitive (column)."""
+    scores, truth = _scores(recognizer, test)
+    named = scores.argmax(axis=1)
+    matrix = np.zeros((len(MOVING), len(MOVING)), dtype=int)
+    for row, primitive in enumerate(MOVING):
+        matrix[row] = np.bincount(named[truth == primitive], minlength=len(MOVING))
+    return matrix
+
+
+def accuracy_table(recognizer: PrimitiveRecognizer, test: Sequence[PrimitiveSequence]) -> dict[str, float]:
+    """Table 4.3: the share of each moving primitive's held-out sequences named correctly."""
+    matrix = confusion_matrix(recognizer, test)
+    totals = matrix.sum(axis=1)
+    return {p: float(matrix[i, i] / totals[i]) if totals[i] else float("nan") for i, p in enumerate(MOVING)}
+
+
+def state_sweep(train: Sequence[PrimitiveSequence], test: Sequence[PrimitiveSequence], *,
+                states: Sequence[int] = (1, 5, 10, 15, 20), codebook_size: int = 512,
+                seed: int = 0) -> list[dict[str, Any]]:
+    """§3.1.4's sweep: for each number of states, the accuracy per primitive, the training time
+    (s, codebooks included) and the time to score the test set (s)."""
+    rows = []
+    for n_states in states:
+        started = time.perf_counter()
+        recognizer = train_recognizer(train, n_states=n_states, codebook_size=codebook_size, seed=seed)
+        trained = time.perf_counter()
+        accuracy = accuracy_table(recognizer, test)
+        rows.append({"n_states": n_states, "accuracy": accuracy, "train_s": trained - started,
+                     "score_s": time.perf_counter() - trained})
+    return rows
+
+
+def segment_table(recognizer: PrimitiveRecognizer, demonstrations: Sequence[Demonstration],
+                  **segmenter: Any) -> dict[str, dict[str, float]]:
+    """Table 4.5: per demonstrator, ``command_match`` (share of classifiable segments whose
+    label is the equivalent primitive of the commands sent) and ``gaps`` (share of all
+    segments that are gaps), with the counts behind them."""
+    primitive_of = command_primitives()
+    tally: dict[str, collections.Counter] = collections.defaultdict(collections.Counter)
+    for demo in demonstrations:
+        segments = recognizer.segment(demo.frames, **segmenter)
+        sent = primitive_of[demo.frames["command"]]
+        counts = tally[demo.demonstrator]
+        for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
+            counts["segments"] += 1
+            counts["gaps"] += label == "gap"
+            primitive, frames = collections.Counter(sent[first:last + 1]).most_common(1)[0]
+            if frames >= CLASSIFIABLE_SHARE * (last - first + 1):
+                counts["classifiable"] += 1
+                counts["matched"] += label == primitive
+    return {
+        who: {
+            "command_match": c["matched"] / c["classifiable"] if c["classifiable"] else float("nan"),
+            "gaps": c["gaps"] / c["segments"] if c["segments"] else float("nan"),
+            "segments": c["segments"],
+            "classifiable": c["classifiable"],
+        }
+        for who, c in tally.items()
+    }

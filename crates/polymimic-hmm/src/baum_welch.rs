@@ -4,9 +4,9 @@
 use rayon::prelude::*;
 
 use crate::error::HmmError;
-use crate::forward_backward::{Counts as LatticeCounts, Lattice, Scratch, WithLattice, with_lattice};
+use crate::forward_backward::{Counts as LatticeCounts, Lattice, Scratch, WithLattice, symbol_table, with_lattice};
 use crate::probabilities::Probabilities;
-use crate::transitions::Transitions;
+use crate::transitions::{Transitions, add_rows};
 
 /// Sequences per parallel work item. Fixed, so sums are added in the same order whatever
 /// the number of threads, and results are bit-identical.
@@ -26,7 +26,7 @@ pub(crate) struct Counts {
 /// The E-step over all sequences. Fails on the first sequence (in order) that is
 /// impossible under the model.
 pub(crate) fn expected_counts(probs: &Probabilities, sequences: &[&[u32]]) -> Result<Counts, HmmError> {
-    with_lattice(probs, EStep { probs, sequences })
+    with_lattice(&probs.startprob, &probs.transmat, EStep { probs, sequences })
 }
 
 struct EStep<'a> {
@@ -38,32 +38,48 @@ impl WithLattice for EStep<'_> {
     type Output = Result<Counts, HmmError>;
 
     fn run<const W: usize, T: Transitions<W>>(self, lattice: &Lattice<W, T>) -> Self::Output {
-        let n = self.probs.n_states;
-        let chunks: Vec<Result<LatticeCounts<W, T>, HmmError>> = self
+        let (n, m) = (self.probs.n_states, self.probs.n_symbols);
+        let table = symbol_table::<W>(self.probs);
+        let chunks: Vec<Result<(LatticeCounts<W, T>, Vec<[f64; W]>), HmmError>> = self
             .sequences
             .par_chunks(SEQUENCES_PER_CHUNK)
             .enumerate()
             .map(|(chunk_index, chunk)| {
                 let mut counts = LatticeCounts::zeros(lattice);
+                // `emitted[k][i]`: Σ γ_t(i) over the t with O_t = k.
+                let mut emitted = vec![[0.0; W]; m];
                 let mut scratch = Scratch::default();
                 for (offset, seq) in chunk.iter().enumerate() {
-                    lattice.add_counts(seq, &mut scratch, &mut counts).map_err(|position| {
-                        HmmError::ImpossibleSequence { index: chunk_index * SEQUENCES_PER_CHUNK + offset, position }
-                    })?;
+                    let emission = |t: usize| &table[seq[t] as usize];
+                    let on_gamma = |t: usize, gamma: &[f64; W]| {
+                        let row = &mut emitted[seq[t] as usize];
+                        for i in 0..W {
+                            row[i] += gamma[i];
+                        }
+                    };
+                    lattice.add_counts(seq.len(), emission, &mut scratch, &mut counts, on_gamma).map_err(
+                        |position| HmmError::ImpossibleSequence {
+                            index: chunk_index * SEQUENCES_PER_CHUNK + offset,
+                            position,
+                        },
+                    )?;
                 }
-                Ok(counts)
+                Ok((counts, emitted))
             })
             .collect();
         let mut total = LatticeCounts::zeros(lattice);
+        let mut emitted = vec![[0.0; W]; m];
         for chunk in chunks {
-            total.add(&chunk?);
+            let (counts, chunk_emitted) = chunk?;
+            total.add(&counts);
+            add_rows(&mut emitted, &chunk_emitted);
         }
         Ok(Counts {
             log_likelihood: total.log_likelihood,
             start: total.start[..n].to_vec(),
             // a_ij is applied once, here, so a zero of the topology stays exactly zero.
             transitions: lattice.transitions.expected_transitions(&total.transitions, n),
-            emissions: total.emissions.iter().flat_map(|column| column[..n].iter().copied()).collect(),
+            emissions: emitted.iter().flat_map(|column| column[..n].iter().copied()).collect(),
         })
     }
 }

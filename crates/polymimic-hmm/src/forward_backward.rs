@@ -19,12 +19,12 @@ pub const MAX_STATES: usize = 256;
 /// Run the product of scale factors into the log-likelihood before it can underflow.
 const SMALLEST_PRODUCT: f64 = 1e-250;
 
-/// A model padded to `W` states and arranged for the recursions.
+/// A model's start and transitions padded to `W` states and arranged for the recursions.
+/// Emissions come separately, as a table of b_·(O_t) per time step, so the same recursions
+/// serve discrete and continuous observations.
 pub(crate) struct Lattice<const W: usize, T> {
     start: [f64; W],
     pub transitions: T,
-    /// `emissions[k][j]` is b_j(k).
-    emissions: Vec<[f64; W]>,
 }
 
 /// Work to do with a lattice of whatever width and transition layout suit the model.
@@ -34,65 +34,71 @@ pub(crate) trait WithLattice {
 }
 
 /// Runs `work` on the model laid out for speed: compiled for its width, and banded when it
-/// is left-right with at most two links.
-pub(crate) fn with_lattice<V: WithLattice>(probs: &Probabilities, work: V) -> V::Output {
-    match probs.n_states {
-        0..=1 => with_layout::<1, V>(probs, work),
-        2 => with_layout::<2, V>(probs, work),
-        3 => with_layout::<3, V>(probs, work),
-        4 => with_layout::<4, V>(probs, work),
-        5 => with_layout::<5, V>(probs, work),
-        6 => with_layout::<6, V>(probs, work),
-        7..=8 => with_layout::<8, V>(probs, work),
-        9..=10 => with_layout::<10, V>(probs, work),
-        11..=12 => with_layout::<12, V>(probs, work),
-        13..=16 => with_layout::<16, V>(probs, work),
-        17..=20 => with_layout::<20, V>(probs, work),
-        21..=32 => with_layout::<32, V>(probs, work),
-        33..=64 => with_layout::<64, V>(probs, work),
-        _ => with_layout::<MAX_STATES, V>(probs, work),
+/// is left-right with at most two links. `transmat` is row-major `n × n`.
+pub(crate) fn with_lattice<V: WithLattice>(startprob: &[f64], transmat: &[f64], work: V) -> V::Output {
+    match startprob.len() {
+        0..=1 => with_layout::<1, V>(startprob, transmat, work),
+        2 => with_layout::<2, V>(startprob, transmat, work),
+        3 => with_layout::<3, V>(startprob, transmat, work),
+        4 => with_layout::<4, V>(startprob, transmat, work),
+        5 => with_layout::<5, V>(startprob, transmat, work),
+        6 => with_layout::<6, V>(startprob, transmat, work),
+        7..=8 => with_layout::<8, V>(startprob, transmat, work),
+        9..=10 => with_layout::<10, V>(startprob, transmat, work),
+        11..=12 => with_layout::<12, V>(startprob, transmat, work),
+        13..=16 => with_layout::<16, V>(startprob, transmat, work),
+        17..=20 => with_layout::<20, V>(startprob, transmat, work),
+        21..=32 => with_layout::<32, V>(startprob, transmat, work),
+        33..=64 => with_layout::<64, V>(startprob, transmat, work),
+        _ => with_layout::<MAX_STATES, V>(startprob, transmat, work),
     }
 }
 
-fn with_layout<const W: usize, V: WithLattice>(probs: &Probabilities, work: V) -> V::Output {
-    let (a, n) = (&probs.transmat, probs.n_states);
-    if let Some(banded) = Banded::<W, 1>::new(a, n) {
-        work.run(&Lattice::new(probs, banded))
-    } else if let Some(banded) = Banded::<W, 2>::new(a, n) {
-        work.run(&Lattice::new(probs, banded))
-    } else if let Some(banded) = Banded::<W, 3>::new(a, n) {
-        work.run(&Lattice::new(probs, banded))
+fn with_layout<const W: usize, V: WithLattice>(startprob: &[f64], transmat: &[f64], work: V) -> V::Output {
+    let n = startprob.len();
+    let mut start = [0.0; W];
+    start[..n].copy_from_slice(startprob);
+    if let Some(banded) = Banded::<W, 1>::new(transmat, n) {
+        work.run(&Lattice { start, transitions: banded })
+    } else if let Some(banded) = Banded::<W, 2>::new(transmat, n) {
+        work.run(&Lattice { start, transitions: banded })
+    } else if let Some(banded) = Banded::<W, 3>::new(transmat, n) {
+        work.run(&Lattice { start, transitions: banded })
     } else {
-        work.run(&Lattice::new(probs, Dense::<W>::new(a, n)))
+        work.run(&Lattice { start, transitions: Dense::<W>::new(transmat, n) })
     }
+}
+
+/// Emission probabilities b_j(k) of a discrete model, padded to `W` states: `[k][j]`.
+pub(crate) fn symbol_table<const W: usize>(probs: &Probabilities) -> Vec<[f64; W]> {
+    let mut table = vec![[0.0; W]; probs.n_symbols];
+    for (k, column) in table.iter_mut().enumerate() {
+        for (j, b) in column.iter_mut().enumerate().take(probs.n_states) {
+            *b = probs.b(j, k);
+        }
+    }
+    table
 }
 
 impl<const W: usize, T: Transitions<W>> Lattice<W, T> {
-    fn new(probs: &Probabilities, transitions: T) -> Self {
-        let (n, m) = (probs.n_states, probs.n_symbols);
-        let mut start = [0.0; W];
-        start[..n].copy_from_slice(&probs.startprob);
-        let mut emissions = vec![[0.0; W]; m];
-        for (k, column) in emissions.iter_mut().enumerate() {
-            for (j, b) in column.iter_mut().enumerate().take(n) {
-                *b = probs.b(j, k);
-            }
-        }
-        Self { start, transitions, emissions }
-    }
-
-    /// log P(O|λ) by the scaled forward pass, or `Err(t)` with the first position whose
-    /// probability is zero. `keep` receives every α̂_t and c_t.
+    /// log P(O|λ) by the scaled forward pass over `len` steps whose emissions are
+    /// `emission(t)`, or `Err(t)` with the first position whose probability is zero. `keep`
+    /// receives every α̂_t and c_t.
     #[inline(always)]
-    fn forward_with(&self, seq: &[u32], mut keep: impl FnMut([f64; W], f64)) -> Result<f64, usize> {
+    fn forward_with<'e>(
+        &self,
+        len: usize,
+        emission: impl Fn(usize) -> &'e [f64; W],
+        mut keep: impl FnMut([f64; W], f64),
+    ) -> Result<f64, usize> {
         let mut log_p = 0.0;
         let mut product = 1.0;
         let mut alpha = self.start;
-        for (t, &symbol) in seq.iter().enumerate() {
+        for t in 0..len {
             if t > 0 {
                 alpha = self.transitions.forward(&alpha);
             }
-            let c = normalise_emitted(&mut alpha, &self.emissions[symbol as usize]);
+            let c = normalise_emitted(&mut alpha, emission(t));
             if !(c > 0.0 && c.is_finite()) {
                 return Err(t);
             }
@@ -106,35 +112,45 @@ impl<const W: usize, T: Transitions<W>> Lattice<W, T> {
         Ok(log_p + product.ln())
     }
 
-    pub fn log_likelihood(&self, seq: &[u32]) -> Result<f64, usize> {
-        self.forward_with(seq, |_, _| {})
+    /// log P(O|λ) of `len` steps with emissions `emission(t)`.
+    pub fn log_likelihood<'e>(&self, len: usize, emission: impl Fn(usize) -> &'e [f64; W]) -> Result<f64, usize> {
+        self.forward_with(len, emission, |_, _| {})
     }
 
-    /// Adds one sequence's expected counts to `counts`; returns its log-likelihood or the
-    /// first position at which its probability is zero (then `counts` is unchanged).
-    pub fn add_counts(&self, seq: &[u32], scratch: &mut Scratch<W>, counts: &mut Counts<W, T>) -> Result<f64, usize> {
+    /// Adds one sequence's expected start and transition counts to `counts` and hands each
+    /// γ_t to `on_gamma(t, γ_t)`; returns its log-likelihood or the first position at which its
+    /// probability is zero (then nothing was added).
+    pub fn add_counts<'e>(
+        &self,
+        len: usize,
+        emission: impl Fn(usize) -> &'e [f64; W],
+        scratch: &mut Scratch<W>,
+        counts: &mut Counts<W, T>,
+        mut on_gamma: impl FnMut(usize, &[f64; W]),
+    ) -> Result<f64, usize> {
         scratch.alpha.clear();
         scratch.scale.clear();
-        scratch.alpha.reserve(seq.len());
-        scratch.scale.reserve(seq.len());
-        let log_p = self.forward_with(seq, |alpha, c| {
+        scratch.alpha.reserve(len);
+        scratch.scale.reserve(len);
+        let log_p = self.forward_with(len, &emission, |alpha, c| {
             scratch.alpha.push(alpha);
             scratch.scale.push(c);
         })?;
         let mut beta = [1.0; W];
-        for t in (0..seq.len()).rev() {
+        for t in (0..len).rev() {
             let alpha_t = &scratch.alpha[t];
-            let emitted = &mut counts.emissions[seq[t] as usize];
+            let mut gamma = [0.0; W];
             for i in 0..W {
-                emitted[i] += alpha_t[i] * beta[i];
+                gamma[i] = alpha_t[i] * beta[i];
             }
+            on_gamma(t, &gamma);
             if t == 0 {
                 for i in 0..W {
-                    counts.start[i] += alpha_t[i] * beta[i];
+                    counts.start[i] += gamma[i];
                 }
                 break;
             }
-            let b = &self.emissions[seq[t] as usize];
+            let b = emission(t);
             let inverse_scale = 1.0 / scratch.scale[t];
             let mut w = [0.0; W];
             for j in 0..W {
@@ -178,31 +194,23 @@ impl<const W: usize> Default for Scratch<W> {
     }
 }
 
-/// Expected counts over some sequences, in the lattice's layout.
+/// Expected start and transition counts over some sequences, in the lattice's layout.
 pub(crate) struct Counts<const W: usize, T: Transitions<W>> {
     pub log_likelihood: f64,
     /// Σ γ_0(i).
     pub start: [f64; W],
     /// Σ_t α̂_t(i) w_{t+1}(j) in the transitions' own layout; times a_ij this is Σ_t ξ_t(i, j).
     pub transitions: T::Sums,
-    /// `emissions[k][i]`: Σ γ_t(i) over the t with O_t = k.
-    pub emissions: Vec<[f64; W]>,
 }
 
 impl<const W: usize, T: Transitions<W>> Counts<W, T> {
     pub fn zeros(lattice: &Lattice<W, T>) -> Self {
-        Self {
-            log_likelihood: 0.0,
-            start: [0.0; W],
-            transitions: lattice.transitions.zero_sums(),
-            emissions: vec![[0.0; W]; lattice.emissions.len()],
-        }
+        Self { log_likelihood: 0.0, start: [0.0; W], transitions: lattice.transitions.zero_sums() }
     }
 
     pub fn add(&mut self, other: &Self) {
         self.log_likelihood += other.log_likelihood;
         add_rows(std::slice::from_mut(&mut self.start), std::slice::from_ref(&other.start));
         T::add_sums(&mut self.transitions, &other.transitions);
-        add_rows(&mut self.emissions, &other.emissions);
     }
 }

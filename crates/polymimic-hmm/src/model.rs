@@ -6,7 +6,7 @@ use rayon::prelude::*;
 
 use crate::baum_welch::{expected_counts, reestimate};
 use crate::error::{HmmError, HmmParamsError};
-use crate::forward_backward::{Lattice, WithLattice, with_lattice};
+use crate::forward_backward::{Lattice, WithLattice, symbol_table, with_lattice};
 use crate::init::segment_emissions;
 use crate::params::ValidHmmParams;
 use crate::probabilities::Probabilities;
@@ -154,7 +154,7 @@ impl DiscreteHmm {
     pub fn score(&self, seq: &[u32]) -> Result<f64, HmmError> {
         let probs = self.probabilities()?;
         check_sequences(&[seq], self.params.n_symbols)?;
-        with_lattice(probs, Score { sequences: &[seq] })
+        with_lattice(&probs.startprob, &probs.transmat, Score { probs, sequences: &[seq] })
             .remove(0)
             .map_err(|position| HmmError::ImpossibleSequence { index: 0, position })
     }
@@ -167,7 +167,7 @@ impl DiscreteHmm {
     pub fn score_many(&self, sequences: &[&[u32]]) -> Result<Vec<Result<f64, usize>>, HmmError> {
         let probs = self.probabilities()?;
         check_sequences(sequences, self.params.n_symbols)?;
-        Ok(with_lattice(probs, Score { sequences }))
+        Ok(with_lattice(&probs.startprob, &probs.transmat, Score { probs, sequences }))
     }
 
     /// The Viterbi state path and its log-probability.
@@ -195,6 +195,7 @@ impl DiscreteHmm {
 
 /// The log-likelihood of each sequence, in parallel.
 struct Score<'a> {
+    probs: &'a Probabilities,
     sequences: &'a [&'a [u32]],
 }
 
@@ -202,7 +203,8 @@ impl WithLattice for Score<'_> {
     type Output = Vec<Result<f64, usize>>;
 
     fn run<const W: usize, T: Transitions<W>>(self, lattice: &Lattice<W, T>) -> Self::Output {
-        self.sequences.par_iter().map(|seq| lattice.log_likelihood(seq)).collect()
+        let table = symbol_table::<W>(self.probs);
+        self.sequences.par_iter().map(|seq| lattice.log_likelihood(seq.len(), |t| &table[seq[t] as usize])).collect()
     }
 }
 

@@ -29,6 +29,9 @@ pub(crate) fn expected_counts(probs: &Probabilities, sequences: &[&[u32]]) -> Re
     with_lattice(&probs.startprob, &probs.transmat, EStep { probs, sequences })
 }
 
+/// Per chunk of sequences: start and transition counts, and `emitted[k][i]`.
+type ChunkCounts<const W: usize, T> = (LatticeCounts<W, T>, Vec<[f64; W]>);
+
 struct EStep<'a> {
     probs: &'a Probabilities,
     sequences: &'a [&'a [u32]],
@@ -40,7 +43,7 @@ impl WithLattice for EStep<'_> {
     fn run<const W: usize, T: Transitions<W>>(self, lattice: &Lattice<W, T>) -> Self::Output {
         let (n, m) = (self.probs.n_states, self.probs.n_symbols);
         let table = symbol_table::<W>(self.probs);
-        let chunks: Vec<Result<(LatticeCounts<W, T>, Vec<[f64; W]>), HmmError>> = self
+        let chunks: Vec<Result<ChunkCounts<W, T>, HmmError>> = self
             .sequences
             .par_chunks(SEQUENCES_PER_CHUNK)
             .enumerate()

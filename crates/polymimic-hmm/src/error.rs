@@ -34,6 +34,12 @@ pub enum HmmParamsError {
         "sequence {index} holds symbol {symbol} at position {position}, but the model has only {n_symbols} symbols (0..{n_symbols})"
     )]
     SymbolOutOfRange { index: usize, position: usize, symbol: u64, n_symbols: usize },
+    #[error("dim must be at least 1")]
+    NoDimensions,
+    #[error("min_variance must be a finite number > 0, got {0}")]
+    MinVariance(f64),
+    #[error("sequence {index} has a non-finite value at frame {position}")]
+    NotFinite { index: usize, position: usize },
     #[error("length must be at least 1, got {0}")]
     ZeroLength(usize),
 }

@@ -145,8 +145,8 @@ impl<const W: usize, T: Transitions<W>> Lattice<W, T> {
             }
             on_gamma(t, &gamma);
             if t == 0 {
-                for i in 0..W {
-                    counts.start[i] += gamma[i];
+                for (start, g) in counts.start.iter_mut().zip(gamma) {
+                    *start += g;
                 }
                 break;
             }

@@ -19,6 +19,7 @@
 mod baum_welch;
 mod error;
 mod forward_backward;
+mod gaussian;
 mod init;
 mod model;
 mod params;
@@ -31,6 +32,7 @@ mod viterbi;
 
 pub use error::{HmmError, HmmParamsError};
 pub use forward_backward::MAX_STATES;
+pub use gaussian::{GaussianHmm, GaussianHmmParams, Parts};
 pub use init::segment_emissions;
 pub use model::{DiscreteHmm, Init, Sampled, check_sequences};
 pub use params::{HmmParams, ValidHmmParams};

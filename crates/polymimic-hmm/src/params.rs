@@ -77,7 +77,7 @@ impl std::ops::Deref for ValidHmmParams {
 }
 
 /// JSON has no infinities, and `-inf` is a meaningful tolerance: infinities go as text.
-mod tolerance_text {
+pub(crate) mod tolerance_text {
     use serde::{Deserialize, Deserializer, Serializer};
 
     #[derive(Deserialize)]

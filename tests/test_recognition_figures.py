@@ -84,3 +84,15 @@ def test_table_4_5_beats_the_thesis_with_few_gaps(recognizer):
 def test_an_empty_test_set_is_refused(recognizer):
     with pytest.raises(ValueError, match="no moving primitive"):
         recognition.accuracy_table(recognizer, [])
+
+
+def test_variants_are_measured_side_by_side(train, test_set):
+    rows = {r["name"]: r for r in recognition.variant_comparison(train, test_set, codebook_size=128)}
+    assert list(rows) == [v["name"] for v in recognition.VARIANTS]
+    thesis, gaussian = rows["thesis (positional/rotational, discrete)"], rows["egocentric, Gaussian"]
+    assert min(thesis["accuracy"].values()) > 0.93, thesis  # 128 codewords here; 512 in Table 4.3
+    # Continuous emissions need a representation free of the absolute heading, whose
+    # spread over the whole circle no single Gaussian fits; then they need no codebook.
+    assert min(gaussian["accuracy"].values()) > 0.9, gaussian
+    assert gaussian["train_s"] < thesis["train_s"]
+    assert rows["thesis, Gaussian"]["accuracy"]["backward"] < thesis["accuracy"]["backward"]

@@ -139,7 +139,9 @@ class PrimitiveRecognizer:
         max_iter: int = 100,
         tol: float = 1e-4,
         representation: Literal["thesis", "egocentric"] = "thesis",
+        emissions: Literal["discrete", "gaussian"] = "discrete",
         emission_floor: float = 1e-8,
+        min_variance: float = 0.01,
         seed: int = 0,
     ) -> PrimitiveRecognizer: ...
     def log_likelihoods(self, frames: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
@@ -155,11 +157,23 @@ class PrimitiveRecognizer:
         limit_sds: float = 2.0,
         gap_margin: float = 2.0,
     ) -> dict[str, Any]: ...
+    def segment_many(
+        self,
+        demonstrations: Iterable[npt.ArrayLike],
+        *,
+        min_frames: int = 10,
+        stop_distance_mm: float = 1.0,
+        stop_rotation_deg: float = 20.0,
+        limit_sds: float = 2.0,
+        gap_margin: float = 2.0,
+    ) -> list[dict[str, Any]]: ...
     def motion_stats(self) -> dict[str, dict[str, float]]: ...
     def hmm(self, primitive: str) -> DiscreteHMM: ...
     def codebook(self, primitive: str) -> Codebook: ...
     @property
     def representations(self) -> dict[str, str]: ...
+    @property
+    def emissions(self) -> str: ...
     @property
     def n_states(self) -> int: ...
     @property

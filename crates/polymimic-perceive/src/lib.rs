@@ -14,9 +14,11 @@ pub use error::PerceiveError;
 pub use motion::{MotionLimits, MotionStats, motion_of, motion_stats};
 pub use pose::{Pose, TrackedFrame, wrap_angle_rad};
 pub use primitive::{Label, Primitive};
-pub use recognizer::{LabelledSequence, PrimitiveModel, Recognizer, RecognizerConfig, best_two};
+pub use recognizer::{
+    Emissions, LabelledSequence, PrimitiveHmm, PrimitiveModel, Recognizer, RecognizerConfig, best_two,
+};
 pub use representation::{Representation, THETA_SCALE};
-pub use segmenter::{Segment, SegmenterConfig, segment};
+pub use segmenter::{Segment, SegmenterConfig, segment, segment_many};
 
 #[cfg(test)]
 mod tests;

@@ -3,7 +3,7 @@
 
 use std::collections::BTreeMap;
 
-use polymimic_hmm::{DiscreteHmm, HmmParams, Init, Topology};
+use polymimic_hmm::{DiscreteHmm, GaussianHmm, GaussianHmmParams, HmmParams, Init, Topology};
 use polymimic_vq::{Codebook, LbgParams};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -22,6 +22,17 @@ const VERSION: u32 = 1;
 pub struct LabelledSequence {
     pub primitive: Primitive,
     pub poses: Vec<Pose>,
+}
+
+/// What the HMMs emit.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Emissions {
+    /// Codebook symbols (the thesis's way).
+    #[default]
+    Discrete,
+    /// The 3-D points themselves, through diagonal Gaussians: no codebook (beyond the thesis).
+    Gaussian,
 }
 
 /// How the recogniser is trained. Defaults are the thesis's.
@@ -45,7 +56,16 @@ pub struct RecognizerConfig {
     pub forward_backward_representation: Representation,
     /// The representation of the left and right models.
     pub left_right_representation: Representation,
+    #[serde(default)]
+    pub emissions: Emissions,
+    /// Lower bound on a Gaussian model's variances (in squared representation units).
+    #[serde(default = "default_min_variance")]
+    pub min_variance: f64,
     pub seed: u64,
+}
+
+fn default_min_variance() -> f64 {
+    0.01
 }
 
 impl Default for RecognizerConfig {
@@ -60,6 +80,8 @@ impl Default for RecognizerConfig {
             emission_floor: 1e-8,
             forward_backward_representation: Representation::Positional,
             left_right_representation: Representation::Rotational,
+            emissions: Emissions::Discrete,
+            min_variance: default_min_variance(),
             seed: 0,
         }
     }
@@ -93,12 +115,19 @@ impl RecognizerConfig {
     }
 }
 
+/// The HMM behind one primitive.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PrimitiveHmm {
+    Discrete(DiscreteHmm),
+    Gaussian(GaussianHmm),
+}
+
 /// An HMM for one primitive, with the representation it reads.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PrimitiveModel {
     pub primitive: Primitive,
     pub representation: Representation,
-    pub hmm: DiscreteHmm,
+    pub hmm: PrimitiveHmm,
 }
 
 /// Four HMMs (forward, backward, left, right) and the codebooks they read through.
@@ -133,7 +162,8 @@ impl Recognizer {
                 .collect::<std::collections::BTreeSet<_>>()
                 .into_iter()
                 .collect();
-        let codebooks: BTreeMap<Representation, Codebook> = representations
+        let quantised = if config.emissions == Emissions::Discrete { representations.as_slice() } else { &[] };
+        let codebooks: BTreeMap<Representation, Codebook> = quantised
             .par_iter()
             .map(|&representation| {
                 let points: Vec<f64> = sequences.iter().flat_map(|s| representation.points(&s.poses)).collect();
@@ -175,12 +205,6 @@ impl Recognizer {
         &self.motion
     }
 
-    /// The symbols `poses` become through `representation` and its codebook.
-    fn symbols(&self, representation: Representation, poses: &[Pose]) -> Vec<u32> {
-        let points = representation.points(poses);
-        self.codebooks[&representation].encode(&points, 3).unwrap_or_default()
-    }
-
     /// log P(poses | model) for forward, backward, left and right, in that order; −inf where
     /// a model cannot have produced the poses.
     ///
@@ -194,8 +218,15 @@ impl Recognizer {
     pub(crate) fn scores_unchecked(&self, poses: &[Pose]) -> [f64; 4] {
         let mut scores = [f64::NEG_INFINITY; 4];
         for (score, model) in scores.iter_mut().zip(&self.models) {
-            let symbols = self.symbols(model.representation, poses);
-            *score = model.hmm.score(&symbols).unwrap_or(f64::NEG_INFINITY);
+            let points = model.representation.points(poses);
+            let log_p = match &model.hmm {
+                PrimitiveHmm::Discrete(hmm) => self.codebooks[&model.representation]
+                    .encode(&points, 3)
+                    .map_err(|e| e.to_string())
+                    .and_then(|symbols| hmm.score(&symbols).map_err(|e| e.to_string())),
+                PrimitiveHmm::Gaussian(hmm) => hmm.score(&points).map_err(|e| e.to_string()),
+            };
+            *score = log_p.unwrap_or(f64::NEG_INFINITY);
         }
         scores
     }
@@ -233,7 +264,11 @@ impl Recognizer {
                 .map(|m| SavedModel {
                     primitive: m.primitive,
                     representation: m.representation,
-                    hmm: m.hmm.to_json().unwrap_or_default(),
+                    hmm: match &m.hmm {
+                        PrimitiveHmm::Discrete(hmm) => hmm.to_json(),
+                        PrimitiveHmm::Gaussian(hmm) => hmm.to_json(),
+                    }
+                    .unwrap_or_default(),
                 })
                 .collect(),
             motion: self.motion.clone(),
@@ -257,12 +292,21 @@ impl Recognizer {
             .models
             .iter()
             .map(|m| {
-                let hmm = DiscreteHmm::from_json(&m.hmm).map_err(|e| corrupt(&e))?;
-                let codebook =
-                    codebooks.get(&m.representation).ok_or_else(|| corrupt(&"a model's codebook is missing"))?;
-                if hmm.params().n_symbols != codebook.len() {
-                    return Err(corrupt(&"a model's symbols do not match its codebook"));
-                }
+                let hmm = match saved.config.emissions {
+                    Emissions::Discrete => {
+                        let hmm = DiscreteHmm::from_json(&m.hmm).map_err(|e| corrupt(&e))?;
+                        let codebook = codebooks
+                            .get(&m.representation)
+                            .ok_or_else(|| corrupt(&"a model's codebook is missing"))?;
+                        if hmm.params().n_symbols != codebook.len() {
+                            return Err(corrupt(&"a model's symbols do not match its codebook"));
+                        }
+                        PrimitiveHmm::Discrete(hmm)
+                    }
+                    Emissions::Gaussian => {
+                        PrimitiveHmm::Gaussian(GaussianHmm::from_json(&m.hmm).map_err(|e| corrupt(&e))?)
+                    }
+                };
                 Ok(PrimitiveModel { primitive: m.primitive, representation: m.representation, hmm })
             })
             .collect::<Result<Vec<_>, _>>()?;
@@ -295,12 +339,23 @@ fn train_model(
     config: &RecognizerConfig,
 ) -> Result<PrimitiveModel, PerceiveError> {
     let representation = config.representation_of(primitive);
+    let own: Vec<&LabelledSequence> = sequences.iter().filter(|s| s.primitive == primitive).collect();
+    if config.emissions == Emissions::Gaussian {
+        let points: Vec<Vec<f64>> = own.iter().map(|s| representation.points(&s.poses)).collect();
+        let refs: Vec<&[f64]> = points.iter().map(Vec::as_slice).collect();
+        let mut params = GaussianHmmParams::new(config.n_states, 3);
+        params.topology = Topology::LeftRight { links: config.links };
+        params.max_iter = config.max_iter;
+        params.tol = config.tol;
+        params.min_variance = config.min_variance;
+        params.seed = config.seed;
+        let mut hmm = GaussianHmm::new(params).map_err(polymimic_hmm::HmmError::from)?;
+        hmm.fit(&refs)?;
+        return Ok(PrimitiveModel { primitive, representation, hmm: PrimitiveHmm::Gaussian(hmm) });
+    }
     let codebook = &codebooks[&representation];
-    let symbols: Vec<Vec<u32>> = sequences
-        .iter()
-        .filter(|s| s.primitive == primitive)
-        .map(|s| codebook.encode(&representation.points(&s.poses), 3))
-        .collect::<Result<_, _>>()?;
+    let symbols: Vec<Vec<u32>> =
+        own.iter().map(|s| codebook.encode(&representation.points(&s.poses), 3)).collect::<Result<_, _>>()?;
     let refs: Vec<&[u32]> = symbols.iter().map(Vec::as_slice).collect();
     let mut params = HmmParams::new(config.n_states, codebook.len());
     params.topology = Topology::LeftRight { links: config.links };
@@ -311,7 +366,7 @@ fn train_model(
     let mut hmm = DiscreteHmm::new(params.check().map_err(polymimic_hmm::HmmError::from)?);
     hmm.fit(&refs, Init::Segments)?;
     let hmm = hmm.with_emission_floor(config.emission_floor)?;
-    Ok(PrimitiveModel { primitive, representation, hmm })
+    Ok(PrimitiveModel { primitive, representation, hmm: PrimitiveHmm::Discrete(hmm) })
 }
 
 /// The best and second-best primitives by score, with their scores.

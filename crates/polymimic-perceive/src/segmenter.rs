@@ -132,6 +132,33 @@ pub fn segment(
     Ok(segments)
 }
 
+/// [`segment`] for many demonstrations, in parallel; results in the input's order.
+///
+/// # Errors
+/// As [`segment`], for the first demonstration (in order) that fails.
+pub fn segment_many(
+    demonstrations: &[&[TrackedFrame]],
+    recognizer: &Recognizer,
+    config: &SegmenterConfig,
+) -> Result<Vec<Vec<Segment>>, PerceiveError> {
+    use rayon::prelude::*;
+    demonstrations
+        .par_iter()
+        .enumerate()
+        .map(|(index, frames)| {
+            segment(frames, recognizer, config).map_err(|e| match e {
+                PerceiveError::TooFewFrames { frames, needed, .. } => {
+                    PerceiveError::TooFewFrames { what: format!("demonstration {index}"), frames, needed }
+                }
+                PerceiveError::NotFinite { frame, .. } => {
+                    PerceiveError::NotFinite { what: format!("demonstration {index}"), frame }
+                }
+                other => other,
+            })
+        })
+        .collect()
+}
+
 fn within(pose: &Pose, origin: &Pose, limits: &MotionLimits) -> bool {
     pose.distance_from_mm(origin) <= limits.max_distance_mm
         && pose.rotation_from_rad(origin).to_degrees().abs() <= limits.max_rotation_deg

@@ -187,3 +187,19 @@ fn egocentric_representation_recognises_too() {
         .count();
     assert!(correct >= 76, "{correct}/80");
 }
+
+#[test]
+fn gaussian_emissions_recognise_without_a_codebook() {
+    let config = RecognizerConfig { emissions: Emissions::Gaussian, ..small_config() };
+    let recognizer = Recognizer::train(&self_observation(60, 1), config).unwrap();
+    assert!(recognizer.codebook(Representation::Positional).is_none());
+    let test = self_observation(20, 3);
+    let correct = test
+        .iter()
+        .filter(|s| s.primitive != Primitive::Stop)
+        .filter(|s| recognizer.classify(&s.poses).unwrap() == s.primitive)
+        .count();
+    assert!(correct >= 76, "{correct}/80");
+    let text = recognizer.to_json().unwrap();
+    assert_eq!(Recognizer::from_json(&text).unwrap(), recognizer);
+}

@@ -4,8 +4,8 @@ use std::path::PathBuf;
 
 use numpy::{PyArray1, PyArray2};
 use polymimic_perceive::{
-    LabelledSequence, Pose, Primitive, Recognizer, RecognizerConfig, Representation, SegmenterConfig, TrackedFrame,
-    segment,
+    Emissions, LabelledSequence, Pose, Primitive, PrimitiveHmm, Recognizer, RecognizerConfig, Representation, Segment,
+    SegmenterConfig, TrackedFrame, segment, segment_many,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -32,8 +32,8 @@ fn poses(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Pose>> {
         .collect())
 }
 
-fn tracked_frames(value: &Bound<'_, PyAny>) -> PyResult<Vec<TrackedFrame>> {
-    Ok(frame_columns(value, "demonstration", &FRAME_COLUMNS)?
+fn tracked_frames(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<TrackedFrame>> {
+    Ok(frame_columns(value, what, &FRAME_COLUMNS)?
         .into_iter()
         .map(|r| TrackedFrame {
             robot: Pose { x_mm: r[0], y_mm: r[1], theta_rad: r[2] },
@@ -59,6 +59,35 @@ fn representations(name: &str) -> PyResult<(Representation, Representation)> {
     }
 }
 
+fn segmenter_config(
+    min_frames: i64,
+    stop_distance_mm: f64,
+    stop_rotation_deg: f64,
+    limit_sds: f64,
+    gap_margin: f64,
+) -> PyResult<SegmenterConfig> {
+    Ok(SegmenterConfig {
+        min_frames: non_negative("min_frames", min_frames)?,
+        stop_distance_mm,
+        stop_rotation_deg,
+        limit_sds,
+        gap_margin,
+    })
+}
+
+/// Segments as columns: labels, frame ranges, end frames and scores.
+fn segment_columns<'py>(py: Python<'py>, segments: &[Segment]) -> PyResult<Bound<'py, PyDict>> {
+    let k = segments.len();
+    let out = PyDict::new(py);
+    out.set_item("label", PyList::new(py, segments.iter().map(|s| s.label.name()))?)?;
+    out.set_item("first_frame", PyArray1::from_vec(py, segments.iter().map(|s| s.first_frame as i64).collect()))?;
+    out.set_item("last_frame", PyArray1::from_vec(py, segments.iter().map(|s| s.last_frame as i64).collect()))?;
+    out.set_item("start", matrix(py, segments.iter().flat_map(|s| frame_row(&s.start)).collect(), k, 5)?)?;
+    out.set_item("end", matrix(py, segments.iter().flat_map(|s| frame_row(&s.end)).collect(), k, 5)?)?;
+    out.set_item("scores", matrix(py, segments.iter().flat_map(|s| s.scores).collect(), k, 4)?)?;
+    Ok(out)
+}
+
 fn frame_row(frame: &TrackedFrame) -> [f64; 5] {
     [frame.robot.x_mm, frame.robot.y_mm, frame.robot.theta_rad, frame.ball_x_mm, frame.ball_y_mm]
 }
@@ -68,7 +97,7 @@ impl PyPrimitiveRecognizer {
     /// Trains the codebooks and the four HMMs on self-observation sequences.
     #[classmethod]
     #[pyo3(signature = (sequences, labels, *, n_states=1, codebook_size=512, links=2, max_iter=100, tol=1e-4,
-                        representation="thesis", emission_floor=1e-8, seed=0))]
+                        representation="thesis", emissions="discrete", emission_floor=1e-8, min_variance=0.01, seed=0))]
     #[allow(clippy::too_many_arguments, clippy::needless_pass_by_value)] // pyo3 extracts by value
     fn train(
         _cls: &Bound<'_, PyType>,
@@ -81,9 +110,20 @@ impl PyPrimitiveRecognizer {
         max_iter: i64,
         tol: f64,
         representation: &str,
+        emissions: &str,
         emission_floor: f64,
+        min_variance: f64,
         seed: i64,
     ) -> PyResult<Self> {
+        let emissions = match emissions {
+            "discrete" => Emissions::Discrete,
+            "gaussian" => Emissions::Gaussian,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "emissions must be \"discrete\" or \"gaussian\", got {other:?}"
+                )));
+            }
+        };
         let sequences: Vec<Bound<'_, PyAny>> = sequences.try_iter()?.collect::<PyResult<_>>()?;
         if sequences.len() != labels.len() {
             return Err(PyValueError::new_err(format!(
@@ -108,6 +148,8 @@ impl PyPrimitiveRecognizer {
             max_iter: non_negative("max_iter", max_iter)?,
             tol,
             emission_floor,
+            emissions,
+            min_variance,
             forward_backward_representation: forward_backward,
             left_right_representation: left_right,
             seed: non_negative("seed", seed)? as u64,
@@ -162,23 +204,38 @@ impl PyPrimitiveRecognizer {
         limit_sds: f64,
         gap_margin: f64,
     ) -> PyResult<Bound<'py, PyDict>> {
-        let frames = tracked_frames(frames)?;
-        let config = SegmenterConfig {
-            min_frames: non_negative("min_frames", min_frames)?,
-            stop_distance_mm,
-            stop_rotation_deg,
-            limit_sds,
-            gap_margin,
-        };
+        let frames = tracked_frames(frames, "demonstration")?;
+        let config = segmenter_config(min_frames, stop_distance_mm, stop_rotation_deg, limit_sds, gap_margin)?;
         let segments = py.detach(|| segment(&frames, &self.recognizer, &config)).map_err(perceive_error)?;
-        let k = segments.len();
-        let out = PyDict::new(py);
-        out.set_item("label", PyList::new(py, segments.iter().map(|s| s.label.name()))?)?;
-        out.set_item("first_frame", PyArray1::from_vec(py, segments.iter().map(|s| s.first_frame as i64).collect()))?;
-        out.set_item("last_frame", PyArray1::from_vec(py, segments.iter().map(|s| s.last_frame as i64).collect()))?;
-        out.set_item("start", matrix(py, segments.iter().flat_map(|s| frame_row(&s.start)).collect(), k, 5)?)?;
-        out.set_item("end", matrix(py, segments.iter().flat_map(|s| frame_row(&s.end)).collect(), k, 5)?)?;
-        out.set_item("scores", matrix(py, segments.iter().flat_map(|s| s.scores).collect(), k, 4)?)?;
+        segment_columns(py, &segments)
+    }
+
+    /// `segment` for many demonstrations, in parallel; one dictionary of columns each.
+    #[pyo3(signature = (demonstrations, *, min_frames=10, stop_distance_mm=1.0, stop_rotation_deg=20.0,
+                        limit_sds=2.0, gap_margin=2.0))]
+    #[allow(clippy::too_many_arguments)]
+    fn segment_many<'py>(
+        &self,
+        py: Python<'py>,
+        demonstrations: &Bound<'py, PyAny>,
+        min_frames: i64,
+        stop_distance_mm: f64,
+        stop_rotation_deg: f64,
+        limit_sds: f64,
+        gap_margin: f64,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let all: Vec<Vec<TrackedFrame>> = demonstrations
+            .try_iter()?
+            .enumerate()
+            .map(|(i, d)| tracked_frames(&d?, &format!("demonstration {i}")))
+            .collect::<PyResult<_>>()?;
+        let refs: Vec<&[TrackedFrame]> = all.iter().map(Vec::as_slice).collect();
+        let config = segmenter_config(min_frames, stop_distance_mm, stop_rotation_deg, limit_sds, gap_margin)?;
+        let segmented = py.detach(|| segment_many(&refs, &self.recognizer, &config)).map_err(perceive_error)?;
+        let out = PyList::empty(py);
+        for segments in &segmented {
+            out.append(segment_columns(py, segments)?)?;
+        }
         Ok(out)
     }
 
@@ -204,8 +261,13 @@ impl PyPrimitiveRecognizer {
             .models()
             .iter()
             .find(|m| m.primitive == wanted)
-            .map(|m| PyDiscreteHmm::wrap(m.hmm.clone()))
             .ok_or_else(|| PyValueError::new_err("stop has no HMM: it is recognised by the lack of motion"))
+            .and_then(|m| match &m.hmm {
+                PrimitiveHmm::Discrete(hmm) => Ok(PyDiscreteHmm::wrap(hmm.clone())),
+                PrimitiveHmm::Gaussian(_) => {
+                    Err(PyValueError::new_err("this recogniser's models are Gaussian; only discrete ones are exposed"))
+                }
+            })
     }
 
     /// The codebook a primitive's HMM reads through.
@@ -228,6 +290,15 @@ impl PyPrimitiveRecognizer {
             out.set_item(m.primitive.name(), name)?;
         }
         Ok(out)
+    }
+
+    /// `"discrete"` (codebook symbols) or `"gaussian"` (continuous points).
+    #[getter]
+    fn emissions(&self) -> &'static str {
+        match self.recognizer.config().emissions {
+            Emissions::Discrete => "discrete",
+            Emissions::Gaussian => "gaussian",
+        }
     }
 
     #[getter]

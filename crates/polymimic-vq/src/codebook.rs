@@ -1,5 +1,7 @@
 //! A codebook: codewords, encoding by nearest codeword, and saved files.
 
+use std::sync::OnceLock;
+
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -14,11 +16,21 @@ const VERSION: u32 = 1;
 const POINTS_PER_TASK: usize = 4096;
 
 /// Codewords of one dimension, stored row-major.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Serialize, Deserialize)]
 pub struct Codebook {
     dim: usize,
     codewords: Vec<f64>,
     report: LbgReport,
+    /// The search tree, built on first use and kept: encoding short sequences one at a time
+    /// (as the segmenter does) must not rebuild it every call.
+    #[serde(skip)]
+    tree: OnceLock<KdTree>,
+}
+
+impl PartialEq for Codebook {
+    fn eq(&self, other: &Self) -> bool {
+        self.dim == other.dim && self.codewords == other.codewords && self.report == other.report
+    }
 }
 
 impl Codebook {
@@ -29,7 +41,7 @@ impl Codebook {
     pub fn fit(data: &[f64], dim: usize, params: LbgParams) -> Result<Self, VqParamsError> {
         let points = Points::new(data, dim)?;
         let (codewords, report) = grow(points, params)?;
-        Ok(Self { dim, codewords, report })
+        Ok(Self { dim, codewords, report, tree: OnceLock::new() })
     }
 
     /// A codebook with the given row-major codewords.
@@ -38,7 +50,7 @@ impl Codebook {
     /// As for points: empty, ragged, or not finite.
     pub fn from_codewords(codewords: Vec<f64>, dim: usize) -> Result<Self, VqParamsError> {
         Points::new(&codewords, dim)?;
-        Ok(Self { dim, codewords, report: LbgReport::default() })
+        Ok(Self { dim, codewords, report: LbgReport::default(), tree: OnceLock::new() })
     }
 
     /// Lloyd iterations from the current codewords (the refinement stage of LBG on its own).
@@ -52,6 +64,7 @@ impl Codebook {
         }
         let mut labels = vec![0; points.len()];
         let refinement = refine(points, &mut self.codewords, &mut labels, Stopping { tol, max_iter });
+        self.tree = OnceLock::new();
         self.report = LbgReport {
             distortion: refinement.distortion,
             lloyd_iterations: refinement.iterations,
@@ -113,7 +126,7 @@ impl Codebook {
 
     fn nearest(&self, data: &[f64], dim: usize) -> Result<Vec<(usize, f64)>, VqParamsError> {
         let points = self.points(data, dim)?;
-        let tree = &KdTree::new(&self.codewords, self.dim);
+        let tree = self.tree.get_or_init(|| KdTree::new(&self.codewords, self.dim));
         Ok(points
             .raw()
             .par_chunks(POINTS_PER_TASK * self.dim)

@@ -7,26 +7,28 @@ use crate::points::distance2;
 
 const LEAF_SIZE: usize = 6;
 
+#[derive(Debug, Clone)]
 enum Node {
     Leaf { start: usize, end: usize },
     Split { dimension: usize, value: f64, below: usize, above: usize },
 }
 
-/// A k-d tree over a fixed set of codewords.
-pub struct KdTree<'a> {
-    codewords: &'a [f64],
+/// A k-d tree over a fixed set of codewords (it keeps its own copy of them).
+#[derive(Debug, Clone)]
+pub struct KdTree {
+    codewords: Vec<f64>,
     dim: usize,
     /// Codeword indices, grouped so every leaf owns a contiguous run.
     order: Vec<usize>,
     nodes: Vec<Node>,
 }
 
-impl<'a> KdTree<'a> {
+impl KdTree {
     /// Builds the tree over row-major `codewords` of dimension `dim` (at least one).
     #[must_use]
-    pub fn new(codewords: &'a [f64], dim: usize) -> Self {
+    pub fn new(codewords: &[f64], dim: usize) -> Self {
         let count = codewords.len() / dim;
-        let mut tree = Self { codewords, dim, order: (0..count).collect(), nodes: Vec::new() };
+        let mut tree = Self { codewords: codewords.to_vec(), dim, order: (0..count).collect(), nodes: Vec::new() };
         tree.build(0, count);
         tree
     }
@@ -45,7 +47,7 @@ impl<'a> KdTree<'a> {
             .max_by(|&a, &b| self.spread(start, end, a).total_cmp(&self.spread(start, end, b)))
             .unwrap_or(0);
         let middle = start + (end - start) / 2;
-        let (codewords, dim) = (self.codewords, self.dim);
+        let (codewords, dim) = (&self.codewords, self.dim);
         self.order[start..end].select_nth_unstable_by(middle - start, |&a, &b| {
             codewords[a * dim + dimension].total_cmp(&codewords[b * dim + dimension])
         });

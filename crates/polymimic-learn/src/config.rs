@@ -1,0 +1,138 @@
+//! Every constant of learning (thesis Table 3.2, §3.3, §3.4), in one validated type.
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::LearnError;
+
+/// The constants of behaviour creation, permanency, decay, learning preference and
+/// prediction. Defaults are the thesis's; the ones it leaves open are marked *choice*.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct LearningConfig {
+    /// Frequency at which two behaviours in sequence form a new one (then reset to 0).
+    pub creation_threshold: f64,
+    /// Permanency of a new behaviour.
+    pub default_permanency: f64,
+    /// Permanency at which a behaviour becomes permanent.
+    pub permanency_threshold: f64,
+    /// Permanency at which a behaviour is deleted.
+    pub deletion_threshold: f64,
+    /// Frequency step: frequency += min_frequency · (1 + LP) (eq 3.11).
+    pub min_frequency: f64,
+    /// Decay each prediction step: permanency −= (1 − LP) · decay_step (eq 3.12).
+    pub decay_step: f64,
+    /// *Choice*: permanency added to the selected behaviour each round.
+    pub permanency_step: f64,
+    /// LP a demonstrator's model starts with.
+    pub initial_lp: f64,
+    /// The imitator's model's fixed LP.
+    pub imitator_lp: f64,
+    pub lp_goal: f64,
+    pub lp_ball_to_goal: f64,
+    pub lp_robot_to_ball: f64,
+    /// LP change for the non-criteria events of Table 3.3 (accurate ball prediction, a
+    /// candidate made permanent in or deleted from the imitator's model).
+    pub lp_event: f64,
+    /// A prediction matches when the robot is within this distance…
+    pub match_distance_mm: f64,
+    /// …and this heading of where the demonstration put it.
+    pub match_rotation_deg: f64,
+    /// A ball prediction is accurate when its angle relative to the robot is within this.
+    pub ball_angle_tolerance_deg: f64,
+    /// *Choice*: ball samples a behaviour needs before it predicts the ball…
+    pub ball_min_samples: usize,
+    /// …and the largest spread of their angles it may have.
+    pub ball_max_angle_sd_deg: f64,
+    /// *Choice*: the ball counts as moved (and is sampled) beyond this distance.
+    pub ball_moved_mm: f64,
+    /// Prediction noise: a primitive's motion is drawn with sd = Table 3.1 sd / this.
+    pub prediction_noise_divisor: f64,
+    /// *Choice*: smaller changes of a distance than this count as neither closer nor farther.
+    pub shaping_dead_band_mm: f64,
+}
+
+impl Default for LearningConfig {
+    fn default() -> Self {
+        Self {
+            creation_threshold: 0.3,
+            default_permanency: 0.5,
+            permanency_threshold: 0.8,
+            deletion_threshold: 0.0,
+            min_frequency: 0.05,
+            decay_step: 0.007,
+            permanency_step: 0.02,
+            initial_lp: 0.5,
+            imitator_lp: 0.9,
+            lp_goal: 0.01,
+            lp_ball_to_goal: 0.005,
+            lp_robot_to_ball: 0.002,
+            lp_event: 0.001,
+            match_distance_mm: 40.0,
+            match_rotation_deg: 45.0,
+            ball_angle_tolerance_deg: 22.5,
+            ball_min_samples: 5,
+            ball_max_angle_sd_deg: 30.0,
+            ball_moved_mm: 10.0,
+            prediction_noise_divisor: 3.0,
+            shaping_dead_band_mm: 1.0,
+        }
+    }
+}
+
+impl LearningConfig {
+    /// Checks every field.
+    ///
+    /// # Errors
+    /// Names the first field out of range.
+    pub fn check(&self) -> Result<(), LearnError> {
+        let unit = [
+            ("creation_threshold", self.creation_threshold),
+            ("default_permanency", self.default_permanency),
+            ("permanency_threshold", self.permanency_threshold),
+            ("deletion_threshold", self.deletion_threshold),
+            ("initial_lp", self.initial_lp),
+            ("imitator_lp", self.imitator_lp),
+        ];
+        for (name, value) in unit {
+            if !(0.0..=1.0).contains(&value) {
+                return Err(LearnError::Config { name, value, why: "must be in [0, 1]" });
+            }
+        }
+        let positive = [
+            ("min_frequency", self.min_frequency),
+            ("decay_step", self.decay_step),
+            ("permanency_step", self.permanency_step),
+            ("match_distance_mm", self.match_distance_mm),
+            ("match_rotation_deg", self.match_rotation_deg),
+            ("ball_angle_tolerance_deg", self.ball_angle_tolerance_deg),
+            ("ball_max_angle_sd_deg", self.ball_max_angle_sd_deg),
+            ("prediction_noise_divisor", self.prediction_noise_divisor),
+        ];
+        for (name, value) in positive {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(LearnError::Config { name, value, why: "must be a finite number > 0" });
+            }
+        }
+        let non_negative = [
+            ("lp_goal", self.lp_goal),
+            ("lp_ball_to_goal", self.lp_ball_to_goal),
+            ("lp_robot_to_ball", self.lp_robot_to_ball),
+            ("lp_event", self.lp_event),
+            ("ball_moved_mm", self.ball_moved_mm),
+            ("shaping_dead_band_mm", self.shaping_dead_band_mm),
+        ];
+        for (name, value) in non_negative {
+            if !(value.is_finite() && value >= 0.0) {
+                return Err(LearnError::Config { name, value, why: "must be a finite number ≥ 0" });
+            }
+        }
+        if self.deletion_threshold >= self.default_permanency || self.default_permanency >= self.permanency_threshold {
+            return Err(LearnError::Config {
+                name: "default_permanency",
+                value: self.default_permanency,
+                why: "must lie strictly between deletion_threshold and permanency_threshold",
+            });
+        }
+        Ok(())
+    }
+}

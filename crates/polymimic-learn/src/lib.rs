@@ -1,0 +1,26 @@
+//! Learning from many demonstrators (thesis §3.3, §3.4): behaviours grown from primitives by
+//! frequency counting with decay and permanency, one forward model per demonstrator weighted
+//! by a learning preference, candidates nominated to the imitator's model, two-phase training.
+
+mod behaviour;
+mod config;
+mod error;
+mod model;
+mod prediction;
+mod round;
+mod running;
+mod state;
+mod trial;
+
+pub use behaviour::Behaviour;
+pub use config::LearningConfig;
+pub use error::LearnError;
+pub use model::{Event, ForwardModel, ModelMetrics};
+pub use prediction::{MotionTable, Prediction, matches, predict};
+pub use round::{Ending, SegmentedDemonstration};
+pub use running::Running;
+pub use state::{Pitch, ball_to_goal_mm, precondition_measures, range_bearing, robot_to_ball_mm};
+pub use trial::{PhaseOne, TrialResult, run_trial};
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,178 @@
+//! A forward model: behaviours, the frequency with which one follows another, and a learning
+//! preference (thesis §3.3, §3.4).
+
+use polymimic_perceive::Primitive;
+use serde::{Deserialize, Serialize};
+
+use crate::behaviour::Behaviour;
+use crate::config::LearningConfig;
+
+/// Counts behind Tables 4.1, 4.2, 4.7 and 4.10.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct ModelMetrics {
+    pub created: usize,
+    pub deleted: usize,
+    pub made_permanent: usize,
+    /// Behaviours this model nominated to the imitator's model.
+    pub candidates: usize,
+    /// Nominations the imitator's model already held.
+    pub duplicates: usize,
+    /// Nominations that later became permanent in the imitator's model.
+    pub candidates_permanent: usize,
+    pub rounds: usize,
+    pub rounds_matched: usize,
+}
+
+/// Something a model's processing did that the trial must act on.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Event {
+    BecamePermanent { primitives: Vec<Primitive>, nominated_by: Option<usize> },
+    Deleted { primitives: Vec<Primitive>, nominated_by: Option<usize> },
+}
+
+/// A forward model for one demonstrator, or for the imitator.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ForwardModel {
+    pub name: String,
+    pub behaviours: Vec<Behaviour>,
+    /// `frequency[i][j]`: how often behaviour j followed behaviour i, since it last formed one.
+    pub frequency: Vec<Vec<f64>>,
+    pub lp: f64,
+    /// The imitator's LP does not change.
+    pub fixed_lp: bool,
+    next_age: u64,
+    pub metrics: ModelMetrics,
+    /// The LP after every change.
+    pub lp_history: Vec<f64>,
+}
+
+impl ForwardModel {
+    /// A model holding the five primitives, with LP `lp` (fixed if `fixed`).
+    #[must_use]
+    pub fn new(name: &str, lp: f64, fixed: bool, config: &LearningConfig) -> Self {
+        let mut model = Self {
+            name: name.to_owned(),
+            behaviours: Vec::new(),
+            frequency: Vec::new(),
+            lp,
+            fixed_lp: fixed,
+            next_age: 0,
+            metrics: ModelMetrics::default(),
+            lp_history: vec![lp],
+        };
+        for primitive in Primitive::ALL {
+            model.insert(vec![primitive], config);
+        }
+        model.metrics.created = 0;
+        model
+    }
+
+    #[must_use]
+    pub fn index_of(&self, primitives: &[Primitive]) -> Option<usize> {
+        self.behaviours.iter().position(|b| b.primitives == primitives)
+    }
+
+    /// Adds a new behaviour (with the next age); returns its index.
+    pub(crate) fn insert(&mut self, primitives: Vec<Primitive>, config: &LearningConfig) -> usize {
+        self.behaviours.push(Behaviour::new(primitives, self.next_age, config));
+        self.next_age += 1;
+        for row in &mut self.frequency {
+            row.push(0.0);
+        }
+        self.frequency.push(vec![0.0; self.behaviours.len()]);
+        self.metrics.created += 1;
+        self.behaviours.len() - 1
+    }
+
+    fn remove(&mut self, index: usize) -> Behaviour {
+        self.frequency.remove(index);
+        for row in &mut self.frequency {
+            row.remove(index);
+        }
+        self.metrics.deleted += 1;
+        self.behaviours.remove(index)
+    }
+
+    /// Changes the LP by `delta`, clamped to [0, 1], unless it is fixed.
+    pub fn shape_lp(&mut self, delta: f64) {
+        if self.fixed_lp || delta == 0.0 {
+            return;
+        }
+        self.lp = (self.lp + delta).clamp(0.0, 1.0);
+        self.lp_history.push(self.lp);
+    }
+
+    /// Eq 3.11 on `frequency[from][to]`; returns whether it passed the creation threshold.
+    pub(crate) fn strengthen(&mut self, from: usize, to: usize, config: &LearningConfig) -> bool {
+        self.frequency[from][to] += config.min_frequency + config.min_frequency * self.lp;
+        self.frequency[from][to] > config.creation_threshold
+    }
+
+    /// Raises a behaviour's permanency (it may become permanent).
+    pub(crate) fn reinforce(&mut self, index: usize, config: &LearningConfig) {
+        let b = &mut self.behaviours[index];
+        if !b.permanent {
+            b.permanency += config.permanency_step;
+        }
+    }
+
+    /// Eq 3.12 on every non-permanent behaviour.
+    pub(crate) fn decay(&mut self, config: &LearningConfig) {
+        let amount = (1.0 - self.lp) * config.decay_step;
+        for b in self.behaviours.iter_mut().filter(|b| !b.permanent) {
+            b.permanency -= amount;
+        }
+    }
+
+    /// Makes permanent what crossed the threshold and deletes what fell to the deletion
+    /// threshold (never a primitive), reporting both.
+    pub(crate) fn settle(&mut self, config: &LearningConfig) -> Vec<Event> {
+        let mut events = Vec::new();
+        for b in self.behaviours.iter_mut().filter(|b| !b.permanent && b.permanency >= config.permanency_threshold) {
+            b.permanent = true;
+            self.metrics.made_permanent += 1;
+            events.push(Event::BecamePermanent { primitives: b.primitives.clone(), nominated_by: b.nominated_by });
+        }
+        let mut index = 0;
+        while index < self.behaviours.len() {
+            let b = &self.behaviours[index];
+            if !b.permanent && !b.is_primitive() && b.permanency <= config.deletion_threshold {
+                let removed = self.remove(index);
+                events.push(Event::Deleted { primitives: removed.primitives, nominated_by: removed.nominated_by });
+            } else {
+                index += 1;
+            }
+        }
+        events
+    }
+
+    /// Takes a nominated behaviour: a new copy with the default permanency, or, if the model
+    /// holds it already, more permanency for that copy. Returns whether it was a duplicate.
+    pub fn nominate(&mut self, primitives: &[Primitive], nominated_by: usize, config: &LearningConfig) -> bool {
+        if let Some(index) = self.index_of(primitives) {
+            self.reinforce(index, config);
+            return true;
+        }
+        let index = self.insert(primitives.to_vec(), config);
+        self.behaviours[index].nominated_by = Some(nominated_by);
+        false
+    }
+
+    /// Drops every behaviour that is not permanent (the end of training).
+    pub fn prune(&mut self) {
+        let mut index = 0;
+        while index < self.behaviours.len() {
+            if self.behaviours[index].permanent {
+                index += 1;
+            } else {
+                self.remove(index);
+            }
+        }
+    }
+
+    /// Share of prediction rounds with a match (Tables 4.7, 4.10).
+    #[must_use]
+    pub fn match_rate(&self) -> f64 {
+        if self.metrics.rounds == 0 { 0.0 } else { self.metrics.rounds_matched as f64 / self.metrics.rounds as f64 }
+    }
+}

@@ -1,0 +1,185 @@
+//! Processing one demonstration by prediction rounds (thesis §3.4, Fig 3.17).
+//!
+//! From the end of the current segment every behaviour predicts once. The predictions are
+//! compared with the end of the next segment, then the one after, for as long as at least
+//! one still matches; among those matching the furthest segment reached, behaviours with an
+//! accurate ball prediction are preferred, then the fewest primitives, then the oldest.
+
+use polymimic_perceive::{Label, Primitive, Segment};
+use rand_chacha::ChaCha8Rng;
+use serde::{Deserialize, Serialize};
+
+use crate::config::LearningConfig;
+use crate::model::{Event, ForwardModel};
+use crate::prediction::{MotionTable, Prediction, matches, predict};
+use crate::state::{Pitch, ball_to_goal_mm, range_bearing, robot_to_ball_mm};
+
+/// How a demonstration ended, as far as learning is concerned.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Ending {
+    Goal,
+    OwnGoal,
+    Other,
+}
+
+/// A demonstration as the learner sees it: who, where, how it ended, and its segments.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SegmentedDemonstration {
+    pub demonstrator: String,
+    pub pitch: Pitch,
+    pub ending: Ending,
+    pub segments: Vec<Segment>,
+}
+
+fn primitive_of(segment: &Segment) -> Option<Primitive> {
+    match segment.label {
+        Label::Primitive(p) => Some(p),
+        Label::Gap => None,
+    }
+}
+
+/// The next segment at or after `from` named by a primitive, with that primitive.
+fn next_primitive(segments: &[Segment], from: usize) -> Option<(usize, Primitive)> {
+    segments.iter().enumerate().skip(from).find_map(|(i, s)| primitive_of(s).map(|p| (i, p)))
+}
+
+impl ForwardModel {
+    /// Learns from one demonstration; returns the events the trial must act on.
+    pub fn process(
+        &mut self,
+        demo: &SegmentedDemonstration,
+        motion: &MotionTable,
+        config: &LearningConfig,
+        rng: &mut ChaCha8Rng,
+    ) -> Vec<Event> {
+        let segments = &demo.segments;
+        let mut events = Vec::new();
+        let Some((mut c, first)) = next_primitive(segments, 0) else { return events };
+        let mut current: Vec<Primitive> = vec![first];
+        while c + 1 < segments.len() {
+            self.metrics.rounds += 1;
+            let start = segments[c].end;
+            let predictions: Vec<Prediction> =
+                self.behaviours.iter().map(|b| predict(b, start.robot, motion, config, rng)).collect();
+            let matching = |k: usize| -> Vec<usize> {
+                let gap = segments[k].label == Label::Gap;
+                (0..predictions.len())
+                    .filter(|&i| !(gap && self.behaviours[i].is_primitive()))
+                    .filter(|&i| matches(&predictions[i].end(), &segments[k].end.robot, config))
+                    .collect()
+            };
+            let mut reached = c + 1;
+            let mut matched = matching(reached);
+            if matched.is_empty() {
+                // Nobody spans even the next segment: start over from its primitive.
+                match next_primitive(segments, c + 1) {
+                    Some((next, p)) => {
+                        c = next;
+                        current = vec![p];
+                        continue;
+                    }
+                    None => break,
+                }
+            }
+            self.metrics.rounds_matched += 1;
+            while reached + 1 < segments.len() {
+                let further = matching(reached + 1);
+                if further.is_empty() {
+                    break;
+                }
+                reached += 1;
+                matched = further;
+            }
+            let end = segments[reached].end;
+            let ball_moved =
+                (end.ball_x_mm - start.ball_x_mm).hypot(end.ball_y_mm - start.ball_y_mm) > config.ball_moved_mm;
+            let actual_bearing = range_bearing(&end.robot, end.ball_x_mm, end.ball_y_mm).1;
+            let ball_accurate: Vec<usize> = matched
+                .iter()
+                .copied()
+                .filter(|&i| {
+                    ball_moved
+                        && predictions[i].ball.is_some_and(|(bearing, _)| {
+                            polymimic_perceive::wrap_angle_rad((bearing - actual_bearing).to_radians())
+                                .to_degrees()
+                                .abs()
+                                <= config.ball_angle_tolerance_deg
+                        })
+                })
+                .collect();
+            let pool = if ball_accurate.is_empty() { &matched } else { &ball_accurate };
+            let selected = *pool
+                .iter()
+                .min_by_key(|&&i| (self.behaviours[i].primitives.len(), self.behaviours[i].age))
+                .unwrap_or(&matched[0]);
+            let selected_primitives = self.behaviours[selected].primitives.clone();
+            let from = self.index_of(&current);
+            for &i in ball_accurate.iter().filter(|&&i| i != selected) {
+                self.shape_lp(config.lp_event);
+                if let Some(from) = from {
+                    self.follow(from, i, config);
+                }
+            }
+            if ball_accurate.contains(&selected) {
+                self.shape_lp(config.lp_event);
+            }
+            if let Some(from) = from {
+                self.follow(from, selected, config);
+            }
+            let selected = self.index_of(&selected_primitives).unwrap_or(selected);
+            self.reinforce(selected, config);
+            self.behaviours[selected].record_span(&start, &end, &demo.pitch, config);
+            self.decay(config);
+            self.shape_lp(lp_shaping(demo, &segments[c], &segments[reached], reached + 1 == segments.len(), config));
+            events.extend(self.settle(config));
+            c = reached;
+            current = if self.index_of(&selected_primitives).is_some() {
+                selected_primitives
+            } else {
+                primitive_of(&segments[reached]).map_or_else(|| vec![selected_primitives[0]], |p| vec![p])
+            };
+        }
+        events
+    }
+
+    /// Behaviour `to` followed behaviour `from`: eq 3.11, and past the creation threshold
+    /// their concatenation is created (or, if it exists, reinforced).
+    fn follow(&mut self, from: usize, to: usize, config: &LearningConfig) {
+        if !self.strengthen(from, to, config) {
+            return;
+        }
+        self.frequency[from][to] = 0.0;
+        let mut joined = self.behaviours[from].primitives.clone();
+        joined.extend_from_slice(&self.behaviours[to].primitives);
+        match self.index_of(&joined) {
+            Some(existing) => self.reinforce(existing, config),
+            None => {
+                self.insert(joined, config);
+            }
+        }
+    }
+}
+
+/// Eq 3.13 over a span: a goal or own goal outweighs everything; otherwise the ball's
+/// approach to the target goal and the robot's approach to the ball each count.
+fn lp_shaping(demo: &SegmentedDemonstration, from: &Segment, to: &Segment, last: bool, config: &LearningConfig) -> f64 {
+    if last {
+        match demo.ending {
+            Ending::Goal => return config.lp_goal,
+            Ending::OwnGoal => return -config.lp_goal,
+            Ending::Other => {}
+        }
+    }
+    let signed = |before: f64, after: f64, amount: f64| {
+        if after < before - config.shaping_dead_band_mm {
+            amount
+        } else if after > before + config.shaping_dead_band_mm {
+            -amount
+        } else {
+            0.0
+        }
+    };
+    signed(ball_to_goal_mm(&from.end, &demo.pitch), ball_to_goal_mm(&to.end, &demo.pitch), config.lp_ball_to_goal)
+        + signed(robot_to_ball_mm(&from.end), robot_to_ball_mm(&to.end), config.lp_robot_to_ball)
+}

@@ -21,7 +21,9 @@ from polymimic._native import (
     PrimitiveRecognizer,
     __version__,
 )
+from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, PrimitiveSequence, command_table, record, self_observation
+from polymimic.plots import animate_demonstration, plot_demonstration
 
 __all__ = [
     "Codebook",
@@ -36,7 +38,13 @@ __all__ = [
     "PrimitiveRecognizer",
     "PrimitiveSequence",
     "__version__",
+    "animate_demonstration",
     "command_table",
+    "load_demonstrations",
+    "load_self_observation",
+    "plot_demonstration",
     "record",
+    "save_demonstrations",
+    "save_self_observation",
     "self_observation",
 ]

@@ -45,7 +45,7 @@ assert tuple(_native.FRAME_COLUMNS) == FRAME_DTYPE.names
 def as_frames(array: np.ndarray) -> np.ndarray:
     """A ``(k, 7)`` float array in :data:`FRAME_DTYPE` column order, as structured frames."""
     frames = np.empty(len(array), dtype=FRAME_DTYPE)
-    for i, name in enumerate(FRAME_DTYPE.names):
+    for i, name in enumerate(FRAME_DTYPE.fields or {}):
         frames[name] = array[:, i]
     return frames
 

@@ -1,0 +1,293 @@
+"""Pictures of demonstrations: a still of the whole run and an animated GIF, both to scale.
+
+The field is drawn in its own millimetres (origin at the centre, +x toward the target goal),
+with the target goal at +x (blue) and the demonstrator's own goal at −x (red). matplotlib is
+imported only when a picture is made, and only its object-oriented API is used (no pyplot,
+no GUI backend), so these work headless and in threads.
+
+>>> import pathlib, tempfile
+>>> from polymimic.field import record
+>>> demo = record("expert", configuration=1, n=1, seed=4)[0]
+>>> folder = pathlib.Path(tempfile.mkdtemp())
+>>> figure = plot_demonstration(demo, path=folder / "expert.png")
+>>> sorted(p.name for p in folder.iterdir())
+['expert.png']
+>>> animate_demonstration(demo, folder / "expert.gif", stride=10)
+>>> from PIL import Image
+>>> with Image.open(folder / "expert.gif") as gif:
+...     gif.n_frames == -(-(len(demo.frames) - 1) // 10) + 1
+True
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+from typing import TYPE_CHECKING, Any, cast
+
+import numpy as np
+
+from polymimic._atomic import atomic_path
+from polymimic.field import Demonstration
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+__all__ = ["animate_demonstration", "plot_demonstration"]
+
+
+@dataclasses.dataclass(frozen=True)
+class _Scene:
+    """Sizes, mm: the field, the ball and the robot's footprint (length along its heading)."""
+
+    field_length_mm: float
+    field_width_mm: float
+    ball_diameter_mm: float
+    robot_length_mm: float
+    robot_width_mm: float
+
+
+_LARGE, _SMALL = (1020.0, 810.0, 100.0), (560.0, 345.0, 25.0)
+_SCENES = {
+    "lego": _Scene(*_LARGE, 140.0, 150.0),
+    "humanoid": _Scene(*_LARGE, 70.0, 110.0),
+    "tiny": _Scene(*_SMALL, 15.0, 15.0),
+}
+_BODY_OF = {"expert": "lego", "poor": "lego", "tiny": "tiny", "humanoid": "humanoid"}
+_TARGET_COLOUR, _OWN_COLOUR, _BALL_COLOUR = "tab:blue", "tab:red", "tab:orange"
+
+
+def plot_demonstration(demo: Demonstration, *, ax: Axes | None = None,
+                       path: str | os.PathLike[str] | None = None) -> Figure:
+    """Draw a demonstration on its field: the robot's path coloured by time, its heading every
+    second, the ball's path, and where both started (hollow) and ended (filled).
+
+    Parameters
+    ----------
+    demo : Demonstration
+        What to draw. The field and robot sizes follow the demonstrator's body (the tiny robot
+        plays on the small field; any other demonstrator is drawn as the Lego robot on the large
+        field unless it is the humanoid).
+    ax : matplotlib.axes.Axes, optional
+        Draw into these axes (a colour bar for time is added beside them); default: a new figure.
+    path : str or path-like, optional
+        Also save the figure there (format from the extension, e.g. ``.png``, ``.svg``),
+        atomically.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure drawn on.
+
+    Examples
+    --------
+    >>> from polymimic.field import record
+    >>> demo = record("poor", configuration=2, n=1, seed=1)[0]
+    >>> figure = plot_demonstration(demo)
+    >>> figure.axes[0].get_title().startswith("poor, configuration 2")
+    True
+    """
+    from matplotlib.collections import LineCollection
+    from matplotlib.figure import Figure
+
+    scene = _scene(demo)
+    frames = demo.frames
+    if ax is None:
+        figure = Figure(figsize=(7.5, 5.6), layout="constrained")
+        ax = figure.add_subplot()
+    figure = cast("Figure", ax.figure)
+    _draw_field(ax, scene)
+
+    t_s, x, y, theta = frames["t_s"], frames["robot_x_mm"], frames["robot_y_mm"], frames["robot_theta_rad"]
+    points = np.column_stack([x, y])
+    segments = np.stack([points[:-1], points[1:]], axis=1)
+    ok = np.isfinite(segments).all(axis=(1, 2))
+    path_lines = LineCollection(segments[ok], array=t_s[:-1][ok], cmap="viridis", linewidths=3.0, capstyle="round",
+                                zorder=3)
+    path_lines.set_clim(t_s[0], max(t_s[-1], t_s[0] + 1e-9))
+    ax.add_collection(path_lines)
+    figure.colorbar(path_lines, ax=ax, label="time (s)", shrink=0.8)
+    # Heading arrows, one a second, half a robot long.
+    each_second = np.arange(0, len(frames), 30)
+    tick_mm = 0.5 * scene.robot_length_mm
+    ax.quiver(x[each_second], y[each_second], np.cos(theta[each_second]), np.sin(theta[each_second]),
+              angles="xy", scale_units="xy", scale=1 / tick_mm, width=0.0025, color="0.2", alpha=0.6, zorder=4)
+    ax.add_patch(_robot_patch(scene, x[0], y[0], theta[0], filled=False))
+    ax.add_patch(_robot_patch(scene, x[-1], y[-1], theta[-1], filled=True))
+
+    bx, by = frames["ball_x_mm"], frames["ball_y_mm"]
+    ax.plot(bx, by, color=_BALL_COLOUR, linewidth=1.5, linestyle="--", zorder=3, label="ball")
+    _ball_markers(ax, scene, bx, by)
+    ax.plot([], [], color="0.3", linewidth=2, label="robot (hollow: start, filled: end)")
+    ax.legend(loc="lower left", fontsize="small", framealpha=0.9)
+    ax.set_title(f"{demo.demonstrator}, configuration {demo.configuration}: {demo.outcome.replace('_', ' ')}\n"
+                 f"{len(frames)} frames, {t_s[-1]:.1f} s, seed {demo.seed}", fontsize="medium")
+    if path is not None:
+        with atomic_path(path) as temporary:
+            figure.savefig(temporary, dpi=120)
+    return figure
+
+
+def animate_demonstration(demo: Demonstration, path: str | os.PathLike[str], *, fps: int = 30,
+                          stride: int = 1) -> None:
+    """Write an animated GIF of a demonstration, atomically: the robot as an oriented box with
+    its front marked, the ball as a circle, both to scale, trailing their paths.
+
+    Parameters
+    ----------
+    demo : Demonstration
+        What to animate.
+    path : str or path-like
+        The ``.gif`` file to write (replaced if it exists). Its directory must exist.
+    fps : int, default 30
+        GIF frames per second, 1 to 100. The tracker runs at 30 frames a second, so the GIF plays in real
+        time when ``fps * stride == 30``.
+    stride : int, default 1
+        Draw every ``stride``-th tracker frame, and always the last one, where the outcome is
+        shown: the GIF has ``ceil((len(frames) - 1) / stride) + 1`` frames.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile
+    >>> from polymimic.field import record
+    >>> demo = record("tiny", configuration=1, n=1, seed=2)[0]
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "tiny.gif"
+    >>> animate_demonstration(demo, path, fps=15, stride=30)
+    >>> path.stat().st_size > 0
+    True
+    """
+    if not isinstance(stride, (int, np.integer)) or isinstance(stride, bool) or stride < 1:
+        raise ValueError(f"stride must be an integer ≥ 1, got {stride!r}")
+    if not isinstance(fps, (int, np.integer)) or isinstance(fps, bool) or not 1 <= fps <= 100:
+        raise ValueError(f"fps must be an integer in 1..100, got {fps!r}")
+    if not os.fspath(path).lower().endswith(".gif"):
+        raise ValueError(f"animate_demonstration writes GIF files; {os.fspath(path)!r} does not end in .gif")
+    from matplotlib.animation import PillowWriter
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+    from matplotlib.patches import Circle
+
+    scene = _scene(demo)
+    frames = demo.frames
+    aspect = (1.1 * scene.field_width_mm) / (1.2 * scene.field_length_mm)
+    figure = Figure(figsize=(6.0, 6.0 * aspect + 0.7), layout="constrained")
+    FigureCanvasAgg(figure)
+    ax = figure.add_subplot()
+    _draw_field(ax, scene)
+    robot_trail, = ax.plot([], [], color="0.35", linewidth=1.0, zorder=3)
+    ball_trail, = ax.plot([], [], color=_BALL_COLOUR, linewidth=1.0, linestyle="--", zorder=3)
+    robot = _robot_patch(scene, frames["robot_x_mm"][0], frames["robot_y_mm"][0], frames["robot_theta_rad"][0],
+                         filled=True)
+    ax.add_patch(robot)
+    ball = Circle((0.0, 0.0), scene.ball_diameter_mm / 2, facecolor=_BALL_COLOUR, edgecolor="black",
+                  linewidth=0.8, zorder=5)
+    ax.add_patch(ball)
+    title = ax.set_title("", fontsize="medium")
+    label = f"{demo.demonstrator}, configuration {demo.configuration}"
+
+    writer = PillowWriter(fps=int(fps))
+    with atomic_path(path) as temporary, writer.saving(figure, os.fspath(temporary), dpi=80):
+        for i in _drawn_frames(len(frames), stride):
+            f = frames[i]
+            robot.set_xy(_robot_outline(scene, f["robot_x_mm"], f["robot_y_mm"], f["robot_theta_rad"]))
+            ball.set_center((f["ball_x_mm"], f["ball_y_mm"]))
+            ball.set_visible(bool(np.isfinite(f["ball_x_mm"])))
+            robot_trail.set_data(frames["robot_x_mm"][:i + 1], frames["robot_y_mm"][:i + 1])
+            ball_trail.set_data(frames["ball_x_mm"][:i + 1], frames["ball_y_mm"][:i + 1])
+            ending = f": {demo.outcome.replace('_', ' ')}" if i == len(frames) - 1 else ""
+            title.set_text(f"{label}   t = {f['t_s']:5.2f} s{ending}")
+            writer.grab_frame()
+
+
+def _state_image(body: str, robot: tuple[float, float, float], ball: tuple[float, float] | None,
+                 title: str) -> np.ndarray:
+    """An ``(H, W, 3)`` uint8 picture of the field with the robot at pose ``robot`` and the ball."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+    from matplotlib.patches import Circle
+
+    scene = _SCENES[body]
+    aspect = (1.1 * scene.field_width_mm) / (1.2 * scene.field_length_mm)
+    figure = Figure(figsize=(6.0, 6.0 * aspect + 0.7), dpi=80, layout="constrained")
+    canvas = FigureCanvasAgg(figure)
+    ax = figure.add_subplot()
+    _draw_field(ax, scene)
+    ax.add_patch(_robot_patch(scene, *robot, filled=True))
+    if ball is not None:
+        ax.add_patch(Circle(ball, scene.ball_diameter_mm / 2, facecolor=_BALL_COLOUR, edgecolor="black",
+                            linewidth=0.8, zorder=5))
+    ax.set_title(title, fontsize="medium")
+    canvas.draw()
+    return np.asarray(canvas.buffer_rgba())[..., :3].copy()
+
+
+def _drawn_frames(n_frames: int, stride: int) -> list[int]:
+    """Every ``stride``-th frame index from 0, and the last."""
+    drawn = list(range(0, n_frames, stride))
+    return drawn if drawn[-1] == n_frames - 1 else [*drawn, n_frames - 1]
+
+
+def _scene(demo: Demonstration) -> _Scene:
+    if not isinstance(demo, Demonstration):
+        raise TypeError(f"expected a Demonstration, got {type(demo).__name__}")
+    if len(demo.frames) == 0:
+        raise ValueError("the demonstration has no frames to draw")
+    return _SCENES[_BODY_OF.get(demo.demonstrator, "lego")]
+
+
+def _draw_field(ax: Axes, scene: _Scene) -> None:
+    """The pitch, its centre line and circle, and both goals behind their lines."""
+    from matplotlib.patches import Circle, Rectangle
+
+    half_l, half_w = scene.field_length_mm / 2, scene.field_width_mm / 2
+    mouth, depth = scene.field_width_mm / 4, 0.06 * scene.field_length_mm
+    ax.add_patch(Rectangle((-half_l, -half_w), 2 * half_l, 2 * half_w, facecolor="#eef6ea", edgecolor="0.15",
+                           linewidth=1.5, zorder=0))
+    ax.plot([0, 0], [-half_w, half_w], color="0.55", linewidth=1.0, linestyle=":", zorder=1)
+    ax.add_patch(Circle((0, 0), 0.1 * scene.field_length_mm, fill=False, edgecolor="0.55", linewidth=1.0,
+                        linestyle=":", zorder=1))
+    for sign, colour, name in ((1, _TARGET_COLOUR, "target goal"), (-1, _OWN_COLOUR, "own goal")):
+        x0 = half_l if sign > 0 else -half_l - depth
+        ax.add_patch(Rectangle((x0, -mouth), depth, 2 * mouth, facecolor=colour, alpha=0.25, edgecolor=colour,
+                               linewidth=1.5, zorder=1))
+        ax.plot([sign * half_l] * 2, [-mouth, mouth], color=colour, linewidth=3.0, zorder=2)
+        ax.text(sign * half_l, mouth + 0.02 * scene.field_width_mm, name, color=colour, ha="center",
+                va="bottom", fontsize="small")
+    margin = 0.1 * scene.field_length_mm
+    ax.set_xlim(-half_l - margin, half_l + margin)
+    ax.set_ylim(-half_w - 0.05 * scene.field_width_mm, half_w + 0.05 * scene.field_width_mm)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x (mm)")
+    ax.set_ylabel("y (mm)")
+
+
+def _robot_outline(scene: _Scene, x_mm: float, y_mm: float, theta_rad: float) -> np.ndarray:
+    """The robot's box with a notch at its front (a pentagon), in field coordinates."""
+    hl, hw = scene.robot_length_mm / 2, scene.robot_width_mm / 2
+    robot_frame = np.array([[-hl, -hw], [hl * 0.6, -hw], [hl, 0.0], [hl * 0.6, hw], [-hl, hw]])
+    c, s = math.cos(theta_rad), math.sin(theta_rad)
+    return robot_frame @ np.array([[c, s], [-s, c]]) + np.array([x_mm, y_mm])
+
+
+def _robot_patch(scene: _Scene, x_mm: float, y_mm: float, theta_rad: float, *, filled: bool) -> Any:
+    from matplotlib.patches import Polygon
+
+    outline = _robot_outline(scene, x_mm, y_mm, theta_rad) if np.isfinite([x_mm, y_mm, theta_rad]).all() else \
+        np.zeros((5, 2))
+    return Polygon(outline, closed=True, facecolor="0.3" if filled else "none", edgecolor="0.1", alpha=0.85,
+                   linewidth=1.2, zorder=5)
+
+
+def _ball_markers(ax: Axes, scene: _Scene, bx: np.ndarray, by: np.ndarray) -> None:
+    from matplotlib.patches import Circle
+
+    seen = np.flatnonzero(np.isfinite(bx) & np.isfinite(by))
+    if len(seen) == 0:
+        return
+    first, last = seen[0], seen[-1]
+    r = scene.ball_diameter_mm / 2
+    ax.add_patch(Circle((bx[first], by[first]), r, fill=False, edgecolor=_BALL_COLOUR, linewidth=1.5, zorder=4))
+    ax.add_patch(Circle((bx[last], by[last]), r, facecolor=_BALL_COLOUR, edgecolor="black", linewidth=0.8,
+                        alpha=0.9, zorder=4))

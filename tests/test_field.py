@@ -1,0 +1,160 @@
+"""The simulated field from Python: shapes, determinism, the command table and bad input."""
+
+import json
+
+import numpy as np
+import pytest
+
+import polymimic
+from polymimic.field import (
+    DEMONSTRATORS,
+    FRAME_DTYPE,
+    OUTCOMES,
+    PRIMITIVES,
+    command_primitives,
+    default_config,
+)
+
+
+@pytest.fixture(scope="module")
+def demos():
+    return {(who, c): polymimic.record(who, configuration=c, n=2, seed=11) for who in DEMONSTRATORS for c in (1, 2)}
+
+
+@pytest.mark.parametrize("who", DEMONSTRATORS)
+@pytest.mark.parametrize("configuration", [1, 2])
+def test_record_gives_n_demonstrations_of_tracker_frames(who, configuration):
+    recorded = polymimic.record(who, configuration=configuration, n=2, seed=3)
+    assert len(recorded) == 2
+    for demo in recorded:
+        assert isinstance(demo, polymimic.Demonstration)
+        assert (demo.demonstrator, demo.configuration) == (who, configuration)
+        assert demo.outcome in OUTCOMES
+        frames = demo.frames
+        assert frames.dtype == FRAME_DTYPE and frames.ndim == 1 and len(frames) > 1
+        # 30 frames a second from 0; valid demonstrations have no tracking gaps.
+        np.testing.assert_allclose(frames["t_s"], np.arange(len(frames)) / 30, atol=1e-9)
+        assert np.isfinite(frames[["robot_x_mm", "robot_y_mm", "robot_theta_rad"]].tolist()).all()
+        assert np.isfinite(frames["ball_x_mm"]).all() and np.isfinite(frames["ball_y_mm"]).all()
+        assert (np.abs(frames["robot_theta_rad"]) <= np.pi + 1e-9).all()
+
+
+def test_record_starts_from_the_configuration(demos):
+    first = demos["expert", 1][0].frames[0]
+    assert first["robot_x_mm"] == pytest.approx(-170, abs=3) and first["ball_x_mm"] == pytest.approx(170, abs=3)
+    first = demos["expert", 2][0].frames[0]
+    assert first["robot_x_mm"] == pytest.approx(170, abs=3) and first["ball_x_mm"] == pytest.approx(-170, abs=3)
+    first = demos["tiny", 1][0].frames[0]
+    assert first["robot_x_mm"] == pytest.approx(-560 / 6, abs=3)
+
+
+def test_self_observation_gives_one_second_sequences_of_each_primitive():
+    sequences = polymimic.self_observation(3, seed=1)
+    assert len(sequences) == 15
+    assert sorted(s.primitive for s in sequences) == sorted(PRIMITIVES * 3)
+    for s in sequences:
+        assert isinstance(s, polymimic.PrimitiveSequence)
+        assert s.frames.dtype == FRAME_DTYPE and s.frames.shape == (30,)
+        assert np.isnan(s.frames["ball_x_mm"]).all()  # the imitator is alone on the field
+        assert set(command_primitives()[s.frames["command"]]) == {s.primitive}
+
+
+def test_same_seed_same_frames_different_seed_different_frames():
+    a = polymimic.record("poor", configuration=2, n=3, seed=5)
+    b = polymimic.record("poor", configuration=2, n=3, seed=5)
+    c = polymimic.record("poor", configuration=2, n=3, seed=6)
+    assert [d.frames.tobytes() for d in a] == [d.frames.tobytes() for d in b]
+    assert [d.outcome for d in a] == [d.outcome for d in b]
+    assert all(x.frames.tobytes() != y.frames.tobytes() for x, y in zip(a, c))
+    s1, s2 = polymimic.self_observation(2, seed=9), polymimic.self_observation(2, seed=9)
+    assert [s.frames.tobytes() for s in s1] == [s.frames.tobytes() for s in s2]
+    assert s1[0].frames.tobytes() != polymimic.self_observation(2, seed=10)[0].frames.tobytes()
+
+
+def test_every_recorded_command_has_an_equivalent_primitive(demos):
+    table = polymimic.command_table()
+    ids = {row["id"] for row in table}
+    assert len(ids) == len(table)
+    assert {row["primitive"] for row in table} == set(PRIMITIVES)
+    lookup = command_primitives()
+    for recorded in demos.values():
+        for demo in recorded:
+            commands = demo.frames["command"]
+            assert set(commands.tolist()) <= ids
+            assert set(lookup[commands]) <= set(PRIMITIVES)
+
+
+def test_episode_steps_and_runs_like_the_recorder():
+    episode = polymimic.Episode("lego", configuration=1, seed=2)
+    seen = episode.observation()
+    assert seen["field"] == (1020.0, 810.0) and seen["t_s"] == 0.0
+    row, outcome = episode.step("forward")
+    assert row.shape == (7,) and outcome is None
+    frames, outcome = episode.run(["forward"] * 29 + [polymimic.command_table()[4]["id"]])
+    assert frames.shape == (30, 7) and outcome is None
+    assert episode.frames.shape == (31, 7)
+    assert episode.observation()["t_s"] == pytest.approx(31 / 30)
+    assert episode.valid and not episode.finished
+
+
+@pytest.mark.parametrize(
+    "kwargs, match",
+    [
+        (dict(demonstrator="nobody", configuration=1, n=1), "unknown demonstrator 'nobody'"),
+        (dict(demonstrator="expert", configuration=3, n=1), "configuration must be 1 or 2, got 3"),
+        (dict(demonstrator="expert", configuration=1, n=0), "n must be at least 1, got 0"),
+        (dict(demonstrator="expert", configuration=1, n=-1), "n must be ≥ 0, got -1"),
+        (dict(demonstrator="expert", configuration=1, n=1, seed=-1), "seed must be ≥ 0"),
+    ],
+)
+def test_bad_record_arguments_are_named(kwargs, match):
+    who = kwargs.pop("demonstrator")
+    with pytest.raises(ValueError, match=match):
+        polymimic.record(who, **kwargs)
+
+
+@pytest.mark.parametrize("n, match", [(0, "at least 1"), (-1, "≥ 0")])
+def test_bad_self_observation_counts_are_named(n, match):
+    with pytest.raises(ValueError, match=f"n_per_primitive must be {match}"):
+        polymimic.self_observation(n)
+
+
+@pytest.mark.parametrize(
+    "command, match",
+    [("jump", 'unknown command "jump"'), (9999, "unknown command id 9999"), (-1, "unknown command id -1")],
+)
+def test_unknown_commands_are_named(command, match):
+    episode = polymimic.Episode()
+    with pytest.raises(ValueError, match=match):
+        episode.step(command)
+    with pytest.raises(ValueError, match=match):
+        episode.run(["forward", command])
+    assert len(episode.frames) == 0  # nothing ran
+
+
+def test_a_body_refuses_another_language():
+    expert_only = next(row["id"] for row in polymimic.command_table() if row["language"] == "expert")
+    with pytest.raises(ValueError, match="cannot drive the tiny body"):
+        polymimic.Episode("tiny").step(expert_only)
+
+
+def test_stepping_a_finished_episode_is_a_field_run_error():
+    config = default_config()
+    config["time_limit_s"] = 0.5
+    episode = polymimic.Episode(config=json.dumps(config))
+    frames, outcome = episode.run(["stop"] * 100)
+    assert outcome == "time_up" and episode.finished
+    assert len(frames) == 16  # 15 steps and the final state
+    with pytest.raises(polymimic.FieldRunError, match="already ended"):
+        episode.step("forward")
+    with pytest.raises(polymimic.PolymimicError):
+        episode.place_robot(0.0, 0.0, 0.0)
+
+
+def test_bad_episode_arguments_are_named():
+    with pytest.raises(ValueError, match="configuration must be 1 or 2, got 3"):
+        polymimic.Episode(configuration=3)
+    with pytest.raises(ValueError, match='body must be "lego", "tiny" or "humanoid"'):
+        polymimic.Episode("wheelbarrow")
+    with pytest.raises(ValueError, match="field config"):
+        polymimic.Episode(config='{"time_limit_s": 1.0}')

@@ -7,7 +7,7 @@ use crate::error::LearnError;
 /// The constants of behaviour creation, permanency, decay, learning preference and
 /// prediction. Defaults are the thesis's; the ones it leaves open are marked *choice*.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
+#[serde(default, deny_unknown_fields)]
 pub struct LearningConfig {
     /// Frequency at which two behaviours in sequence form a new one (then reset to 0).
     pub creation_threshold: f64,
@@ -80,6 +80,22 @@ impl Default for LearningConfig {
 }
 
 impl LearningConfig {
+    /// The config as JSON (every field, so a saved config documents itself).
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        serde_json::to_string(self).unwrap_or_default()
+    }
+
+    /// A config from JSON; missing fields take their defaults, unknown ones are refused.
+    ///
+    /// # Errors
+    /// Text that is not a config, or a value out of range.
+    pub fn from_json(text: &str) -> Result<Self, LearnError> {
+        let config: Self = serde_json::from_str(text).map_err(|e| LearnError::Parse(e.to_string()))?;
+        config.check()?;
+        Ok(config)
+    }
+
     /// Checks every field.
     ///
     /// # Errors

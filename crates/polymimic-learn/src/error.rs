@@ -14,6 +14,8 @@ pub enum LearnError {
     NoDemonstrations,
     #[error("the ordering is empty: name at least one demonstrator")]
     EmptyOrdering,
+    #[error("learning config: {0}")]
+    Parse(String),
     #[error("primitive motion statistics are missing or not finite for {0}")]
     MotionStats(&'static str),
 }

@@ -5,6 +5,7 @@ mod convert;
 mod errors;
 mod field;
 mod hmm;
+mod learn;
 mod perceive;
 mod vq;
 
@@ -21,6 +22,8 @@ mod _native {
     };
     #[pymodule_export]
     use super::hmm::PyDiscreteHmm;
+    #[pymodule_export]
+    use super::learn::{check_learning_config, default_learning_config, learning_trial};
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;
     #[pymodule_export]

@@ -1,0 +1,177 @@
+//! Learning trials from Python: segmented demonstrations in, models and metrics out.
+
+use numpy::{PyReadonlyArray1, PyReadonlyArray2};
+use polymimic_learn::{
+    Ending, ForwardModel, LearningConfig, MotionTable, PhaseOne, Pitch, SegmentedDemonstration, run_trial,
+};
+use polymimic_perceive::{Label, MotionStats, Pose, Primitive, Segment, TrackedFrame};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+use crate::convert::non_negative;
+
+fn value_error(e: impl std::fmt::Display) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// The learning constants with their defaults, as JSON.
+#[pyfunction]
+pub fn default_learning_config() -> String {
+    LearningConfig::default().to_json()
+}
+
+/// Checks a learning config given as JSON; returns it with every field filled in.
+#[pyfunction]
+pub fn check_learning_config(config: &str) -> PyResult<String> {
+    Ok(LearningConfig::from_json(config).map_err(value_error)?.to_json())
+}
+
+fn motion_table(stats: &Bound<'_, PyDict>) -> PyResult<MotionTable> {
+    let mut rows = Vec::new();
+    for primitive in Primitive::ALL {
+        let row = stats
+            .get_item(primitive.name())?
+            .ok_or_else(|| PyValueError::new_err(format!("motion_stats has no row for {}", primitive.name())))?;
+        let get = |key: &str| -> PyResult<f64> { row.get_item(key)?.extract() };
+        rows.push(MotionStats {
+            primitive,
+            count: row.get_item("count").and_then(|c| c.extract()).unwrap_or(0),
+            distance_mean_mm: get("distance_mean_mm")?,
+            distance_sd_mm: get("distance_sd_mm")?,
+            rotation_mean_deg: get("rotation_mean_deg")?,
+            rotation_sd_deg: get("rotation_sd_deg")?,
+        });
+    }
+    MotionTable::new(&rows).map_err(value_error)
+}
+
+fn frame(row: &[f64]) -> TrackedFrame {
+    TrackedFrame { robot: Pose { x_mm: row[0], y_mm: row[1], theta_rad: row[2] }, ball_x_mm: row[3], ball_y_mm: row[4] }
+}
+
+fn demonstration(index: usize, item: &Bound<'_, PyAny>) -> PyResult<SegmentedDemonstration> {
+    let what = |field: &str| format!("demonstration {index}: {field}");
+    let demonstrator: String = item.get_item("demonstrator")?.extract()?;
+    let pitch = match item.get_item("pitch")?.extract::<String>()?.as_str() {
+        "large" => Pitch::LARGE,
+        "small" => Pitch::SMALL,
+        other => return Err(PyValueError::new_err(format!("{}: {other:?} is not large or small", what("pitch")))),
+    };
+    let ending = match item.get_item("outcome")?.extract::<String>()?.as_str() {
+        "goal" => Ending::Goal,
+        "own_goal" => Ending::OwnGoal,
+        _ => Ending::Other,
+    };
+    let segments = item.get_item("segments")?;
+    let labels: Vec<String> = segments.get_item("label")?.extract()?;
+    let first: PyReadonlyArray1<i64> = segments.get_item("first_frame")?.extract()?;
+    let last: PyReadonlyArray1<i64> = segments.get_item("last_frame")?.extract()?;
+    let start: PyReadonlyArray2<f64> = segments.get_item("start")?.extract()?;
+    let end: PyReadonlyArray2<f64> = segments.get_item("end")?.extract()?;
+    let (first, last, start, end) = (first.as_array(), last.as_array(), start.as_array(), end.as_array());
+    let k = labels.len();
+    if first.len() != k || last.len() != k || start.shape() != [k, 5] || end.shape() != [k, 5] {
+        return Err(PyValueError::new_err(format!("{}: columns of different lengths", what("segments"))));
+    }
+    let segments = (0..k)
+        .map(|i| {
+            let label = match labels[i].as_str() {
+                "gap" => Label::Gap,
+                name => Label::Primitive(
+                    Primitive::from_name(name)
+                        .ok_or_else(|| PyValueError::new_err(format!("{}: label {name:?}", what("segments"))))?,
+                ),
+            };
+            let row = |a: &numpy::ndarray::ArrayView2<f64>| a.row(i).to_vec();
+            Ok(Segment {
+                label,
+                first_frame: usize::try_from(first[i]).unwrap_or(0),
+                last_frame: usize::try_from(last[i]).unwrap_or(0),
+                start: frame(&row(&start)),
+                end: frame(&row(&end)),
+                scores: [f64::NEG_INFINITY; 4],
+            })
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    Ok(SegmentedDemonstration { demonstrator, pitch, ending, segments })
+}
+
+fn model_dict<'py>(py: Python<'py>, model: &ForwardModel) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    let m = &model.metrics;
+    out.set_item("name", &model.name)?;
+    out.set_item("lp", model.lp)?;
+    out.set_item("lp_history", model.lp_history.clone())?;
+    out.set_item("match_rate", model.match_rate())?;
+    for (key, value) in [
+        ("created", m.created),
+        ("deleted", m.deleted),
+        ("permanent", m.made_permanent),
+        ("candidates", m.candidates),
+        ("duplicates", m.duplicates),
+        ("candidates_permanent", m.candidates_permanent),
+        ("rounds", m.rounds),
+        ("rounds_matched", m.rounds_matched),
+    ] {
+        out.set_item(key, value)?;
+    }
+    let behaviours = PyList::empty(py);
+    for b in &model.behaviours {
+        let row = PyDict::new(py);
+        row.set_item("primitives", b.letters())?;
+        row.set_item("permanency", b.permanency)?;
+        row.set_item("permanent", b.permanent)?;
+        row.set_item("age", b.age)?;
+        row.set_item("selected", b.selected)?;
+        row.set_item("ball_samples", b.ball_angle_deg.count)?;
+        row.set_item("ball_angle_deg", (b.ball_angle_deg.mean, b.ball_angle_deg.sd()))?;
+        row.set_item("ball_distance_mm", (b.ball_distance_mm.mean, b.ball_distance_mm.sd()))?;
+        behaviours.append(row)?;
+    }
+    out.set_item("behaviours", behaviours)?;
+    Ok(out)
+}
+
+/// One learning trial. `demonstrations` are dicts with `demonstrator`, `pitch` ("large" or
+/// "small"), `outcome` and `segments` (as `PrimitiveRecognizer.segment` returns them);
+/// `motion_stats` is the recogniser's Table 3.1. Returns the models' metrics, LP histories
+/// and behaviours, for every demonstrator's model and the imitator's.
+#[pyfunction]
+#[pyo3(signature = (demonstrations, ordering, motion_stats, *, config=None, phase_one="by-model", seed=0))]
+pub fn learning_trial<'py>(
+    py: Python<'py>,
+    demonstrations: &Bound<'py, PyAny>,
+    ordering: Vec<String>,
+    motion_stats: &Bound<'py, PyDict>,
+    config: Option<&str>,
+    phase_one: &str,
+    seed: i64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let demos = demonstrations
+        .try_iter()?
+        .enumerate()
+        .map(|(i, d)| demonstration(i, &d?))
+        .collect::<PyResult<Vec<_>>>()?;
+    let config = match config {
+        Some(text) => LearningConfig::from_json(text).map_err(value_error)?,
+        None => LearningConfig::default(),
+    };
+    let phase_one = match phase_one {
+        "by-model" => PhaseOne::ByModel,
+        "interleaved" => PhaseOne::Interleaved,
+        other => return Err(PyValueError::new_err(format!("phase_one must be \"by-model\" or \"interleaved\", got {other:?}"))),
+    };
+    let motion = motion_table(motion_stats)?;
+    let seed = non_negative("seed", seed)? as u64;
+    let result =
+        py.detach(|| run_trial(&demos, &ordering, &motion, &config, phase_one, seed)).map_err(value_error)?;
+    let out = PyDict::new(py);
+    let models = PyList::empty(py);
+    for model in &result.models {
+        models.append(model_dict(py, model)?)?;
+    }
+    out.set_item("models", models)?;
+    out.set_item("imitator", model_dict(py, &result.imitator)?)?;
+    Ok(out)
+}

@@ -10,7 +10,10 @@ use crate::transitions::{Transitions, add_rows};
 
 /// Sequences per parallel work item. Fixed, so sums are added in the same order whatever
 /// the number of threads, and results are bit-identical.
-pub(crate) const SEQUENCES_PER_CHUNK: usize = 64;
+pub(crate) const SEQUENCES_PER_CHUNK: usize = 256;
+
+/// Sequences stepped side by side within a chunk.
+const LANES: usize = 2;
 
 /// Expected counts of one E-step, in the model's own layout.
 pub(crate) struct Counts {
@@ -48,24 +51,35 @@ impl WithLattice for EStep<'_> {
             .par_chunks(SEQUENCES_PER_CHUNK)
             .enumerate()
             .map(|(chunk_index, chunk)| {
-                let mut counts = LatticeCounts::zeros(lattice);
-                // `emitted[k][i]`: Σ γ_t(i) over the t with O_t = k.
-                let mut emitted = vec![[0.0; W]; m];
-                let mut scratch = Scratch::default();
-                for (offset, seq) in chunk.iter().enumerate() {
-                    let emission = |t: usize| &table[seq[t] as usize];
-                    let on_gamma = |t: usize, gamma: &[f64; W]| {
-                        let row = &mut emitted[seq[t] as usize];
+                // A few sequences at a time, each lane with its own sums; the lanes are added
+                // together at the end of the chunk, in a fixed order.
+                let mut counts: [_; LANES] = std::array::from_fn(|_| LatticeCounts::zeros(lattice));
+                // `emitted[lane][k][i]`: Σ γ_t(i) over the t with O_t = k.
+                let mut emitted: [_; LANES] = std::array::from_fn(|_| vec![[0.0; W]; m]);
+                let mut scratch: [_; LANES] = std::array::from_fn(|_| Scratch::default());
+                for (pair_index, pair) in chunk.chunks(LANES).enumerate() {
+                    let seqs: [&[u32]; LANES] = std::array::from_fn(|i| pair.get(i).copied().unwrap_or(&[]));
+                    let emission = |lane: usize, t: usize| &table[seqs[lane][t] as usize];
+                    let on_gamma = |lane: usize, t: usize, gamma: &[f64; W]| {
+                        let row = &mut emitted[lane][seqs[lane][t] as usize];
                         for i in 0..W {
                             row[i] += gamma[i];
                         }
                     };
-                    lattice.add_counts(seq.len(), emission, &mut scratch, &mut counts, on_gamma).map_err(
-                        |position| HmmError::ImpossibleSequence {
-                            index: chunk_index * SEQUENCES_PER_CHUNK + offset,
+                    let lens = seqs.map(<[u32]>::len);
+                    let results = lattice.add_counts_lanes(lens, emission, &mut scratch, &mut counts, on_gamma);
+                    for (lane, result) in results.into_iter().enumerate() {
+                        result.map_err(|position| HmmError::ImpossibleSequence {
+                            index: chunk_index * SEQUENCES_PER_CHUNK + pair_index * LANES + lane,
                             position,
-                        },
-                    )?;
+                        })?;
+                    }
+                }
+                let mut lanes = counts.into_iter().zip(emitted);
+                let (mut counts, mut emitted) = lanes.next().unwrap_or_else(|| unreachable!("LANES > 0"));
+                for (lane_counts, lane_emitted) in lanes {
+                    counts.add(&lane_counts);
+                    add_rows(&mut emitted, &lane_emitted);
                 }
                 Ok((counts, emitted))
             })

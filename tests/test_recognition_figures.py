@@ -56,6 +56,23 @@ def test_fig_4_5_each_model_likes_its_own_primitive_best(recognizer, test_set):
         assert max(column, key=column.get) == primitive, column
 
 
+def test_fig_4_5_draws_as_a_bar_chart(recognizer, test_set, tmp_path):
+    table = recognition.log_likelihood_table(recognizer, test_set)
+    figure = polymimic.plot_log_likelihoods(table, path=tmp_path / "fig_4_5.png")
+    heights = sorted(patch.get_height() for patch in figure.axes[0].patches)
+    assert heights == sorted(v for row in table.values() for v in row.values())
+    assert (tmp_path / "fig_4_5.png").stat().st_size > 10_000
+
+
+def test_a_recogniser_of_another_version_is_refused(recognizer, tmp_path):
+    recognizer.save(tmp_path / "r.json")
+    text = (tmp_path / "r.json").read_text()
+    head, _, tail = text.rpartition('"version":1')  # the envelope's own, after the payload
+    (tmp_path / "future.json").write_text(head + '"version":4' + tail)
+    with pytest.raises(polymimic.ModelFileError, match="format version 4 is not supported"):
+        polymimic.PrimitiveRecognizer.load(tmp_path / "future.json")
+
+
 def test_confusion_rows_add_up_to_the_test_set(recognizer, test_set):
     matrix = recognition.confusion_matrix(recognizer, test_set)
     assert matrix.sum() == sum(s.primitive != "stop" for s in test_set)

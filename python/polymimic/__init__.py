@@ -23,7 +23,8 @@ from polymimic._native import (
 )
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, PrimitiveSequence, command_table, record, self_observation
-from polymimic.plots import animate_demonstration, plot_demonstration
+from polymimic.learning import LearningConfig, TrialResult, run_trial
+from polymimic.plots import animate_demonstration, plot_demonstration, plot_log_likelihoods
 
 __all__ = [
     "Codebook",
@@ -31,19 +32,23 @@ __all__ = [
     "DiscreteHMM",
     "Episode",
     "FieldRunError",
+    "LearningConfig",
     "ImpossibleSequenceError",
     "ModelFileError",
     "NotFittedError",
     "PolymimicError",
     "PrimitiveRecognizer",
     "PrimitiveSequence",
+    "TrialResult",
     "__version__",
     "animate_demonstration",
     "command_table",
     "load_demonstrations",
     "load_self_observation",
     "plot_demonstration",
+    "plot_log_likelihoods",
     "record",
+    "run_trial",
     "save_demonstrations",
     "save_self_observation",
     "self_observation",

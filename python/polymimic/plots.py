@@ -291,3 +291,47 @@ def _ball_markers(ax: Axes, scene: _Scene, bx: np.ndarray, by: np.ndarray) -> No
     ax.add_patch(Circle((bx[first], by[first]), r, fill=False, edgecolor=_BALL_COLOUR, linewidth=1.5, zorder=4))
     ax.add_patch(Circle((bx[last], by[last]), r, facecolor=_BALL_COLOUR, edgecolor="black", linewidth=0.8,
                         alpha=0.9, zorder=4))
+
+
+def plot_log_likelihoods(table: dict[str, dict[str, float]], *, ax: Axes | None = None,
+                         path: str | os.PathLike[str] | None = None) -> Figure:
+    """Fig 4.5: grouped bars of each HMM's mean log-likelihood on each primitive's test set.
+
+    Parameters
+    ----------
+    table : dict
+        ``table[model][primitive]``, as :func:`polymimic.recognition.log_likelihood_table`
+        returns it.
+    ax, path
+        As for :func:`plot_demonstration`.
+
+    Examples
+    --------
+    >>> table = {"forward": {"forward": -60.0, "backward": -400.0},
+    ...          "backward": {"forward": -380.0, "backward": -70.0}}
+    >>> figure = plot_log_likelihoods(table)
+    >>> len(figure.axes[0].patches)
+    4
+    """
+    from matplotlib.figure import Figure
+
+    if ax is None:
+        figure = Figure(figsize=(7.0, 4.2), layout="constrained")
+        ax = figure.add_subplot()
+    figure = cast("Figure", ax.figure)
+    models = list(table)
+    primitives = list(next(iter(table.values()), {}))
+    width = 0.8 / max(len(models), 1)
+    positions = np.arange(len(primitives))
+    for i, model in enumerate(models):
+        values = [table[model][p] for p in primitives]
+        ax.bar(positions + (i - (len(models) - 1) / 2) * width, values, width, label=f"{model} HMM")
+    ax.set_xticks(positions, [f"{p} test set" for p in primitives])
+    ax.set_ylabel("mean log-likelihood")
+    ax.axhline(0.0, color="0.3", linewidth=0.8)
+    ax.legend(fontsize="small")
+    ax.set_title("Each HMM on each primitive's held-out sequences (thesis Fig 4.5)", fontsize="medium")
+    if path is not None:
+        with atomic_path(path) as temporary:
+            figure.savefig(temporary, dpi=120)
+    return figure

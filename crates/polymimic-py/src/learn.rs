@@ -125,8 +125,8 @@ fn model_dict<'py>(py: Python<'py>, model: &ForwardModel) -> PyResult<Bound<'py,
         row.set_item("age", b.age)?;
         row.set_item("selected", b.selected)?;
         row.set_item("ball_samples", b.ball_angle_deg.count)?;
-        row.set_item("ball_angle_deg", (b.ball_angle_deg.mean, b.ball_angle_deg.sd()))?;
-        row.set_item("ball_distance_mm", (b.ball_distance_mm.mean, b.ball_distance_mm.sd()))?;
+        row.set_item("ball_angle_deg", [b.ball_angle_deg.mean, b.ball_angle_deg.sd()])?;
+        row.set_item("ball_distance_mm", [b.ball_distance_mm.mean, b.ball_distance_mm.sd()])?;
         behaviours.append(row)?;
     }
     out.set_item("behaviours", behaviours)?;
@@ -148,11 +148,8 @@ pub fn learning_trial<'py>(
     phase_one: &str,
     seed: i64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let demos = demonstrations
-        .try_iter()?
-        .enumerate()
-        .map(|(i, d)| demonstration(i, &d?))
-        .collect::<PyResult<Vec<_>>>()?;
+    let demos =
+        demonstrations.try_iter()?.enumerate().map(|(i, d)| demonstration(i, &d?)).collect::<PyResult<Vec<_>>>()?;
     let config = match config {
         Some(text) => LearningConfig::from_json(text).map_err(value_error)?,
         None => LearningConfig::default(),
@@ -160,12 +157,15 @@ pub fn learning_trial<'py>(
     let phase_one = match phase_one {
         "by-model" => PhaseOne::ByModel,
         "interleaved" => PhaseOne::Interleaved,
-        other => return Err(PyValueError::new_err(format!("phase_one must be \"by-model\" or \"interleaved\", got {other:?}"))),
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "phase_one must be \"by-model\" or \"interleaved\", got {other:?}"
+            )));
+        }
     };
     let motion = motion_table(motion_stats)?;
     let seed = non_negative("seed", seed)? as u64;
-    let result =
-        py.detach(|| run_trial(&demos, &ordering, &motion, &config, phase_one, seed)).map_err(value_error)?;
+    let result = py.detach(|| run_trial(&demos, &ordering, &motion, &config, phase_one, seed)).map_err(value_error)?;
     let out = PyDict::new(py);
     let models = PyList::empty(py);
     for model in &result.models {

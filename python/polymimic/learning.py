@@ -1,0 +1,167 @@
+"""Learning from many demonstrators: one trial of the thesis's two-phase training (§3.4).
+
+Demonstrations are segmented by a trained :class:`~polymimic.PrimitiveRecognizer`, then every
+demonstrator's forward model and the imitator's learn from them in Rust.
+
+>>> import polymimic
+>>> from polymimic import recognition
+>>> recognizer = recognition.train_recognizer(polymimic.self_observation(60, seed=1), codebook_size=64)
+>>> demos = [d for who in ("expert", "poor") for d in polymimic.record(who, configuration=1, n=3, seed=1)]
+>>> result = run_trial(demos, recognizer=recognizer, ordering=["expert", "poor"], seed=0)
+>>> sorted(result.models), result.imitator.lp
+(['expert', 'poor'], 0.9)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import os
+from collections.abc import Sequence
+from typing import Any
+
+from polymimic import _native
+from polymimic._atomic import atomic_write_text
+from polymimic.field import Demonstration
+
+SMALL_FIELD_BODIES = frozenset({"tiny"})
+
+
+@dataclasses.dataclass(frozen=True)
+class LearningConfig:
+    """Every constant of learning (thesis Table 3.2, §3.3, §3.4); defaults are the thesis's.
+
+    Values the thesis leaves open are choices: ``permanency_step``, the ball-prediction
+    thresholds (``ball_min_samples``, ``ball_max_angle_sd_deg``, ``ball_moved_mm``) and
+    ``shaping_dead_band_mm``. ``save``/``load`` use TOML.
+    """
+
+    creation_threshold: float = 0.3
+    default_permanency: float = 0.5
+    permanency_threshold: float = 0.8
+    deletion_threshold: float = 0.0
+    min_frequency: float = 0.05
+    decay_step: float = 0.007
+    permanency_step: float = 0.02
+    initial_lp: float = 0.5
+    imitator_lp: float = 0.9
+    lp_goal: float = 0.01
+    lp_ball_to_goal: float = 0.005
+    lp_robot_to_ball: float = 0.002
+    lp_event: float = 0.001
+    match_distance_mm: float = 40.0
+    match_rotation_deg: float = 45.0
+    ball_angle_tolerance_deg: float = 22.5
+    ball_min_samples: int = 5
+    ball_max_angle_sd_deg: float = 30.0
+    ball_moved_mm: float = 10.0
+    prediction_noise_divisor: float = 3.0
+    shaping_dead_band_mm: float = 1.0
+
+    def __post_init__(self) -> None:
+        _native.check_learning_config(self.to_json())
+
+    def to_json(self) -> str:
+        return json.dumps(dataclasses.asdict(self))
+
+    def to_toml(self) -> str:
+        """One ``name = value`` line per constant."""
+        return "".join(f"{name} = {value!r}\n" for name, value in dataclasses.asdict(self).items())
+
+    @classmethod
+    def from_toml(cls, text: str) -> LearningConfig:
+        """A config from TOML; missing keys take their defaults, unknown ones are refused."""
+        import tomllib
+
+        values = tomllib.loads(text)
+        unknown = sorted(set(values) - {f.name for f in dataclasses.fields(cls)})
+        if unknown:
+            raise ValueError(f"unknown learning constants: {', '.join(unknown)}")
+        return cls(**values)
+
+    def save(self, path: str | os.PathLike[str]) -> None:
+        atomic_write_text(path, self.to_toml())
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str]) -> LearningConfig:
+        with open(path, encoding="utf-8") as file:
+            return cls.from_toml(file.read())
+
+
+@dataclasses.dataclass(frozen=True)
+class ModelResult:
+    """One forward model at the end of a trial: its LP (and every change of it), the share of
+    prediction rounds with a match, the counts of Tables 4.1 and 4.2, and its behaviours."""
+
+    name: str
+    lp: float
+    lp_history: list[float]
+    match_rate: float
+    created: int
+    deleted: int
+    permanent: int
+    candidates: int
+    duplicates: int
+    candidates_permanent: int
+    rounds: int
+    rounds_matched: int
+    behaviours: list[dict[str, Any]]
+
+
+@dataclasses.dataclass(frozen=True)
+class TrialResult:
+    """Every demonstrator's model (by name, in the ordering) and the imitator's."""
+
+    models: dict[str, ModelResult]
+    imitator: ModelResult
+    seed: int
+
+    def to_json(self) -> str:
+        return json.dumps(dataclasses.asdict(self))
+
+    @classmethod
+    def from_json(cls, text: str) -> TrialResult:
+        data = json.loads(text)
+        return cls(models={k: ModelResult(**v) for k, v in data["models"].items()},
+                   imitator=ModelResult(**data["imitator"]), seed=data["seed"])
+
+    def save(self, path: str | os.PathLike[str]) -> None:
+        atomic_write_text(path, self.to_json())
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str]) -> TrialResult:
+        with open(path, encoding="utf-8") as file:
+            text = file.read()
+        try:
+            return cls.from_json(text)
+        except (ValueError, KeyError, TypeError) as error:
+            raise _native.ModelFileError(f"{path}: not a saved trial result ({error})") from error
+
+
+def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.PrimitiveRecognizer) -> list[dict]:
+    """The demonstrations as the learner takes them: segments, field size and outcome."""
+    segments = recognizer.segment_many([d.frames for d in demonstrations])
+    return [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
+             "pitch": "small" if d.demonstrator in SMALL_FIELD_BODIES else "large"}
+            for d, s in zip(demonstrations, segments)]
+
+
+def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict], *, recognizer: _native.PrimitiveRecognizer,
+              ordering: Sequence[str], config: LearningConfig | None = None, phase_one: str = "by-model",
+              seed: int = 0) -> TrialResult:
+    """One learning trial: phase 1 (each demonstrator's model learns its own demonstrations;
+    ``phase_one="interleaved"`` mixes them at random), phase 2 (every demonstration, in random
+    order, to every demonstrator's model and then to the imitator's), and the final pruning.
+
+    ``demonstrations`` may be already segmented (the dictionaries :func:`segmented` returns),
+    so that many trials share one segmentation.
+    """
+    if len(demonstrations) == 0:
+        raise ValueError("no demonstrations: a trial needs at least one")
+    items = (list(demonstrations) if isinstance(demonstrations[0], dict)
+             else segmented(demonstrations, recognizer))  # type: ignore[arg-type]
+    config_json = (config or LearningConfig()).to_json()
+    raw = _native.learning_trial(items, list(ordering), recognizer.motion_stats(), config=config_json,
+                                 phase_one=phase_one, seed=seed)
+    models = {m["name"]: ModelResult(**m) for m in raw["models"]}
+    return TrialResult(models=models, imitator=ModelResult(**raw["imitator"]), seed=seed)

@@ -1,0 +1,82 @@
+"""Learning trials on recorded demonstrations, and the learning config."""
+
+import dataclasses
+import json
+
+import pytest
+
+import polymimic
+from polymimic import _native, learning, recognition
+
+
+@pytest.fixture(scope="module")
+def recognizer():
+    return recognition.train_recognizer(polymimic.self_observation(300, seed=1), codebook_size=128)
+
+
+@pytest.fixture(scope="module")
+def heterogeneous(recognizer):
+    demos = [d for who in ("expert", "tiny", "humanoid") for c in (1, 2)
+             for d in polymimic.record(who, configuration=c, n=10, seed=2)]
+    return learning.segmented(demos, recognizer)
+
+
+def test_python_defaults_are_the_cores():
+    assert json.loads(_native.default_learning_config()) == dataclasses.asdict(polymimic.LearningConfig())
+
+
+def test_config_round_trips_through_toml(tmp_path):
+    config = polymimic.LearningConfig(permanency_step=0.03, ball_min_samples=8)
+    config.save(tmp_path / "learning.toml")
+    assert polymimic.LearningConfig.load(tmp_path / "learning.toml") == config
+
+
+@pytest.mark.parametrize("change, match", [
+    (dict(creation_threshold=1.5), "creation_threshold = 1.5 must be in"),
+    (dict(decay_step=-0.1), "decay_step"),
+    (dict(default_permanency=0.9), "strictly between"),
+])
+def test_out_of_range_config_is_named(change, match):
+    with pytest.raises(ValueError, match=match):
+        polymimic.LearningConfig(**change)
+
+
+def test_unknown_toml_keys_are_refused():
+    with pytest.raises(ValueError, match="unknown learning constants: speed"):
+        polymimic.LearningConfig.from_toml("speed = 3\n")
+
+
+def test_heterogeneous_trial_grows_behaviours_and_raises_lps(recognizer, heterogeneous):
+    result = polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert", "tiny", "humanoid"], seed=1)
+    assert list(result.models) == ["expert", "tiny", "humanoid"]
+    for model in result.models.values():
+        assert model.created > 0 and model.rounds > 0
+        assert 0.0 <= model.lp <= 1.0 and model.lp_history[0] == 0.5
+        assert 0.0 <= model.match_rate <= 1.0
+    assert result.imitator.lp == 0.9
+    assert all(b["permanent"] for b in result.imitator.behaviours)
+    assert {"F", "B", "L", "R", "S"} <= {b["primitives"] for b in result.imitator.behaviours}
+
+
+def test_same_seed_same_trial_other_seed_other_trial(recognizer, heterogeneous):
+    run = lambda seed: polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert", "tiny"], seed=seed)
+    assert run(4) == run(4)
+    assert run(4).models["expert"].lp_history != run(5).models["expert"].lp_history
+
+
+def test_trial_results_save_and_load(tmp_path, recognizer, heterogeneous):
+    result = polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["tiny"], seed=0)
+    result.save(tmp_path / "trial.json")
+    assert polymimic.TrialResult.load(tmp_path / "trial.json") == result
+    (tmp_path / "bad.json").write_text("{}")
+    with pytest.raises(polymimic.ModelFileError, match="not a saved trial result"):
+        polymimic.TrialResult.load(tmp_path / "bad.json")
+
+
+def test_bad_trials_are_named(recognizer, heterogeneous):
+    with pytest.raises(ValueError, match="ordering names \"poor\", which has no demonstrations"):
+        polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert", "poor"])
+    with pytest.raises(ValueError, match="no demonstrations"):
+        polymimic.run_trial([], recognizer=recognizer, ordering=["expert"])
+    with pytest.raises(ValueError, match="phase_one"):
+        polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert"], phase_one="random")

@@ -139,6 +139,7 @@ fn model_dict<'py>(py: Python<'py>, model: &ForwardModel) -> PyResult<Bound<'py,
 /// and behaviours, for every demonstrator's model and the imitator's.
 #[pyfunction]
 #[pyo3(signature = (demonstrations, ordering, motion_stats, *, config=None, phase_one="by-model", seed=0))]
+#[allow(clippy::needless_pass_by_value)] // pyo3 extracts the ordering by value
 pub fn learning_trial<'py>(
     py: Python<'py>,
     demonstrations: &Bound<'py, PyAny>,

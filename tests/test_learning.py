@@ -80,3 +80,26 @@ def test_bad_trials_are_named(recognizer, heterogeneous):
         polymimic.run_trial([], recognizer=recognizer, ordering=["expert"])
     with pytest.raises(ValueError, match="phase_one"):
         polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert"], phase_one="random")
+
+
+def test_the_imitator_drives_the_robot_and_scores(recognizer):
+    demos = [d for who in ("expert", "tiny", "humanoid") for c in (1, 2)
+             for d in polymimic.record(who, configuration=c, n=25, seed=1)]
+    result = polymimic.run_trial(demos, recognizer=recognizer, ordering=["expert", "tiny", "humanoid"], seed=1)
+    policy = polymimic.ImitatorPolicy(result, recognizer=recognizer)
+    assert len(policy) == len(result.imitator.behaviours)
+    evaluation = polymimic.evaluate(policy, attempts_per_configuration=10, seed=0)
+    assert len(evaluation.attempts) == 20
+    assert {a.configuration for a in evaluation.attempts} == {1, 2}
+    assert evaluation.goals == sum(a.outcome == "goal" for a in evaluation.attempts)
+    assert evaluation.goals >= 2, [a.outcome for a in evaluation.attempts]
+    executed = {b for attempt in evaluation.behaviours for b in attempt}
+    assert executed <= {b["primitives"] for b in result.imitator.behaviours}
+    again = polymimic.evaluate(policy, attempts_per_configuration=10, seed=0)
+    assert [a.frames.tobytes() for a in again.attempts] == [a.frames.tobytes() for a in evaluation.attempts]
+
+
+def test_a_corrupt_imitator_model_is_refused(recognizer):
+    bad = polymimic.TrialResult(models={}, imitator=None, seed=0, imitator_model="{}")  # type: ignore[arg-type]
+    with pytest.raises(polymimic.ModelFileError, match="imitator model"):
+        polymimic.ImitatorPolicy(bad, recognizer=recognizer)

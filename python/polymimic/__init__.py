@@ -23,7 +23,7 @@ from polymimic._native import (
 )
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, PrimitiveSequence, command_table, record, self_observation
-from polymimic.learning import LearningConfig, TrialResult, run_trial
+from polymimic.learning import Evaluation, ImitatorPolicy, LearningConfig, TrialResult, evaluate, run_trial
 from polymimic.plots import animate_demonstration, plot_demonstration, plot_log_likelihoods
 
 __all__ = [
@@ -31,7 +31,9 @@ __all__ = [
     "Demonstration",
     "DiscreteHMM",
     "Episode",
+    "Evaluation",
     "FieldRunError",
+    "ImitatorPolicy",
     "LearningConfig",
     "ImpossibleSequenceError",
     "ModelFileError",
@@ -43,6 +45,7 @@ __all__ = [
     "__version__",
     "animate_demonstration",
     "command_table",
+    "evaluate",
     "load_demonstrations",
     "load_self_observation",
     "plot_demonstration",

@@ -115,6 +115,8 @@ class TrialResult:
     models: dict[str, ModelResult]
     imitator: ModelResult
     seed: int
+    imitator_model: str = dataclasses.field(repr=False, default="")
+    """The imitator's final model, as versioned JSON (what :class:`ImitatorPolicy` drives)."""
 
     def to_json(self) -> str:
         return json.dumps(dataclasses.asdict(self))
@@ -123,7 +125,8 @@ class TrialResult:
     def from_json(cls, text: str) -> TrialResult:
         data = json.loads(text)
         return cls(models={k: ModelResult(**v) for k, v in data["models"].items()},
-                   imitator=ModelResult(**data["imitator"]), seed=data["seed"])
+                   imitator=ModelResult(**data["imitator"]), seed=data["seed"],
+                   imitator_model=data.get("imitator_model", ""))
 
     def save(self, path: str | os.PathLike[str]) -> None:
         atomic_write_text(path, self.to_json())
@@ -164,4 +167,43 @@ def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict], *, recog
     raw = _native.learning_trial(items, list(ordering), recognizer.motion_stats(), config=config_json,
                                  phase_one=phase_one, seed=seed)
     models = {m["name"]: ModelResult(**m) for m in raw["models"]}
-    return TrialResult(models=models, imitator=ModelResult(**raw["imitator"]), seed=seed)
+    return TrialResult(models=models, imitator=ModelResult(**raw["imitator"]), seed=seed,
+                       imitator_model=raw["imitator_model"])
+
+
+class ImitatorPolicy:
+    """The imitator's final model driving the Lego robot by the thesis's control rule (§3.4):
+    behaviours whose preconditions hold (else all) predict their outcome, the best by the
+    learning-preference criteria runs primitive by primitive, stopping before leaving the field.
+    """
+
+    def __init__(self, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
+                 config: LearningConfig | None = None) -> None:
+        self._native = _native.ImitatorPolicy(trial.imitator_model, recognizer.motion_stats(),
+                                              config=(config or LearningConfig()).to_json())
+
+    def __len__(self) -> int:
+        return len(self._native)
+
+
+@dataclasses.dataclass(frozen=True)
+class Evaluation:
+    """Goals and own goals of a policy over its attempts (Tables 4.8, 4.11), and every attempt,
+    recorded like a demonstration."""
+
+    goals: int
+    own_goals: int
+    attempts: list[Demonstration]
+    behaviours: list[list[str]]
+
+
+def evaluate(policy: ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0) -> Evaluation:
+    """``attempts_per_configuration`` attempts from each field configuration, in parallel."""
+    from polymimic.field import as_frames
+
+    raw = policy._native.evaluate(attempts_per_configuration, seed=seed)
+    attempts = [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator="imitator",
+                              configuration=a["configuration"], seed=a["seed"]) for a in raw]
+    return Evaluation(goals=sum(a.outcome == "goal" for a in attempts),
+                      own_goals=sum(a.outcome == "own_goal" for a in attempts), attempts=attempts,
+                      behaviours=[a["behaviours"] for a in raw])

@@ -4,6 +4,7 @@
 
 mod behaviour;
 mod config;
+mod control;
 mod error;
 mod model;
 mod prediction;
@@ -14,6 +15,7 @@ mod trial;
 
 pub use behaviour::Behaviour;
 pub use config::LearningConfig;
+pub use control::{Attempt, ImitatorPolicy};
 pub use error::LearnError;
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};

@@ -7,6 +7,9 @@ use serde::{Deserialize, Serialize};
 use crate::behaviour::Behaviour;
 use crate::config::LearningConfig;
 
+const FORMAT: &str = "polymimic.ForwardModel";
+const VERSION: u32 = 1;
+
 /// Counts behind Tables 4.1, 4.2, 4.7 and 4.10.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 pub struct ModelMetrics {
@@ -168,6 +171,29 @@ impl ForwardModel {
                 self.remove(index);
             }
         }
+    }
+
+    /// The model as versioned JSON.
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        polymimic_persist::to_envelope(FORMAT, VERSION, self).unwrap_or_default()
+    }
+
+    /// A model from [`Self::to_json`] text.
+    ///
+    /// # Errors
+    /// Another format or version, or a payload of the wrong shape.
+    pub fn from_json(text: &str) -> Result<Self, String> {
+        let model: Self = polymimic_persist::from_envelope(text, FORMAT, VERSION)?;
+        if model.frequency.len() != model.behaviours.len()
+            || model.frequency.iter().any(|r| r.len() != model.behaviours.len())
+        {
+            return Err("the frequency matrix does not match the behaviours".to_owned());
+        }
+        if model.behaviours.iter().any(|b| b.primitives.is_empty()) {
+            return Err("a behaviour has no primitives".to_owned());
+        }
+        Ok(model)
     }
 
     /// Share of prediction rounds with a match (Tables 4.7, 4.10).

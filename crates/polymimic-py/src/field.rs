@@ -22,11 +22,11 @@ fn frame_row(f: &Frame) -> [f64; 7] {
     [f.t_s, f.robot_x_mm, f.robot_y_mm, f.robot_theta_rad, f.ball_x_mm, f.ball_y_mm, f64::from(f.command)]
 }
 
-fn frames_array<'py>(py: Python<'py>, frames: &[Frame]) -> PyResult<Bound<'py, PyArray2<f64>>> {
+pub(crate) fn frames_array<'py>(py: Python<'py>, frames: &[Frame]) -> PyResult<Bound<'py, PyArray2<f64>>> {
     matrix(py, frames.iter().flat_map(frame_row).collect(), frames.len(), 7)
 }
 
-fn field_config(json: Option<&str>) -> PyResult<FieldConfig> {
+pub(crate) fn field_config(json: Option<&str>) -> PyResult<FieldConfig> {
     let config = match json {
         None => FieldConfig::default(),
         Some(text) => FieldConfig::from_json(text).map_err(|e| PyValueError::new_err(format!("field config: {e}")))?,
@@ -43,7 +43,7 @@ fn configuration(number: i64) -> PyResult<Configuration> {
     }
 }
 
-fn configuration_number(configuration: Configuration) -> u8 {
+pub(crate) fn configuration_number(configuration: Configuration) -> u8 {
     match configuration {
         Configuration::One => 1,
         Configuration::Two => 2,

@@ -2,7 +2,8 @@
 
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use polymimic_learn::{
-    Ending, ForwardModel, LearningConfig, MotionTable, PhaseOne, Pitch, SegmentedDemonstration, run_trial,
+    Ending, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch, SegmentedDemonstration,
+    run_trial,
 };
 use polymimic_perceive::{Label, MotionStats, Pose, Primitive, Segment, TrackedFrame};
 use pyo3::exceptions::PyValueError;
@@ -174,5 +175,65 @@ pub fn learning_trial<'py>(
     }
     out.set_item("models", models)?;
     out.set_item("imitator", model_dict(py, &result.imitator)?)?;
+    out.set_item("imitator_model", result.imitator.to_json())?;
     Ok(out)
+}
+
+/// The imitator's trained model driving the Lego robot on the field.
+#[pyclass(name = "ImitatorPolicy", module = "polymimic", frozen)]
+pub struct PyImitatorPolicy {
+    model: ForwardModel,
+    motion: MotionTable,
+    config: LearningConfig,
+}
+
+#[pymethods]
+impl PyImitatorPolicy {
+    /// A policy from a saved imitator model (`TrialResult.imitator_model`), the recogniser's
+    /// Table 3.1 and the learning config (JSON) its constants come from.
+    #[new]
+    #[pyo3(signature = (model, motion_stats, *, config=None))]
+    fn new(model: &str, motion_stats: &Bound<'_, PyDict>, config: Option<&str>) -> PyResult<Self> {
+        let model = ForwardModel::from_json(model)
+            .map_err(|e| crate::errors::ModelFileError::new_err(format!("imitator model: {e}")))?;
+        let config = match config {
+            Some(text) => LearningConfig::from_json(text).map_err(value_error)?,
+            None => LearningConfig::default(),
+        };
+        Ok(Self { model, motion: motion_table(motion_stats)?, config })
+    }
+
+    /// Attempts from each configuration; one dict per attempt with `frames`, `outcome`,
+    /// `configuration`, `seed` and the `behaviours` executed.
+    #[pyo3(signature = (attempts_per_configuration, *, seed=0, field_config=None))]
+    fn evaluate<'py>(
+        &self,
+        py: Python<'py>,
+        attempts_per_configuration: i64,
+        seed: i64,
+        field_config: Option<&str>,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let attempts = non_negative("attempts_per_configuration", attempts_per_configuration)?;
+        let field = crate::field::field_config(field_config)?;
+        let policy =
+            ImitatorPolicy { model: &self.model, motion: &self.motion, config: &self.config, pitch: Pitch::LARGE };
+        let seed = non_negative("seed", seed)? as u64;
+        let results = py.detach(|| policy.evaluate(attempts, &field, seed)).map_err(crate::errors::field_error)?;
+        let out = PyList::empty(py);
+        for attempt in &results {
+            let item = PyDict::new(py);
+            item.set_item("frames", crate::field::frames_array(py, &attempt.frames)?)?;
+            item.set_item("outcome", attempt.outcome.name())?;
+            item.set_item("configuration", crate::field::configuration_number(attempt.configuration))?;
+            item.set_item("seed", attempt.seed)?;
+            item.set_item("behaviours", attempt.behaviours.clone())?;
+            out.append(item)?;
+        }
+        Ok(out)
+    }
+
+    /// How many behaviours the model holds.
+    fn __len__(&self) -> usize {
+        self.model.behaviours.len()
+    }
 }

@@ -1,0 +1,191 @@
+//! The imitator's final model driving a robot on the field (thesis §3.4, end).
+//!
+//! At each decision the behaviours whose preconditions the current state meets (every
+//! measure within one standard deviation of its mean) are considered, or all of them if none
+//! applies. Each predicts its outcome and the best by the learning-preference criteria — a
+//! predicted goal, then the ball nearer the goal, then the robot nearer the ball — is executed
+//! primitive by primitive, stopping early if the next primitive would take the robot off the
+//! field.
+
+use polymimic_field::{
+    BodyKind, Command, Configuration, Episode, EpisodeSetup, FieldConfig, FieldError, Frame, Outcome, derive_seed,
+};
+use polymimic_perceive::{Pose, Primitive, TrackedFrame};
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+use crate::config::LearningConfig;
+use crate::model::ForwardModel;
+use crate::prediction::{MotionTable, predict};
+use crate::state::{Pitch, ball_to_goal_mm, robot_to_ball_mm};
+
+/// Tracker frames one primitive is held for.
+const FRAMES_PER_PRIMITIVE: usize = 30;
+
+/// One attempt of the imitator at the penalty kick.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Attempt {
+    pub configuration: Configuration,
+    pub seed: u64,
+    pub outcome: Outcome,
+    pub frames: Vec<Frame>,
+    /// The behaviours executed, as letters, in order.
+    pub behaviours: Vec<String>,
+}
+
+/// The imitator's model with what it needs to predict.
+pub struct ImitatorPolicy<'a> {
+    pub model: &'a ForwardModel,
+    pub motion: &'a MotionTable,
+    pub config: &'a LearningConfig,
+    pub pitch: Pitch,
+}
+
+impl ImitatorPolicy<'_> {
+    /// The behaviour to execute next from `state`, by the thesis's rule; `None` if every
+    /// behaviour's first primitive would leave the field.
+    pub fn choose(&self, state: &TrackedFrame, rng: &mut ChaCha8Rng) -> Option<usize> {
+        let behaviours = &self.model.behaviours;
+        let mut stays = |i: &usize| {
+            let first = self.motion.step(state.robot, behaviours[*i].primitives[0], f64::INFINITY, rng);
+            self.pitch.contains(first.x_mm, first.y_mm)
+        };
+        let mut candidates: Vec<usize> = (0..behaviours.len())
+            .filter(|&i| behaviours[i].applies_to(state, &self.pitch))
+            .filter(&mut stays)
+            .collect();
+        if candidates.is_empty() {
+            candidates = (0..behaviours.len()).filter(&mut stays).collect();
+        }
+        candidates
+            .into_iter()
+            .map(|i| (self.rate(i, state, rng), i))
+            .max_by(|(a, i), (b, j)| {
+                a.0.total_cmp(&b.0)
+                    .then(a.1.total_cmp(&b.1))
+                    .then(behaviours[*j].primitives.len().cmp(&behaviours[*i].primitives.len()))
+                    .then(behaviours[*j].age.cmp(&behaviours[*i].age))
+            })
+            .map(|(_, i)| i)
+    }
+
+    /// The LP criteria applied to behaviour `index`'s prediction from `state`, and how much
+    /// nearer the ball the robot is predicted to get (mm), to break ties.
+    fn rate(&self, index: usize, state: &TrackedFrame, rng: &mut ChaCha8Rng) -> (f64, f64) {
+        let config = self.config;
+        let prediction = predict(&self.model.behaviours[index], state.robot, self.motion, config, rng);
+        let ball = prediction.ball_position().unwrap_or((state.ball_x_mm, state.ball_y_mm));
+        let after = TrackedFrame { robot: prediction.end(), ball_x_mm: ball.0, ball_y_mm: ball.1 };
+        let (bx, by) = ball;
+        if self.pitch.in_target_goal(bx, by) {
+            return (config.lp_goal, 0.0);
+        }
+        if bx <= -self.pitch.length_mm / 2.0 && by.abs() <= self.pitch.width_mm / 4.0 {
+            return (-config.lp_goal, 0.0);
+        }
+        let signed = |before: f64, now: f64, amount: f64| {
+            if now < before - config.shaping_dead_band_mm {
+                amount
+            } else if now > before + config.shaping_dead_band_mm {
+                -amount
+            } else {
+                0.0
+            }
+        };
+        let (robot_before, robot_after) = (robot_to_ball_mm(state), robot_to_ball_mm(&after));
+        let score =
+            signed(ball_to_goal_mm(state, &self.pitch), ball_to_goal_mm(&after, &self.pitch), config.lp_ball_to_goal)
+                + signed(robot_before, robot_after, config.lp_robot_to_ball);
+        (score, robot_before - robot_after)
+    }
+}
+
+fn field_primitive(primitive: Primitive) -> polymimic_field::Primitive {
+    match primitive {
+        Primitive::Forward => polymimic_field::Primitive::Forward,
+        Primitive::Backward => polymimic_field::Primitive::Backward,
+        Primitive::Left => polymimic_field::Primitive::Left,
+        Primitive::Right => polymimic_field::Primitive::Right,
+        Primitive::Stop => polymimic_field::Primitive::Stop,
+    }
+}
+
+fn tracked(episode: &Episode, last_ball: &mut (f64, f64)) -> TrackedFrame {
+    let seen = episode.observation();
+    if let Some(ball) = seen.ball {
+        *last_ball = (ball.x_mm, ball.y_mm);
+    }
+    let robot = Pose { x_mm: seen.robot.x_mm, y_mm: seen.robot.y_mm, theta_rad: seen.robot.theta_rad };
+    TrackedFrame { robot, ball_x_mm: last_ball.0, ball_y_mm: last_ball.1 }
+}
+
+impl ImitatorPolicy<'_> {
+    /// One attempt from `configuration` with the Lego robot.
+    ///
+    /// # Errors
+    /// A field configuration that does not validate.
+    pub fn attempt(&self, configuration: Configuration, field: &FieldConfig, seed: u64) -> Result<Attempt, FieldError> {
+        let setup = EpisodeSetup::configuration(BodyKind::Lego, configuration, field);
+        let mut episode = Episode::new(&setup, field, seed)?;
+        let mut rng = ChaCha8Rng::seed_from_u64(derive_seed(seed, 7, 0));
+        let mut last_ball = setup.ball.map_or((0.0, 0.0), |b| (b.x_mm, b.y_mm));
+        let mut executed = Vec::new();
+        while !episode.is_finished() {
+            let state = tracked(&episode, &mut last_ball);
+            let Some(index) = self.choose(&state, &mut rng) else {
+                // Nothing can move without leaving the field: wait a second.
+                run_primitive(&mut episode, Primitive::Stop)?;
+                continue;
+            };
+            let behaviour = &self.model.behaviours[index];
+            executed.push(behaviour.letters());
+            for (k, &primitive) in behaviour.primitives.iter().enumerate() {
+                if episode.is_finished() {
+                    break;
+                }
+                let now = tracked(&episode, &mut last_ball).robot;
+                let next = self.motion.step(now, primitive, f64::INFINITY, &mut rng);
+                if k > 0 && !self.pitch.contains(next.x_mm, next.y_mm) {
+                    break;
+                }
+                run_primitive(&mut episode, primitive)?;
+            }
+        }
+        let outcome = episode.outcome().unwrap_or(Outcome::TimeUp);
+        Ok(Attempt { configuration, seed, outcome, frames: episode.into_frames(), behaviours: executed })
+    }
+
+    /// `attempts_per_configuration` attempts from each configuration, in parallel; attempt i
+    /// of configuration c runs with a seed derived from (`seed`, c, i).
+    ///
+    /// # Errors
+    /// A field configuration that does not validate.
+    pub fn evaluate(
+        &self,
+        attempts_per_configuration: usize,
+        field: &FieldConfig,
+        seed: u64,
+    ) -> Result<Vec<Attempt>, FieldError> {
+        let jobs: Vec<(Configuration, u64)> = Configuration::ALL
+            .iter()
+            .enumerate()
+            .flat_map(|(c, &configuration)| {
+                (0..attempts_per_configuration as u64)
+                    .map(move |i| (configuration, derive_seed(seed, 100 + c as u64, i)))
+            })
+            .collect();
+        jobs.par_iter().map(|&(configuration, s)| self.attempt(configuration, field, s)).collect()
+    }
+}
+
+fn run_primitive(episode: &mut Episode, primitive: Primitive) -> Result<(), FieldError> {
+    for _ in 0..FRAMES_PER_PRIMITIVE {
+        if episode.is_finished() {
+            break;
+        }
+        episode.step(Command::Primitive(field_primitive(primitive)))?;
+    }
+    Ok(())
+}

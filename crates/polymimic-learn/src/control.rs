@@ -19,7 +19,8 @@ use serde::{Deserialize, Serialize};
 use crate::config::LearningConfig;
 use crate::model::ForwardModel;
 use crate::prediction::{MotionTable, predict};
-use crate::state::{Pitch, ball_to_goal_mm, robot_to_ball_mm};
+use crate::round::approach_shaping;
+use crate::state::{Pitch, robot_to_ball_mm};
 
 /// Tracker frames one primitive is held for.
 const FRAMES_PER_PRIMITIVE: usize = 30;
@@ -85,20 +86,8 @@ impl ImitatorPolicy<'_> {
         if bx <= -self.pitch.length_mm / 2.0 && by.abs() <= self.pitch.width_mm / 4.0 {
             return (-config.lp_goal, 0.0);
         }
-        let signed = |before: f64, now: f64, amount: f64| {
-            if now < before - config.shaping_dead_band_mm {
-                amount
-            } else if now > before + config.shaping_dead_band_mm {
-                -amount
-            } else {
-                0.0
-            }
-        };
-        let (robot_before, robot_after) = (robot_to_ball_mm(state), robot_to_ball_mm(&after));
-        let score =
-            signed(ball_to_goal_mm(state, &self.pitch), ball_to_goal_mm(&after, &self.pitch), config.lp_ball_to_goal)
-                + signed(robot_before, robot_after, config.lp_robot_to_ball);
-        (score, robot_before - robot_after)
+        let score = approach_shaping(state, &after, &self.pitch, config);
+        (score, robot_to_ball_mm(state) - robot_to_ball_mm(&after))
     }
 }
 

@@ -5,7 +5,7 @@
 //! one still matches; among those matching the furthest segment reached, behaviours with an
 //! accurate ball prediction are preferred, then the fewest primitives, then the oldest.
 
-use polymimic_perceive::{Label, Primitive, Segment};
+use polymimic_perceive::{Label, Primitive, Segment, TrackedFrame};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
@@ -171,15 +171,27 @@ fn lp_shaping(demo: &SegmentedDemonstration, from: &Segment, to: &Segment, last:
             Ending::Other => {}
         }
     }
-    let signed = |before: f64, after: f64, amount: f64| {
-        if after < before - config.shaping_dead_band_mm {
+    approach_shaping(&from.end, &to.end, &demo.pitch, config)
+}
+
+/// The LP criteria short of a goal, from one state to another: the ball nearer the target
+/// goal (or farther), and the robot nearer the ball (or farther). Changes within the dead
+/// band count as neither. Shared by learning (eq 3.13) and by control's rating of predictions.
+pub(crate) fn approach_shaping(
+    before: &TrackedFrame,
+    after: &TrackedFrame,
+    pitch: &Pitch,
+    config: &LearningConfig,
+) -> f64 {
+    let signed = |then: f64, now: f64, amount: f64| {
+        if now < then - config.shaping_dead_band_mm {
             amount
-        } else if after > before + config.shaping_dead_band_mm {
+        } else if now > then + config.shaping_dead_band_mm {
             -amount
         } else {
             0.0
         }
     };
-    signed(ball_to_goal_mm(&from.end, &demo.pitch), ball_to_goal_mm(&to.end, &demo.pitch), config.lp_ball_to_goal)
-        + signed(robot_to_ball_mm(&from.end), robot_to_ball_mm(&to.end), config.lp_robot_to_ball)
+    signed(ball_to_goal_mm(before, pitch), ball_to_goal_mm(after, pitch), config.lp_ball_to_goal)
+        + signed(robot_to_ball_mm(before), robot_to_ball_mm(after), config.lp_robot_to_ball)
 }

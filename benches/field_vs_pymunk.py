@@ -11,8 +11,10 @@ command onset, first-order lag of 0.12 s on speed and 0.02 s on turn rate), two 
 iterations, 240 Hz physics (8 steps per tracker frame), a 30 Hz tracker with Gaussian jitter,
 and one scripted primitive per second. Contact materials are set so that the combined
 restitution and friction equal rapier's (it averages the two shapes' coefficients, Chipmunk
-multiplies them). Both let a resting ball sleep: polymimic skips the physics step while the
-ball sleeps and the robot is out of reach, pymunk uses Chipmunk's sleeping.
+multiplies them). Both let a resting ball sleep (pymunk through Chipmunk's sleeping). polymimic
+also skips rapier's solver whenever the robot cannot touch the ball within a step (their gap is
+over 10 mm): it then moves a rolling ball itself by the same damping law; pymunk steps its
+solver every time, as Chipmunk offers nothing alike.
 
 Each row counts the frames actually simulated (an episode that ends early is not padded).
 """

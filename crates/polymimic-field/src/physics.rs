@@ -62,14 +62,21 @@ pub(crate) struct Scene {
     pub foot_size_mm: Option<(f64, f64)>,
 }
 
+/// Farther apart than this, the robot and the ball cannot touch within one step: it covers
+/// the robot's and a kicked ball's travel in 1/240 s several times over, mm.
+const REACH_MARGIN_MM: f64 = 10.0;
+
+/// A free ball slower than this is put to sleep, mm/s.
+const SLEEP_SPEED_MM_S: f32 = 1.0;
+
 pub(crate) struct Physics {
     world: PhysicsWorld,
     ball: RigidBodyHandle,
     robot: RigidBodyHandle,
     foot: Option<(RigidBodyHandle, ColliderHandle)>,
-    /// Ball radius plus the robot's half-diagonal plus a safety margin, mm: farther apart than
-    /// this, nothing can touch the ball within a step.
-    clearance_mm: f64,
+    /// The robot's half length and half width, and the ball's radius, mm.
+    robot_half_mm: (f64, f64),
+    ball_radius_mm: f64,
     /// The rapier robot lags behind the true pose (steps were skipped while nothing could touch
     /// the ball); it must be lifted, not swept, into place before the next step.
     robot_stale: bool,
@@ -117,27 +124,33 @@ impl Physics {
             }
             (h, c)
         });
-        let half_diagonal = 0.5 * footprint_mm.0.hypot(footprint_mm.1);
         Self {
             world,
             ball: ball_h,
             robot: robot_h,
             foot,
-            clearance_mm: ball_diameter_mm / 2.0 + half_diagonal + 0.2 * ball_diameter_mm + 10.0,
+            robot_half_mm: (footprint_mm.0 / 2.0, footprint_mm.1 / 2.0),
+            ball_radius_mm: ball_diameter_mm / 2.0,
             robot_stale: false,
             wobble_rad: ball_params.wobble_rad_per_sqrt_s * dt_s.sqrt(),
             rng,
         }
     }
 
-    /// Advance one step with the robot (and foot) driven to these poses. A sleeping ball that
-    /// nothing can reach is left alone: stepping rapier would change nothing, and skipping it
-    /// makes the long approach phases cheap.
+    /// Advance one step with the robot (and foot) driven to these poses. While nothing can
+    /// reach the ball (their gap exceeds what one step can close), rapier is not stepped at all:
+    /// a sleeping ball is left alone, and a rolling one is moved here by rapier's own law for a
+    /// body without contacts (velocity damped by 1/(1 + dt·damping), then position advanced by
+    /// velocity × dt). Only steps where the robot may touch the ball pay for the solver.
     pub(crate) fn advance(&mut self, robot: Pose, foot: Option<(Pose, bool)>) {
         let foot_active = foot.is_some_and(|(_, active)| active);
         let ball_asleep = self.world.bodies.get(self.ball).is_some_and(RigidBody::is_sleeping);
-        let far = self.ball().dist_mm(robot.point()) > self.clearance_mm;
-        if ball_asleep && far && !foot_active {
+        let far = self.gap_mm(robot) > REACH_MARGIN_MM;
+        if far && !foot_active {
+            if !ball_asleep {
+                self.roll_free();
+                self.wobble();
+            }
             self.robot_stale = true;
             return;
         }
@@ -148,6 +161,36 @@ impl Physics {
         self.drive(robot, foot);
         self.step();
         self.wobble();
+    }
+
+    /// The gap between the ball's surface and the robot's footprint, mm (negative if they
+    /// overlap).
+    fn gap_mm(&self, robot: Pose) -> f64 {
+        let ball = self.ball();
+        let (s, c) = (sin(robot.theta_rad), cos(robot.theta_rad));
+        let (dx, dy) = (ball.x_mm - robot.x_mm, ball.y_mm - robot.y_mm);
+        let (along, across) = (c * dx + s * dy, -s * dx + c * dy);
+        let outside_x = (along.abs() - self.robot_half_mm.0).max(0.0);
+        let outside_y = (across.abs() - self.robot_half_mm.1).max(0.0);
+        outside_x.hypot(outside_y) - self.ball_radius_mm
+    }
+
+    /// One step of the ball with no contact possible: damping, then position. Below a crawl it
+    /// is put to sleep, as rapier would after a while.
+    fn roll_free(&mut self) {
+        let dt = self.world.integration_parameters.dt;
+        if let Some(b) = self.world.bodies.get_mut(self.ball) {
+            let damping = b.linear_damping();
+            let v = b.linvel() * (1.0 / (1.0 + dt * damping));
+            if v.length() < SLEEP_SPEED_MM_S {
+                b.set_linvel(Vector::ZERO, false);
+                b.sleep();
+                return;
+            }
+            let position = b.translation() + v * dt;
+            b.set_linvel(v, false);
+            b.set_translation(position, false);
+        }
     }
 
     /// Turn the rolling ball's velocity by a small random angle (drawn every step, rolling or

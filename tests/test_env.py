@@ -103,3 +103,12 @@ def test_render_shows_the_field():
     image = env.render()
     assert image.ndim == 3 and image.shape[2] == 3 and image.dtype == np.uint8
     assert PenaltyKickEnv().render() is None
+
+
+def test_importing_polymimic_registers_the_environment():
+    import subprocess
+    import sys
+
+    code = "import gymnasium, polymimic; print(gymnasium.make('PenaltyKick-v0').action_space)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "Discrete(5)"

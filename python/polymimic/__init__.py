@@ -9,6 +9,8 @@ The core (discrete HMMs, LBG codebooks) is written in Rust and exposed here.
 (2, 2)
 """
 
+import importlib.util
+
 from polymimic._native import (
     Codebook,
     DiscreteHMM,
@@ -25,6 +27,9 @@ from polymimic.datasets import load_demonstrations, load_self_observation, save_
 from polymimic.field import Demonstration, PrimitiveSequence, command_table, record, self_observation
 from polymimic.learning import Evaluation, ImitatorPolicy, LearningConfig, TrialResult, evaluate, run_trial
 from polymimic.plots import animate_demonstration, plot_demonstration, plot_log_likelihoods
+
+if importlib.util.find_spec("gymnasium") is not None:
+    from polymimic import env as _env  # registers PenaltyKick-v0 with Gymnasium
 
 __all__ = [
     "Codebook",

@@ -91,7 +91,10 @@ def test_table_4_5_beats_the_thesis_with_few_gaps(recognizer):
     for who in ("expert", "poor", "tiny", "humanoid"):
         for configuration in (1, 2):
             demos += polymimic.record(who, configuration=configuration, n=25, seed=1)
-    table = recognition.segment_table(recognizer, demos)
+    average, _ = polymimic.average_demonstrator(recognizer, seed=1)
+    assert len(average) == 50 and {d.demonstrator for d in average} == {"average"}
+    table = recognition.segment_table(recognizer, demos + average)
+    assert set(table) == {"expert", "poor", "tiny", "humanoid", "average"}
     for who, row in table.items():
         assert row["gaps"] < 0.03, (who, row)
         assert row["command_match"] > recognition.THESIS_SEGMENTS[who]["command_match"], (who, row)

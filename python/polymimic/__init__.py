@@ -25,7 +25,15 @@ from polymimic._native import (
 )
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, PrimitiveSequence, command_table, record, self_observation
-from polymimic.learning import Evaluation, ImitatorPolicy, LearningConfig, TrialResult, evaluate, run_trial
+from polymimic.learning import (
+    Evaluation,
+    ImitatorPolicy,
+    LearningConfig,
+    TrialResult,
+    average_demonstrator,
+    evaluate,
+    run_trial,
+)
 from polymimic.plots import animate_demonstration, plot_demonstration, plot_log_likelihoods
 
 if importlib.util.find_spec("gymnasium") is not None:
@@ -49,6 +57,7 @@ __all__ = [
     "TrialResult",
     "__version__",
     "animate_demonstration",
+    "average_demonstrator",
     "command_table",
     "evaluate",
     "load_demonstrations",

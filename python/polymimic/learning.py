@@ -207,3 +207,49 @@ def evaluate(policy: ImitatorPolicy, *, attempts_per_configuration: int = 25, se
     return Evaluation(goals=sum(a.outcome == "goal" for a in attempts),
                       own_goals=sum(a.outcome == "own_goal" for a in attempts), attempts=attempts,
                       behaviours=[a["behaviours"] for a in raw])
+
+
+def _tracked_throughout(demo: Demonstration) -> bool:
+    import numpy as np
+
+    frames = demo.frames
+    return bool(all(np.isfinite(frames[name]).all() for name in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
+                                                                 "ball_x_mm", "ball_y_mm")))
+
+
+def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25, seed: int = 0,
+                         max_trials: int = 20, config: LearningConfig | None = None
+                         ) -> tuple[list[Demonstration], TrialResult]:
+    """The thesis's Average demonstrator (§4.4.2): an imitator trained in the heterogeneous
+    experiment (Expert, Tiny, Humanoid; ordering RCB) and driven by the thesis's control rule.
+
+    Trials with seeds ``seed``, ``seed + 1``, … are tried until one's imitator scores more goals
+    than the Poor demonstrator and fewer than the Expert over ``n`` attempts per configuration;
+    its first ``n`` valid attempts per configuration (tracking held throughout, as for every
+    demonstrator), renamed ``"average"``, are returned with the trial that made it.
+
+    Raises
+    ------
+    polymimic.PolymimicError
+        If none of ``max_trials`` trials falls between the two.
+    """
+    from polymimic.field import record
+
+    recorded = {who: [d for c in (1, 2) for d in record(who, configuration=c, n=n, seed=seed)]
+                for who in ("expert", "tiny", "humanoid", "poor")}
+    goals = {who: sum(d.outcome == "goal" for d in demos) for who, demos in recorded.items()}
+    items = segmented([d for who in ("expert", "tiny", "humanoid") for d in recorded[who]], recognizer)
+    for trial_seed in range(seed, seed + max_trials):
+        trial = run_trial(items, recognizer=recognizer, ordering=["expert", "tiny", "humanoid"], config=config,
+                          seed=trial_seed)
+        # Spare attempts stand in for any whose tracking was lost.
+        evaluation = evaluate(ImitatorPolicy(trial, recognizer=recognizer, config=config),
+                              attempts_per_configuration=n + max(5, n // 5), seed=trial_seed)
+        by_configuration = {c: [a for a in evaluation.attempts if a.configuration == c] for c in (1, 2)}
+        scored = sum(a.outcome == "goal" for attempts in by_configuration.values() for a in attempts[:n])
+        valid = {c: [a for a in attempts if _tracked_throughout(a)][:n] for c, attempts in by_configuration.items()}
+        if goals["poor"] < scored < goals["expert"] and all(len(v) == n for v in valid.values()):
+            return [dataclasses.replace(a, demonstrator="average") for c in (1, 2) for a in valid[c]], trial
+    raise _native.PolymimicError(
+        f"no imitator of {max_trials} trials scored between the Poor ({goals['poor']}) and the Expert "
+        f"({goals['expert']}) demonstrators' goals")

@@ -66,22 +66,8 @@ impl Probabilities {
         self.emissionprob[i * self.n_symbols + k]
     }
 
-    /// The emissions transposed to symbol-major order (`[k * n + i]` is b_i(k)), so the
-    /// column b_·(O_t) that every time step needs is contiguous.
-    #[must_use]
-    pub fn emissions_by_symbol(&self) -> Vec<f64> {
-        let (n, m) = (self.n_states, self.n_symbols);
-        let mut by_symbol = vec![0.0; n * m];
-        for i in 0..n {
-            for k in 0..m {
-                by_symbol[k * n + i] = self.emissionprob[i * m + k];
-            }
-        }
-        by_symbol
-    }
-
     /// For each state, the range of destination states with a non-zero transition. A zero
-    /// stays zero under re-estimation, so the recursions may skip everything outside it.
+    /// stays zero under re-estimation, so Viterbi may skip everything outside it.
     #[must_use]
     pub fn transition_bands(&self) -> Vec<std::ops::Range<usize>> {
         let n = self.n_states;

@@ -1,0 +1,267 @@
+"""Every parameter of a reproduction run, with the thesis's values as defaults; TOML in and out.
+
+Sections: ``[seeds]``, ``[field]`` (the simulated field), ``[recognizer]`` (self-observation
+sizes and the HMM bank), ``[segmenter]``, ``[learning]`` (:class:`~polymimic.LearningConfig`)
+and ``[experiments]`` (trials, demonstrations, attempts). A file may give only some keys; the
+rest take their defaults. Unknown keys and values of the wrong type are refused.
+
+>>> config = RunConfig()
+>>> config.recognizer.codebook_size, config.experiments.trials
+(512, 100)
+>>> RunConfig.from_toml(config.to_toml()) == config
+True
+>>> RunConfig.from_toml("[experiments]\\ntrials = 8\\n").experiments.trials
+8
+>>> RunConfig.from_toml("[recognizer]\\ncodebok_size = 3\\n")
+Traceback (most recent call last):
+...
+polymimic.runconfig.ConfigError: unknown key in [recognizer]: codebok_size
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import os
+from typing import Any
+
+from polymimic.field import default_config
+from polymimic.learning import LearningConfig
+
+__all__ = ["ConfigError", "ExperimentSettings", "RecognizerSettings", "RunConfig", "SeedSettings", "SegmenterSettings"]
+
+
+class ConfigError(ValueError):
+    """A run configuration that cannot be used: an unknown key, a wrong type, a bad value."""
+
+
+def _doc(text: str, default: Any) -> Any:
+    return dataclasses.field(default=default, metadata={"doc": text})
+
+
+@dataclasses.dataclass(frozen=True)
+class SeedSettings:
+    """Where every random draw of the run starts; the same seeds give the same bits."""
+
+    self_observation_train: int = _doc("self-observation sequences the recogniser learns from", 1)
+    self_observation_test: int = _doc("held-out self-observation sequences (Table 4.3, Fig 4.5)", 2)
+    demonstrations: int = _doc("every demonstrator's recorded attempts; the Average demonstrator's first trial", 0)
+    first_trial: int = _doc("trial i of every experiment has seed first_trial + i", 0)
+    evaluation: int = _doc("starting positions and noise of every imitator's attempts", 1000)
+
+
+@dataclasses.dataclass(frozen=True)
+class RecognizerSettings:
+    """Self-observation sizes and the HMM bank (thesis §3.1)."""
+
+    train_per_primitive: int = _doc("self-observed sequences per primitive to learn from", 1000)
+    test_per_primitive: int = _doc("held-out sequences per primitive", 340)
+    n_states: int = _doc("HMM states (the thesis settled on one)", 1)
+    codebook_size: int = _doc("LBG codewords per representation", 512)
+    links: int = _doc("left-right links per state", 2)
+    max_iter: int = _doc("Baum-Welch iterations at most", 100)
+    tol: float = _doc("Baum-Welch stops when the log-likelihood gains less", 1e-4)
+    representation: str = _doc("\"thesis\" (positional/rotational) or \"egocentric\"", "thesis")
+    emissions: str = _doc("\"discrete\" (the thesis's) or \"gaussian\"", "discrete")
+    emission_floor: float = _doc("smallest emission probability", 1e-8)
+    min_variance: float = _doc("smallest variance of Gaussian emissions", 0.01)
+    seed: int = _doc("codebook and HMM initialisation", 0)
+
+    def __post_init__(self) -> None:
+        for name in ("train_per_primitive", "test_per_primitive", "n_states", "codebook_size", "links", "max_iter"):
+            if getattr(self, name) < 1:
+                raise ConfigError(f"[recognizer] {name} = {getattr(self, name)} must be at least 1")
+        if self.representation not in ("thesis", "egocentric"):
+            raise ConfigError(f"[recognizer] representation = {self.representation!r} must be \"thesis\" or "
+                              "\"egocentric\"")
+        if self.emissions not in ("discrete", "gaussian"):
+            raise ConfigError(f"[recognizer] emissions = {self.emissions!r} must be \"discrete\" or \"gaussian\"")
+
+
+@dataclasses.dataclass(frozen=True)
+class SegmenterSettings:
+    """How demonstrations are cut into segments and named (thesis §3.2.2)."""
+
+    min_frames: int = _doc("shortest segment, frames", 10)
+    stop_distance_mm: float = _doc("a segment moving less than this…", 1.0)
+    stop_rotation_deg: float = _doc("…and turning less than this is a stop", 20.0)
+    limit_sds: float = _doc("a segment ends when its motion leaves this many sds of a primitive's", 2.0)
+    gap_margin: float = _doc("log-likelihood margin below which a segment is a gap", 2.0)
+
+
+@dataclasses.dataclass(frozen=True)
+class ExperimentSettings:
+    """The learning experiments and the evaluation of the imitators they train (thesis §4.4)."""
+
+    trials: int = _doc("trials per experiment", 100)
+    demonstrations_per_configuration: int = _doc("recorded attempts per demonstrator and field configuration", 25)
+    attempts_per_configuration: int = _doc("attempts per evaluated imitator and field configuration", 25)
+    evaluated_imitators: int = _doc("imitators evaluated per experiment: the first trials'", 100)
+    average_max_trials: int = _doc("trials tried for an imitator scoring between Poor and Expert", 50)
+    lp_stride: int = _doc("LP-over-time plots keep every lp_stride-th LP change", 200)
+
+    def __post_init__(self) -> None:
+        for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
+                     "average_max_trials", "lp_stride"):
+            if getattr(self, name) < 1:
+                raise ConfigError(f"[experiments] {name} = {getattr(self, name)} must be at least 1")
+        if self.evaluated_imitators < 0:
+            raise ConfigError(f"[experiments] evaluated_imitators = {self.evaluated_imitators} must be at least 0")
+
+
+_SECTIONS = {"seeds": SeedSettings, "recognizer": RecognizerSettings, "segmenter": SegmenterSettings,
+             "experiments": ExperimentSettings}
+
+
+@dataclasses.dataclass(frozen=True)
+class RunConfig:
+    """The whole run. ``RunConfig()`` is the thesis's; :meth:`quick` a run of about a minute."""
+
+    seeds: SeedSettings = dataclasses.field(default_factory=SeedSettings)
+    field: dict[str, Any] = dataclasses.field(default_factory=default_config)
+    recognizer: RecognizerSettings = dataclasses.field(default_factory=RecognizerSettings)
+    segmenter: SegmenterSettings = dataclasses.field(default_factory=SegmenterSettings)
+    learning: LearningConfig = dataclasses.field(default_factory=LearningConfig)
+    experiments: ExperimentSettings = dataclasses.field(default_factory=ExperimentSettings)
+
+    @classmethod
+    def quick(cls) -> RunConfig:
+        """Fewer of everything: 8 trials, 10 demonstrations per configuration, 200 self-observed
+        sequences per primitive, a 128-word codebook and two evaluated imitators per experiment.
+
+        >>> RunConfig.quick().experiments.trials
+        8
+        """
+        thesis = cls()
+        return dataclasses.replace(
+            thesis,
+            recognizer=dataclasses.replace(thesis.recognizer, train_per_primitive=200, test_per_primitive=68,
+                                           codebook_size=128),
+            experiments=dataclasses.replace(thesis.experiments, trials=8, demonstrations_per_configuration=10,
+                                            evaluated_imitators=2))
+
+    def to_dict(self) -> dict[str, Any]:
+        """Plain data, section by section (what ``manifest.json`` keeps)."""
+        return {"seeds": dataclasses.asdict(self.seeds), "field": json.loads(json.dumps(self.field)),
+                "recognizer": dataclasses.asdict(self.recognizer), "segmenter": dataclasses.asdict(self.segmenter),
+                "learning": dataclasses.asdict(self.learning), "experiments": dataclasses.asdict(self.experiments)}
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], *, base: RunConfig | None = None) -> RunConfig:
+        """A config from plain data; what ``data`` leaves out comes from ``base`` (the thesis's)."""
+        base = base or cls()
+        unknown = sorted(set(data) - {f.name for f in dataclasses.fields(cls)})
+        if unknown:
+            raise ConfigError(f"unknown section{'s' if len(unknown) > 1 else ''}: {', '.join(unknown)}")
+        changes: dict[str, Any] = {}
+        for name in _SECTIONS:
+            if name in data:
+                current = getattr(base, name)
+                values = _checked(name, _table(name, data[name]), dataclasses.asdict(current))
+                changes[name] = dataclasses.replace(current, **values)
+        if "field" in data:
+            changes["field"] = _merged("field", base.field, _table("field", data["field"]))
+        if "learning" in data:
+            values = _checked("learning", _table("learning", data["learning"]), dataclasses.asdict(base.learning))
+            try:
+                changes["learning"] = dataclasses.replace(base.learning, **values)
+            except ValueError as error:
+                raise ConfigError(f"[learning] {error}") from error
+        return dataclasses.replace(base, **changes)
+
+    def to_toml(self) -> str:
+        """Every parameter, one ``key = value`` line each, with what it means beside it."""
+        lines = ["# polymimic run configuration: the thesis's values unless changed", ""]
+        for name in ("seeds", "field", "recognizer", "segmenter", "learning", "experiments"):
+            section = getattr(self, name)
+            if dataclasses.is_dataclass(section):
+                docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(section)}
+                _toml_table(lines, name, dataclasses.asdict(section), docs)
+            else:
+                _toml_table(lines, name, section, {})
+        return "\n".join(lines).rstrip() + "\n"
+
+    @classmethod
+    def from_toml(cls, text: str, *, base: RunConfig | None = None) -> RunConfig:
+        import tomllib
+
+        try:
+            data = tomllib.loads(text)
+        except tomllib.TOMLDecodeError as error:
+            raise ConfigError(f"not valid TOML: {error}") from error
+        return cls.from_dict(data, base=base)
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str], *, base: RunConfig | None = None) -> RunConfig:
+        try:
+            with open(path, encoding="utf-8") as file:
+                text = file.read()
+        except OSError as error:
+            raise ConfigError(f"cannot read config {os.fspath(path)!r}: {error.strerror}") from error
+        try:
+            return cls.from_toml(text, base=base)
+        except ConfigError as error:
+            raise ConfigError(f"{os.fspath(path)}: {error}") from error
+
+
+def _table(section: str, value: Any) -> dict[str, Any]:
+    if not isinstance(value, dict):
+        raise ConfigError(f"[{section}] must be a table, got {value!r}")
+    return value
+
+
+def _checked(section: str, values: dict[str, Any], defaults: dict[str, Any]) -> dict[str, Any]:
+    """``values`` with their types checked against ``defaults``' (ints are accepted as floats)."""
+    unknown = sorted(set(values) - set(defaults))
+    if unknown:
+        raise ConfigError(f"unknown key{'s' if len(unknown) > 1 else ''} in [{section}]: {', '.join(unknown)}")
+    return {key: _typed(f"[{section}] {key}", value, defaults[key]) for key, value in values.items()}
+
+
+def _typed(where: str, value: Any, default: Any) -> Any:
+    expected = type(default)
+    if expected is float and isinstance(value, int) and not isinstance(value, bool):
+        return float(value)
+    if type(value) is not expected:
+        raise ConfigError(f"{where} = {value!r} must be {_type_name(expected)}, like the default {default!r}")
+    return value
+
+
+def _type_name(kind: type) -> str:
+    return {bool: "true or false", int: "an integer", float: "a number", str: "a string", dict: "a table"}.get(
+        kind, kind.__name__)
+
+
+def _merged(section: str, defaults: dict[str, Any], values: dict[str, Any]) -> dict[str, Any]:
+    """Nested tables (the field's) merged key by key, with unknown keys refused."""
+    merged = dict(defaults)
+    for key, value in values.items():
+        if key not in defaults:
+            raise ConfigError(f"unknown key in [{section}]: {key}")
+        if isinstance(defaults[key], dict):
+            merged[key] = _merged(f"{section}.{key}", defaults[key], _table(f"{section}.{key}", value))
+        else:
+            merged[key] = _typed(f"[{section}] {key}", value, defaults[key])
+    return merged
+
+
+def _toml_table(lines: list[str], name: str, values: dict[str, Any], docs: dict[str, str]) -> None:
+    lines.append(f"[{name}]")
+    nested = {k: v for k, v in values.items() if isinstance(v, dict)}
+    for key, value in values.items():
+        if key not in nested:
+            line = f"{key} = {_toml_value(value)}"
+            lines.append(f"{line:<40} # {docs[key]}" if docs.get(key) else line)
+    lines.append("")
+    for key, value in nested.items():
+        _toml_table(lines, f"{name}.{key}", value, {})
+
+
+def _toml_value(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, float)):
+        return repr(value)  # repr of a float is valid TOML, and round-trips exactly
+    if isinstance(value, str):
+        return json.dumps(value)
+    raise TypeError(f"cannot write {value!r} as TOML")

@@ -1,0 +1,178 @@
+"""A run directory: where every stage of a reproduction reads its inputs and writes its outputs.
+
+::
+
+    manifest.json            version, config, seeds, start and finish of every stage
+    datasets/                self-observation, demonstrations, segments, imitator attempts (Parquet)
+    models/recognizer.json   the HMM bank
+    models/experiments/<experiment>/trial_<seed>.json            one learning trial each
+    models/experiments/<experiment>/evaluation_<seed>_<control>.json
+    results.json, plots/*.png, report.md, report.html
+
+>>> import tempfile
+>>> run = RunDir(tempfile.mkdtemp())
+>>> config = run.open(RunConfig.quick())
+>>> run.trial_path("varying_skill", 3).name
+'trial_3.json'
+>>> run.require(run.recognizer_path, "train")
+Traceback (most recent call last):
+...
+polymimic.rundir.MissingInputError: .../models/recognizer.json is missing: run `polymimic train --run-dir ...` first
+"""
+
+from __future__ import annotations
+
+import datetime
+import json
+import os
+import pathlib
+from typing import Any
+
+from polymimic._atomic import atomic_write_text
+from polymimic.runconfig import ConfigError, RunConfig
+
+__all__ = ["MissingInputError", "RunDir", "RunError", "new_run_path"]
+
+MANIFEST_FORMAT = "polymimic.run"
+MANIFEST_VERSION = 1
+
+
+class RunError(Exception):
+    """A stage cannot run: its inputs are missing, or the run directory disagrees with the config."""
+
+
+class MissingInputError(RunError):
+    """A stage's input is not in the run directory: an earlier stage has not run."""
+
+
+def new_run_path(root: str | os.PathLike[str] = "runs") -> pathlib.Path:
+    """``runs/<UTC timestamp>``, e.g. ``runs/20250101-120000``; a suffix keeps it new."""
+    stamp = datetime.datetime.now(datetime.timezone.utc).strftime("%Y%m%d-%H%M%S")
+    path = pathlib.Path(root) / stamp
+    suffix = 1
+    while path.exists():
+        suffix += 1
+        path = pathlib.Path(root) / f"{stamp}-{suffix}"
+    return path
+
+
+def latest_run_path(root: str | os.PathLike[str] = "runs") -> pathlib.Path | None:
+    """The newest run directory under ``root`` (by name: names are timestamps), if any."""
+    runs = sorted(p for p in pathlib.Path(root).glob("*") if (p / "manifest.json").is_file())
+    return runs[-1] if runs else None
+
+
+def _now() -> str:
+    return datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="milliseconds")
+
+
+class RunDir:
+    """Paths of a run directory, and its manifest."""
+
+    def __init__(self, path: str | os.PathLike[str]) -> None:
+        self.path = pathlib.Path(path)
+        self.datasets = self.path / "datasets"
+        self.models = self.path / "models"
+        self.plots = self.path / "plots"
+        self.manifest_path = self.path / "manifest.json"
+        self.recognizer_path = self.models / "recognizer.json"
+        self.average_trial_path = self.models / "average_trial.json"
+        self.results_path = self.path / "results.json"
+        self.report_md_path = self.path / "report.md"
+        self.report_html_path = self.path / "report.html"
+
+    def __repr__(self) -> str:
+        return f"RunDir({str(self.path)!r})"
+
+    # Paths of the stages' files.
+
+    def self_observation_path(self, split: str) -> pathlib.Path:
+        """``split`` is ``"train"`` or ``"test"``."""
+        return self.datasets / f"self_observation_{split}.parquet"
+
+    def demonstrations_path(self, demonstrator: str) -> pathlib.Path:
+        return self.datasets / f"demonstrations_{demonstrator}.parquet"
+
+    def segments_path(self, demonstrator: str) -> pathlib.Path:
+        return self.datasets / f"segments_{demonstrator}.parquet"
+
+    def attempts_path(self, experiment: str, control: str) -> pathlib.Path:
+        """The attempts of an experiment's first evaluated imitator, driven by ``control``."""
+        return self.datasets / f"attempts_{experiment}_{control}.parquet"
+
+    def experiment_dir(self, experiment: str) -> pathlib.Path:
+        return self.models / "experiments" / experiment
+
+    def trial_path(self, experiment: str, seed: int) -> pathlib.Path:
+        return self.experiment_dir(experiment) / f"trial_{seed}.json"
+
+    def evaluation_path(self, experiment: str, seed: int, control: str) -> pathlib.Path:
+        return self.experiment_dir(experiment) / f"evaluation_{seed}_{control}.json"
+
+    def require(self, path: pathlib.Path, stage: str) -> pathlib.Path:
+        """``path`` if it exists; else a :class:`MissingInputError` naming the stage that makes it."""
+        if not path.exists():
+            raise MissingInputError(f"{path} is missing: run `polymimic {stage} --run-dir {self.path}` first")
+        return path
+
+    # The manifest.
+
+    def open(self, config: RunConfig | None) -> RunConfig:
+        """Create the directory (with its manifest) or open it, and return the run's config.
+
+        An existing run keeps the config it was made with: ``config`` may be None (use it) or
+        equal to it; a different one is refused, since finished stages would not match it.
+        """
+        if self.manifest_path.exists():
+            stored = RunConfig.from_dict(self.manifest()["config"])
+            if config is not None and config != stored:
+                raise RunError(f"{self.path} was made with a different config; start a new --run-dir, or leave "
+                               f"out --config/--quick to go on with its own (`polymimic config --run-dir "
+                               f"{self.path}` prints it)")
+            return stored
+        if self.path.exists() and any(self.path.iterdir()):
+            raise RunError(f"{self.path} exists, is not empty and holds no manifest.json: not a run directory")
+        config = config or RunConfig()
+        for folder in (self.datasets, self.models, self.plots):
+            folder.mkdir(parents=True, exist_ok=True)
+        from polymimic import __version__
+
+        self._write({"format": MANIFEST_FORMAT, "version": MANIFEST_VERSION, "polymimic_version": __version__,
+                     "created": _now(), "config": config.to_dict(), "seeds": config.to_dict()["seeds"],
+                     "stages": {}})
+        return config
+
+    def manifest(self) -> dict[str, Any]:
+        try:
+            data = json.loads(self.manifest_path.read_text(encoding="utf-8"))
+        except FileNotFoundError:
+            raise MissingInputError(f"{self.path} is not a run directory (no manifest.json)") from None
+        except (OSError, ValueError) as error:
+            raise RunError(f"{self.manifest_path}: not a readable manifest ({error})") from error
+        if data.get("format") != MANIFEST_FORMAT or data.get("version", 0) > MANIFEST_VERSION:
+            raise RunError(f"{self.manifest_path}: not a polymimic run manifest of version ≤ {MANIFEST_VERSION}")
+        try:
+            RunConfig.from_dict(data["config"])
+        except (ConfigError, KeyError) as error:
+            raise RunError(f"{self.manifest_path}: its config cannot be read ({error})") from error
+        return data
+
+    def stage_started(self, stage: str, **details: Any) -> None:
+        manifest = self.manifest()
+        manifest["stages"][stage] = {"started": _now(), "finished": None, **details}
+        self._write(manifest)
+
+    def stage_finished(self, stage: str, seconds: float, **details: Any) -> None:
+        manifest = self.manifest()
+        entry = manifest["stages"].setdefault(stage, {})
+        entry.update(finished=_now(), seconds=round(seconds, 3), **details)
+        self._write(manifest)
+
+    def stage_restored(self, stage: str, entry: dict[str, Any]) -> None:
+        """Put back a stage's earlier entry (a rerun found nothing to do), noting when it checked."""
+        manifest = self.manifest()
+        manifest["stages"][stage] = {**entry, "checked": _now()}
+        self._write(manifest)
+
+    def _write(self, manifest: dict[str, Any]) -> None:
+        atomic_write_text(self.manifest_path, json.dumps(manifest, indent=1) + "\n")

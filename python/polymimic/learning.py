@@ -32,8 +32,21 @@ class LearningConfig:
     """Every constant of learning (thesis Table 3.2, §3.3, §3.4); defaults are the thesis's.
 
     Values the thesis leaves open are choices: ``permanency_step``, the ball-prediction
-    thresholds (``ball_min_samples``, ``ball_max_angle_sd_deg``, ``ball_moved_mm``) and
-    ``shaping_dead_band_mm``. ``save``/``load`` use TOML.
+    thresholds (``ball_min_samples``, ``ball_max_angle_sd_deg``, ``ball_moved_mm``), the dead
+    bands of the approach criteria (``ball_dead_band_mm``, ``robot_dead_band_mm``), and how the
+    LP is shaped:
+
+    - ``lp_bounds``: ``"soft"`` (a rise moves the LP by ``amount · 2(1 − LP)``, a fall by
+      ``amount · 2 LP``: the thesis's step at the midpoint, none at a bound, so each
+      demonstrator settles where its gains balance its losses) or ``"clamp"`` (the thesis's
+      letter: add, then clamp to [0, 1], which drifts every model to a bound);
+    - ``lp_scope``: ``"own_demonstrator"`` (goals, ball and robot criteria shape a model's LP
+      only on its own demonstrator's demonstrations, since the LP rates that demonstrator) or
+      ``"every"`` (also on the others' in phase 2);
+    - ``lp_criteria``: ``"foremost"`` (the ball criterion when the ball moved, else the robot
+      criterion: the thesis ranks them) or ``"both"`` (added).
+
+    ``save``/``load`` use TOML.
     """
 
     creation_threshold: float = 0.3
@@ -56,7 +69,11 @@ class LearningConfig:
     ball_max_angle_sd_deg: float = 30.0
     ball_moved_mm: float = 10.0
     prediction_noise_divisor: float = 3.0
-    shaping_dead_band_mm: float = 1.0
+    ball_dead_band_mm: float = 10.0
+    robot_dead_band_mm: float = 10.0
+    lp_bounds: str = "soft"
+    lp_scope: str = "own_demonstrator"
+    lp_criteria: str = "foremost"
 
     def __post_init__(self) -> None:
         _native.check_learning_config(self.to_json())
@@ -106,6 +123,11 @@ class ModelResult:
     rounds: int
     rounds_matched: int
     behaviours: list[dict[str, Any]]
+    lp_causes: dict[str, int] = dataclasses.field(default_factory=dict)
+    """How often each cause of Table 3.3 changed the LP (``goal``, ``own_goal``,
+    ``ball_nearer_goal``, ``ball_farther_from_goal``, ``robot_nearer_ball``,
+    ``robot_farther_from_ball``, ``ball_predicted``, ``candidate_permanent``,
+    ``candidate_deleted``)."""
 
 
 @dataclasses.dataclass(frozen=True)

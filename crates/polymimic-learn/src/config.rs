@@ -4,6 +4,42 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::LearnError;
 
+/// How the learning preference is kept within [0, 1].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LpBounds {
+    /// *Choice*: a rise moves the LP by `amount · (1 − LP)` and a fall by `amount · LP`, so
+    /// each demonstrator settles where its gains balance its losses (the thesis's curves hover
+    /// at 0.3, 0.55 and 0.9 for its Poor, Average and Expert, which a clamped walk of constant
+    /// steps cannot do: it drifts to a bound).
+    Soft,
+    /// The thesis's letter: add the amount, then clamp to [0, 1].
+    Clamp,
+}
+
+/// Which task criteria of eq 3.13 count over one span short of a goal.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LpCriteria {
+    /// *Choice*: only the foremost that changed: the ball's approach to the goal when the ball
+    /// moved, else the robot's approach to the ball — the thesis ranks the criteria, and lets a
+    /// goal silence the other two.
+    Foremost,
+    /// Both, added.
+    Both,
+}
+
+/// Whose demonstrations shape a model's LP by the task criteria (goals, ball, robot).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LpScope {
+    /// *Choice*: only its own demonstrator's: the LP rates that demonstrator's skill, and in
+    /// phase 2 every model also reads the others' demonstrations, whose goals are not its own.
+    OwnDemonstrator,
+    /// Every demonstration the model processes.
+    Every,
+}
+
 /// The constants of behaviour creation, permanency, decay, learning preference and
 /// prediction. Defaults are the thesis's; the ones it leaves open are marked *choice*.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -47,8 +83,17 @@ pub struct LearningConfig {
     pub ball_moved_mm: f64,
     /// Prediction noise: a primitive's motion is drawn with sd = Table 3.1 sd / this.
     pub prediction_noise_divisor: f64,
-    /// *Choice*: smaller changes of a distance than this count as neither closer nor farther.
-    pub shaping_dead_band_mm: f64,
+    /// *Choice*: the ball nearer the goal by less than this counts as neither nearer nor farther.
+    pub ball_dead_band_mm: f64,
+    /// *Choice*: the robot nearer the ball by less than this counts as neither nearer nor
+    /// farther (a walking humanoid sways by about a centimetre while it stands).
+    pub robot_dead_band_mm: f64,
+    /// *Choice*: how the LP is bounded.
+    pub lp_bounds: LpBounds,
+    /// *Choice*: which demonstrations shape the LP by the task criteria.
+    pub lp_scope: LpScope,
+    /// *Choice*: which criteria count over a span without a goal.
+    pub lp_criteria: LpCriteria,
 }
 
 impl Default for LearningConfig {
@@ -74,7 +119,11 @@ impl Default for LearningConfig {
             ball_max_angle_sd_deg: 30.0,
             ball_moved_mm: 10.0,
             prediction_noise_divisor: 3.0,
-            shaping_dead_band_mm: 1.0,
+            ball_dead_band_mm: 10.0,
+            robot_dead_band_mm: 10.0,
+            lp_bounds: LpBounds::Soft,
+            lp_scope: LpScope::OwnDemonstrator,
+            lp_criteria: LpCriteria::Foremost,
         }
     }
 }
@@ -135,7 +184,8 @@ impl LearningConfig {
             ("lp_robot_to_ball", self.lp_robot_to_ball),
             ("lp_event", self.lp_event),
             ("ball_moved_mm", self.ball_moved_mm),
-            ("shaping_dead_band_mm", self.shaping_dead_band_mm),
+            ("ball_dead_band_mm", self.ball_dead_band_mm),
+            ("robot_dead_band_mm", self.robot_dead_band_mm),
         ];
         for (name, value) in non_negative {
             if !(value.is_finite() && value >= 0.0) {

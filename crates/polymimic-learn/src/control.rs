@@ -19,7 +19,7 @@ use serde::{Deserialize, Serialize};
 use crate::config::LearningConfig;
 use crate::model::ForwardModel;
 use crate::prediction::{MotionTable, predict};
-use crate::round::approach_shaping;
+use crate::shaping::approach_shaping;
 use crate::state::{Pitch, robot_to_ball_mm};
 
 /// Tracker frames one primitive is held for.

@@ -10,17 +10,19 @@ mod model;
 mod prediction;
 mod round;
 mod running;
+mod shaping;
 mod state;
 mod trial;
 
 pub use behaviour::Behaviour;
-pub use config::LearningConfig;
+pub use config::{LearningConfig, LpBounds, LpCriteria, LpScope};
 pub use control::{Attempt, ImitatorPolicy};
 pub use error::LearnError;
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};
 pub use round::{Ending, SegmentedDemonstration};
 pub use running::Running;
+pub use shaping::{LpCause, LpCauseCounts};
 pub use state::{Pitch, ball_to_goal_mm, precondition_measures, range_bearing, robot_to_ball_mm};
 pub use trial::{PhaseOne, TrialResult, run_trial};
 

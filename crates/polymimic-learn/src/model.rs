@@ -5,13 +5,15 @@ use polymimic_perceive::Primitive;
 use serde::{Deserialize, Serialize};
 
 use crate::behaviour::Behaviour;
-use crate::config::LearningConfig;
+use crate::config::{LearningConfig, LpBounds};
+use crate::shaping::{LpCause, LpCauseCounts};
 
 const FORMAT: &str = "polymimic.ForwardModel";
 const VERSION: u32 = 1;
 
 /// Counts behind Tables 4.1, 4.2, 4.7 and 4.10.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(default)]
 pub struct ModelMetrics {
     pub created: usize,
     pub deleted: usize,
@@ -24,6 +26,8 @@ pub struct ModelMetrics {
     pub candidates_permanent: usize,
     pub rounds: usize,
     pub rounds_matched: usize,
+    /// What changed the LP, and how often.
+    pub lp_causes: LpCauseCounts,
 }
 
 /// Something a model's processing did that the trial must act on.
@@ -96,12 +100,21 @@ impl ForwardModel {
         self.behaviours.remove(index)
     }
 
-    /// Changes the LP by `delta`, clamped to [0, 1], unless it is fixed.
-    pub fn shape_lp(&mut self, delta: f64) {
+    /// Changes the LP for `cause` (eq 3.13) within [0, 1] as `config.lp_bounds` says, unless
+    /// it is fixed.
+    pub fn shape_lp(&mut self, cause: LpCause, config: &LearningConfig) {
+        let delta = cause.amount(config);
         if self.fixed_lp || delta == 0.0 {
             return;
         }
-        self.lp = (self.lp + delta).clamp(0.0, 1.0);
+        self.metrics.lp_causes.count(cause);
+        // Soft bounds take the thesis's step at the midpoint, shrinking to nothing at the bound.
+        let room = match config.lp_bounds {
+            LpBounds::Clamp => 1.0,
+            LpBounds::Soft if delta > 0.0 => 2.0 * (1.0 - self.lp),
+            LpBounds::Soft => 2.0 * self.lp,
+        };
+        self.lp = (self.lp + delta * room).clamp(0.0, 1.0);
         self.lp_history.push(self.lp);
     }
 

@@ -5,14 +5,15 @@
 //! one still matches; among those matching the furthest segment reached, behaviours with an
 //! accurate ball prediction are preferred, then the fewest primitives, then the oldest.
 
-use polymimic_perceive::{Label, Primitive, Segment, TrackedFrame};
+use polymimic_perceive::{Label, Primitive, Segment};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use crate::config::LearningConfig;
+use crate::config::{LearningConfig, LpScope};
 use crate::model::{Event, ForwardModel};
 use crate::prediction::{MotionTable, Prediction, matches, predict};
-use crate::state::{Pitch, ball_to_goal_mm, range_bearing, robot_to_ball_mm};
+use crate::shaping::{LpCause, approach_causes};
+use crate::state::{Pitch, range_bearing};
 
 /// How a demonstration ended, as far as learning is concerned.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -116,13 +117,13 @@ impl ForwardModel {
             let selected_primitives = self.behaviours[selected].primitives.clone();
             let from = self.index_of(&current);
             for &i in ball_accurate.iter().filter(|&&i| i != selected) {
-                self.shape_lp(config.lp_event);
+                self.shape_lp(LpCause::BallPredicted, config);
                 if let Some(from) = from {
                     self.follow(from, i, config);
                 }
             }
             if ball_accurate.contains(&selected) {
-                self.shape_lp(config.lp_event);
+                self.shape_lp(LpCause::BallPredicted, config);
             }
             if let Some(from) = from {
                 self.follow(from, selected, config);
@@ -131,7 +132,12 @@ impl ForwardModel {
             self.reinforce(selected, config);
             self.behaviours[selected].record_span(&start, &end, &demo.pitch, config);
             self.decay(config);
-            self.shape_lp(lp_shaping(demo, &segments[c], &segments[reached], reached + 1 == segments.len(), config));
+            if config.lp_scope == LpScope::Every || demo.demonstrator == self.name {
+                let last = reached + 1 == segments.len();
+                for cause in span_causes(demo, &segments[c], &segments[reached], last, config).into_iter().flatten() {
+                    self.shape_lp(cause, config);
+                }
+            }
             events.extend(self.settle(config));
             c = reached;
             current = if self.index_of(&selected_primitives).is_some() {
@@ -161,37 +167,18 @@ impl ForwardModel {
     }
 }
 
-/// Eq 3.13 over a span: a goal or own goal outweighs everything; otherwise the ball's
-/// approach to the target goal and the robot's approach to the ball each count.
-fn lp_shaping(demo: &SegmentedDemonstration, from: &Segment, to: &Segment, last: bool, config: &LearningConfig) -> f64 {
-    if last {
-        match demo.ending {
-            Ending::Goal => return config.lp_goal,
-            Ending::OwnGoal => return -config.lp_goal,
-            Ending::Other => {}
-        }
-    }
-    approach_shaping(&from.end, &to.end, &demo.pitch, config)
-}
-
-/// The LP criteria short of a goal, from one state to another: the ball nearer the target
-/// goal (or farther), and the robot nearer the ball (or farther). Changes within the dead
-/// band count as neither. Shared by learning (eq 3.13) and by control's rating of predictions.
-pub(crate) fn approach_shaping(
-    before: &TrackedFrame,
-    after: &TrackedFrame,
-    pitch: &Pitch,
+/// Eq 3.13 over a span: a goal or own goal outweighs everything; otherwise the approach
+/// criteria count.
+fn span_causes(
+    demo: &SegmentedDemonstration,
+    from: &Segment,
+    to: &Segment,
+    last: bool,
     config: &LearningConfig,
-) -> f64 {
-    let signed = |then: f64, now: f64, amount: f64| {
-        if now < then - config.shaping_dead_band_mm {
-            amount
-        } else if now > then + config.shaping_dead_band_mm {
-            -amount
-        } else {
-            0.0
-        }
-    };
-    signed(ball_to_goal_mm(before, pitch), ball_to_goal_mm(after, pitch), config.lp_ball_to_goal)
-        + signed(robot_to_ball_mm(before), robot_to_ball_mm(after), config.lp_robot_to_ball)
+) -> [Option<LpCause>; 2] {
+    match demo.ending {
+        Ending::Goal if last => [Some(LpCause::Goal), None],
+        Ending::OwnGoal if last => [Some(LpCause::OwnGoal), None],
+        _ => approach_causes(&from.end, &to.end, &demo.pitch, config),
+    }
 }

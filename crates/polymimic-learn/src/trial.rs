@@ -10,6 +10,7 @@ use crate::error::LearnError;
 use crate::model::{Event, ForwardModel};
 use crate::prediction::MotionTable;
 use crate::round::SegmentedDemonstration;
+use crate::shaping::LpCause;
 
 /// How phase 1 presents demonstrations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -131,9 +132,9 @@ fn judge_candidates(events: &[Event], models: &mut [ForwardModel], config: &Lear
         match event {
             Event::BecamePermanent { nominated_by: Some(m), .. } => {
                 models[*m].metrics.candidates_permanent += 1;
-                models[*m].shape_lp(config.lp_event);
+                models[*m].shape_lp(LpCause::CandidatePermanent, config);
             }
-            Event::Deleted { nominated_by: Some(m), .. } => models[*m].shape_lp(-config.lp_event),
+            Event::Deleted { nominated_by: Some(m), .. } => models[*m].shape_lp(LpCause::CandidateDeleted, config),
             _ => {}
         }
     }

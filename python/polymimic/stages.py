@@ -1,0 +1,183 @@
+"""The stages of a reproduction, each reading its inputs from the run directory and writing its
+outputs there; ``reproduce`` runs them all. A stage skips what is already done, so rerunning
+one (or all) after an interruption goes on where it stopped.
+
+=============  ==================================================  ==========================
+stage          writes                                              reads
+=============  ==================================================  ==========================
+self-observe   datasets/self_observation_{train,test}.parquet
+record         datasets/demonstrations_<demonstrator>.parquet      (models/recognizer.json)
+train          models/recognizer.json                              self_observation_train
+segment        datasets/segments_<demonstrator>.parquet            recogniser, demonstrations
+learn          models/experiments/<experiment>/trial_<seed>.json   recogniser, segments
+evaluate       …/evaluation_<seed>_<control>.json, attempts        recogniser, trials
+report         results.json, plots/, report.md, report.html        everything
+=============  ==================================================  ==========================
+
+The Average demonstrator is an imitator trained in the heterogeneous experiment, so it needs
+the recogniser: ``record`` records it when the recogniser exists, ``segment`` otherwise.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import sys
+import time
+from collections.abc import Callable, Sequence
+
+from polymimic import _native
+from polymimic._native import PrimitiveRecognizer
+from polymimic.backends import TaskRunner
+from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
+from polymimic.experiments import evaluate_imitators, learn
+from polymimic.field import DEMONSTRATORS, record, self_observation
+from polymimic.learning import average_demonstrator
+from polymimic.rundir import RunDir, RunError
+from polymimic.runconfig import RunConfig
+from polymimic.segments import save_segments, segment_demonstrations
+
+__all__ = ["STAGES", "Context", "reproduce", "run_stage"]
+
+ALL_DEMONSTRATORS = (*DEMONSTRATORS, "average")
+
+
+@dataclasses.dataclass
+class Context:
+    """A run directory, its config, where tasks run, and whether to keep quiet."""
+
+    run: RunDir
+    config: RunConfig
+    runner: TaskRunner
+    quiet: bool = False
+
+    def say(self, message: str) -> None:
+        if not self.quiet:
+            print(message, file=sys.stderr)
+
+
+def _self_observe(ctx: Context) -> int:
+    settings, seeds, made = ctx.config.recognizer, ctx.config.seeds, 0
+    for split, n, seed in (("train", settings.train_per_primitive, seeds.self_observation_train),
+                           ("test", settings.test_per_primitive, seeds.self_observation_test)):
+        path = ctx.run.self_observation_path(split)
+        if not path.exists():
+            save_self_observation(self_observation(n, seed=seed, config=ctx.config.field), path)
+            made += 1
+    return made
+
+
+def _record(ctx: Context) -> int:
+    n, made = ctx.config.experiments.demonstrations_per_configuration, 0
+    for who in DEMONSTRATORS:
+        path = ctx.run.demonstrations_path(who)
+        if not path.exists():
+            demos = [d for configuration in (1, 2)
+                     for d in record(who, configuration=configuration, n=n, seed=ctx.config.seeds.demonstrations,
+                                     config=ctx.config.field)]
+            save_demonstrations(demos, path)
+            made += 1
+    if ctx.run.recognizer_path.exists():
+        made += _record_average(ctx)
+    return made
+
+
+def _record_average(ctx: Context) -> int:
+    """The Average demonstrator: the first heterogeneous (RCB) imitator to score between the Poor
+    and the Expert demonstrators, driven by the thesis's rule (§4.4.2)."""
+    path = ctx.run.demonstrations_path("average")
+    if path.exists():
+        return 0
+    recognizer = PrimitiveRecognizer.load(ctx.run.require(ctx.run.recognizer_path, "train"))
+    settings = ctx.config.experiments
+    try:
+        demos, trial = average_demonstrator(recognizer, n=settings.demonstrations_per_configuration,
+                                            seed=ctx.config.seeds.demonstrations,
+                                            max_trials=settings.average_max_trials, config=ctx.config.learning)
+    except _native.PolymimicError as error:
+        raise RunError(f"no Average demonstrator: {error}; raise [experiments] average_max_trials") from error
+    trial.save(ctx.run.average_trial_path)
+    save_demonstrations(demos, path)
+    return 1
+
+
+def _train(ctx: Context) -> int:
+    if ctx.run.recognizer_path.exists():
+        return 0
+    sequences = load_self_observation(ctx.run.require(ctx.run.self_observation_path("train"), "self-observe"))
+    settings = dataclasses.asdict(ctx.config.recognizer)
+    del settings["train_per_primitive"], settings["test_per_primitive"]
+    recognizer = PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences],
+                                           **settings)
+    recognizer.save(ctx.run.recognizer_path)  # atomically
+    return 1
+
+
+def _segment(ctx: Context) -> int:
+    recognizer = PrimitiveRecognizer.load(ctx.run.require(ctx.run.recognizer_path, "train"))
+    made = _record_average(ctx)
+    segmenter = dataclasses.asdict(ctx.config.segmenter)
+    for who in ALL_DEMONSTRATORS:
+        path = ctx.run.segments_path(who)
+        if not path.exists():
+            demos = load_demonstrations(ctx.run.require(ctx.run.demonstrations_path(who), "record"))
+            save_segments(segment_demonstrations(demos, recognizer, **segmenter), path)
+            made += 1
+    return made
+
+
+def _learn(ctx: Context, experiments: Sequence[str] | None = None, limit: int | None = None) -> int:
+    ran = learn(ctx.run, ctx.config, ctx.runner, experiments=experiments, limit=limit, quiet=ctx.quiet)
+    ctx.say("  trials run: " + ", ".join(f"{name} {n}" for name, n in ran.items()))
+    return sum(ran.values())
+
+
+def _evaluate(ctx: Context, experiments: Sequence[str] | None = None) -> int:
+    ran = evaluate_imitators(ctx.run, ctx.config, ctx.runner, experiments=experiments, quiet=ctx.quiet)
+    ctx.say("  evaluations run: " + ", ".join(f"{name} {n}" for name, n in ran.items()))
+    return sum(ran.values())
+
+
+def _report(ctx: Context) -> int:
+    from polymimic.reports import write_report
+
+    write_report(ctx.run, ctx.config, quiet=ctx.quiet)
+    return 1
+
+
+STAGES: dict[str, Callable[..., int]] = {
+    "self-observe": _self_observe,
+    "record": _record,
+    "train": _train,
+    "segment": _segment,
+    "learn": _learn,
+    "evaluate": _evaluate,
+    "report": _report,
+}
+"""Every stage, in the order ``reproduce`` runs them; each returns how many outputs it made."""
+
+
+def run_stage(ctx: Context, stage: str, **options: object) -> float:
+    """Run one stage, recording its start and finish in the manifest; return its time (s).
+
+    A stage that finds everything done keeps the times of the run that did it."""
+    ctx.say(f"{stage} …")
+    before = ctx.run.manifest()["stages"].get(stage)
+    ctx.run.stage_started(stage, backend=ctx.runner.backend, workers=ctx.runner.workers)
+    started = time.perf_counter()
+    made = STAGES[stage](ctx, **options)
+    seconds = time.perf_counter() - started
+    if made == 0 and before and before.get("finished"):
+        ctx.run.stage_restored(stage, before)
+        ctx.say(f"{stage}: already done")
+    else:
+        ctx.run.stage_finished(stage, seconds)
+        ctx.say(f"{stage} done in {seconds:.1f} s")
+    return seconds
+
+
+def reproduce(ctx: Context) -> float:
+    """Every stage in turn; return the total time (s)."""
+    started = time.perf_counter()
+    for stage in STAGES:
+        run_stage(ctx, stage)
+    return time.perf_counter() - started

@@ -335,3 +335,104 @@ def plot_log_likelihoods(table: dict[str, dict[str, float]], *, ax: Axes | None 
         with atomic_path(path) as temporary:
             figure.savefig(temporary, dpi=120)
     return figure
+
+
+def plot_metric_bars(table: dict[str, dict[str, dict[str, float | None]]], *, ylabel: str, title: str,
+                     ax: Axes | None = None, path: str | os.PathLike[str] | None = None) -> Figure:
+    """Bars of a per-model metric, mean ± sd over trials, with the sd written on top of each bar
+    as in the thesis's Figs 4.7–4.12 and 4.19–4.25.
+
+    Parameters
+    ----------
+    table : dict
+        ``table[group][model] = {"mean": …, "sd": …}``: one bar per group (an experiment or an
+        ordering) beside each other for every model; models are taken in their first group's
+        order. A ``None`` mean draws no bar.
+    ylabel, title : str
+        Axis label and title.
+    ax, path
+        As for :func:`plot_demonstration`.
+
+    Examples
+    --------
+    >>> table = {"RCB": {"expert": {"mean": 40.0, "sd": 3.0}, "humanoid": {"mean": 55.0, "sd": 6.0}},
+    ...          "BCR": {"expert": {"mean": 41.0, "sd": 2.0}, "humanoid": {"mean": 54.0, "sd": 5.0}}}
+    >>> figure = plot_metric_bars(table, ylabel="behaviours created", title="Fig 4.7")
+    >>> len(figure.axes[0].patches)
+    4
+    """
+    from matplotlib.figure import Figure
+
+    if ax is None:
+        figure = Figure(figsize=(7.0, 4.2), layout="constrained")
+        ax = figure.add_subplot()
+    figure = cast("Figure", ax.figure)
+    groups = list(table)
+    models: list[str] = []
+    for group in groups:
+        models += [m for m in table[group] if m not in models]
+    width = 0.8 / max(len(groups), 1)
+    positions = np.arange(len(models))
+    for i, group in enumerate(groups):
+        cells = [table[group].get(m) or {} for m in models]
+        means = np.array([np.nan if c.get("mean") is None else c["mean"] for c in cells], dtype=float)
+        sds = np.array([np.nan if c.get("sd") is None else c["sd"] for c in cells], dtype=float)
+        shown = np.isfinite(means)
+        x = positions[shown] + (i - (len(groups) - 1) / 2) * width
+        bars = ax.bar(x, means[shown], width, yerr=np.nan_to_num(sds[shown]), capsize=3, label=group)
+        ax.bar_label(bars, labels=[f"{s:.2g}" for s in np.nan_to_num(sds[shown])], fontsize="x-small",
+                     padding=2)
+    ax.set_xticks(positions, models)
+    ax.set_ylabel(ylabel)
+    ax.margins(y=0.12)
+    if len(groups) > 1:
+        ax.legend(fontsize="small")
+    ax.set_title(title, fontsize="medium")
+    _save(figure, path)
+    return figure
+
+
+def plot_lp_over_time(histories: list[list[float]], *, stride: int, title: str, ax: Axes | None = None,
+                      path: str | os.PathLike[str] | None = None) -> Figure:
+    """A demonstrator model's learning preference over training, every trial overlaid (thesis
+    Figs 4.13–4.18, 4.26–4.28).
+
+    Parameters
+    ----------
+    histories : list of list of float
+        One list per trial: its LP at every ``stride``-th change (and at the last).
+    stride : int
+        LP changes between points, to label the x axis.
+    title : str
+        The figure's title.
+    ax, path
+        As for :func:`plot_demonstration`.
+
+    Examples
+    --------
+    >>> figure = plot_lp_over_time([[0.5, 0.8, 1.0], [0.5, 0.6, 0.9, 1.0]], stride=200, title="expert")
+    >>> len(figure.axes[0].lines)   # two trials, and the starting LP
+    3
+    """
+    from matplotlib.figure import Figure
+
+    if ax is None:
+        figure = Figure(figsize=(7.0, 3.6), layout="constrained")
+        ax = figure.add_subplot()
+    figure = cast("Figure", ax.figure)
+    alpha = max(0.08, min(0.8, 8.0 / max(len(histories), 1)))
+    for history in histories:
+        ax.plot(np.arange(len(history)) * stride, history, color="tab:blue", linewidth=0.8, alpha=alpha)
+    ax.axhline(0.5, color="0.4", linewidth=0.8, linestyle=":")
+    ax.set_ylim(0.0, 1.05)
+    ax.set_xlabel(f"LP changes (a point every {stride})")
+    ax.set_ylabel("learning preference")
+    ax.set_title(f"{title} ({len(histories)} trials)", fontsize="medium")
+    _save(figure, path)
+    return figure
+
+
+def _save(figure: Figure, path: str | os.PathLike[str] | None) -> None:
+    if path is not None:
+        with atomic_path(path) as temporary:
+            figure.savefig(temporary, dpi=100)

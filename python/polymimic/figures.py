@@ -1,0 +1,100 @@
+"""The report's figures, drawn from ``results.json`` into a run's ``plots/`` folder.
+
+Each figure carries the thesis's number: ``fig_4_5.png``, ``fig_4_7.png`` … ``fig_4_28.png``,
+and ``final_lp_heterogeneous.png`` (the heterogeneous experiments' final LPs, which the thesis
+shows only as LP over time).
+
+>>> FIGURES["4.13"]
+('lp', 'heterogeneous_rcb', 'expert')
+>>> FIGURES["4.22"]
+('bars', 'varying_skill', 'candidates')
+"""
+
+from __future__ import annotations
+
+import os
+import pathlib
+from typing import Any
+
+from polymimic.progress import progress
+
+__all__ = ["FIGURES", "METRIC_LABELS", "draw_figures"]
+
+METRIC_LABELS = {
+    "created": "behaviours created",
+    "deleted": "behaviours deleted",
+    "permanent": "permanent behaviours",
+    "candidates": "candidates moved to the imitator",
+    "duplicates": "duplicate candidates (already in the imitator)",
+    "candidates_permanent": "candidates made permanent in the imitator",
+}
+
+
+
+def _numbered() -> dict[str, tuple[str, ...]]:
+    figures: dict[str, tuple[str, ...]] = {"4.5": ("log_likelihoods",)}
+    for number, metric in zip(range(7, 13), METRIC_LABELS):
+        figures[f"4.{number}"] = ("bars", "heterogeneous", metric)
+    lp_heterogeneous = [(who, e) for who in ("expert", "tiny", "humanoid")
+                        for e in ("heterogeneous_rcb", "heterogeneous_bcr")]
+    for number, (who, experiment) in zip(range(13, 19), lp_heterogeneous):
+        figures[f"4.{number}"] = ("lp", experiment, who)
+    for number, metric in zip(range(19, 25), METRIC_LABELS):
+        figures[f"4.{number}"] = ("bars", "varying_skill", metric)
+    figures["4.25"] = ("final_lp", "varying_skill")
+    for number, who in zip(range(26, 29), ("poor", "average", "expert")):
+        figures[f"4.{number}"] = ("lp", "varying_skill", who)
+    return figures
+
+
+FIGURES = _numbered()
+"""Thesis figure number → what it shows: ``("bars", experiment, metric)``, ``("lp", experiment,
+demonstrator)``, ``("final_lp", experiment)``; ``heterogeneous`` stands for both orderings."""
+
+_GROUPS = {"heterogeneous": {"RCB": "heterogeneous_rcb", "BCR": "heterogeneous_bcr"},
+           "varying_skill": {"varying skill": "varying_skill"}}
+
+
+def figure_file(number: str) -> str:
+    """``plots/fig_4_7.png`` for ``"4.7"``: the path the report links, relative to the run."""
+    return f"plots/fig_{number.replace('.', '_')}.png"
+
+
+def draw_figures(results: dict[str, Any], run_path: str | os.PathLike[str], *,
+                 quiet: bool = False) -> dict[str, str]:
+    """Draw every figure; return each one's path relative to ``run_path``, by figure number
+    (``"final_lp_heterogeneous"`` for the extra one)."""
+    from polymimic.plots import plot_lp_over_time, plot_log_likelihoods, plot_metric_bars
+
+    root = pathlib.Path(run_path)
+    (root / "plots").mkdir(exist_ok=True)
+    experiments = results["experiments"]
+    todo = [*FIGURES, "final_lp_heterogeneous"]
+    drawn: dict[str, str] = {}
+    with progress(total=len(todo), desc="figures", quiet=quiet) as bar:
+        for number in todo:
+            spec = FIGURES.get(number, ("final_lp", "heterogeneous"))
+            relative = figure_file(number) if number in FIGURES else f"plots/{number}.png"
+            path = root / relative
+            title = f"Fig {number}: " if number in FIGURES else ""
+            if spec[0] == "log_likelihoods":
+                figure = plot_log_likelihoods(results["hmm_log_likelihood"], path=path)
+            elif spec[0] == "bars":
+                _, group, metric = spec
+                table = {label: {m: v[metric] for m, v in experiments[e]["behaviours"].items()}
+                         for label, e in _GROUPS[group].items()}
+                figure = plot_metric_bars(table, ylabel=METRIC_LABELS[metric], path=path,
+                                          title=f"{title}{METRIC_LABELS[metric]}, mean (sd) over trials")
+            elif spec[0] == "final_lp":
+                table = {label: experiments[e]["final_lp"] for label, e in _GROUPS[spec[1]].items()}
+                figure = plot_metric_bars(table, ylabel="final learning preference", path=path,
+                                          title=f"{title}final LP of each demonstrator's model, mean (sd)")
+            else:
+                _, experiment, who = spec
+                over_time = experiments[experiment]["lp_over_time"]
+                figure = plot_lp_over_time(over_time["trials"][who], stride=over_time["stride"], path=path,
+                                           title=f"{title}LP of the {who} model, {experiments[experiment]['title']}")
+            del figure  # each figure is saved as it is drawn; keep no more than one in memory
+            drawn[number] = relative
+            bar.update(1)
+    return drawn

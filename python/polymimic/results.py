@@ -1,0 +1,241 @@
+"""``results.json``: every number a run measured, gathered from its run directory.
+
+Shares are fractions in [0, 1]; ``{mean, sd}`` pairs are over trials (sd with n − 1; 0 for one
+trial); numbers that do not exist (a share of nothing) are ``null``. The schema is described in
+the README (“The results file”). The summaries are pure functions of trial results, so they can
+be checked on made-up trials:
+
+>>> mean_sd([1.0, 2.0, 3.0])
+{'mean': 2.0, 'sd': 1.0}
+>>> lp_climb([[0.5, 0.7, 0.95, 0.9], [0.5, 0.6]], level=0.9)
+{'level': 0.9, 'changes': {'mean': 2.0, 'sd': 0.0}, 'reached': 1}
+"""
+
+from __future__ import annotations
+
+import collections
+import dataclasses
+import json
+import math
+from collections.abc import Iterable, Sequence
+from typing import Any
+
+import numpy as np
+
+from polymimic import __version__, recognition
+from polymimic._native import PrimitiveRecognizer
+from polymimic.datasets import load_demonstrations, load_self_observation
+from polymimic.experiments import EXPERIMENTS, Experiment, evaluated_seeds, trial_seeds
+from polymimic.field import Demonstration
+from polymimic.learning import LearningConfig, ModelResult, TrialResult
+from polymimic.rundir import MissingInputError, RunDir
+from polymimic.runconfig import RunConfig
+
+__all__ = ["appendix_b", "gather", "lp_climb", "mean_sd", "summarize_evaluations", "summarize_experiment"]
+
+FORMAT = "polymimic.results"
+FORMAT_VERSION = 1
+BEHAVIOUR_COUNTS = ("created", "deleted", "permanent", "candidates", "duplicates", "candidates_permanent")
+LP_CLIMB_LEVEL = 0.9
+"""How high a demonstrator's LP must climb for :func:`lp_climb` to count it as arrived."""
+APPENDIX_B_ROWS = 30
+
+
+def mean_sd(values: Iterable[float]) -> dict[str, float | None]:
+    """Mean and sample standard deviation (0 for one value; both ``None`` for none)."""
+    array = np.asarray(list(values), dtype=float)
+    if array.size == 0:
+        return {"mean": None, "sd": None}
+    return {"mean": float(array.mean()), "sd": float(array.std(ddof=1)) if array.size > 1 else 0.0}
+
+
+def lp_climb(histories: Sequence[Sequence[float]], *, level: float = LP_CLIMB_LEVEL) -> dict[str, Any]:
+    """How many LP changes a model took to first reach ``level``, over the trials that reached it."""
+    changes = [next(i for i, lp in enumerate(h) if lp >= level) for h in histories if max(h, default=0.0) >= level]
+    return {"level": level, "changes": mean_sd(changes), "reached": len(changes)}
+
+
+def _sampled(history: Sequence[float], stride: int) -> list[float]:
+    """Every ``stride``-th LP change, and the last."""
+    kept = list(history[::stride])
+    if history and (len(history) - 1) % stride:
+        kept.append(history[-1])
+    return [float(v) for v in kept]
+
+
+def summarize_experiment(experiment: Experiment, trials: Sequence[TrialResult], *,
+                         lp_stride: int = 200) -> dict[str, Any]:
+    """An experiment's trials summarised: match rates, behaviour counts, final LPs, how often the
+    final LPs fell in skill order, and the LP over time of every trial."""
+    models: dict[str, list[ModelResult]] = {"imitator": [t.imitator for t in trials]}
+    for name in experiment.ordering:
+        models[name] = [t.models[name] for t in trials]
+    demonstrators = {name: results for name, results in models.items() if name != "imitator"}
+    hits = None
+    if experiment.skill_order is not None:
+        order = experiment.skill_order
+        hits = sum(all(t.models[a].lp > t.models[b].lp for a, b in zip(order, order[1:])) for t in trials)
+    return {
+        "title": experiment.title,
+        "ordering": list(experiment.ordering),
+        "phase_one": experiment.phase_one,
+        "trials": len(trials),
+        "match_rate": {name: mean_sd(m.match_rate for m in results) for name, results in models.items()},
+        "behaviours": {name: {count: mean_sd(getattr(m, count) for m in results) for count in BEHAVIOUR_COUNTS}
+                       for name, results in models.items()},
+        "final_lp": {name: mean_sd(m.lp for m in results) for name, results in demonstrators.items()},
+        "lp_order_hits": hits,
+        "lp_climb": {name: lp_climb([m.lp_history for m in results]) for name, results in demonstrators.items()},
+        "lp_over_time": {"stride": lp_stride,
+                         "trials": {name: [_sampled(m.lp_history, lp_stride) for m in results]
+                                    for name, results in demonstrators.items()}},
+    }
+
+
+def summarize_evaluations(evaluations: Sequence[dict[str, Any]], *, attempts: int) -> dict[str, Any]:
+    """Goals and own goals of the evaluated imitators: mean and sd over imitators.
+
+    >>> summarize_evaluations([{"goals": 10, "own_goals": 2, "control_used": "thesis"},
+    ...                        {"goals": 14, "own_goals": 0, "control_used": "thesis"}], attempts=50)
+    {'goals': 12.0, 'own_goals': 1.0, 'attempts': 50, 'goals_sd': 2.8284271247461903, 'own_goals_sd': 1.4142135623730951, 'imitators': 2, 'control': 'thesis'}
+    """
+    goals, own = mean_sd(e["goals"] for e in evaluations), mean_sd(e["own_goals"] for e in evaluations)
+    used = sorted({e["control_used"] for e in evaluations})
+    return {"goals": goals["mean"], "own_goals": own["mean"], "attempts": attempts, "goals_sd": goals["sd"],
+            "own_goals_sd": own["sd"], "imitators": len(evaluations), "control": ", ".join(used) or None}
+
+
+def _predicts_ball(behaviour: dict[str, Any], config: LearningConfig) -> bool:
+    """The learner's own test: enough ball samples, bearing spread small enough."""
+    angle = behaviour.get("ball_angle_deg") or [0.0, math.inf]
+    return behaviour.get("ball_samples", 0) >= config.ball_min_samples and angle[1] <= config.ball_max_angle_sd_deg
+
+
+def appendix_b(trials: Iterable[TrialResult], config: LearningConfig, *, rows: int = APPENDIX_B_ROWS) -> dict[str, Any]:
+    """Appendix B: over every forward model of every trial (the imitator's included), the
+    behaviours of two or more primitives found in most models at the end of their trial
+    (``created``), made permanent in most, and predicting the ball in most.
+
+    Deleted behaviours leave no trace in a trial's result, so ``count`` is the models that still
+    hold the behaviour at the end; the thesis counted every creation.
+    """
+    count: collections.Counter[str] = collections.Counter()
+    permanent: collections.Counter[str] = collections.Counter()
+    ball: collections.Counter[str] = collections.Counter()
+    n_models = 0
+    for trial in trials:
+        for model in (*trial.models.values(), trial.imitator):
+            n_models += 1
+            seen: dict[str, tuple[bool, bool]] = {}
+            for b in model.behaviours:
+                if len(b["primitives"]) < 2:
+                    continue
+                was = seen.get(b["primitives"], (False, False))
+                seen[b["primitives"]] = (was[0] or bool(b["permanent"]), was[1] or _predicts_ball(b, config))
+            for letters, (is_permanent, predicts) in seen.items():
+                count[letters] += 1
+                permanent[letters] += is_permanent
+                ball[letters] += predicts
+
+    def row(letters: str) -> dict[str, Any]:
+        return {"primitives": ",".join(letters), "count": count[letters], "permanent": permanent[letters],
+                "predicting_ball": ball[letters]}
+
+    def top(key: collections.Counter[str]) -> list[dict[str, Any]]:
+        ranked = sorted((b for b in count if key[b] > 0), key=lambda b: (-key[b], -count[b], b))
+        return [row(b) for b in ranked[:rows]]
+
+    return {"models": n_models, "created": top(count), "permanent": top(permanent), "predicting_ball": top(ball)}
+
+
+def load_trials(run: RunDir, config: RunConfig, experiment: str) -> list[TrialResult]:
+    """Every trial of ``experiment``, by seed; all must have run."""
+    paths = [run.trial_path(experiment, s) for s in trial_seeds(config)]
+    missing = [p for p in paths if not p.exists()]
+    if missing:
+        raise MissingInputError(f"{len(missing)} of {len(paths)} trials of {experiment} are missing (first: "
+                                f"{missing[0].name}): run `polymimic learn --run-dir {run.path}` first")
+    return [TrialResult.load(p) for p in paths]
+
+
+def load_evaluations(run: RunDir, config: RunConfig, experiment: str, control: str) -> list[dict[str, Any]]:
+    paths = [run.evaluation_path(experiment, s, control) for s in evaluated_seeds(config)]
+    missing = [p for p in paths if not p.exists()]
+    if missing:
+        raise MissingInputError(f"{len(missing)} of {len(paths)} evaluations of {experiment} are missing (first: "
+                                f"{missing[0].name}): run `polymimic evaluate --run-dir {run.path}` first")
+    return [json.loads(p.read_text(encoding="utf-8")) for p in paths]
+
+
+def _recognition(run: RunDir, recognizer: PrimitiveRecognizer) -> dict[str, Any]:
+    test = load_self_observation(run.require(run.self_observation_path("test"), "self-observe"))
+    stats = recognizer.motion_stats()
+    keys = ("distance_mean_mm", "distance_sd_mm", "rotation_mean_deg", "rotation_sd_deg", "count")
+    return {"primitive_stats": {p: {k: row[k] for k in keys} for p, row in stats.items()},
+            "hmm_accuracy": recognition.accuracy_table(recognizer, test),
+            "hmm_log_likelihood": recognition.log_likelihood_table(recognizer, test)}
+
+
+def _outcomes(demos: Sequence[Demonstration]) -> dict[str, int]:
+    return {"goals": sum(d.outcome == "goal" for d in demos), "own_goals": sum(d.outcome == "own_goal" for d in demos),
+            "attempts": len(demos)}
+
+
+def _tracked_throughout(demo: Demonstration) -> bool:
+    return all(bool(np.isfinite(demo.frames[c]).all()) for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
+                                                                "ball_x_mm", "ball_y_mm"))
+
+
+def gather(run: RunDir, config: RunConfig) -> dict[str, Any]:
+    """Everything in the run directory, summarised as ``results.json`` holds it."""
+    from polymimic.stages import ALL_DEMONSTRATORS
+
+    recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
+    demos = {who: load_demonstrations(run.require(run.demonstrations_path(who), "record" if who != "average"
+                                                  else "segment"))
+             for who in ALL_DEMONSTRATORS}
+    to_segment = [d for who in ALL_DEMONSTRATORS for d in demos[who]]
+    imitator_attempts = run.attempts_path("varying_skill", "thesis")
+    if imitator_attempts.exists():  # the thesis's VaryingSkillTrained row of Table 4.5
+        # As for every demonstrator, only attempts the tracker followed throughout.
+        to_segment += [a for a in load_demonstrations(imitator_attempts) if _tracked_throughout(a)]
+    segments = recognition.segment_table(recognizer, to_segment, **dataclasses.asdict(config.segmenter))
+    experiments, all_trials = {}, []
+    for name, experiment in EXPERIMENTS.items():
+        trials = load_trials(run, config, name)
+        all_trials += trials
+        summary = summarize_experiment(experiment, trials, lp_stride=config.experiments.lp_stride)
+        attempts = 2 * config.experiments.attempts_per_configuration
+        for key, control in (("imitator", "improved"), ("imitator_thesis_control", "thesis")):
+            summary[key] = summarize_evaluations(load_evaluations(run, config, name, control), attempts=attempts)
+        experiments[name] = summary
+    results = {
+        "format": FORMAT,
+        "version": FORMAT_VERSION,
+        "polymimic_version": __version__,
+        "sizes": {"train_per_primitive": config.recognizer.train_per_primitive,
+                  "test_per_primitive": config.recognizer.test_per_primitive,
+                  "codebook_size": config.recognizer.codebook_size,
+                  "demonstrations_per_configuration": config.experiments.demonstrations_per_configuration,
+                  "trials": config.experiments.trials,
+                  "evaluated_imitators": len(evaluated_seeds(config)),
+                  "attempts_per_configuration": config.experiments.attempts_per_configuration},
+        **_recognition(run, recognizer),
+        "segments": {who: {k: row[k] for k in ("command_match", "gaps", "segments", "classifiable")}
+                     for who, row in segments.items()},
+        "demonstrators": {who: _outcomes(d) for who, d in demos.items()},
+        "experiments": experiments,
+        "appendix_b": appendix_b(all_trials, config.learning),
+    }
+    return finite(results)
+
+
+def finite(value: Any) -> Any:
+    """``value`` with every NaN and infinity replaced by ``None`` (strict JSON has neither)."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {k: finite(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [finite(v) for v in value]
+    return value

@@ -1,9 +1,32 @@
-"""The ``polymimic`` command."""
+"""The ``polymimic`` command: the demo, and the thesis reproduced stage by stage or end to end.
+
+``polymimic reproduce`` runs every stage into a run directory (``runs/<timestamp>`` unless
+``--run-dir`` is given) and writes ``report.html``; ``polymimic config`` prints every parameter.
+"""
 
 from __future__ import annotations
 
 import argparse
+import pathlib
 import sys
+import time
+from typing import Any
+
+EXIT_USAGE = 2
+"""Bad input: a missing stage input, a bad config, an unreadable file (as argparse's own errors)."""
+EXIT_INTERRUPTED = 130
+
+_STAGE_HELP = {
+    "self-observe": "record the imitator's own primitives, to learn from and to test on (starts a run)",
+    "record": "record every demonstrator's attempts from both field configurations",
+    "train": "train the primitive recogniser (codebooks and HMMs) on self-observation",
+    "segment": "cut every demonstration into named segments (records the Average demonstrator first)",
+    "learn": "run the experiments' learning trials; finished trials are kept, so a rerun resumes",
+    "evaluate": "drive the robot with the trained imitators and count their goals",
+    "report": "write results.json, plots/, report.md and report.html",
+    "reproduce": "every stage in turn: the thesis end to end (starts a run)",
+}
+_STARTS_A_RUN = ("self-observe", "reproduce")
 
 
 def _demo(args: argparse.Namespace) -> int:
@@ -14,10 +37,39 @@ def _demo(args: argparse.Namespace) -> int:
     return 0
 
 
+def _positive(text: str) -> int:
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
+    return value
+
+
+def _run_options(*, tasks: bool) -> argparse.ArgumentParser:
+    options = argparse.ArgumentParser(add_help=False)
+    options.add_argument("--run-dir", type=pathlib.Path,
+                         help="the run directory (default: a new runs/<timestamp> for self-observe and reproduce, "
+                              "else the newest run under runs/)")
+    options.add_argument("--config", type=pathlib.Path, help="a TOML file of parameters to change (see `polymimic "
+                                                             "config`); a new run only")
+    options.add_argument("--quick", action="store_true",
+                         help="fewer trials, demonstrations and self-observation: about a minute end to end")
+    options.add_argument("--quiet", action="store_true", help="no progress bars or stage messages")
+    if tasks:
+        options.add_argument("--workers", type=_positive, help="processes (or Ray CPUs) for trials and evaluations "
+                                                               "(default: one per core)")
+        options.add_argument("--backend", choices=("local", "ray"), default="local",
+                             help="local process pool (default) or Ray")
+        options.add_argument("--address", help="a Ray cluster to join (e.g. ray://host:10001 or auto)")
+    return options
+
+
 def build_parser() -> argparse.ArgumentParser:
     from polymimic import __version__
+    from polymimic.experiments import CONTROLS, EXPERIMENTS
+    from polymimic.stages import ALL_DEMONSTRATORS
 
-    parser = argparse.ArgumentParser(prog="polymimic", description=__doc__)
+    parser = argparse.ArgumentParser(prog="polymimic", description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
     demo = commands.add_parser("demo", help="train an HMM bank on synthetic motion primitives and recognise them")
@@ -27,12 +79,141 @@ def build_parser() -> argparse.ArgumentParser:
     demo.add_argument("--states", type=int, default=3)
     demo.add_argument("--seed", type=int, default=0)
     demo.set_defaults(handler=_demo)
+
+    config = commands.add_parser("config", parents=[_run_options(tasks=False)],
+                                 help="print every parameter as TOML: the thesis's, --quick's, a file's or a run's")
+    config.set_defaults(handler=_config)
+    for stage, text in _STAGE_HELP.items():
+        sub = commands.add_parser(stage, parents=[_run_options(tasks=True)], help=text, description=text)
+        if stage in ("learn", "evaluate"):
+            sub.add_argument("--experiment", action="append", choices=list(EXPERIMENTS),
+                             help="only this experiment (repeatable; default: all)")
+        if stage == "learn":
+            sub.add_argument("--limit", type=_positive, help="run at most this many new trials per experiment")
+        sub.set_defaults(handler=_stage, stage=stage)
+
+    replay = commands.add_parser("replay", parents=[_run_options(tasks=False)],
+                                 help="an episode as an animated GIF: a demonstration, or an imitator's attempt")
+    replay.add_argument("who", choices=[*ALL_DEMONSTRATORS, "imitator"])
+    replay.add_argument("--episode", type=int, default=0, help="which episode, from 0 (default 0)")
+    replay.add_argument("--experiment", choices=list(EXPERIMENTS), default="varying_skill",
+                        help="whose imitator, for `imitator` (its first evaluated one)")
+    replay.add_argument("--control", choices=CONTROLS, default="improved", help="for `imitator`")
+    replay.add_argument("--out", type=pathlib.Path, help="the GIF (default: plots/replay_<who>_<episode>.gif)")
+    replay.add_argument("--fps", type=int, default=10)
+    replay.add_argument("--stride", type=int, default=3, help="every stride-th tracker frame (3 at 10 fps: real time)")
+    replay.set_defaults(handler=_replay)
     return parser
 
 
+def _requested_config(args: argparse.Namespace) -> Any:
+    """The config asked for on the command line, or None when none was."""
+    from polymimic.runconfig import RunConfig
+
+    if args.config is None and not args.quick:
+        return None
+    base = RunConfig.quick() if args.quick else RunConfig()
+    return RunConfig.load(args.config, base=base) if args.config is not None else base
+
+
+def _run_path(args: argparse.Namespace, *, new: bool) -> pathlib.Path:
+    from polymimic.rundir import MissingInputError, latest_run_path, new_run_path
+
+    if args.run_dir is not None:
+        return args.run_dir
+    if new:
+        return new_run_path()
+    latest = latest_run_path()
+    if latest is None:
+        raise MissingInputError("no run under runs/: start one with `polymimic reproduce` or `polymimic "
+                                "self-observe`, or name one with --run-dir")
+    return latest
+
+
+def _open(args: argparse.Namespace, *, new: bool) -> Any:
+    from polymimic.rundir import MissingInputError, RunDir
+
+    run = RunDir(_run_path(args, new=new))
+    if not new and not run.manifest_path.exists():
+        raise MissingInputError(f"{run.path} is not a run directory (no manifest.json): start it with "
+                                f"`polymimic self-observe --run-dir {run.path}` or `polymimic reproduce`")
+    return run, run.open(_requested_config(args))
+
+
+def _config(args: argparse.Namespace) -> int:
+    from polymimic.rundir import RunDir
+    from polymimic.runconfig import RunConfig
+
+    if args.run_dir is not None and (args.run_dir / "manifest.json").exists():
+        config = RunDir(args.run_dir).open(_requested_config(args))
+    else:
+        config = _requested_config(args) or RunConfig()
+    sys.stdout.write(config.to_toml())
+    return 0
+
+
+def _stage(args: argparse.Namespace) -> int:
+    from polymimic.backends import TaskRunner
+    from polymimic.stages import Context, reproduce, run_stage
+
+    run, config = _open(args, new=args.stage in _STARTS_A_RUN)
+    with TaskRunner(backend=args.backend, workers=args.workers, address=args.address) as runner:
+        ctx = Context(run=run, config=config, runner=runner, quiet=args.quiet)
+        ctx.say(f"run directory: {run.path}")
+        if args.stage == "reproduce":
+            seconds = reproduce(ctx)
+            ctx.say(f"reproduced in {seconds:.1f} s")
+        else:
+            options = {}
+            if args.stage in ("learn", "evaluate"):
+                options["experiments"] = args.experiment
+            if args.stage == "learn":
+                options["limit"] = args.limit
+            run_stage(ctx, args.stage, **options)
+    if args.stage in ("report", "reproduce"):
+        print(run.report_html_path)
+    return 0
+
+
+def _replay(args: argparse.Namespace) -> int:
+    from polymimic.datasets import load_demonstrations
+    from polymimic.plots import animate_demonstration
+    from polymimic.rundir import RunError
+
+    run, _ = _open(args, new=False)
+    if args.who == "imitator":
+        source = run.require(run.attempts_path(args.experiment, args.control), "evaluate")
+    else:
+        source = run.require(run.demonstrations_path(args.who), "record" if args.who != "average" else "segment")
+    episodes = load_demonstrations(source)
+    if not 0 <= args.episode < len(episodes):
+        raise RunError(f"{source} holds episodes 0 to {len(episodes) - 1}; there is no episode {args.episode}")
+    out = args.out or run.plots / f"replay_{args.who}_{args.episode}.gif"
+    out.parent.mkdir(parents=True, exist_ok=True)
+    animate_demonstration(episodes[args.episode], out, fps=args.fps, stride=args.stride)
+    print(out)
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
-    return args.handler(args)
+    from polymimic._native import ModelFileError
+    from polymimic.rundir import RunError
+    from polymimic.runconfig import ConfigError
+
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if getattr(args, "address", None) is not None and args.backend != "ray":
+        parser.error("--address is for the Ray backend: add --backend ray")
+    started = time.perf_counter()
+    try:
+        return int(args.handler(args))
+    except (RunError, ConfigError, ModelFileError) as error:
+        print(f"polymimic {args.command}: error: {error}", file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        print(f"\npolymimic {args.command}: interrupted after {time.perf_counter() - started:.0f} s; run the same "
+              "command again to go on where it stopped", file=sys.stderr)
+        return EXIT_INTERRUPTED
 
 
 if __name__ == "__main__":

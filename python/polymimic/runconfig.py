@@ -166,7 +166,7 @@ class RunConfig:
             try:
                 changes["learning"] = dataclasses.replace(base.learning, **values)
             except ValueError as error:
-                raise ConfigError(f"[learning] {error}") from error
+                raise ConfigError(f"[learning] {str(error).removeprefix('config: ')}") from error
         return dataclasses.replace(base, **changes)
 
     def to_toml(self) -> str:
@@ -174,7 +174,7 @@ class RunConfig:
         lines = ["# polymimic run configuration: the thesis's values unless changed", ""]
         for name in ("seeds", "field", "recognizer", "segmenter", "learning", "experiments"):
             section = getattr(self, name)
-            if dataclasses.is_dataclass(section):
+            if dataclasses.is_dataclass(section) and not isinstance(section, type):
                 docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(section)}
                 _toml_table(lines, name, dataclasses.asdict(section), docs)
             else:

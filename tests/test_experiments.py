@@ -61,7 +61,6 @@ def test_every_stage_wrote_its_outputs(segmented):
     assert all(s["finished"] >= s["started"] for s in stages.values())
 
 
-@pytest.mark.filterwarnings("ignore::DeprecationWarning")
 def test_same_bits_in_process_on_a_pool_and_on_ray(segmented, tmp_path):
     """Each trial depends on its seed alone: the backend and the number of workers change nothing."""
     ray = pytest.importorskip("ray")

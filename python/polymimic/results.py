@@ -7,8 +7,8 @@ be checked on made-up trials:
 
 >>> mean_sd([1.0, 2.0, 3.0])
 {'mean': 2.0, 'sd': 1.0}
->>> lp_climb([[0.5, 0.7, 0.95, 0.9], [0.5, 0.6]], level=0.9)
-{'level': 0.9, 'changes': {'mean': 2.0, 'sd': 0.0}, 'reached': 1}
+>>> lp_climb([[0.5, 0.7, 0.95, 0.9], [0.5, 0.4, 0.3, 0.2, 0.1]])
+{'share': 0.9, 'changes': {'mean': 3.0, 'sd': 1.4142135623730951}}
 """
 
 from __future__ import annotations
@@ -36,8 +36,8 @@ __all__ = ["appendix_b", "gather", "lp_climb", "mean_sd", "summarize_evaluations
 FORMAT = "polymimic.results"
 FORMAT_VERSION = 1
 BEHAVIOUR_COUNTS = ("created", "deleted", "permanent", "candidates", "duplicates", "candidates_permanent")
-LP_CLIMB_LEVEL = 0.9
-"""How high a demonstrator's LP must climb for :func:`lp_climb` to count it as arrived."""
+LP_CLIMB_SHARE = 0.9
+"""The share of its way to its final value a model's LP must cover for :func:`lp_climb`."""
 APPENDIX_B_ROWS = 30
 
 
@@ -49,10 +49,17 @@ def mean_sd(values: Iterable[float]) -> dict[str, float | None]:
     return {"mean": float(array.mean()), "sd": float(array.std(ddof=1)) if array.size > 1 else 0.0}
 
 
-def lp_climb(histories: Sequence[Sequence[float]], *, level: float = LP_CLIMB_LEVEL) -> dict[str, Any]:
-    """How many LP changes a model took to first reach ``level``, over the trials that reached it."""
-    changes = [next(i for i, lp in enumerate(h) if lp >= level) for h in histories if max(h, default=0.0) >= level]
-    return {"level": level, "changes": mean_sd(changes), "reached": len(changes)}
+def lp_climb(histories: Sequence[Sequence[float]], *, share: float = LP_CLIMB_SHARE) -> dict[str, Any]:
+    """How many LP changes a model took to first cover ``share`` of the way from its starting LP
+    to its final one (up or down), over trials: how fast the learner made up its mind."""
+    changes = []
+    for h in histories:
+        if not h:
+            continue
+        rise = h[-1] - h[0]
+        target = h[0] + share * rise
+        changes.append(next(i for i, lp in enumerate(h) if (lp - target) * rise >= 0))
+    return {"share": share, "changes": mean_sd(changes)}
 
 
 def _sampled(history: Sequence[float], stride: int) -> list[float]:

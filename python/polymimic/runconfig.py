@@ -178,6 +178,7 @@ class RunConfig:
                 docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(section)}
                 _toml_table(lines, name, dataclasses.asdict(section), docs)
             else:
+                lines.append("# The simulated field of self-observation and of every recorded demonstration.")
                 _toml_table(lines, name, section, {})
         return "\n".join(lines).rstrip() + "\n"
 

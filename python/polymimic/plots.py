@@ -400,7 +400,7 @@ def plot_lp_over_time(histories: list[list[float]], *, stride: int, title: str, 
     Parameters
     ----------
     histories : list of list of float
-        One list per trial: its LP at every ``stride``-th change (and at the last).
+        One list per trial: its LP at every ``stride``-th change.
     stride : int
         LP changes between points, to label the x axis.
     title : str

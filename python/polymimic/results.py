@@ -63,11 +63,8 @@ def lp_climb(histories: Sequence[Sequence[float]], *, share: float = LP_CLIMB_SH
 
 
 def _sampled(history: Sequence[float], stride: int) -> list[float]:
-    """Every ``stride``-th LP change, and the last."""
-    kept = list(history[::stride])
-    if history and (len(history) - 1) % stride:
-        kept.append(history[-1])
-    return [float(v) for v in kept]
+    """The LP at every ``stride``-th change, from the first (as the thesis plots it)."""
+    return [float(v) for v in history[::stride]]
 
 
 def summarize_experiment(experiment: Experiment, trials: Sequence[TrialResult], *,

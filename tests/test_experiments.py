@@ -135,6 +135,17 @@ def test_the_policy_helper_names_the_control_it_used(segmented):
         experiments.imitator_policy(trial, recognizer=recognizer, config=RunConfig().learning, control="fast")
 
 
+def test_builds_without_a_choice_of_control_drive_by_the_thesis_rule(monkeypatch):
+    class ThesisOnly:
+        def __init__(self, trial, *, recognizer, config=None):
+            self.trial = trial
+
+    monkeypatch.setattr(experiments, "ImitatorPolicy", ThesisOnly)
+    policy, used = experiments.imitator_policy("trial", recognizer=None, config=None, control="improved")
+    assert isinstance(policy, ThesisOnly) and used == "thesis"
+    assert experiments.available_control("improved") == "thesis"
+
+
 # Summaries, on made-up trials with known answers.
 
 def _model(name, *, lp, match_rate, created=0, history=(0.5,), behaviours=()):

@@ -1,7 +1,7 @@
-"""The ``polymimic`` command: the demo, and the thesis reproduced stage by stage or end to end.
+"""The `polymimic` command: the demo, and the thesis reproduced stage by stage or end to end.
 
-``polymimic reproduce`` runs every stage into a run directory (``runs/<timestamp>`` unless
-``--run-dir`` is given) and writes ``report.html``; ``polymimic config`` prints every parameter.
+`polymimic reproduce` runs every stage into a run directory (runs/<timestamp> unless --run-dir
+is given) and writes report.html beside results.json; `polymimic config` prints every parameter.
 """
 
 from __future__ import annotations
@@ -52,7 +52,7 @@ def _run_options(*, tasks: bool) -> argparse.ArgumentParser:
     options.add_argument("--config", type=pathlib.Path, help="a TOML file of parameters to change (see `polymimic "
                                                              "config`); a new run only")
     options.add_argument("--quick", action="store_true",
-                         help="fewer trials, demonstrations and self-observation: about a minute end to end")
+                         help="fewer trials, demonstrations and self-observation: seconds end to end")
     options.add_argument("--quiet", action="store_true", help="no progress bars or stage messages")
     if tasks:
         options.add_argument("--workers", type=_positive, help="processes (or Ray CPUs) for trials and evaluations "

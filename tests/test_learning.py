@@ -103,3 +103,33 @@ def test_a_corrupt_imitator_model_is_refused(recognizer):
     bad = polymimic.TrialResult(models={}, imitator=None, seed=0, imitator_model="{}")  # type: ignore[arg-type]
     with pytest.raises(polymimic.ModelFileError, match="imitator model"):
         polymimic.ImitatorPolicy(bad, recognizer=recognizer)
+
+
+@pytest.fixture(scope="module")
+def expert_and_poor(recognizer):
+    demos = [d for who in ("expert", "poor") for c in (1, 2) for d in polymimic.record(who, configuration=c, n=15, seed=3)]
+    return learning.segmented(demos, recognizer)
+
+
+def test_improved_control_learns_from_the_demonstrations_and_avoids_own_goals(recognizer, expert_and_poor):
+    trial = polymimic.run_trial(expert_and_poor, recognizer=recognizer, ordering=["poor", "expert"],
+                                phase_one="interleaved", seed=0)
+    with pytest.raises(ValueError, match="demonstrations="):
+        polymimic.ImitatorPolicy(trial, recognizer=recognizer, control="improved")
+    with pytest.raises(ValueError, match="control mode"):
+        polymimic.ImitatorPolicy(trial, recognizer=recognizer, control="best")
+    small_field_only = [dict(d, pitch="small") for d in expert_and_poor]
+    with pytest.raises(ValueError, match="large"):
+        polymimic.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=small_field_only)
+    thesis = polymimic.evaluate(polymimic.ImitatorPolicy(trial, recognizer=recognizer), attempts_per_configuration=10)
+    policy = polymimic.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=expert_and_poor)
+    assert policy.control == "improved"
+    improved = polymimic.evaluate(policy, attempts_per_configuration=10)
+    # Half the Poor's demonstrations end in its own goal when it starts facing it
+    # (configuration 2); the improved imitator learns to keep the ball away from there.
+    assert improved.own_goals <= 1 < thesis.own_goals, (improved.own_goals, thesis.own_goals)
+    assert improved.goals >= 8, [a.outcome for a in improved.attempts]
+    # Every step is one primitive of a behaviour of the model.
+    assert all(len(step) == 1 for attempt in improved.behaviours for step in attempt)
+    again = polymimic.evaluate(policy, attempts_per_configuration=10)
+    assert [a.frames.tobytes() for a in again.attempts] == [a.frames.tobytes() for a in improved.attempts]

@@ -1,7 +1,7 @@
 """Type stubs of the compiled core (kept honest by ``mypy.stubtest polymimic._native``)."""
 
 import os
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from typing import Any, Literal, final
 
 import numpy as np
@@ -227,7 +227,17 @@ def learning_trial(
 
 @final
 class ImitatorPolicy:
-    def __new__(cls, model: str, motion_stats: dict[str, dict[str, float]], *, config: str | None = None) -> ImitatorPolicy: ...
+    def __new__(
+        cls,
+        model: str,
+        motion_stats: dict[str, dict[str, float]],
+        *,
+        config: str | None = None,
+        control: str = "thesis",
+        demonstrations: Sequence[dict[str, Any]] | None = None,
+    ) -> ImitatorPolicy: ...
+    @property
+    def control(self) -> str: ...
     def evaluate(
         self, attempts_per_configuration: int, *, seed: int = 0, field_config: str | None = None
     ) -> list[dict[str, Any]]: ...

@@ -194,15 +194,35 @@ def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict], *, recog
 
 
 class ImitatorPolicy:
-    """The imitator's final model driving the Lego robot by the thesis's control rule (§3.4):
-    behaviours whose preconditions hold (else all) predict their outcome, the best by the
-    learning-preference criteria runs primitive by primitive, stopping before leaving the field.
+    """The imitator's final model driving the Lego robot.
+
+    ``control="thesis"`` is the thesis's rule (§3.4): behaviours whose preconditions hold
+    (else all) predict their outcome with their own ball statistics, and the best by the
+    learning-preference criteria runs primitive by primitive, stopping before leaving the
+    field. ``control="improved"`` goes where the thesis's future work points, learning from
+    ``demonstrations`` (those the imitator watched; segmented dictionaries or recordings):
+    every behaviour predicts the ball with the response to each primitive learned from every
+    segment of them (§5.4: far more samples); a predicted state is rated by a goal, then by
+    whether the demonstrations passing near it ended, on balance, in own goals, then by how
+    many millimetres the ball comes nearer the goal, then the robot nearer the ball; and only
+    the first primitive runs before choosing again (§4.4.1).
     """
 
     def __init__(self, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
-                 config: LearningConfig | None = None) -> None:
+                 config: LearningConfig | None = None, control: str = "thesis",
+                 demonstrations: Sequence[Demonstration] | Sequence[dict] | None = None) -> None:
+        items = None
+        if demonstrations is not None:
+            items = (list(demonstrations) if len(demonstrations) and isinstance(demonstrations[0], dict)
+                     else segmented(demonstrations, recognizer))  # type: ignore[arg-type]
         self._native = _native.ImitatorPolicy(trial.imitator_model, recognizer.motion_stats(),
-                                              config=(config or LearningConfig()).to_json())
+                                              config=(config or LearningConfig()).to_json(), control=control,
+                                              demonstrations=items)
+
+    @property
+    def control(self) -> str:
+        """``"thesis"`` or ``"improved"``."""
+        return self._native.control
 
     def __len__(self) -> int:
         return len(self._native)

@@ -9,8 +9,8 @@
 
 use polymimic_field::{Configuration, Demonstrator, FieldConfig, Frame, Outcome, record_all, self_observation};
 use polymimic_learn::{
-    Ending, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch, Running, SegmentedDemonstration, TrialResult,
-    run_trial,
+    ControlMode, Ending, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch, Running, SegmentedDemonstration,
+    TrialResult, WorldModel, run_trial,
 };
 use polymimic_perceive::{
     LabelledSequence, Pose, Primitive, Recognizer, RecognizerConfig, SegmenterConfig, TrackedFrame, segment,
@@ -61,19 +61,40 @@ struct Setup {
 }
 
 impl Setup {
-    fn policy<'a>(&'a self, trial: &'a TrialResult) -> ImitatorPolicy<'a> {
-        ImitatorPolicy { model: &trial.imitator, motion: &self.motion, config: &self.config, pitch: Pitch::LARGE }
+    fn policy<'a>(&'a self, trial: &'a TrialResult, world: &'a WorldModel, mode: ControlMode) -> ImitatorPolicy<'a> {
+        ImitatorPolicy {
+            model: &trial.imitator,
+            motion: &self.motion,
+            config: &self.config,
+            pitch: Pitch::LARGE,
+            mode,
+            world: Some(world),
+        }
     }
 
     /// Goals and own goals of a trial's imitator over `n` attempts per configuration.
-    fn score(&self, trial: &TrialResult, n: usize, seed: u64) -> (usize, usize, Vec<polymimic_learn::Attempt>) {
-        let attempts = self.policy(trial).evaluate(n, &self.field, seed).expect("runs");
+    fn score(
+        &self,
+        trial: &TrialResult,
+        world: &WorldModel,
+        n: usize,
+        seed: u64,
+        mode: ControlMode,
+    ) -> (usize, usize, Vec<polymimic_learn::Attempt>) {
+        let attempts = self.policy(trial, world, mode).evaluate(n, &self.field, seed).expect("runs");
         let count = |o: Outcome| attempts.iter().filter(|a| a.outcome == o).count();
         (count(Outcome::Goal), count(Outcome::OwnGoal), attempts)
     }
 }
 
-fn summarise(name: &str, setup: &Setup, trials: &[TrialResult], truth: Option<&[&str]>, attempts: usize) {
+fn summarise(
+    name: &str,
+    setup: &Setup,
+    trials: &[TrialResult],
+    world: &WorldModel,
+    truth: Option<&[&str]>,
+    attempts: usize,
+) {
     println!("\n== {name} ({} trials)", trials.len());
     let names: Vec<String> = trials[0].models.iter().map(|m| m.name.clone()).collect();
     for (k, model_name) in names.iter().enumerate() {
@@ -123,21 +144,29 @@ fn summarise(name: &str, setup: &Setup, trials: &[TrialResult], truth: Option<&[
         let hits = trials.iter().filter(|t| order.windows(2).all(|w| lp_of(t, w[0]) < lp_of(t, w[1]))).count();
         println!("final LP in the true order ({}): {hits} of {}", order.join(" < "), trials.len());
     }
-    if attempts > 0 {
+    for mode in [ControlMode::Thesis, ControlMode::Improved] {
+        if attempts == 0 {
+            break;
+        }
         let (mut goals, mut own) = (Running::default(), Running::default());
+        let mut outcomes = std::collections::BTreeMap::new();
         for (i, t) in trials.iter().enumerate() {
-            let (g, o, _) = setup.score(t, attempts, 1000 + i as u64);
+            let (g, o, runs) = setup.score(t, world, attempts, 1000 + i as u64, mode);
+            for a in &runs {
+                *outcomes.entry(format!("{:?}/{}", a.outcome, a.configuration.number())).or_insert(0) += 1;
+            }
             goals.push(g as f64);
             own.push(o as f64);
         }
         println!(
-            "imitators: goals {:.1} ({:.1}), own goals {:.1} ({:.1}) in {} attempts",
+            "imitators ({mode:?} control): goals {:.1} ({:.1}), own goals {:.1} ({:.1}) in {} attempts",
             goals.mean,
             goals.sd(),
             own.mean,
             own.sd(),
             2 * attempts
         );
+        println!("  outcomes: {outcomes:?}");
     }
 }
 
@@ -181,14 +210,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .collect()
     };
     let heterogeneous = run(&rcb, PhaseOne::ByModel, &demos);
-    summarise("heterogeneous RCB", &setup, &heterogeneous, None, attempts);
+    let watched: Vec<SegmentedDemonstration> = demos.iter().filter(|d| d.demonstrator != "poor").cloned().collect();
+    let heterogeneous_world = WorldModel::learn(&watched, &Pitch::LARGE, &setup.config);
+    summarise("heterogeneous RCB", &setup, &heterogeneous, &heterogeneous_world, None, attempts);
+    let bcr: Vec<String> = rcb.iter().rev().cloned().collect();
+    let reversed = run(&bcr, PhaseOne::ByModel, &demos);
+    summarise("heterogeneous BCR", &setup, &reversed, &heterogeneous_world, None, attempts);
 
     // The Average demonstrator: the first RCB imitator scoring between the Poor and the Expert.
     let average = heterogeneous
         .iter()
         .enumerate()
         .find_map(|(i, t)| {
-            let (goals, _, attempts) = setup.score(t, 30, i as u64);
+            let (goals, _, attempts) = setup.score(t, &heterogeneous_world, 30, i as u64, ControlMode::Thesis);
             let valid = |c: Configuration| -> Vec<&polymimic_learn::Attempt> {
                 attempts.iter().filter(|a| a.configuration == c && tracked_throughout(&a.frames)).take(25).collect()
             };
@@ -206,6 +240,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     demos.extend(average);
     let skill = ordering(&["poor", "average", "expert"]);
     let varying = run(&skill, PhaseOne::Interleaved, &demos);
-    summarise("varying skill", &setup, &varying, Some(&["poor", "average", "expert"]), attempts);
+    let world = WorldModel::learn(&demos, &Pitch::LARGE, &setup.config);
+    summarise("varying skill", &setup, &varying, &world, Some(&["poor", "average", "expert"]), attempts);
     Ok(())
 }

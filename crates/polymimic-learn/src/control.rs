@@ -20,7 +20,8 @@ use crate::config::LearningConfig;
 use crate::model::ForwardModel;
 use crate::prediction::{MotionTable, predict};
 use crate::shaping::approach_shaping;
-use crate::state::{Pitch, robot_to_ball_mm};
+use crate::state::{Pitch, ball_to_goal_mm, robot_to_ball_mm};
+use crate::world::WorldModel;
 
 /// Tracker frames one primitive is held for.
 const FRAMES_PER_PRIMITIVE: usize = 30;
@@ -36,12 +37,33 @@ pub struct Attempt {
     pub behaviours: Vec<String>,
 }
 
+/// How the imitator's model drives the robot.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ControlMode {
+    /// The thesis's rule: the applicable behaviours (else all) predict with their own ball
+    /// statistics; the best by the LP criteria runs to its end.
+    #[default]
+    Thesis,
+    /// The thesis's future work: every behaviour predicts the ball with the ball response
+    /// learned from all the demonstrations (§5.4), and its predicted end is rated by a goal,
+    /// then by whether the demonstrations passing near it ended, on balance, in own goals,
+    /// then by how much nearer the goal it puts the ball, then the robot to the ball; only the
+    /// first primitive runs before choosing again, so a behaviour that becomes more applicable
+    /// takes over at once (§4.4.1).
+    Improved,
+}
+
 /// The imitator's model with what it needs to predict.
 pub struct ImitatorPolicy<'a> {
     pub model: &'a ForwardModel,
     pub motion: &'a MotionTable,
     pub config: &'a LearningConfig,
     pub pitch: Pitch,
+    pub mode: ControlMode,
+    /// What the improved mode predicts and rates with (without it the ball is predicted to
+    /// stay and every state is safe).
+    pub world: Option<&'a WorldModel>,
 }
 
 impl ImitatorPolicy<'_> {
@@ -83,11 +105,93 @@ impl ImitatorPolicy<'_> {
         if self.pitch.in_target_goal(bx, by) {
             return (config.lp_goal, 0.0);
         }
-        if bx <= -self.pitch.length_mm / 2.0 && by.abs() <= self.pitch.width_mm / 4.0 {
+        if self.pitch.in_own_goal(bx, by) {
             return (-config.lp_goal, 0.0);
         }
         let score = approach_shaping(state, &after, &self.pitch, config);
         (score, robot_to_ball_mm(state) - robot_to_ball_mm(&after))
+    }
+}
+
+impl ImitatorPolicy<'_> {
+    /// The improved mode's choice from `state`: the first primitive of the behaviour whose
+    /// predicted outcome rates best, or `None` if every behaviour would leave the field at once.
+    fn choose_primitive(&self, state: &TrackedFrame) -> Option<Primitive> {
+        let behaviours = &self.model.behaviours;
+        (0..behaviours.len())
+            .filter_map(|i| self.outcome(i, state).map(|rating| (rating, i)))
+            .max_by(|(a, i), (b, j)| {
+                a.total_cmp(b)
+                    .then(behaviours[*j].primitives.len().cmp(&behaviours[*i].primitives.len()))
+                    .then(behaviours[*j].age.cmp(&behaviours[*i].age))
+            })
+            .map(|(_, i)| behaviours[i].primitives[0])
+    }
+
+    /// Chains behaviour `index` from `state` with the mean motion of each primitive and the
+    /// learned ball response, stopping where the robot would leave the field, and rates the
+    /// end: a goal, then a state the demonstrations do not tie to own goals, then millimetres
+    /// the ball comes nearer the goal (beyond the dead band), then millimetres the robot comes
+    /// nearer the ball. `None` if the first primitive leaves the field.
+    fn outcome(&self, index: usize, state: &TrackedFrame) -> Option<Rating> {
+        let no_noise = f64::INFINITY;
+        let mut rng = ChaCha8Rng::seed_from_u64(0);
+        let mut now = *state;
+        for (k, &primitive) in self.model.behaviours[index].primitives.iter().enumerate() {
+            let robot = self.motion.step(now.robot, primitive, no_noise, &mut rng);
+            if !self.pitch.contains(robot.x_mm, robot.y_mm) {
+                if k == 0 {
+                    return None;
+                }
+                break;
+            }
+            let ball = self.world.map_or((now.ball_x_mm, now.ball_y_mm), |w| w.ball_response.predict(&now, primitive));
+            now = TrackedFrame { robot, ball_x_mm: ball.0, ball_y_mm: ball.1 };
+            if self.pitch.in_target_goal(ball.0, ball.1) || self.pitch.in_own_goal(ball.0, ball.1) {
+                break;
+            }
+        }
+        let value = self.world.map_or(0.0, |w| w.state_value.estimate(&now));
+        Some(Rating::of(state, &now, value, &self.pitch, self.config))
+    }
+}
+
+/// The improved mode's rating of a predicted outcome, compared lexicographically.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Rating {
+    /// +1 a goal, −1 an own goal, else 0.
+    goal: f64,
+    /// Whether the demonstrations that passed near the predicted state did not, on balance,
+    /// end in own goals (its learned value is not negative).
+    safe: bool,
+    ball_nearer_goal_mm: f64,
+    robot_nearer_ball_mm: f64,
+}
+
+impl Rating {
+    fn of(before: &TrackedFrame, after: &TrackedFrame, value: f64, pitch: &Pitch, config: &LearningConfig) -> Self {
+        let goal = if pitch.in_target_goal(after.ball_x_mm, after.ball_y_mm) {
+            1.0
+        } else if pitch.in_own_goal(after.ball_x_mm, after.ball_y_mm) {
+            -1.0
+        } else {
+            0.0
+        };
+        let ball = ball_to_goal_mm(before, pitch) - ball_to_goal_mm(after, pitch);
+        Self {
+            goal,
+            safe: value >= 0.0,
+            ball_nearer_goal_mm: if ball.abs() > config.ball_dead_band_mm { ball } else { 0.0 },
+            robot_nearer_ball_mm: robot_to_ball_mm(before) - robot_to_ball_mm(after),
+        }
+    }
+
+    fn total_cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.goal
+            .total_cmp(&other.goal)
+            .then(self.safe.cmp(&other.safe))
+            .then(self.ball_nearer_goal_mm.total_cmp(&other.ball_nearer_goal_mm))
+            .then(self.robot_nearer_ball_mm.total_cmp(&other.robot_nearer_ball_mm))
     }
 }
 
@@ -123,6 +227,12 @@ impl ImitatorPolicy<'_> {
         let mut executed = Vec::new();
         while !episode.is_finished() {
             let state = tracked(&episode, &mut last_ball);
+            if self.mode == ControlMode::Improved {
+                let primitive = self.choose_primitive(&state).unwrap_or(Primitive::Stop);
+                executed.push(primitive.name()[..1].to_uppercase());
+                run_primitive(&mut episode, primitive)?;
+                continue;
+            }
             let Some(index) = self.choose(&state, &mut rng) else {
                 // Nothing can move without leaving the field: wait a second.
                 run_primitive(&mut episode, Primitive::Stop)?;

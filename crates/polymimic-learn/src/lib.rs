@@ -2,6 +2,7 @@
 //! frequency counting with decay and permanency, one forward model per demonstrator weighted
 //! by a learning preference, candidates nominated to the imitator's model, two-phase training.
 
+mod ball_response;
 mod behaviour;
 mod config;
 mod control;
@@ -12,11 +13,14 @@ mod round;
 mod running;
 mod shaping;
 mod state;
+mod state_value;
 mod trial;
+mod world;
 
+pub use ball_response::BallResponse;
 pub use behaviour::Behaviour;
 pub use config::{LearningConfig, LpBounds, LpCriteria, LpScope};
-pub use control::{Attempt, ImitatorPolicy};
+pub use control::{Attempt, ControlMode, ImitatorPolicy};
 pub use error::LearnError;
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};
@@ -24,7 +28,9 @@ pub use round::{Ending, SegmentedDemonstration};
 pub use running::Running;
 pub use shaping::{LpCause, LpCauseCounts};
 pub use state::{Pitch, ball_to_goal_mm, precondition_measures, range_bearing, robot_to_ball_mm};
+pub use state_value::StateValue;
 pub use trial::{PhaseOne, TrialResult, run_trial};
+pub use world::WorldModel;
 
 #[cfg(test)]
 mod tests;

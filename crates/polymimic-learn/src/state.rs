@@ -35,6 +35,12 @@ impl Pitch {
     pub fn in_target_goal(&self, x_mm: f64, y_mm: f64) -> bool {
         x_mm >= self.length_mm / 2.0 && y_mm.abs() <= self.width_mm / 4.0
     }
+
+    /// Whether a ball at (x, y) is past the own goal line inside the mouth.
+    #[must_use]
+    pub fn in_own_goal(&self, x_mm: f64, y_mm: f64) -> bool {
+        x_mm <= -self.length_mm / 2.0 && y_mm.abs() <= self.width_mm / 4.0
+    }
 }
 
 /// Distance (mm) and bearing relative to the robot's heading (deg, in (−180, 180]) from the

@@ -2,8 +2,8 @@
 
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use polymimic_learn::{
-    Ending, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch, SegmentedDemonstration,
-    run_trial,
+    ControlMode, Ending, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch,
+    SegmentedDemonstration, WorldModel, run_trial,
 };
 use polymimic_perceive::{Label, MotionStats, Pose, Primitive, Segment, TrackedFrame};
 use pyo3::exceptions::PyValueError;
@@ -150,6 +150,10 @@ fn model_dict<'py>(py: Python<'py>, model: &ForwardModel) -> PyResult<Bound<'py,
     Ok(out)
 }
 
+fn segmented_demonstrations(items: &Bound<'_, PyAny>) -> PyResult<Vec<SegmentedDemonstration>> {
+    items.try_iter()?.enumerate().map(|(i, d)| demonstration(i, &d?)).collect()
+}
+
 /// One learning trial. `demonstrations` are dicts with `demonstrator`, `pitch` ("large" or
 /// "small"), `outcome` and `segments` (as `PrimitiveRecognizer.segment` returns them);
 /// `motion_stats` is the recogniser's Table 3.1. Returns the models' metrics, LP histories
@@ -166,8 +170,7 @@ pub fn learning_trial<'py>(
     phase_one: &str,
     seed: i64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let demos =
-        demonstrations.try_iter()?.enumerate().map(|(i, d)| demonstration(i, &d?)).collect::<PyResult<Vec<_>>>()?;
+    let demos = segmented_demonstrations(demonstrations)?;
     let config = match config {
         Some(text) => LearningConfig::from_json(text).map_err(value_error)?,
         None => LearningConfig::default(),
@@ -201,22 +204,58 @@ pub struct PyImitatorPolicy {
     model: ForwardModel,
     motion: MotionTable,
     config: LearningConfig,
+    mode: ControlMode,
+    world: Option<WorldModel>,
 }
 
 #[pymethods]
 impl PyImitatorPolicy {
     /// A policy from a saved imitator model (`TrialResult.imitator_model`), the recogniser's
-    /// Table 3.1 and the learning config (JSON) its constants come from.
+    /// Table 3.1 and the learning config (JSON) its constants come from; `control` is
+    /// `"thesis"` (the thesis's rule) or `"improved"`, which learns how the ball responds and
+    /// how good each state is from `demonstrations` (segmented, as for `learning_trial`).
     #[new]
-    #[pyo3(signature = (model, motion_stats, *, config=None))]
-    fn new(model: &str, motion_stats: &Bound<'_, PyDict>, config: Option<&str>) -> PyResult<Self> {
+    #[pyo3(signature = (model, motion_stats, *, config=None, control="thesis", demonstrations=None))]
+    fn new(
+        model: &str,
+        motion_stats: &Bound<'_, PyDict>,
+        config: Option<&str>,
+        control: &str,
+        demonstrations: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let mode = match control {
+            "thesis" => ControlMode::Thesis,
+            "improved" => ControlMode::Improved,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "unknown control mode {other:?}: expected \"thesis\" or \"improved\""
+                )));
+            }
+        };
         let model = ForwardModel::from_json(model)
             .map_err(|e| crate::errors::ModelFileError::new_err(format!("imitator model: {e}")))?;
         let config = match config {
             Some(text) => LearningConfig::from_json(text).map_err(value_error)?,
             None => LearningConfig::default(),
         };
-        Ok(Self { model, motion: motion_table(motion_stats)?, config })
+        let world = match (mode, demonstrations) {
+            (ControlMode::Thesis, _) => None,
+            (ControlMode::Improved, None) => {
+                return Err(PyValueError::new_err(
+                    "the improved control learns from the demonstrations the imitator watched: pass demonstrations=",
+                ));
+            }
+            (ControlMode::Improved, Some(items)) => {
+                let demos = segmented_demonstrations(items)?;
+                if !demos.iter().any(|d| d.pitch == Pitch::LARGE) {
+                    return Err(PyValueError::new_err(
+                        "demonstrations: none was played on the imitator's (large) field, so there is nothing to learn the ball's response from",
+                    ));
+                }
+                Some(WorldModel::learn(&demos, &Pitch::LARGE, &config))
+            }
+        };
+        Ok(Self { model, motion: motion_table(motion_stats)?, config, mode, world })
     }
 
     /// Attempts from each configuration; one dict per attempt with `frames`, `outcome`,
@@ -231,8 +270,14 @@ impl PyImitatorPolicy {
     ) -> PyResult<Bound<'py, PyList>> {
         let attempts = non_negative("attempts_per_configuration", attempts_per_configuration)?;
         let field = crate::field::field_config(field_config)?;
-        let policy =
-            ImitatorPolicy { model: &self.model, motion: &self.motion, config: &self.config, pitch: Pitch::LARGE };
+        let policy = ImitatorPolicy {
+            model: &self.model,
+            motion: &self.motion,
+            config: &self.config,
+            pitch: Pitch::LARGE,
+            mode: self.mode,
+            world: self.world.as_ref(),
+        };
         let seed = non_negative("seed", seed)? as u64;
         let results = py.detach(|| policy.evaluate(attempts, &field, seed)).map_err(crate::errors::field_error)?;
         let out = PyList::empty(py);
@@ -246,6 +291,15 @@ impl PyImitatorPolicy {
             out.append(item)?;
         }
         Ok(out)
+    }
+
+    /// `"thesis"` or `"improved"`.
+    #[getter]
+    fn control(&self) -> &'static str {
+        match self.mode {
+            ControlMode::Thesis => "thesis",
+            ControlMode::Improved => "improved",
+        }
     }
 
     /// How many behaviours the model holds.

@@ -1,0 +1,153 @@
+//! How the ball responds to each primitive, learned from every demonstration the imitator
+//! watched: the thesis's future work asks for far more samples behind ball predictions
+//! (§5.4) than one behaviour's own spans give. Every segment named by a primitive is one
+//! sample: where the ball lay relative to the robot when the segment began, and how far it
+//! moved, in the robot's frame. A prediction averages the samples whose ball lay nearest.
+
+use polymimic_perceive::{Label, Pose, Primitive, TrackedFrame};
+use serde::{Deserialize, Serialize};
+
+use crate::round::SegmentedDemonstration;
+use crate::state::Pitch;
+
+/// Samples averaged by one prediction…
+const NEIGHBOURS: usize = 8;
+/// …taken only from within this distance of where the ball lies now; missing ones count as
+/// the ball staying put, so a lone sample cannot speak for a whole region.
+const NEIGHBOURHOOD_MM: f64 = 50.0;
+
+/// A point in the robot's frame: ahead (+x) and to the left (+y) of it, mm.
+fn to_robot_frame(robot: &Pose, dx_mm: f64, dy_mm: f64) -> [f64; 2] {
+    let (sin, cos) = robot.theta_rad.sin_cos();
+    [cos * dx_mm + sin * dy_mm, -sin * dx_mm + cos * dy_mm]
+}
+
+fn to_field_frame(robot: &Pose, local: [f64; 2]) -> (f64, f64) {
+    let (sin, cos) = robot.theta_rad.sin_cos();
+    (cos * local[0] - sin * local[1], sin * local[0] + cos * local[1])
+}
+
+/// The ball's response to each primitive, as samples.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct BallResponse {
+    /// Per primitive (in [`Primitive::ALL`] order): the ball's start and its displacement, both
+    /// in the robot's frame at the start, mm.
+    samples: Vec<Vec<[f64; 4]>>,
+}
+
+impl BallResponse {
+    /// Samples from every primitive segment of the demonstrations played on `pitch` that
+    /// began with the ball at rest (it moved no more than `ball_moved_mm` over the segment before).
+    #[must_use]
+    pub fn learn(demonstrations: &[SegmentedDemonstration], pitch: &Pitch, ball_moved_mm: f64) -> Self {
+        let mut samples = vec![Vec::new(); Primitive::ALL.len()];
+        for demo in demonstrations.iter().filter(|d| d.pitch == *pitch) {
+            for (k, segment) in demo.segments.iter().enumerate() {
+                // A ball still rolling from before would credit the primitive with its roll.
+                let rolling = k > 0 && {
+                    let before = &demo.segments[k - 1];
+                    (before.end.ball_x_mm - before.start.ball_x_mm).hypot(before.end.ball_y_mm - before.start.ball_y_mm)
+                        > ball_moved_mm
+                };
+                let Label::Primitive(primitive) = segment.label else { continue };
+                if rolling {
+                    continue;
+                }
+                let (start, end) = (&segment.start, &segment.end);
+                let ball = to_robot_frame(
+                    &start.robot,
+                    start.ball_x_mm - start.robot.x_mm,
+                    start.ball_y_mm - start.robot.y_mm,
+                );
+                let moved =
+                    to_robot_frame(&start.robot, end.ball_x_mm - start.ball_x_mm, end.ball_y_mm - start.ball_y_mm);
+                if ball.iter().chain(&moved).all(|v| v.is_finite()) {
+                    samples[primitive as usize].push([ball[0], ball[1], moved[0], moved[1]]);
+                }
+            }
+        }
+        Self { samples }
+    }
+
+    /// Samples behind the predictions for `primitive`.
+    #[must_use]
+    pub fn sample_count(&self, primitive: Primitive) -> usize {
+        self.samples.get(primitive as usize).map_or(0, Vec::len)
+    }
+
+    /// Where the ball will be after `primitive` starts from `state`, in field coordinates: the
+    /// mean displacement of the samples whose ball lay nearest to where it lies now, counting
+    /// the ball as staying put for every one of the [`NEIGHBOURS`] missing nearby.
+    #[must_use]
+    pub fn predict(&self, state: &TrackedFrame, primitive: Primitive) -> (f64, f64) {
+        let robot = &state.robot;
+        let here = to_robot_frame(robot, state.ball_x_mm - robot.x_mm, state.ball_y_mm - robot.y_mm);
+        let Some(samples) = self.samples.get(primitive as usize).filter(|s| !s.is_empty()) else {
+            return (state.ball_x_mm, state.ball_y_mm);
+        };
+        let mut nearest: Vec<(f64, usize)> =
+            samples.iter().enumerate().map(|(i, s)| ((s[0] - here[0]).powi(2) + (s[1] - here[1]).powi(2), i)).collect();
+        let k = NEIGHBOURS.min(nearest.len());
+        nearest.select_nth_unstable_by(k - 1, |a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let mut mean = [0.0; 2];
+        for &(_, i) in nearest[..k].iter().filter(|(d2, _)| *d2 <= NEIGHBOURHOOD_MM * NEIGHBOURHOOD_MM) {
+            mean[0] += samples[i][2] / NEIGHBOURS as f64;
+            mean[1] += samples[i][3] / NEIGHBOURS as f64;
+        }
+        let (dx, dy) = to_field_frame(robot, mean);
+        (state.ball_x_mm + dx, state.ball_y_mm + dy)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use polymimic_perceive::Segment;
+
+    use super::*;
+    use crate::round::Ending;
+
+    fn frame(robot: Pose, ball: (f64, f64)) -> TrackedFrame {
+        TrackedFrame { robot, ball_x_mm: ball.0, ball_y_mm: ball.1 }
+    }
+
+    /// A robot facing +y pushes a ball lying 50 mm ahead of it 30 mm further along +y.
+    fn pushes() -> SegmentedDemonstration {
+        let robot = Pose { x_mm: 0.0, y_mm: 0.0, theta_rad: std::f64::consts::FRAC_PI_2 };
+        let segment = Segment {
+            label: Label::Primitive(Primitive::Forward),
+            first_frame: 0,
+            last_frame: 30,
+            start: frame(robot, (0.0, 50.0)),
+            end: frame(Pose { y_mm: 40.0, ..robot }, (0.0, 80.0)),
+            scores: [0.0; 4],
+        };
+        SegmentedDemonstration {
+            demonstrator: "expert".to_owned(),
+            pitch: Pitch::LARGE,
+            ending: Ending::Other,
+            segments: vec![segment],
+        }
+    }
+
+    #[test]
+    fn a_push_learned_facing_one_way_predicts_the_same_push_facing_another() {
+        let response = BallResponse::learn(&[pushes()], &Pitch::LARGE, 10.0);
+        assert_eq!(response.sample_count(Primitive::Forward), 1);
+        // Facing +x with the ball 50 mm ahead: one sample of eight says the ball moves 30 mm
+        // along +x, the seven missing say it stays: 30/8 mm.
+        let state = frame(Pose { x_mm: 100.0, y_mm: 0.0, theta_rad: 0.0 }, (150.0, 0.0));
+        let (x, y) = response.predict(&state, Primitive::Forward);
+        assert!((x - (150.0 + 30.0 / 8.0)).abs() < 1e-9 && y.abs() < 1e-9, "({x}, {y})");
+        // With the ball far from anything seen, nothing is known: it stays.
+        let far = frame(Pose { x_mm: 100.0, y_mm: 0.0, theta_rad: 0.0 }, (400.0, 0.0));
+        assert_eq!(response.predict(&far, Primitive::Forward), (400.0, 0.0));
+        // No samples for a turn: the ball stays.
+        assert_eq!(response.predict(&state, Primitive::Left), (150.0, 0.0));
+    }
+
+    #[test]
+    fn demonstrations_on_another_pitch_are_left_out() {
+        let response = BallResponse::learn(&[pushes()], &Pitch::SMALL, 10.0);
+        assert_eq!(response.sample_count(Primitive::Forward), 0);
+    }
+}

@@ -1,0 +1,158 @@
+//! How good a state is, learned from how the demonstrations that passed near it ended: a goal
+//! counts +1, an own goal −1, anything else 0, discounted by the time still to go. The
+//! thesis's LP criteria judge one step (goal, then ball nearer the goal, then robot nearer the
+//! ball); a value learned from whole demonstrations can also see that going round the ball
+//! leads to a goal later, as the skilled demonstrators showed.
+
+use polymimic_perceive::TrackedFrame;
+use serde::{Deserialize, Serialize};
+
+use crate::round::{Ending, SegmentedDemonstration};
+use crate::state::Pitch;
+
+/// Tracker frames per second.
+const FRAMES_PER_S: f64 = 30.0;
+/// An outcome this many seconds ahead counts this much less per second.
+const DISCOUNT_PER_S: f64 = 0.95;
+/// States averaged by one estimate.
+pub(crate) const NEIGHBOURS: usize = 8;
+/// A heading difference of one radian weighs as much as this distance, mm.
+const MM_PER_RADIAN: f64 = 100.0;
+
+/// A state as a point: robot position, heading (as a scaled unit vector) and ball position.
+fn features(state: &TrackedFrame) -> [f64; 6] {
+    let robot = &state.robot;
+    [
+        robot.x_mm,
+        robot.y_mm,
+        MM_PER_RADIAN * robot.theta_rad.cos(),
+        MM_PER_RADIAN * robot.theta_rad.sin(),
+        state.ball_x_mm,
+        state.ball_y_mm,
+    ]
+}
+
+/// States seen in demonstrations, each with its discounted outcome.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct StateValue {
+    samples: Vec<([f64; 6], f64)>,
+}
+
+impl StateValue {
+    /// Every segment boundary of the demonstrations played on `pitch`.
+    #[must_use]
+    pub fn learn(demonstrations: &[SegmentedDemonstration], pitch: &Pitch) -> Self {
+        let mut samples = Vec::new();
+        for demo in demonstrations.iter().filter(|d| d.pitch == *pitch) {
+            let outcome = match demo.ending {
+                Ending::Goal => 1.0,
+                Ending::OwnGoal => -1.0,
+                Ending::Other => 0.0,
+            };
+            let Some(last) = demo.segments.last() else { continue };
+            let end_frame = last.last_frame as f64;
+            let states = demo.segments.iter().map(|s| (&s.start, s.first_frame)).chain([(&last.end, last.last_frame)]);
+            for (state, frame) in states {
+                let point = features(state);
+                if point.iter().all(|v| v.is_finite()) {
+                    let to_go_s = (end_frame - frame as f64) / FRAMES_PER_S;
+                    samples.push((point, outcome * DISCOUNT_PER_S.powf(to_go_s)));
+                }
+            }
+        }
+        Self { samples }
+    }
+
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.samples.len()
+    }
+
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.samples.is_empty()
+    }
+
+    fn nearest(&self, state: &TrackedFrame, k: usize) -> Vec<usize> {
+        let here = features(state);
+        let mut nearest: Vec<(f64, usize)> = self
+            .samples
+            .iter()
+            .enumerate()
+            .map(|(i, (point, _))| (point.iter().zip(&here).map(|(a, b)| (a - b).powi(2)).sum(), i))
+            .collect();
+        let k = k.min(nearest.len());
+        if k == 0 {
+            return Vec::new();
+        }
+        nearest.select_nth_unstable_by(k - 1, |a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        nearest[..k].iter().map(|&(_, i)| i).collect()
+    }
+
+    /// The mean value of the demonstrated states nearest `state` (0 with none).
+    #[must_use]
+    pub fn estimate(&self, state: &TrackedFrame) -> f64 {
+        let nearest = self.nearest(state, NEIGHBOURS);
+        if nearest.is_empty() {
+            return 0.0;
+        }
+        nearest.iter().map(|&i| self.samples[i].1).sum::<f64>() / nearest.len() as f64
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use polymimic_perceive::{Label, Pose, Primitive, Segment};
+
+    use super::*;
+
+    /// One forward segment of 30 frames (1 s) from x to x + 50 with the ball at 0, ending as told.
+    fn demo(x_mm: f64, ending: Ending, pitch: Pitch) -> SegmentedDemonstration {
+        let frame = |x: f64| TrackedFrame {
+            robot: Pose { x_mm: x, y_mm: 0.0, theta_rad: 0.0 },
+            ball_x_mm: 0.0,
+            ball_y_mm: 0.0,
+        };
+        let segment = Segment {
+            label: Label::Primitive(Primitive::Forward),
+            first_frame: 0,
+            last_frame: 30,
+            start: frame(x_mm),
+            end: frame(x_mm + 50.0),
+            scores: [0.0; 4],
+        };
+        SegmentedDemonstration { demonstrator: "d".to_owned(), pitch, ending, segments: vec![segment] }
+    }
+
+    #[test]
+    fn a_state_is_worth_the_discounted_outcome_of_the_demonstrations_near_it() {
+        let demos = [demo(-300.0, Ending::Goal, Pitch::LARGE), demo(300.0, Ending::OwnGoal, Pitch::LARGE)];
+        let value = StateValue::learn(&demos, &Pitch::LARGE);
+        assert_eq!(value.len(), 4, "each segment's start and the last end");
+        let at = |x: f64| {
+            value.estimate(&TrackedFrame {
+                robot: Pose { x_mm: x, y_mm: 0.0, theta_rad: 0.0 },
+                ball_x_mm: 0.0,
+                ball_y_mm: 0.0,
+            })
+        };
+        // Fewer than eight states: all four are averaged, a goal 1 s ahead and at the end,
+        // an own goal likewise.
+        let expected = (0.95 + 1.0 - 0.95 - 1.0) / 4.0;
+        assert!((at(-300.0) - expected).abs() < 1e-12);
+        assert!(StateValue::learn(&demos, &Pitch::SMALL).is_empty());
+        // With eight or more states, the nearest eight: a cluster of goal states wins.
+        let many: Vec<SegmentedDemonstration> = (0..4)
+            .map(|i| demo(-300.0 + f64::from(i), Ending::Goal, Pitch::LARGE))
+            .chain((0..4).map(|i| demo(300.0 + f64::from(i), Ending::OwnGoal, Pitch::LARGE)))
+            .collect();
+        let value = StateValue::learn(&many, &Pitch::LARGE);
+        let near_goals = value.estimate(&TrackedFrame {
+            robot: Pose { x_mm: -280.0, y_mm: 0.0, theta_rad: 0.0 },
+            ball_x_mm: 0.0,
+            ball_y_mm: 0.0,
+        });
+        assert!((near_goals - (4.0 * 0.95 + 4.0 * 1.0) / 8.0).abs() < 1e-12, "{near_goals}");
+        assert_eq!(StateValue::default().estimate(&demos[0].segments[0].start), 0.0);
+    }
+}

@@ -77,16 +77,20 @@ def evaluated_seeds(config: RunConfig) -> list[int]:
 
 
 def imitator_policy(trial: TrialResult, *, recognizer: PrimitiveRecognizer, config: LearningConfig,
-                    control: str) -> tuple[ImitatorPolicy, str]:
+                    control: str, demonstrations: list[dict[str, Any]] | None = None) -> tuple[ImitatorPolicy, str]:
     """The trial's imitator driving the robot by ``control``, and the control actually used:
     where :class:`~polymimic.ImitatorPolicy` offers no choice, every imitator drives by the
-    thesis's rule, and the results say so."""
+    thesis's rule, and the results say so. The improved control also learns from the
+    (segmented) ``demonstrations`` the imitator watched, where it takes them."""
     if control not in CONTROLS:
         raise ValueError(f"control must be one of {', '.join(CONTROLS)}, got {control!r}")
-    if "control" in inspect.signature(ImitatorPolicy).parameters:
-        policy = ImitatorPolicy(trial, recognizer=recognizer, config=config, control=control)  # type: ignore[call-arg]
-        return policy, control
-    return ImitatorPolicy(trial, recognizer=recognizer, config=config), "thesis"
+    accepted = inspect.signature(ImitatorPolicy).parameters
+    if "control" not in accepted:
+        return ImitatorPolicy(trial, recognizer=recognizer, config=config), "thesis"
+    extra: dict[str, Any] = {"control": control}
+    if control == "improved" and demonstrations is not None and "demonstrations" in accepted:
+        extra["demonstrations"] = demonstrations
+    return ImitatorPolicy(trial, recognizer=recognizer, config=config, **extra), control
 
 
 def available_control(control: str) -> str:
@@ -115,12 +119,14 @@ def trial_task(inputs: TrialInputs, seed: int) -> str:
 
 @dataclasses.dataclass(frozen=True)
 class EvaluationInputs:
-    """What every evaluation shares."""
+    """What every evaluation of an experiment's imitators shares."""
 
     recognizer: PrimitiveRecognizer
     learning: LearningConfig
     attempts_per_configuration: int
     seed: int
+    items: list[dict[str, Any]]
+    """The experiment's segmented demonstrations: what its imitators watched."""
 
 
 def evaluation_task(inputs: EvaluationInputs, job: tuple[int, str, str, bool]) -> dict[str, Any]:
@@ -128,7 +134,7 @@ def evaluation_task(inputs: EvaluationInputs, job: tuple[int, str, str, bool]) -
     control, keep the attempts)``."""
     trial_seed, trial_json, control, keep = job
     policy, used = imitator_policy(TrialResult.from_json(trial_json), recognizer=inputs.recognizer,
-                                   config=inputs.learning, control=control)
+                                   config=inputs.learning, control=control, demonstrations=inputs.items)
     evaluation = evaluate(policy, attempts_per_configuration=inputs.attempts_per_configuration, seed=inputs.seed)
     return {"trial_seed": trial_seed, "control": control, "control_used": used, "seed": inputs.seed,
             "goals": evaluation.goals, "own_goals": evaluation.own_goals, "attempts": len(evaluation.attempts),
@@ -195,9 +201,6 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
     many evaluations ran, by experiment."""
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
     attempts = 2 * config.experiments.attempts_per_configuration
-    inputs = EvaluationInputs(recognizer=recognizer, learning=config.learning,
-                              attempts_per_configuration=config.experiments.attempts_per_configuration,
-                              seed=config.seeds.evaluation)
     seeds = evaluated_seeds(config)
     ran = {}
     for experiment in _selected(experiments):
@@ -214,6 +217,11 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
                                             "first")
                 jobs.append((seed, trial_path.read_text(encoding="utf-8"), control, keep))
         ran[experiment.name] = len(jobs)
+        if not jobs:
+            continue
+        inputs = EvaluationInputs(recognizer=recognizer, learning=config.learning,
+                                  attempts_per_configuration=config.experiments.attempts_per_configuration,
+                                  seed=config.seeds.evaluation, items=experiment_items(run, experiment))
         with progress(total=len(jobs), desc=f"evaluate {experiment.name}", quiet=quiet) as bar:
             for _, result in runner.map(evaluation_task, inputs, jobs):
                 kept = result.pop("attempt_list")

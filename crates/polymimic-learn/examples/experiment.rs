@@ -1,128 +1,44 @@
 //! The experiments of thesis §4.4 from Rust, for studying learning-preference shaping and
 //! control quickly: `cargo run --release -p polymimic-learn --example experiment -- [trials]
 //! [attempts_per_configuration] [key=value …]`, where each `key=value` overrides a
-//! [`LearningConfig`] field (for instance `lp_robot_to_ball=0`).
+//! [`LearningConfig`] field (for instance `lp_bounds=\"clamp\"`).
 //!
-//! Prints, per experiment, the mean (sd) final LP and match rate of each model, the trials
-//! whose final LPs follow the true skill order, the candidates made permanent, and the goals
-//! and own goals of the trained imitators.
+//! Prints, per experiment, the mean (sd) final LP, match rate and candidates made permanent of
+//! each model, what changed the LPs, the trials whose final LPs follow the true skill order,
+//! and the goals and own goals of the trained imitators under both control modes.
 
-use polymimic_field::{Configuration, Demonstrator, FieldConfig, Frame, Outcome, record_all, self_observation};
+use std::collections::BTreeMap;
+
+use polymimic_field::Demonstrator;
 use polymimic_learn::{
-    ControlMode, Ending, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch, Running, SegmentedDemonstration,
-    TrialResult, WorldModel, run_trial,
-};
-use polymimic_perceive::{
-    LabelledSequence, Pose, Primitive, Recognizer, RecognizerConfig, SegmenterConfig, TrackedFrame, segment,
+    ControlMode, Laboratory, LearningConfig, LpCauseCounts, PhaseOne, Pitch, Running, SegmentedDemonstration,
+    TrialResult, WorldModel, lp_order_hits, net_goals_of, summarise,
 };
 
-fn pose(f: &Frame) -> Pose {
-    Pose { x_mm: f.robot_x_mm, y_mm: f.robot_y_mm, theta_rad: f.robot_theta_rad }
-}
-
-fn ending(outcome: Outcome) -> Ending {
-    match outcome {
-        Outcome::Goal => Ending::Goal,
-        Outcome::OwnGoal => Ending::OwnGoal,
-        _ => Ending::Other,
-    }
-}
-
-fn segmented(
-    who: &str,
-    pitch: Pitch,
-    outcome: Outcome,
-    frames: &[Frame],
-    recognizer: &Recognizer,
-) -> SegmentedDemonstration {
-    let tracked: Vec<TrackedFrame> = frames
-        .iter()
-        .map(|f| TrackedFrame { robot: pose(f), ball_x_mm: f.ball_x_mm, ball_y_mm: f.ball_y_mm })
-        .collect();
-    SegmentedDemonstration {
-        demonstrator: who.to_owned(),
-        pitch,
-        ending: ending(outcome),
-        segments: segment(&tracked, recognizer, &SegmenterConfig::default()).expect("segments"),
-    }
-}
-
-fn tracked_throughout(frames: &[Frame]) -> bool {
-    frames.iter().all(|f| {
-        [f.robot_x_mm, f.robot_y_mm, f.robot_theta_rad, f.ball_x_mm, f.ball_y_mm].iter().all(|v| v.is_finite())
-    })
-}
-
-struct Setup {
-    recognizer: Recognizer,
-    motion: MotionTable,
-    field: FieldConfig,
-    config: LearningConfig,
-}
-
-impl Setup {
-    fn policy<'a>(&'a self, trial: &'a TrialResult, world: &'a WorldModel, mode: ControlMode) -> ImitatorPolicy<'a> {
-        ImitatorPolicy {
-            model: &trial.imitator,
-            motion: &self.motion,
-            config: &self.config,
-            pitch: Pitch::LARGE,
-            mode,
-            world: Some(world),
-        }
-    }
-
-    /// Goals and own goals of a trial's imitator over `n` attempts per configuration.
-    fn score(
-        &self,
-        trial: &TrialResult,
-        world: &WorldModel,
-        n: usize,
-        seed: u64,
-        mode: ControlMode,
-    ) -> (usize, usize, Vec<polymimic_learn::Attempt>) {
-        let attempts = self.policy(trial, world, mode).evaluate(n, &self.field, seed).expect("runs");
-        let count = |o: Outcome| attempts.iter().filter(|a| a.outcome == o).count();
-        (count(Outcome::Goal), count(Outcome::OwnGoal), attempts)
-    }
-}
-
-fn summarise(
-    name: &str,
-    setup: &Setup,
-    trials: &[TrialResult],
-    world: &WorldModel,
-    truth: Option<&[&str]>,
-    attempts: usize,
-) {
+fn report(name: &str, lab: &Laboratory, trials: &[TrialResult], world: &WorldModel, attempts: usize) {
     println!("\n== {name} ({} trials)", trials.len());
-    let names: Vec<String> = trials[0].models.iter().map(|m| m.name.clone()).collect();
-    for (k, model_name) in names.iter().enumerate() {
-        let (mut lp, mut rate, mut permanent_candidates) = (Running::default(), Running::default(), Running::default());
-        for t in trials {
-            lp.push(t.models[k].lp);
-            rate.push(t.models[k].match_rate());
-            permanent_candidates.push(t.models[k].metrics.candidates_permanent as f64);
-        }
+    for s in summarise(trials) {
         println!(
-            "{model_name:9} final LP {:.3} ({:.3})  match {:.3} ({:.3})  candidates made permanent {:.2} ({:.2})",
-            lp.mean,
-            lp.sd(),
-            rate.mean,
-            rate.sd(),
-            permanent_candidates.mean,
-            permanent_candidates.sd()
+            "{:9} final LP {:.3} ({:.3})  match {:.3} ({:.3})  candidates made permanent {:.2} ({:.2})",
+            s.name,
+            s.final_lp.mean,
+            s.final_lp.sd(),
+            s.match_rate.mean,
+            s.match_rate.sd(),
+            s.candidates_permanent.mean,
+            s.candidates_permanent.sd()
         );
     }
     println!(
-        "LP changes per trial, by cause (goal own  ball+ ball-  robot+ robot-  ball-predicted  candidate+ candidate-):"
+        "LP changes per trial by cause: goal own | ball nearer farther | robot nearer farther | ball predicted | candidate permanent deleted"
     );
-    for (k, model_name) in names.iter().enumerate() {
-        let mean = |f: fn(&polymimic_learn::LpCauseCounts) -> usize| {
+    for (k, model) in trials[0].models.iter().enumerate() {
+        let mean = |f: fn(&LpCauseCounts) -> usize| {
             trials.iter().map(|t| f(&t.models[k].metrics.lp_causes) as f64).sum::<f64>() / trials.len() as f64
         };
         println!(
-            "  {model_name:9} {:5.1} {:4.1} {:6.1} {:5.1} {:6.1} {:6.1} {:8.1} {:6.1} {:5.1}",
+            "  {:9} {:5.1} {:4.1} | {:6.1} {:5.1} | {:6.1} {:6.1} | {:6.1} | {:4.1} {:4.1}",
+            model.name,
             mean(|c| c.goal),
             mean(|c| c.own_goal),
             mean(|c| c.ball_nearer_goal),
@@ -134,29 +50,19 @@ fn summarise(
             mean(|c| c.candidate_deleted)
         );
     }
-    let mut imitator_rate = Running::default();
-    for t in trials {
-        imitator_rate.push(t.imitator.match_rate());
-    }
-    println!("imitator  match {:.3} ({:.3})", imitator_rate.mean, imitator_rate.sd());
-    if let Some(order) = truth {
-        let lp_of = |t: &TrialResult, who: &str| t.models.iter().find(|m| m.name == who).map_or(f64::NAN, |m| m.lp);
-        let hits = trials.iter().filter(|t| order.windows(2).all(|w| lp_of(t, w[0]) < lp_of(t, w[1]))).count();
-        println!("final LP in the true order ({}): {hits} of {}", order.join(" < "), trials.len());
-    }
     for mode in [ControlMode::Thesis, ControlMode::Improved] {
         if attempts == 0 {
             break;
         }
         let (mut goals, mut own) = (Running::default(), Running::default());
-        let mut outcomes = std::collections::BTreeMap::new();
+        let mut outcomes = BTreeMap::new();
         for (i, t) in trials.iter().enumerate() {
-            let (g, o, runs) = setup.score(t, world, attempts, 1000 + i as u64, mode);
-            for a in &runs {
-                *outcomes.entry(format!("{:?}/{}", a.outcome, a.configuration.number())).or_insert(0) += 1;
+            let score = lab.score(t, world, mode, attempts, 1000 + i as u64).expect("the field runs");
+            goals.push(score.goals as f64);
+            own.push(score.own_goals as f64);
+            for a in &score.attempts {
+                *outcomes.entry(format!("{}/{}", a.outcome.name(), a.configuration.number())).or_insert(0) += 1;
             }
-            goals.push(g as f64);
-            own.push(o as f64);
         }
         println!(
             "imitators ({mode:?} control): goals {:.1} ({:.1}), own goals {:.1} ({:.1}) in {} attempts",
@@ -166,7 +72,7 @@ fn summarise(
             own.sd(),
             2 * attempts
         );
-        println!("  outcomes: {outcomes:?}");
+        println!("  outcomes/configuration: {outcomes:?}");
     }
 }
 
@@ -179,68 +85,27 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let (key, value) = pair.split_once('=').ok_or("overrides are key=value")?;
         config[key] = serde_json::from_str(value)?;
     }
-    let config = LearningConfig::from_json(&config.to_string())?;
-    let field = FieldConfig::default();
-    let training: Vec<LabelledSequence> = self_observation(1000, 1, &field)?
-        .iter()
-        .map(|s| LabelledSequence {
-            primitive: Primitive::from_name(s.primitive.name()).expect("same names"),
-            poses: s.frames.iter().map(pose).collect(),
-        })
-        .collect();
-    let recognizer = Recognizer::train(&training, RecognizerConfig::default())?;
-    let motion = MotionTable::new(recognizer.motion_stats())?;
-    let setup = Setup { recognizer, motion, field, config };
+    let lab = Laboratory::new(1000, 1, LearningConfig::from_json(&config.to_string())?)?;
     let everyone = [Demonstrator::Expert, Demonstrator::Tiny, Demonstrator::Humanoid, Demonstrator::Poor];
-    let mut demos: Vec<SegmentedDemonstration> = record_all(&everyone, 25, 1, &setup.field)?
-        .iter()
-        .map(|d| {
-            let pitch = if d.demonstrator == Demonstrator::Tiny { Pitch::SMALL } else { Pitch::LARGE };
-            segmented(d.demonstrator.name(), pitch, d.outcome, &d.frames, &setup.recognizer)
-        })
-        .collect();
-    let goals_of = |who: &str| demos.iter().filter(|d| d.demonstrator == who && d.ending == Ending::Goal).count();
-    let (poor_goals, expert_goals) = (goals_of("poor"), goals_of("expert"));
-
-    let ordering = |names: &[&str]| names.iter().map(|s| (*s).to_owned()).collect::<Vec<String>>();
-    let rcb = ordering(&["expert", "tiny", "humanoid"]);
-    let run = |order: &[String], phase: PhaseOne, demos: &[SegmentedDemonstration]| -> Vec<TrialResult> {
-        (0..trials)
-            .map(|seed| run_trial(demos, order, &setup.motion, &setup.config, phase, seed).expect("runs"))
-            .collect()
+    let recorded = lab.record(&everyone, 25, 1)?;
+    let of = |names: &[&str]| -> Vec<SegmentedDemonstration> {
+        recorded.iter().filter(|d| names.contains(&d.demonstrator.as_str())).cloned().collect()
     };
-    let heterogeneous = run(&rcb, PhaseOne::ByModel, &demos);
-    let watched: Vec<SegmentedDemonstration> = demos.iter().filter(|d| d.demonstrator != "poor").cloned().collect();
-    let heterogeneous_world = WorldModel::learn(&watched, &Pitch::LARGE, &setup.config);
-    summarise("heterogeneous RCB", &setup, &heterogeneous, &heterogeneous_world, None, attempts);
-    let bcr: Vec<String> = rcb.iter().rev().cloned().collect();
-    let reversed = run(&bcr, PhaseOne::ByModel, &demos);
-    summarise("heterogeneous BCR", &setup, &reversed, &heterogeneous_world, None, attempts);
 
-    // The Average demonstrator: the first RCB imitator scoring between the Poor and the Expert.
-    let average = heterogeneous
-        .iter()
-        .enumerate()
-        .find_map(|(i, t)| {
-            let (goals, _, attempts) = setup.score(t, &heterogeneous_world, 30, i as u64, ControlMode::Thesis);
-            let valid = |c: Configuration| -> Vec<&polymimic_learn::Attempt> {
-                attempts.iter().filter(|a| a.configuration == c && tracked_throughout(&a.frames)).take(25).collect()
-            };
-            let chosen: Vec<&polymimic_learn::Attempt> = Configuration::ALL.iter().flat_map(|&c| valid(c)).collect();
-            (poor_goals < goals && goals < expert_goals && chosen.len() == 50).then(|| {
-                println!("average: imitator of RCB trial {i}, {goals} goals in 60 attempts");
-                chosen
-                    .into_iter()
-                    .map(|a| segmented("average", Pitch::LARGE, a.outcome, &a.frames, &setup.recognizer))
-                    .collect::<Vec<_>>()
-            })
-        })
-        .ok_or("no imitator fell between the Poor and the Expert")?;
-    demos.retain(|d| d.demonstrator != "tiny" && d.demonstrator != "humanoid");
-    demos.extend(average);
-    let skill = ordering(&["poor", "average", "expert"]);
-    let varying = run(&skill, PhaseOne::Interleaved, &demos);
-    let world = WorldModel::learn(&demos, &Pitch::LARGE, &setup.config);
-    summarise("varying skill", &setup, &varying, &world, Some(&["poor", "average", "expert"]), attempts);
+    let heterogeneous = of(&["expert", "tiny", "humanoid"]);
+    let world = WorldModel::learn(&heterogeneous, &Pitch::LARGE, &lab.config);
+    let rcb = lab.trials(&heterogeneous, &["expert", "tiny", "humanoid"], PhaseOne::ByModel, trials)?;
+    report("heterogeneous RCB", &lab, &rcb, &world, attempts);
+    let bcr = lab.trials(&heterogeneous, &["humanoid", "tiny", "expert"], PhaseOne::ByModel, trials)?;
+    report("heterogeneous BCR", &lab, &bcr, &world, attempts);
+
+    let net_goals = (net_goals_of(&recorded, "poor"), net_goals_of(&recorded, "expert"));
+    let mut skill = of(&["poor", "expert"]);
+    skill.extend(lab.average_demonstrator(&rcb[..rcb.len().min(10)], &world, 25, net_goals)?);
+    let world = WorldModel::learn(&skill, &Pitch::LARGE, &lab.config);
+    let varying = lab.trials(&skill, &["poor", "average", "expert"], PhaseOne::Interleaved, trials)?;
+    report("varying skill", &lab, &varying, &world, attempts);
+    let hits = lp_order_hits(&varying, &["poor", "average", "expert"]);
+    println!("final LP in the true order (poor < average < expert): {hits} of {}", varying.len());
     Ok(())
 }

@@ -29,7 +29,9 @@ pub enum LpCriteria {
     Both,
 }
 
-/// Whose demonstrations shape a model's LP by the task criteria (goals, ball, robot).
+/// Whose demonstrations shape a model's LP while it reads them (goals, ball and robot
+/// criteria, accurate ball predictions); the fate of its candidates in the imitator's model
+/// shapes it whatever it reads.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LpScope {
@@ -90,7 +92,7 @@ pub struct LearningConfig {
     pub robot_dead_band_mm: f64,
     /// *Choice*: how the LP is bounded.
     pub lp_bounds: LpBounds,
-    /// *Choice*: which demonstrations shape the LP by the task criteria.
+    /// *Choice*: which demonstrations shape the LP while the model reads them.
     pub lp_scope: LpScope,
     /// *Choice*: which criteria count over a span without a goal.
     pub lp_criteria: LpCriteria,

@@ -7,6 +7,7 @@ mod behaviour;
 mod config;
 mod control;
 mod error;
+mod laboratory;
 mod model;
 mod prediction;
 mod round;
@@ -22,6 +23,9 @@ pub use behaviour::Behaviour;
 pub use config::{LearningConfig, LpBounds, LpCriteria, LpScope};
 pub use control::{Attempt, ControlMode, ImitatorPolicy};
 pub use error::LearnError;
+pub use laboratory::{
+    Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, net_goals_of, pitch_of, summarise,
+};
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};
 pub use round::{Ending, SegmentedDemonstration};

@@ -58,6 +58,8 @@ impl ForwardModel {
         let mut events = Vec::new();
         let Some((mut c, first)) = next_primitive(segments, 0) else { return events };
         let mut current: Vec<Primitive> = vec![first];
+        // What happens in a demonstration says something of its demonstrator only.
+        let shapes_lp = config.lp_scope == LpScope::Every || demo.demonstrator == self.name;
         while c + 1 < segments.len() {
             self.metrics.rounds += 1;
             let start = segments[c].end;
@@ -117,12 +119,14 @@ impl ForwardModel {
             let selected_primitives = self.behaviours[selected].primitives.clone();
             let from = self.index_of(&current);
             for &i in ball_accurate.iter().filter(|&&i| i != selected) {
-                self.shape_lp(LpCause::BallPredicted, config);
+                if shapes_lp {
+                    self.shape_lp(LpCause::BallPredicted, config);
+                }
                 if let Some(from) = from {
                     self.follow(from, i, config);
                 }
             }
-            if ball_accurate.contains(&selected) {
+            if ball_accurate.contains(&selected) && shapes_lp {
                 self.shape_lp(LpCause::BallPredicted, config);
             }
             if let Some(from) = from {
@@ -132,7 +136,7 @@ impl ForwardModel {
             self.reinforce(selected, config);
             self.behaviours[selected].record_span(&start, &end, &demo.pitch, config);
             self.decay(config);
-            if config.lp_scope == LpScope::Every || demo.demonstrator == self.name {
+            if shapes_lp {
                 let last = reached + 1 == segments.len();
                 for cause in span_causes(demo, &segments[c], &segments[reached], last, config).into_iter().flatten() {
                     self.shape_lp(cause, config);

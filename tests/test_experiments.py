@@ -121,7 +121,7 @@ def test_unknown_experiments_are_refused(segmented):
         experiments.learn(ctx.run, ctx.config, ctx.runner, experiments=["mixed"], quiet=True)
 
 
-def test_the_policy_helper_names_the_control_it_used(segmented):
+def test_the_policy_helper_drives_by_either_control(segmented):
     from polymimic import PrimitiveRecognizer
 
     run = RunDir(segmented)
@@ -129,37 +129,12 @@ def test_the_policy_helper_names_the_control_it_used(segmented):
     recognizer = PrimitiveRecognizer.load(run.recognizer_path)
     watched = experiments.experiment_items(run, experiments.EXPERIMENTS["heterogeneous_rcb"])
     for control in experiments.CONTROLS:
-        policy, used = experiments.imitator_policy(trial, recognizer=recognizer, config=RunConfig().learning,
-                                                   control=control, demonstrations=watched)
-        assert used == experiments.available_control(control) and len(policy) > 0
+        policy = experiments.imitator_policy(trial, recognizer=recognizer, config=RunConfig().learning,
+                                             control=control, demonstrations=watched)
+        assert policy.control == control and len(policy) > 0
     with pytest.raises(ValueError, match="control must be one of"):
-        experiments.imitator_policy(trial, recognizer=recognizer, config=RunConfig().learning, control="fast")
-
-
-def test_builds_without_a_choice_of_control_drive_by_the_thesis_rule(monkeypatch):
-    class ThesisOnly:
-        def __init__(self, trial, *, recognizer, config=None):
-            self.trial = trial
-
-    monkeypatch.setattr(experiments, "ImitatorPolicy", ThesisOnly)
-    policy, used = experiments.imitator_policy("trial", recognizer=None, config=None, control="improved")
-    assert isinstance(policy, ThesisOnly) and used == "thesis"
-    assert experiments.available_control("improved") == "thesis"
-
-
-def test_the_improved_control_learns_from_the_demonstrations_watched(monkeypatch):
-    class Watching:
-        def __init__(self, trial, *, recognizer, config=None, control="thesis", demonstrations=None):
-            self.control, self.demonstrations = control, demonstrations
-
-    monkeypatch.setattr(experiments, "ImitatorPolicy", Watching)
-    watched = [{"demonstrator": "expert"}]
-    improved, _ = experiments.imitator_policy("trial", recognizer=None, config=None, control="improved",
-                                              demonstrations=watched)
-    thesis, _ = experiments.imitator_policy("trial", recognizer=None, config=None, control="thesis",
-                                            demonstrations=watched)
-    assert (improved.control, improved.demonstrations) == ("improved", watched)
-    assert (thesis.control, thesis.demonstrations) == ("thesis", None)
+        experiments.imitator_policy(trial, recognizer=recognizer, config=RunConfig().learning, control="fast",
+                                    demonstrations=watched)
 
 
 # Summaries, on made-up trials with known answers.

@@ -19,7 +19,6 @@ where it stopped and a finished one is never redone.
 from __future__ import annotations
 
 import dataclasses
-import inspect
 import json
 from collections.abc import Sequence
 from typing import Any
@@ -77,25 +76,13 @@ def evaluated_seeds(config: RunConfig) -> list[int]:
 
 
 def imitator_policy(trial: TrialResult, *, recognizer: PrimitiveRecognizer, config: LearningConfig,
-                    control: str, demonstrations: list[dict[str, Any]] | None = None) -> tuple[ImitatorPolicy, str]:
-    """The trial's imitator driving the robot by ``control``, and the control actually used:
-    where :class:`~polymimic.ImitatorPolicy` offers no choice, every imitator drives by the
-    thesis's rule, and the results say so. The improved control also learns from the
-    (segmented) ``demonstrations`` the imitator watched, where it takes them."""
+                    control: str, demonstrations: list[dict[str, Any]]) -> ImitatorPolicy:
+    """The trial's imitator driving the robot by ``control``; the improved control also learns
+    from the (segmented) ``demonstrations`` the imitator watched."""
     if control not in CONTROLS:
         raise ValueError(f"control must be one of {', '.join(CONTROLS)}, got {control!r}")
-    accepted = inspect.signature(ImitatorPolicy).parameters
-    if "control" not in accepted:
-        return ImitatorPolicy(trial, recognizer=recognizer, config=config), "thesis"
-    extra: dict[str, Any] = {"control": control}
-    if control == "improved" and demonstrations is not None and "demonstrations" in accepted:
-        extra["demonstrations"] = demonstrations
-    return ImitatorPolicy(trial, recognizer=recognizer, config=config, **extra), control
-
-
-def available_control(control: str) -> str:
-    """The control an imitator asked to drive by ``control`` will drive by in this build."""
-    return control if "control" in inspect.signature(ImitatorPolicy).parameters else "thesis"
+    return ImitatorPolicy(trial, recognizer=recognizer, config=config, control=control,
+                          demonstrations=demonstrations if control == "improved" else None)
 
 
 # Tasks: module-level, so that process-pool and Ray workers can import them.
@@ -133,10 +120,10 @@ def evaluation_task(inputs: EvaluationInputs, job: tuple[int, str, str, bool]) -
     """Goals and own goals of one trial's imitator; ``job`` is ``(trial seed, trial JSON,
     control, keep the attempts)``."""
     trial_seed, trial_json, control, keep = job
-    policy, used = imitator_policy(TrialResult.from_json(trial_json), recognizer=inputs.recognizer,
-                                   config=inputs.learning, control=control, demonstrations=inputs.items)
+    policy = imitator_policy(TrialResult.from_json(trial_json), recognizer=inputs.recognizer,
+                             config=inputs.learning, control=control, demonstrations=inputs.items)
     evaluation = evaluate(policy, attempts_per_configuration=inputs.attempts_per_configuration, seed=inputs.seed)
-    return {"trial_seed": trial_seed, "control": control, "control_used": used, "seed": inputs.seed,
+    return {"trial_seed": trial_seed, "control": control, "seed": inputs.seed,
             "goals": evaluation.goals, "own_goals": evaluation.own_goals, "attempts": len(evaluation.attempts),
             "outcomes": [a.outcome for a in evaluation.attempts],
             "attempt_list": evaluation.attempts if keep else None}
@@ -183,15 +170,14 @@ def learn(run: RunDir, config: RunConfig, runner: TaskRunner, *, experiments: Se
     return ran
 
 
-def _evaluation_done(path: Any, control: str, attempts: int) -> bool:
+def _evaluation_done(path: Any, attempts: int) -> bool:
     if not path.exists():
         return False
     try:
         saved = json.loads(path.read_text(encoding="utf-8"))
     except ValueError:
         return False
-    # An evaluation made before this build offered the control asked for is redone.
-    return saved.get("control_used") == available_control(control) and saved.get("attempts") == attempts
+    return saved.get("attempts") == attempts
 
 
 def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
@@ -208,7 +194,7 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
         for seed in seeds:
             for control in CONTROLS:
                 keep = seed == seeds[0]
-                if _evaluation_done(run.evaluation_path(experiment.name, seed, control), control, attempts) and (
+                if _evaluation_done(run.evaluation_path(experiment.name, seed, control), attempts) and (
                         not keep or run.attempts_path(experiment.name, control).exists()):
                     continue
                 trial_path = run.trial_path(experiment.name, seed)

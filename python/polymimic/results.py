@@ -99,12 +99,12 @@ def summarize_experiment(experiment: Experiment, trials: Sequence[TrialResult], 
 def summarize_evaluations(evaluations: Sequence[dict[str, Any]], *, attempts: int) -> dict[str, Any]:
     """Goals and own goals of the evaluated imitators: mean and sd over imitators.
 
-    >>> summarize_evaluations([{"goals": 10, "own_goals": 2, "control_used": "thesis"},
-    ...                        {"goals": 14, "own_goals": 0, "control_used": "thesis"}], attempts=50)
+    >>> summarize_evaluations([{"goals": 10, "own_goals": 2, "control": "thesis"},
+    ...                        {"goals": 14, "own_goals": 0, "control": "thesis"}], attempts=50)
     {'goals': 12.0, 'own_goals': 1.0, 'attempts': 50, 'goals_sd': 2.8284271247461903, 'own_goals_sd': 1.4142135623730951, 'imitators': 2, 'control': 'thesis'}
     """
     goals, own = mean_sd(e["goals"] for e in evaluations), mean_sd(e["own_goals"] for e in evaluations)
-    used = sorted({e["control_used"] for e in evaluations})
+    used = sorted({e["control"] for e in evaluations})
     return {"goals": goals["mean"], "own_goals": own["mean"], "attempts": attempts, "goals_sd": goals["sd"],
             "own_goals_sd": own["sd"], "imitators": len(evaluations), "control": ", ".join(used) or None}
 

@@ -97,7 +97,8 @@ class ExperimentSettings:
     demonstrations_per_configuration: int = _doc("recorded attempts per demonstrator and field configuration", 25)
     attempts_per_configuration: int = _doc("attempts per evaluated imitator and field configuration", 25)
     evaluated_imitators: int = _doc("imitators evaluated per experiment: the first trials'", 100)
-    average_max_trials: int = _doc("trials tried for an imitator scoring between Poor and Expert", 50)
+    average_max_trials: int = _doc("heterogeneous imitators tried as the Average (the one whose net goals lie "
+                                   "nearest the middle of the Poor's and the Expert's is chosen)", 10)
     lp_stride: int = _doc("LP-over-time plots keep every lp_stride-th LP change", 200)
 
     def __post_init__(self) -> None:

@@ -82,8 +82,9 @@ def _record(ctx: Context) -> int:
 
 
 def _record_average(ctx: Context) -> int:
-    """The Average demonstrator: the first heterogeneous (RCB) imitator to score between the Poor
-    and the Expert demonstrators, driven by the thesis's rule (§4.4.2)."""
+    """The Average demonstrator: of the heterogeneous (RCB) imitators tried, driven by the thesis's
+    rule, the one whose net goals lie nearest the middle of the Poor's and the Expert's (§4.4.2;
+    see :func:`polymimic.average_demonstrator`)."""
     path = ctx.run.demonstrations_path("average")
     if path.exists():
         return 0

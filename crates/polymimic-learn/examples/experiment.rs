@@ -1,7 +1,8 @@
 //! The experiments of thesis §4.4 from Rust, for studying learning-preference shaping and
 //! control quickly: `cargo run --release -p polymimic-learn --example experiment -- [trials]
 //! [attempts_per_configuration] [key=value …]`, where each `key=value` overrides a
-//! [`LearningConfig`] field (for instance `lp_bounds=\"clamp\"`).
+//! [`LearningConfig`] field (for instance `lp_bounds=\"clamp\"`), or the seed of the
+//! recorded demonstrations (`demonstrations_seed=0`, the default, as `polymimic reproduce`).
 //!
 //! Prints, per experiment, the mean (sd) final LP, match rate and candidates made permanent of
 //! each model, what changed the LPs, the trials whose final LPs follow the true skill order,
@@ -81,13 +82,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let trials: u64 = args.get(1).map_or(Ok(20), |s| s.parse())?;
     let attempts: usize = args.get(2).map_or(Ok(0), |s| s.parse())?;
     let mut config = serde_json::to_value(LearningConfig::default())?;
+    let mut demonstrations_seed = 0;
     for pair in args.iter().skip(3) {
-        let (key, value) = pair.split_once('=').ok_or("overrides are key=value")?;
-        config[key] = serde_json::from_str(value)?;
+        match pair.split_once('=').ok_or("overrides are key=value")? {
+            ("demonstrations_seed", value) => demonstrations_seed = value.parse()?,
+            (key, value) => config[key] = serde_json::from_str(value)?,
+        }
     }
     let lab = Laboratory::new(1000, 1, LearningConfig::from_json(&config.to_string())?)?;
     let everyone = [Demonstrator::Expert, Demonstrator::Tiny, Demonstrator::Humanoid, Demonstrator::Poor];
-    let recorded = lab.record(&everyone, 25, 1)?;
+    let recorded = lab.record(&everyone, 25, demonstrations_seed)?;
     let of = |names: &[&str]| -> Vec<SegmentedDemonstration> {
         recorded.iter().filter(|d| names.contains(&d.demonstrator.as_str())).cloned().collect()
     };

@@ -30,26 +30,17 @@ fn report(name: &str, lab: &Laboratory, trials: &[TrialResult], world: &WorldMod
             s.candidates_permanent.sd()
         );
     }
-    println!(
-        "LP changes per trial by cause: goal own | ball nearer farther | robot nearer farther | ball predicted | candidate permanent deleted"
-    );
+    println!("LP changes per trial, by cause:");
     for (k, model) in trials[0].models.iter().enumerate() {
-        let mean = |f: fn(&LpCauseCounts) -> usize| {
-            trials.iter().map(|t| f(&t.models[k].metrics.lp_causes) as f64).sum::<f64>() / trials.len() as f64
-        };
-        println!(
-            "  {:9} {:5.1} {:4.1} | {:6.1} {:5.1} | {:6.1} {:6.1} | {:6.1} | {:4.1} {:4.1}",
-            model.name,
-            mean(|c| c.goal),
-            mean(|c| c.own_goal),
-            mean(|c| c.ball_nearer_goal),
-            mean(|c| c.ball_farther_from_goal),
-            mean(|c| c.robot_nearer_ball),
-            mean(|c| c.robot_farther_from_ball),
-            mean(|c| c.ball_predicted),
-            mean(|c| c.candidate_permanent),
-            mean(|c| c.candidate_deleted)
-        );
+        let mut means = [0.0; 9];
+        for t in trials {
+            for (mean, (_, n)) in means.iter_mut().zip(t.models[k].metrics.lp_causes.named()) {
+                *mean += n as f64 / trials.len() as f64;
+            }
+        }
+        let names = LpCauseCounts::default().named().map(|(name, _)| name);
+        let cells: Vec<String> = names.iter().zip(means).map(|(name, mean)| format!("{name} {mean:.1}")).collect();
+        println!("  {:9} {}", model.name, cells.join(", "));
     }
     for mode in [ControlMode::Thesis, ControlMode::Improved] {
         if attempts == 0 {
@@ -80,6 +71,9 @@ fn report(name: &str, lab: &Laboratory, trials: &[TrialResult], world: &WorldMod
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
     let trials: u64 = args.get(1).map_or(Ok(20), |s| s.parse())?;
+    if trials == 0 {
+        return Err("run at least one trial".into());
+    }
     let attempts: usize = args.get(2).map_or(Ok(0), |s| s.parse())?;
     let mut config = serde_json::to_value(LearningConfig::default())?;
     let mut demonstrations_seed = 0;
@@ -105,7 +99,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     let net_goals = (net_goals_of(&recorded, "poor"), net_goals_of(&recorded, "expert"));
     let mut skill = of(&["poor", "expert"]);
-    skill.extend(lab.average_demonstrator(&rcb[..rcb.len().min(10)], &world, 25, net_goals)?);
+    skill.extend(lab.average_demonstrator(&rcb[..rcb.len().min(10)], 25, net_goals)?);
     let world = WorldModel::learn(&skill, &Pitch::LARGE, &lab.config);
     let varying = lab.trials(&skill, &["poor", "average", "expert"], PhaseOne::Interleaved, trials)?;
     report("varying skill", &lab, &varying, &world, attempts);

@@ -7,6 +7,7 @@
 use polymimic_perceive::{Label, Pose, Primitive, TrackedFrame};
 use serde::{Deserialize, Serialize};
 
+use crate::nearest::nearest;
 use crate::round::SegmentedDemonstration;
 use crate::state::Pitch;
 
@@ -85,12 +86,9 @@ impl BallResponse {
         let Some(samples) = self.samples.get(primitive as usize).filter(|s| !s.is_empty()) else {
             return (state.ball_x_mm, state.ball_y_mm);
         };
-        let mut nearest: Vec<(f64, usize)> =
-            samples.iter().enumerate().map(|(i, s)| ((s[0] - here[0]).powi(2) + (s[1] - here[1]).powi(2), i)).collect();
-        let k = NEIGHBOURS.min(nearest.len());
-        nearest.select_nth_unstable_by(k - 1, |a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let nearest = nearest(samples.iter().map(|s| [s[0], s[1]]), &here, NEIGHBOURS);
         let mut mean = [0.0; 2];
-        for &(_, i) in nearest[..k].iter().filter(|(d2, _)| *d2 <= NEIGHBOURHOOD_MM * NEIGHBOURHOOD_MM) {
+        for &(_, i) in nearest.iter().filter(|(d2, _)| *d2 <= NEIGHBOURHOOD_MM * NEIGHBOURHOOD_MM) {
             mean[0] += samples[i][2] / NEIGHBOURS as f64;
             mean[1] += samples[i][3] / NEIGHBOURS as f64;
         }

@@ -87,6 +87,6 @@ impl Behaviour {
     /// The primitives as letters, e.g. "FFL".
     #[must_use]
     pub fn letters(&self) -> String {
-        self.primitives.iter().map(|p| p.name()[..1].to_uppercase()).collect()
+        self.primitives.iter().map(|p| p.letter()).collect()
     }
 }

@@ -9,6 +9,7 @@ mod control;
 mod error;
 mod laboratory;
 mod model;
+mod nearest;
 mod prediction;
 mod round;
 mod running;

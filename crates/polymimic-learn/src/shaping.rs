@@ -69,6 +69,22 @@ impl LpCauseCounts {
         };
         *slot += 1;
     }
+
+    /// Every count with its name, in the order of Table 3.3.
+    #[must_use]
+    pub fn named(&self) -> [(&'static str, usize); 9] {
+        [
+            ("goal", self.goal),
+            ("own_goal", self.own_goal),
+            ("ball_nearer_goal", self.ball_nearer_goal),
+            ("ball_farther_from_goal", self.ball_farther_from_goal),
+            ("robot_nearer_ball", self.robot_nearer_ball),
+            ("robot_farther_from_ball", self.robot_farther_from_ball),
+            ("ball_predicted", self.ball_predicted),
+            ("candidate_permanent", self.candidate_permanent),
+            ("candidate_deleted", self.candidate_deleted),
+        ]
+    }
 }
 
 /// The task criteria short of a goal, from one state to another: the ball nearer the target

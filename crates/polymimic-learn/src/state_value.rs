@@ -4,18 +4,18 @@
 //! ball); a value learned from whole demonstrations can also see that going round the ball
 //! leads to a goal later, as the skilled demonstrators showed.
 
+use polymimic_field::FRAME_DT_S;
 use polymimic_perceive::TrackedFrame;
 use serde::{Deserialize, Serialize};
 
+use crate::nearest::nearest;
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::state::Pitch;
 
-/// Tracker frames per second.
-const FRAMES_PER_S: f64 = 30.0;
-/// An outcome this many seconds ahead counts this much less per second.
+/// What an outcome one second further ahead is worth, relative to one now.
 const DISCOUNT_PER_S: f64 = 0.95;
 /// States averaged by one estimate.
-pub(crate) const NEIGHBOURS: usize = 8;
+const NEIGHBOURS: usize = 8;
 /// A heading difference of one radian weighs as much as this distance, mm.
 const MM_PER_RADIAN: f64 = 100.0;
 
@@ -55,7 +55,7 @@ impl StateValue {
             for (state, frame) in states {
                 let point = features(state);
                 if point.iter().all(|v| v.is_finite()) {
-                    let to_go_s = (end_frame - frame as f64) / FRAMES_PER_S;
+                    let to_go_s = (end_frame - frame as f64) * FRAME_DT_S;
                     samples.push((point, outcome * DISCOUNT_PER_S.powf(to_go_s)));
                 }
             }
@@ -73,30 +73,14 @@ impl StateValue {
         self.samples.is_empty()
     }
 
-    fn nearest(&self, state: &TrackedFrame, k: usize) -> Vec<usize> {
-        let here = features(state);
-        let mut nearest: Vec<(f64, usize)> = self
-            .samples
-            .iter()
-            .enumerate()
-            .map(|(i, (point, _))| (point.iter().zip(&here).map(|(a, b)| (a - b).powi(2)).sum(), i))
-            .collect();
-        let k = k.min(nearest.len());
-        if k == 0 {
-            return Vec::new();
-        }
-        nearest.select_nth_unstable_by(k - 1, |a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        nearest[..k].iter().map(|&(_, i)| i).collect()
-    }
-
     /// The mean value of the demonstrated states nearest `state` (0 with none).
     #[must_use]
     pub fn estimate(&self, state: &TrackedFrame) -> f64 {
-        let nearest = self.nearest(state, NEIGHBOURS);
+        let nearest = nearest(self.samples.iter().map(|(point, _)| *point), &features(state), NEIGHBOURS);
         if nearest.is_empty() {
             return 0.0;
         }
-        nearest.iter().map(|&i| self.samples[i].1).sum::<f64>() / nearest.len() as f64
+        nearest.iter().map(|&(_, i)| self.samples[i].1).sum::<f64>() / nearest.len() as f64
     }
 }
 

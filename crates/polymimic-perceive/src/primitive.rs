@@ -29,6 +29,18 @@ impl Primitive {
         }
     }
 
+    /// The name's first letter, capital: F, B, L, R or S (how behaviours are written).
+    #[must_use]
+    pub fn letter(self) -> &'static str {
+        match self {
+            Self::Forward => "F",
+            Self::Backward => "B",
+            Self::Left => "L",
+            Self::Right => "R",
+            Self::Stop => "S",
+        }
+    }
+
     #[must_use]
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|p| p.name() == name)

@@ -117,19 +117,8 @@ fn model_dict<'py>(py: Python<'py>, model: &ForwardModel) -> PyResult<Bound<'py,
     ] {
         out.set_item(key, value)?;
     }
-    let c = &m.lp_causes;
     let causes = PyDict::new(py);
-    for (key, value) in [
-        ("goal", c.goal),
-        ("own_goal", c.own_goal),
-        ("ball_nearer_goal", c.ball_nearer_goal),
-        ("ball_farther_from_goal", c.ball_farther_from_goal),
-        ("robot_nearer_ball", c.robot_nearer_ball),
-        ("robot_farther_from_ball", c.robot_farther_from_ball),
-        ("ball_predicted", c.ball_predicted),
-        ("candidate_permanent", c.candidate_permanent),
-        ("candidate_deleted", c.candidate_deleted),
-    ] {
+    for (key, value) in m.lp_causes.named() {
         causes.set_item(key, value)?;
     }
     out.set_item("lp_causes", causes)?;

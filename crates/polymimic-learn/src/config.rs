@@ -8,7 +8,8 @@ use crate::error::LearnError;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LpBounds {
-    /// *Choice*: a rise moves the LP by `amount · (1 − LP)` and a fall by `amount · LP`, so
+    /// *Choice*: a rise moves the LP by `amount · 2(1 − LP)` and a fall by `amount · 2 LP` (the
+    /// thesis's step at the midpoint, none at a bound), so
     /// each demonstrator settles where its gains balance its losses (the thesis's curves hover
     /// at 0.3, 0.55 and 0.9 for its Poor, Average and Expert, which a clamped walk of constant
     /// steps cannot do: it drifts to a bound).
@@ -21,8 +22,9 @@ pub enum LpBounds {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum LpCriteria {
-    /// *Choice*: only the foremost that changed: the ball's approach to the goal when the ball
-    /// moved, else the robot's approach to the ball — the thesis ranks the criteria, and lets a
+    /// *Choice*: only the foremost that changed: the ball's approach to the goal when its
+    /// distance to the goal changed beyond `ball_dead_band_mm`, else the robot's approach to
+    /// the ball — the thesis ranks the criteria, and lets a
     /// goal silence the other two.
     Foremost,
     /// Both, added.

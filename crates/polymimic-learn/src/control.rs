@@ -1,6 +1,7 @@
-//! The imitator's final model driving a robot on the field (thesis §3.4, end).
+//! The imitator's final model driving a robot on the field (thesis §3.4, end), by the
+//! thesis's rule or an improved one (see [`ControlMode`]).
 //!
-//! At each decision the behaviours whose preconditions the current state meets (every
+//! By the thesis's rule, at each decision the behaviours whose preconditions the current state meets (every
 //! measure within one standard deviation of its mean) are considered, or all of them if none
 //! applies. Each predicts its outcome and the best by the learning-preference criteria — a
 //! predicted goal, then the ball nearer the goal, then the robot nearer the ball — is executed
@@ -33,7 +34,8 @@ pub struct Attempt {
     pub seed: u64,
     pub outcome: Outcome,
     pub frames: Vec<Frame>,
-    /// The behaviours executed, as letters, in order.
+    /// What was executed, in order, as letters: whole behaviours by the thesis's rule, single
+    /// primitives by the improved one.
     pub behaviours: Vec<String>,
 }
 
@@ -49,8 +51,8 @@ pub enum ControlMode {
     /// learned from all the demonstrations (§5.4), and its predicted end is rated by a goal,
     /// then by whether the demonstrations passing near it ended, on balance, in own goals,
     /// then by how much nearer the goal it puts the ball, then the robot to the ball; only the
-    /// first primitive runs before choosing again, so a behaviour that becomes more applicable
-    /// takes over at once (§4.4.1).
+    /// first primitive runs before choosing again, so a behaviour that comes to rate better
+    /// takes over at once (§4.4.1). Preconditions are not consulted: every behaviour competes.
     Improved,
 }
 
@@ -229,7 +231,7 @@ impl ImitatorPolicy<'_> {
             let state = tracked(&episode, &mut last_ball);
             if self.mode == ControlMode::Improved {
                 let primitive = self.choose_primitive(&state).unwrap_or(Primitive::Stop);
-                executed.push(primitive.name()[..1].to_uppercase());
+                executed.push(primitive.letter().to_owned());
                 run_primitive(&mut episode, primitive)?;
                 continue;
             }

@@ -32,7 +32,7 @@ pub enum LaboratoryError {
     #[error(transparent)]
     Learn(#[from] LearnError),
     #[error(
-        "no imitator of {tried} trials scored net goals (goals less own goals) between the Poor's {poor} and the Expert's {expert}"
+        "no imitator of {tried} trials, with tracking held in enough attempts, scored net goals (goals less own goals) between the Poor's {poor} and the Expert's {expert}"
     )]
     NoAverage { tried: usize, poor: i64, expert: i64 },
 }
@@ -173,44 +173,40 @@ impl Laboratory {
     }
 
     /// The thesis's Average demonstrator (§4.4.2): of the imitators of the `heterogeneous`
-    /// trials, driven by the thesis's rule for `per_configuration` attempts from each
-    /// configuration, the one whose net goals (goals less own goals) lie nearest the middle of
-    /// the Poor's and the Expert's, strictly between them (the earliest trial on a tie) — the
-    /// thesis's Average scored fewer goals than its Poor but far fewer own goals. Returns its
-    /// first `per_configuration` attempts per configuration with tracking held throughout
-    /// (spares stand in for lost ones), as demonstrations named "average".
+    /// trials, driven by the thesis's rule, the one whose net goals (goals less own goals) over
+    /// `per_configuration` attempts from each configuration lie nearest the middle of the
+    /// Poor's and the Expert's, strictly between them (the earliest trial on a tie) — the
+    /// thesis's Average scored fewer goals than its Poor but far fewer own goals. Attempts whose
+    /// tracking was lost are left out, as for every demonstrator, and spare attempts stand in
+    /// for them. Returns the chosen attempts as demonstrations named "average".
     ///
     /// # Errors
     /// No imitator falls between the two, or a field error.
     pub fn average_demonstrator(
         &self,
         heterogeneous: &[TrialResult],
-        world: &WorldModel,
         per_configuration: usize,
         (poor_net_goals, expert_net_goals): (i64, i64),
     ) -> Result<Vec<SegmentedDemonstration>, LaboratoryError> {
-        let spares = (per_configuration / 5).max(5);
+        let world = WorldModel::default();
         let mut best: Option<(u64, Vec<Attempt>)> = None;
         for (i, trial) in heterogeneous.iter().enumerate() {
-            let score = self.score(trial, world, ControlMode::Thesis, per_configuration + spares, i as u64)?;
-            let of = |c: Configuration| score.attempts.iter().filter(move |a| a.configuration == c);
-            let net: i64 = Configuration::ALL
-                .iter()
-                .flat_map(|&c| of(c).take(per_configuration))
-                .map(|a| match a.outcome {
-                    Outcome::Goal => 1,
-                    Outcome::OwnGoal => -1,
-                    _ => 0,
-                })
-                .sum();
+            let attempts = per_configuration + spare_attempts(per_configuration);
+            let score = self.score(trial, &world, ControlMode::Thesis, attempts, i as u64)?;
             let valid: Vec<Attempt> = Configuration::ALL
                 .iter()
-                .flat_map(|&c| of(c).filter(|a| tracked_throughout(&a.frames)).take(per_configuration).cloned())
+                .flat_map(|&c| {
+                    let of_c = score.attempts.iter().filter(move |a| a.configuration == c);
+                    of_c.filter(|a| tracked_throughout(&a.frames)).take(per_configuration).cloned()
+                })
                 .collect();
+            if valid.len() < Configuration::ALL.len() * per_configuration {
+                continue;
+            }
+            let net: i64 = valid.iter().map(|a| net_goal(a.outcome)).sum();
             // Twice the distance from the middle, in whole goals.
             let off_middle = (2 * net).abs_diff(poor_net_goals + expert_net_goals);
-            let nearer = best.as_ref().is_none_or(|(d, _)| off_middle < *d);
-            if poor_net_goals < net && net < expert_net_goals && valid.len() == 2 * per_configuration && nearer {
+            if poor_net_goals < net && net < expert_net_goals && best.as_ref().is_none_or(|(d, _)| off_middle < *d) {
                 best = Some((off_middle, valid));
             }
         }
@@ -220,6 +216,20 @@ impl Laboratory {
             expert: expert_net_goals,
         })?;
         attempts.iter().map(|a| self.segmented("average", Pitch::LARGE, a.outcome, &a.frames)).collect()
+    }
+}
+
+/// Attempts made beyond those needed, to stand in for any whose tracking is lost.
+#[must_use]
+pub fn spare_attempts(per_configuration: usize) -> usize {
+    (per_configuration / 5).max(5)
+}
+
+fn net_goal(outcome: Outcome) -> i64 {
+    match outcome {
+        Outcome::Goal => 1,
+        Outcome::OwnGoal => -1,
+        _ => 0,
     }
 }
 

@@ -41,10 +41,9 @@ fn the_experiments_show_the_thesis_shape_and_improved_control_beats_the_thesis_r
 
     // Varying skill: the final LP orders Poor < Average < Expert, and the Expert's candidates
     // are the ones the imitator keeps.
-    let world = WorldModel::learn(&heterogeneous, &Pitch::LARGE, &lab.config);
     let net_goals = (net_goals_of(&recorded, "poor"), net_goals_of(&recorded, "expert"));
     let mut skill = of(&["poor", "expert"]);
-    skill.extend(lab.average_demonstrator(&rcb[..10], &world, 25, net_goals).expect("an Average"));
+    skill.extend(lab.average_demonstrator(&rcb[..10], 25, net_goals).expect("an Average"));
     let varying = lab.trials(&skill, &["poor", "average", "expert"], PhaseOne::Interleaved, TRIALS).unwrap();
     let hits = lp_order_hits(&varying, &["poor", "average", "expert"]);
     assert!(hits >= 19, "the LP order held in {hits} of {TRIALS} trials");

@@ -114,6 +114,8 @@ class EvaluationInputs:
     seed: int
     items: list[dict[str, Any]]
     """The experiment's segmented demonstrations: what its imitators watched."""
+    field: dict[str, Any]
+    """The field the imitators play on (the run's)."""
 
 
 def evaluation_task(inputs: EvaluationInputs, job: tuple[int, str, str, bool]) -> dict[str, Any]:
@@ -122,7 +124,8 @@ def evaluation_task(inputs: EvaluationInputs, job: tuple[int, str, str, bool]) -
     trial_seed, trial_json, control, keep = job
     policy = imitator_policy(TrialResult.from_json(trial_json), recognizer=inputs.recognizer,
                              config=inputs.learning, control=control, demonstrations=inputs.items)
-    evaluation = evaluate(policy, attempts_per_configuration=inputs.attempts_per_configuration, seed=inputs.seed)
+    evaluation = evaluate(policy, attempts_per_configuration=inputs.attempts_per_configuration, seed=inputs.seed,
+                          field_config=inputs.field)
     return {"trial_seed": trial_seed, "control": control, "seed": inputs.seed,
             "goals": evaluation.goals, "own_goals": evaluation.own_goals, "attempts": len(evaluation.attempts),
             "outcomes": [a.outcome for a in evaluation.attempts],
@@ -170,14 +173,17 @@ def learn(run: RunDir, config: RunConfig, runner: TaskRunner, *, experiments: Se
     return ran
 
 
-def _evaluation_done(path: Any, attempts: int) -> bool:
+def _evaluation_done(path: Any, control: str, attempts: int) -> bool:
     if not path.exists():
         return False
     try:
         saved = json.loads(path.read_text(encoding="utf-8"))
     except ValueError:
         return False
-    return saved.get("attempts") == attempts
+    # A file that says another control drove its imitator (as builds that could not choose
+    # wrote "control_used") is not this evaluation.
+    driven_by = saved.get("control_used", saved.get("control"))
+    return driven_by == control and saved.get("attempts") == attempts
 
 
 def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
@@ -194,7 +200,7 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
         for seed in seeds:
             for control in CONTROLS:
                 keep = seed == seeds[0]
-                if _evaluation_done(run.evaluation_path(experiment.name, seed, control), attempts) and (
+                if _evaluation_done(run.evaluation_path(experiment.name, seed, control), control, attempts) and (
                         not keep or run.attempts_path(experiment.name, control).exists()):
                     continue
                 trial_path = run.trial_path(experiment.name, seed)
@@ -207,7 +213,8 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
             continue
         inputs = EvaluationInputs(recognizer=recognizer, learning=config.learning,
                                   attempts_per_configuration=config.experiments.attempts_per_configuration,
-                                  seed=config.seeds.evaluation, items=experiment_items(run, experiment))
+                                  seed=config.seeds.evaluation, items=experiment_items(run, experiment),
+                                  field=config.field)
         with progress(total=len(jobs), desc=f"evaluate {experiment.name}", quiet=quiet) as bar:
             for _, result in runner.map(evaluation_task, inputs, jobs):
                 kept = result.pop("attempt_list")

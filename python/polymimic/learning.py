@@ -163,9 +163,11 @@ class TrialResult:
             raise _native.ModelFileError(f"{path}: not a saved trial result ({error})") from error
 
 
-def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.PrimitiveRecognizer) -> list[dict]:
-    """The demonstrations as the learner takes them: segments, field size and outcome."""
-    segments = recognizer.segment_many([d.frames for d in demonstrations])
+def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.PrimitiveRecognizer,
+              **segmenter: Any) -> list[dict]:
+    """The demonstrations as the learner takes them: segments, field size and outcome;
+    ``segmenter`` passes the segmenter's settings (``min_frames``, ``gap_margin``, …)."""
+    segments = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
     return [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
              "pitch": "small" if d.demonstrator in SMALL_FIELD_BODIES else "large"}
             for d, s in zip(demonstrations, segments)]
@@ -212,7 +214,7 @@ class ImitatorPolicy:
                  config: LearningConfig | None = None, control: str = "thesis",
                  demonstrations: Sequence[Demonstration] | Sequence[dict] | None = None) -> None:
         items = None
-        if demonstrations is not None:
+        if demonstrations is not None and control == "improved":
             items = (list(demonstrations) if len(demonstrations) and isinstance(demonstrations[0], dict)
                      else segmented(demonstrations, recognizer))  # type: ignore[arg-type]
         self._native = _native.ImitatorPolicy(trial.imitator_model, recognizer.motion_stats(),
@@ -239,11 +241,13 @@ class Evaluation:
     behaviours: list[list[str]]
 
 
-def evaluate(policy: ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0) -> Evaluation:
-    """``attempts_per_configuration`` attempts from each field configuration, in parallel."""
-    from polymimic.field import as_frames
+def evaluate(policy: ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0,
+             field_config: dict[str, Any] | str | None = None) -> Evaluation:
+    """``attempts_per_configuration`` attempts from each field configuration, in parallel, on the
+    field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's)."""
+    from polymimic.field import _field_config, as_frames
 
-    raw = policy._native.evaluate(attempts_per_configuration, seed=seed)
+    raw = policy._native.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
     attempts = [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator="imitator",
                               configuration=a["configuration"], seed=a["seed"]) for a in raw]
     return Evaluation(goals=sum(a.outcome == "goal" for a in attempts),
@@ -263,19 +267,32 @@ def _net_goals(demos: Sequence[Demonstration]) -> int:
     return sum(d.outcome == "goal" for d in demos) - sum(d.outcome == "own_goal" for d in demos)
 
 
+def spare_attempts(n: int) -> int:
+    """Attempts made beyond ``n``, to stand in for any whose tracking is lost."""
+    return max(5, n // 5)
+
+
 def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25, seed: int = 0,
-                         max_trials: int = 10, config: LearningConfig | None = None
-                         ) -> tuple[list[Demonstration], TrialResult]:
+                         max_trials: int = 10, config: LearningConfig | None = None,
+                         recorded: dict[str, Sequence[Demonstration]] | None = None,
+                         field_config: dict[str, Any] | str | None = None,
+                         segmenter: dict[str, Any] | None = None) -> tuple[list[Demonstration], TrialResult]:
     """The thesis's Average demonstrator (§4.4.2): an imitator trained in the heterogeneous
     experiment (Expert, Tiny, Humanoid; ordering RCB) and driven by the thesis's control rule.
 
-    The imitators of trials with seeds ``seed`` … ``seed + max_trials - 1`` each make ``n``
-    attempts per configuration; the one whose net goals (goals less own goals) lie nearest the
-    middle of the Poor's and the Expert's, strictly between them, is the Average (the earliest
-    on a tie). Net goals, not goals, because that is what put the thesis's own Average between
-    its Poor and its Expert: it scored fewer goals than the Poor but far fewer own goals. Its
-    first ``n`` valid attempts per configuration (tracking held throughout, as for every
-    demonstrator), renamed ``"average"``, are returned with the trial that made it.
+    The imitators of trials with seeds ``seed`` … ``seed + max_trials - 1`` each attempt the kick
+    from both configurations until ``n`` attempts per configuration held tracking throughout
+    (as every demonstrator's recordings do; a few spare attempts stand in for lost ones). The
+    Average is the imitator whose net goals (goals less own goals) over those attempts lie
+    nearest the middle of the Poor's and the Expert's, strictly between them (the earliest on a
+    tie). Net goals, not goals, because that is what put the thesis's own Average between its
+    Poor and its Expert: it scored fewer goals than the Poor but far fewer own goals. Its
+    attempts, renamed ``"average"``, are returned with the trial that made it.
+
+    ``recorded`` gives the Expert's, Tiny's, Humanoid's and Poor's demonstrations (``n`` per
+    configuration each) when they exist already; otherwise they are recorded with ``seed`` on
+    the field ``field_config`` describes, where the imitators are also evaluated. ``segmenter``
+    passes the segmenter's settings.
 
     Raises
     ------
@@ -284,26 +301,31 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
     """
     from polymimic.field import record
 
-    recorded = {who: [d for c in (1, 2) for d in record(who, configuration=c, n=n, seed=seed)]
-                for who in ("expert", "tiny", "humanoid", "poor")}
+    if recorded is None:
+        recorded = {who: [d for c in (1, 2) for d in record(who, configuration=c, n=n, seed=seed,
+                                                             config=field_config)]
+                    for who in ("expert", "tiny", "humanoid", "poor")}
     poor, expert = _net_goals(recorded["poor"]), _net_goals(recorded["expert"])
-    items = segmented([d for who in ("expert", "tiny", "humanoid") for d in recorded[who]], recognizer)
+    items = segmented([d for who in ("expert", "tiny", "humanoid") for d in recorded[who]], recognizer,
+                      **(segmenter or {}))
     best: tuple[int, list[Demonstration], TrialResult] | None = None
     for trial_seed in range(seed, seed + max_trials):
         trial = run_trial(items, recognizer=recognizer, ordering=["expert", "tiny", "humanoid"], config=config,
                           seed=trial_seed)
-        # Spare attempts stand in for any whose tracking was lost.
         evaluation = evaluate(ImitatorPolicy(trial, recognizer=recognizer, config=config),
-                              attempts_per_configuration=n + max(5, n // 5), seed=trial_seed)
-        by_configuration = {c: [a for a in evaluation.attempts if a.configuration == c] for c in (1, 2)}
-        net = _net_goals([a for attempts in by_configuration.values() for a in attempts[:n]])
-        valid = [a for c in (1, 2) for a in [a for a in by_configuration[c] if _tracked_throughout(a)][:n]]
+                              attempts_per_configuration=n + spare_attempts(n), seed=trial_seed,
+                              field_config=field_config)
+        valid = [a for c in (1, 2)
+                 for a in [a for a in evaluation.attempts if a.configuration == c and _tracked_throughout(a)][:n]]
+        if len(valid) < 2 * n:
+            continue
+        net = _net_goals(valid)
         off_middle = abs(2 * net - (poor + expert))
-        if poor < net < expert and len(valid) == 2 * n and (best is None or off_middle < best[0]):
+        if poor < net < expert and (best is None or off_middle < best[0]):
             best = (off_middle, valid, trial)
     if best is None:
         raise _native.PolymimicError(
-            f"no imitator of {max_trials} trials scored net goals (goals less own goals) between the Poor's "
-            f"({poor}) and the Expert's ({expert})")
+            f"no imitator of {max_trials} trials, with tracking held in enough attempts, scored net goals (goals "
+            f"less own goals) between the Poor's ({poor}) and the Expert's ({expert})")
     _, valid, trial = best
     return [dataclasses.replace(a, demonstrator="average") for a in valid], trial

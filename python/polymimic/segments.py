@@ -29,7 +29,7 @@ import numpy as np
 from polymimic._atomic import atomic_path
 from polymimic._native import ModelFileError, PrimitiveRecognizer
 from polymimic.field import Demonstration
-from polymimic.learning import SMALL_FIELD_BODIES
+from polymimic.learning import segmented
 
 __all__ = ["load_segments", "save_segments", "segment_demonstrations"]
 
@@ -42,12 +42,9 @@ _ARRAYS = {"first_frame": (np.int64, 0), "last_frame": (np.int64, 0), "start": (
 
 def segment_demonstrations(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer,
                            **segmenter: Any) -> list[dict[str, Any]]:
-    """Demonstrations cut into named segments, in the form :func:`polymimic.run_trial` takes;
-    ``segmenter`` passes the segmenter's settings (``min_frames``, ``gap_margin``, …)."""
-    segmented = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
-    return [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
-             "pitch": "small" if d.demonstrator in SMALL_FIELD_BODIES else "large"}
-            for d, s in zip(demonstrations, segmented)]
+    """Demonstrations cut into named segments, in the form :func:`polymimic.run_trial` takes
+    (:func:`polymimic.learning.segmented`)."""
+    return segmented(demonstrations, recognizer, **segmenter)
 
 
 def save_segments(items: Sequence[dict[str, Any]], path: str | os.PathLike[str]) -> None:

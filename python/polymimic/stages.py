@@ -91,9 +91,13 @@ def _record_average(ctx: Context) -> int:
     recognizer = PrimitiveRecognizer.load(ctx.run.require(ctx.run.recognizer_path, "train"))
     settings = ctx.config.experiments
     try:
+        recorded = {who: load_demonstrations(ctx.run.require(ctx.run.demonstrations_path(who), "record"))
+                    for who in ("expert", "tiny", "humanoid", "poor")}
         demos, trial = average_demonstrator(recognizer, n=settings.demonstrations_per_configuration,
                                             seed=ctx.config.seeds.demonstrations,
-                                            max_trials=settings.average_max_trials, config=ctx.config.learning)
+                                            max_trials=settings.average_max_trials, config=ctx.config.learning,
+                                            recorded=recorded, field_config=ctx.config.field,
+                                            segmenter=dataclasses.asdict(ctx.config.segmenter))
     except _native.PolymimicError as error:
         raise RunError(f"no Average demonstrator: {error}; raise [experiments] average_max_trials") from error
     trial.save(ctx.run.average_trial_path)

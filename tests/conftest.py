@@ -18,3 +18,4 @@ def random_stochastic(rng, rows, cols, mask=None):
 def left_right_mask(n_states, links):
     i, j = np.indices((n_states, n_states))
     return (j >= i) & (j - i <= links)
+

@@ -4,21 +4,12 @@ import json
 import tomllib
 
 import pytest
+from tiny_runs import tiny_run_toml
 
 from polymimic import cli
 from polymimic.runconfig import RunConfig
 
-TINY = """
-[recognizer]
-train_per_primitive = 60
-test_per_primitive = 20
-codebook_size = 32
-[experiments]
-trials = 2
-demonstrations_per_configuration = 8
-attempts_per_configuration = 2
-evaluated_imitators = 1
-"""
+TINY = tiny_run_toml(trials=2, evaluated_imitators=1, attempts_per_configuration=2)
 
 
 @pytest.fixture(scope="module")

@@ -4,6 +4,7 @@ stopped, and summarise to known answers."""
 import shutil
 
 import pytest
+from tiny_runs import tiny_run_toml
 
 from polymimic import experiments, results
 from polymimic.backends import TaskRunner
@@ -12,17 +13,7 @@ from polymimic.rundir import MissingInputError, RunDir
 from polymimic.runconfig import RunConfig
 from polymimic.stages import Context, run_stage
 
-TINY = """
-[recognizer]
-train_per_primitive = 60
-test_per_primitive = 20
-codebook_size = 32
-[experiments]
-trials = 3
-demonstrations_per_configuration = 8
-attempts_per_configuration = 3
-evaluated_imitators = 2
-"""
+TINY = tiny_run_toml()
 
 
 def _context(path, runner=None, config=None):
@@ -191,3 +182,16 @@ def test_appendix_b_counts_models_not_copies():
                                 {"primitives": "L,R", "count": 2, "permanent": 0, "predicting_ball": 0}]
     assert [row["primitives"] for row in table["permanent"]] == ["F,F"]
     assert [row["primitives"] for row in table["predicting_ball"]] == ["F,F"]
+
+
+def test_an_evaluation_counts_as_done_only_for_its_control_and_size(tmp_path):
+    path = tmp_path / "evaluation_0_improved.json"
+    assert not experiments._evaluation_done(path, "improved", 50)
+    path.write_text('{"control": "improved", "attempts": 50}')
+    assert experiments._evaluation_done(path, "improved", 50)
+    assert not experiments._evaluation_done(path, "improved", 20)
+    # Written by a build that could only drive by the thesis's rule.
+    path.write_text('{"control": "improved", "control_used": "thesis", "attempts": 50}')
+    assert not experiments._evaluation_done(path, "improved", 50)
+    path.write_text("{not json")
+    assert not experiments._evaluation_done(path, "improved", 50)

@@ -4,6 +4,7 @@ import json
 import re
 
 import pytest
+from tiny_runs import tiny_run_toml
 
 from polymimic import markdown, reports, thesis
 from polymimic.backends import TaskRunner
@@ -12,18 +13,7 @@ from polymimic.rundir import RunDir
 from polymimic.runconfig import RunConfig
 from polymimic.stages import Context, reproduce
 
-TINY = """
-[recognizer]
-train_per_primitive = 60
-test_per_primitive = 20
-codebook_size = 32
-[experiments]
-trials = 3
-demonstrations_per_configuration = 8
-attempts_per_configuration = 3
-evaluated_imitators = 2
-lp_stride = 50
-"""
+TINY = tiny_run_toml(extra="lp_stride = 50\n")
 PRIMITIVES = {"forward", "backward", "left", "right", "stop"}
 MOVING = {"forward", "backward", "left", "right"}
 COUNTS = {"created", "deleted", "permanent", "candidates", "duplicates", "candidates_permanent"}

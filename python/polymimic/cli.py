@@ -63,6 +63,13 @@ def _run_options(*, tasks: bool) -> argparse.ArgumentParser:
     return options
 
 
+def _positive(text: str) -> int:
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1, got {text}")
+    return value
+
+
 def build_parser() -> argparse.ArgumentParser:
     from polymimic import __version__
     from polymimic.experiments import CONTROLS, EXPERIMENTS
@@ -100,8 +107,9 @@ def build_parser() -> argparse.ArgumentParser:
                         help="whose imitator, for `imitator` (its first evaluated one)")
     replay.add_argument("--control", choices=CONTROLS, default="improved", help="for `imitator`")
     replay.add_argument("--out", type=pathlib.Path, help="the GIF (default: plots/replay_<who>_<episode>.gif)")
-    replay.add_argument("--fps", type=int, default=10)
-    replay.add_argument("--stride", type=int, default=3, help="every stride-th tracker frame (3 at 10 fps: real time)")
+    replay.add_argument("--fps", type=_positive, default=10)
+    replay.add_argument("--stride", type=_positive, default=3,
+                        help="every stride-th tracker frame (3 at 10 fps: real time)")
     replay.set_defaults(handler=_replay)
     return parser
 

@@ -327,9 +327,6 @@ def _imitator_table(report: _Report, title: str, groups: dict[str, tuple[str, di
             rows.append((label, control, f"{num(cell['goals'])} ({num(cell['goals_sd'])})",
                          f"{num(cell['own_goals'])} ({num(cell['own_goals_sd'])})", cell["attempts"],
                          cell["imitators"], theirs["goals"], theirs["own_goals"], theirs["attempts"]))
-    if any(e["imitator"].get("control") not in (None, "improved") for _, e in groups.values()):
-        report.say("The build that made these results drove every imitator by the thesis's rule, so the "
-                   "*improved* rows repeat the thesis-control ones.")
     report.table(["experiment", "control", "goals, ours", "own goals, ours", "attempts", "imitators",
                   "goals, thesis", "own goals, thesis", "attempts, thesis"], rows)
     better = []

@@ -43,8 +43,13 @@ class LearningConfig:
     - ``lp_scope``: ``"own_demonstrator"`` (goals, ball and robot criteria shape a model's LP
       only on its own demonstrator's demonstrations, since the LP rates that demonstrator) or
       ``"every"`` (also on the others' in phase 2);
-    - ``lp_criteria``: ``"foremost"`` (the ball criterion when the ball moved, else the robot
-      criterion: the thesis ranks them) or ``"both"`` (added).
+    - ``lp_criteria``: ``"foremost"`` (the ball criterion when the ball's distance to the goal
+      changed beyond its dead band, else the robot criterion: the thesis ranks them) or
+      ``"both"`` (added);
+    - ``lp_approach_weight``: ``"per_demonstration"`` (a span's approach criteria weigh by the
+      share of its demonstration's segments it covers, so every demonstration weighs the same
+      and a demonstrator that wanders for a minute is not judged by its wandering many times
+      over its outcome) or ``"per_span"`` (a whole step each span, the thesis's letter).
 
     ``save``/``load`` use TOML.
     """
@@ -74,6 +79,7 @@ class LearningConfig:
     lp_bounds: str = "soft"
     lp_scope: str = "own_demonstrator"
     lp_criteria: str = "foremost"
+    lp_approach_weight: str = "per_demonstration"
 
     def __post_init__(self) -> None:
         _native.check_learning_config(self.to_json())

@@ -31,6 +31,18 @@ pub enum LpCriteria {
     Both,
 }
 
+/// How much a span's approach criteria (ball nearer the goal, robot nearer the ball) weigh.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LpApproachWeight {
+    /// The thesis's letter: a whole step each span.
+    PerSpan,
+    /// *Choice*: the share of its demonstration's segments the span covers, so that every
+    /// demonstration weighs the same and one that wanders for a minute does not outweigh its
+    /// own outcome many times over.
+    PerDemonstration,
+}
+
 /// Whose demonstrations shape a model's LP while it reads them (goals, ball and robot
 /// criteria, accurate ball predictions); the fate of its candidates in the imitator's model
 /// shapes it whatever it reads.
@@ -98,6 +110,8 @@ pub struct LearningConfig {
     pub lp_scope: LpScope,
     /// *Choice*: which criteria count over a span without a goal.
     pub lp_criteria: LpCriteria,
+    /// *Choice*: how much a span's approach criteria weigh.
+    pub lp_approach_weight: LpApproachWeight,
 }
 
 impl Default for LearningConfig {
@@ -128,6 +142,7 @@ impl Default for LearningConfig {
             lp_bounds: LpBounds::Soft,
             lp_scope: LpScope::OwnDemonstrator,
             lp_criteria: LpCriteria::Foremost,
+            lp_approach_weight: LpApproachWeight::PerDemonstration,
         }
     }
 }

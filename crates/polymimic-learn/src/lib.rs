@@ -21,7 +21,7 @@ mod world;
 
 pub use ball_response::BallResponse;
 pub use behaviour::Behaviour;
-pub use config::{LearningConfig, LpBounds, LpCriteria, LpScope};
+pub use config::{LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
 pub use control::{Attempt, ControlMode, ImitatorPolicy};
 pub use error::LearnError;
 pub use laboratory::{

@@ -103,8 +103,13 @@ impl ForwardModel {
     /// Changes the LP for `cause` (eq 3.13) within [0, 1] as `config.lp_bounds` says, unless
     /// it is fixed.
     pub fn shape_lp(&mut self, cause: LpCause, config: &LearningConfig) {
-        let delta = cause.amount(config);
-        if self.fixed_lp || delta == 0.0 {
+        self.shape_lp_weighted(cause, 1.0, config);
+    }
+
+    /// [`Self::shape_lp`] by `weight` times the cause's step.
+    pub fn shape_lp_weighted(&mut self, cause: LpCause, weight: f64, config: &LearningConfig) {
+        let delta = cause.amount(config) * weight;
+        if self.fixed_lp || delta == 0.0 || !delta.is_finite() {
             return;
         }
         self.metrics.lp_causes.count(cause);

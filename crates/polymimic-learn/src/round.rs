@@ -9,7 +9,7 @@ use polymimic_perceive::{Label, Primitive, Segment};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use crate::config::{LearningConfig, LpScope};
+use crate::config::{LearningConfig, LpApproachWeight, LpScope};
 use crate::model::{Event, ForwardModel};
 use crate::prediction::{MotionTable, Prediction, matches, predict};
 use crate::shaping::{LpCause, approach_causes};
@@ -138,8 +138,15 @@ impl ForwardModel {
             self.decay(config);
             if shapes_lp {
                 let last = reached + 1 == segments.len();
+                // Under `PerDemonstration`, a span's approach criteria weigh by the share of the
+                // demonstration it covers, so each demonstration weighs the same.
+                let share = (reached - c) as f64 / (segments.len() - 1) as f64;
                 for cause in span_causes(demo, &segments[c], &segments[reached], last, config).into_iter().flatten() {
-                    self.shape_lp(cause, config);
+                    let weight = match (config.lp_approach_weight, cause) {
+                        (_, LpCause::Goal | LpCause::OwnGoal) | (LpApproachWeight::PerSpan, _) => 1.0,
+                        (LpApproachWeight::PerDemonstration, _) => share,
+                    };
+                    self.shape_lp_weighted(cause, weight, config);
                 }
             }
             events.extend(self.settle(config));

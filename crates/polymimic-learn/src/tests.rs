@@ -201,3 +201,29 @@ fn the_foremost_criterion_is_the_ball_when_it_moved() {
     // Within the dead bands nothing counts: the ball 5 mm, the robot 5 mm.
     assert_eq!(crate::shaping::approach_causes(&before, &frame(5.0, 105.0), &Pitch::LARGE, &config), [None, None]);
 }
+
+#[test]
+fn per_demonstration_weighting_shares_one_step_among_a_demonstrations_spans() {
+    // Five segments, four spans (one segment each, nothing longer yet), every one bringing the
+    // robot nearer the ball: each earns a quarter of the 0.002 step under the default.
+    let demo = straight(5, "a", Ending::Other);
+    let run = |config: &LearningConfig| {
+        let mut model = ForwardModel::new("a", 0.5, false, config);
+        let mut rng = rand::SeedableRng::seed_from_u64(5);
+        model.process(&demo, &exact_motion(), config, &mut rng);
+        assert_eq!(model.metrics.lp_causes.robot_nearer_ball, 4);
+        model.lp
+    };
+    let shared = run(&LearningConfig::default());
+    let mut expected = 0.5;
+    for _ in 0..4 {
+        expected += 0.002 / 4.0 * 2.0 * (1.0 - expected);
+    }
+    assert!((shared - expected).abs() < 1e-12, "{shared} vs {expected}");
+    let per_span = LearningConfig { lp_approach_weight: LpApproachWeight::PerSpan, ..LearningConfig::default() };
+    let mut whole = 0.5;
+    for _ in 0..4 {
+        whole += 0.002 * 2.0 * (1.0 - whole);
+    }
+    assert!((run(&per_span) - whole).abs() < 1e-12);
+}

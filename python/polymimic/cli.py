@@ -63,13 +63,6 @@ def _run_options(*, tasks: bool) -> argparse.ArgumentParser:
     return options
 
 
-def _positive(text: str) -> int:
-    value = int(text)
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1, got {text}")
-    return value
-
-
 def build_parser() -> argparse.ArgumentParser:
     from polymimic import __version__
     from polymimic.experiments import CONTROLS, EXPERIMENTS

@@ -64,6 +64,13 @@ class Demonstration:
         return (f"Demonstration({self.demonstrator}, configuration={self.configuration}, "
                 f"{len(self.frames)} frames, {self.outcome}, seed={self.seed})")
 
+    @property
+    def tracked_throughout(self) -> bool:
+        """Whether the tracker saw the robot and the ball in every frame (what a recording
+        needs to count as a demonstration)."""
+        return all(bool(np.isfinite(self.frames[c]).all())
+                   for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm"))
+
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class PrimitiveSequence:

@@ -17,7 +17,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import os
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 from polymimic import _native
@@ -179,6 +179,15 @@ def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.Primi
             for d, s in zip(demonstrations, segments)]
 
 
+def _segmented_items(demonstrations: Sequence[Demonstration] | Sequence[dict],
+                     recognizer: _native.PrimitiveRecognizer) -> list[dict]:
+    """Demonstrations as :func:`segmented` gives them, segmenting recordings, passing on what is
+    segmented already."""
+    if len(demonstrations) and isinstance(demonstrations[0], dict):
+        return list(demonstrations)  # type: ignore[arg-type]
+    return segmented(demonstrations, recognizer)  # type: ignore[arg-type]
+
+
 def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict], *, recognizer: _native.PrimitiveRecognizer,
               ordering: Sequence[str], config: LearningConfig | None = None, phase_one: str = "by-model",
               seed: int = 0) -> TrialResult:
@@ -191,8 +200,7 @@ def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict], *, recog
     """
     if len(demonstrations) == 0:
         raise ValueError("no demonstrations: a trial needs at least one")
-    items = (list(demonstrations) if isinstance(demonstrations[0], dict)
-             else segmented(demonstrations, recognizer))  # type: ignore[arg-type]
+    items = _segmented_items(demonstrations, recognizer)
     config_json = (config or LearningConfig()).to_json()
     raw = _native.learning_trial(items, list(ordering), recognizer.motion_stats(), config=config_json,
                                  phase_one=phase_one, seed=seed)
@@ -221,8 +229,7 @@ class ImitatorPolicy:
                  demonstrations: Sequence[Demonstration] | Sequence[dict] | None = None) -> None:
         items = None
         if demonstrations is not None and control == "improved":
-            items = (list(demonstrations) if len(demonstrations) and isinstance(demonstrations[0], dict)
-                     else segmented(demonstrations, recognizer))  # type: ignore[arg-type]
+            items = _segmented_items(demonstrations, recognizer)
         self._native = _native.ImitatorPolicy(trial.imitator_model, recognizer.motion_stats(),
                                               config=(config or LearningConfig()).to_json(), control=control,
                                               demonstrations=items)
@@ -261,14 +268,6 @@ def evaluate(policy: ImitatorPolicy, *, attempts_per_configuration: int = 25, se
                       behaviours=[a["behaviours"] for a in raw])
 
 
-def _tracked_throughout(demo: Demonstration) -> bool:
-    import numpy as np
-
-    frames = demo.frames
-    return bool(all(np.isfinite(frames[name]).all() for name in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
-                                                                 "ball_x_mm", "ball_y_mm")))
-
-
 def _net_goals(demos: Sequence[Demonstration]) -> int:
     return sum(d.outcome == "goal" for d in demos) - sum(d.outcome == "own_goal" for d in demos)
 
@@ -280,7 +279,7 @@ def spare_attempts(n: int) -> int:
 
 def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25, seed: int = 0,
                          max_trials: int = 10, config: LearningConfig | None = None,
-                         recorded: dict[str, Sequence[Demonstration]] | None = None,
+                         recorded: Mapping[str, Sequence[Demonstration]] | None = None,
                          field_config: dict[str, Any] | str | None = None,
                          segmenter: dict[str, Any] | None = None) -> tuple[list[Demonstration], TrialResult]:
     """The thesis's Average demonstrator (§4.4.2): an imitator trained in the heterogeneous
@@ -322,7 +321,7 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
                               attempts_per_configuration=n + spare_attempts(n), seed=trial_seed,
                               field_config=field_config)
         valid = [a for c in (1, 2)
-                 for a in [a for a in evaluation.attempts if a.configuration == c and _tracked_throughout(a)][:n]]
+                 for a in [a for a in evaluation.attempts if a.configuration == c and a.tracked_throughout][:n]]
         if len(valid) < 2 * n:
             continue
         net = _net_goals(valid)

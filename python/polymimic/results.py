@@ -185,11 +185,6 @@ def _outcomes(demos: Sequence[Demonstration]) -> dict[str, int]:
             "attempts": len(demos)}
 
 
-def _tracked_throughout(demo: Demonstration) -> bool:
-    return all(bool(np.isfinite(demo.frames[c]).all()) for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
-                                                                "ball_x_mm", "ball_y_mm"))
-
-
 def gather(run: RunDir, config: RunConfig) -> dict[str, Any]:
     """Everything in the run directory, summarised as ``results.json`` holds it."""
     from polymimic.stages import ALL_DEMONSTRATORS
@@ -202,7 +197,7 @@ def gather(run: RunDir, config: RunConfig) -> dict[str, Any]:
     imitator_attempts = run.attempts_path("varying_skill", "thesis")
     if imitator_attempts.exists():  # the thesis's VaryingSkillTrained row of Table 4.5
         # As for every demonstrator, only attempts the tracker followed throughout.
-        to_segment += [a for a in load_demonstrations(imitator_attempts) if _tracked_throughout(a)]
+        to_segment += [a for a in load_demonstrations(imitator_attempts) if a.tracked_throughout]
     segments = recognition.segment_table(recognizer, to_segment, **dataclasses.asdict(config.segmenter))
     experiments, all_trials = {}, []
     for name, experiment in EXPERIMENTS.items():

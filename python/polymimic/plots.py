@@ -124,9 +124,7 @@ def plot_demonstration(demo: Demonstration, *, ax: Axes | None = None,
     ax.legend(loc="lower left", fontsize="small", framealpha=0.9)
     ax.set_title(f"{demo.demonstrator}, configuration {demo.configuration}: {demo.outcome.replace('_', ' ')}\n"
                  f"{len(frames)} frames, {t_s[-1]:.1f} s, seed {demo.seed}", fontsize="medium")
-    if path is not None:
-        with atomic_path(path) as temporary:
-            figure.savefig(temporary, dpi=120)
+    _save(figure, path, dpi=120)
     return figure
 
 
@@ -331,9 +329,7 @@ def plot_log_likelihoods(table: dict[str, dict[str, float]], *, ax: Axes | None 
     ax.axhline(0.0, color="0.3", linewidth=0.8)
     ax.legend(fontsize="small")
     ax.set_title("Each HMM on each primitive's held-out sequences (thesis Fig 4.5)", fontsize="medium")
-    if path is not None:
-        with atomic_path(path) as temporary:
-            figure.savefig(temporary, dpi=120)
+    _save(figure, path, dpi=120)
     return figure
 
 
@@ -432,7 +428,8 @@ def plot_lp_over_time(histories: list[list[float]], *, stride: int, title: str, 
     return figure
 
 
-def _save(figure: Figure, path: str | os.PathLike[str] | None) -> None:
+def _save(figure: Figure, path: str | os.PathLike[str] | None, *, dpi: int = 100) -> None:
+    """Write the figure to ``path`` atomically, if a path is given."""
     if path is not None:
         with atomic_path(path) as temporary:
-            figure.savefig(temporary, dpi=100)
+            figure.savefig(temporary, dpi=dpi)

@@ -28,6 +28,11 @@ pub fn check_learning_config(config: &str) -> PyResult<String> {
     Ok(LearningConfig::from_json(config).map_err(value_error)?.to_json())
 }
 
+/// The config a call passes as JSON, or the defaults.
+fn learning_config(json: Option<&str>) -> PyResult<LearningConfig> {
+    json.map_or_else(|| Ok(LearningConfig::default()), |text| LearningConfig::from_json(text).map_err(value_error))
+}
+
 fn motion_table(stats: &Bound<'_, PyDict>) -> PyResult<MotionTable> {
     let mut rows = Vec::new();
     for primitive in Primitive::ALL {
@@ -160,10 +165,7 @@ pub fn learning_trial<'py>(
     seed: i64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let demos = segmented_demonstrations(demonstrations)?;
-    let config = match config {
-        Some(text) => LearningConfig::from_json(text).map_err(value_error)?,
-        None => LearningConfig::default(),
-    };
+    let config = learning_config(config)?;
     let phase_one = match phase_one {
         "by-model" => PhaseOne::ByModel,
         "interleaved" => PhaseOne::Interleaved,
@@ -223,10 +225,7 @@ impl PyImitatorPolicy {
         };
         let model = ForwardModel::from_json(model)
             .map_err(|e| crate::errors::ModelFileError::new_err(format!("imitator model: {e}")))?;
-        let config = match config {
-            Some(text) => LearningConfig::from_json(text).map_err(value_error)?,
-            None => LearningConfig::default(),
-        };
+        let config = learning_config(config)?;
         let world = match (mode, demonstrations) {
             (ControlMode::Thesis, _) => None,
             (ControlMode::Improved, None) => {

@@ -2,6 +2,7 @@
 //! frequency counting with decay and permanency, one forward model per demonstrator weighted
 //! by a learning preference, candidates nominated to the imitator's model, two-phase training.
 
+mod approach;
 mod ball_response;
 mod behaviour;
 mod config;
@@ -11,6 +12,7 @@ mod laboratory;
 mod model;
 mod nearest;
 mod prediction;
+mod push_region;
 mod round;
 mod running;
 mod shaping;
@@ -19,6 +21,7 @@ mod state_value;
 mod trial;
 mod world;
 
+pub use approach::ApproachPlan;
 pub use ball_response::BallResponse;
 pub use behaviour::Behaviour;
 pub use config::{LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
@@ -29,6 +32,7 @@ pub use laboratory::{
 };
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};
+pub use push_region::{BallGoalPose, Interval, PushRegion};
 pub use round::{Ending, SegmentedDemonstration};
 pub use running::Running;
 pub use shaping::{LpCause, LpCauseCounts};

@@ -44,6 +44,24 @@ impl MotionTable {
         self.rows.iter().find(|(p, _)| *p == primitive).map_or([0.0; 4], |(_, row)| *row)
     }
 
+    /// The pose after one primitive from `pose` with its mean distance and rotation.
+    #[must_use]
+    pub fn mean_step(&self, pose: Pose, primitive: Primitive) -> Pose {
+        self.spread_steps(pose, primitive)[0]
+    }
+
+    /// The poses after one primitive from `pose` with its mean distance and rotation, then with
+    /// the distance one sd longer and shorter, then with the rotation one sd more and less.
+    #[must_use]
+    pub fn spread_steps(&self, pose: Pose, primitive: Primitive) -> [Pose; 5] {
+        let [d, d_sd, r, r_sd] = self.row(primitive);
+        [(d, r), (d + d_sd, r), (d - d_sd, r), (d, r + r_sd), (d, r - r_sd)].map(|(distance, rotation)| Pose {
+            x_mm: pose.x_mm + distance * pose.theta_rad.cos(),
+            y_mm: pose.y_mm + distance * pose.theta_rad.sin(),
+            theta_rad: wrap_angle_rad(pose.theta_rad + rotation),
+        })
+    }
+
     /// The pose after one primitive from `pose`: move the drawn distance along the heading,
     /// then turn by the drawn rotation.
     pub fn step(&self, pose: Pose, primitive: Primitive, noise_divisor: f64, rng: &mut ChaCha8Rng) -> Pose {

@@ -221,7 +221,10 @@ class ImitatorPolicy:
     segment of them (§5.4: far more samples); a predicted state is rated by a goal, then by
     whether the demonstrations passing near it ended, on balance, in own goals, then by how
     many millimetres the ball comes nearer the goal, then the robot nearer the ball; and only
-    the first primitive runs before choosing again (§4.4.1).
+    the first primitive runs before choosing again (§4.4.1). Behaviours push only from where
+    the scoring demonstrations pushed the ball toward the goal (a region relative to the ball
+    and the goal, learned from them) or when one predicts a goal; anywhere else the robot takes
+    the shortest route there in its own primitives, round the ball rather than through it.
     """
 
     def __init__(self, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,

@@ -382,6 +382,12 @@ def _varying_skill(report: _Report) -> None:
 
     _imitator_table(report, "Table 4.11: goals of the trained imitators, varying skill",
                     {"varying skill": ("varying_skill", e)})
+    poor, imitator = report.r["demonstrators"]["poor"], e["imitator"]
+    clearly = None
+    if imitator["goals"] is not None and poor["attempts"]:
+        margin = 2 * (imitator["goals_sd"] or 0.0)
+        clearly = (imitator["goals"] - margin) / imitator["attempts"] > poor["goals"] / poor["attempts"]
+    report.check("the improved imitator scores clearly more than the Poor demonstrator (by over two sd)", clearly)
 
 
 def _appendix_b(report: _Report) -> None:

@@ -6,7 +6,8 @@
 //!
 //! Prints, per experiment, the mean (sd) final LP, match rate and candidates made permanent of
 //! each model, what changed the LPs, the trials whose final LPs follow the true skill order,
-//! and the goals and own goals of the trained imitators under both control modes.
+//! and the goals and own goals of the trained imitators under the thesis's control rule and
+//! with each part of the improved control added in turn.
 
 use std::collections::BTreeMap;
 
@@ -18,6 +19,9 @@ use polymimic_learn::{
 
 fn report(name: &str, lab: &Laboratory, trials: &[TrialResult], world: &WorldModel, attempts: usize) {
     println!("\n== {name} ({} trials)", trials.len());
+    if let Some(plan) = &world.approach {
+        println!("push region {:?}", plan.push_region);
+    }
     for s in summarise(trials) {
         println!(
             "{:9} final LP {:.3} ({:.3})  match {:.3} ({:.3})  candidates made permanent {:.2} ({:.2})",
@@ -42,10 +46,19 @@ fn report(name: &str, lab: &Laboratory, trials: &[TrialResult], world: &WorldMod
         let cells: Vec<String> = names.iter().zip(means).map(|(name, mean)| format!("{name} {mean:.1}")).collect();
         println!("  {:9} {}", model.name, cells.join(", "));
     }
-    for mode in [ControlMode::Thesis, ControlMode::Improved] {
-        if attempts == 0 {
-            break;
-        }
+    if attempts == 0 {
+        return;
+    }
+    // What each part of the improved control buys, added one at a time.
+    let unaided = WorldModel::default();
+    let without_route = WorldModel { approach: None, ..world.clone() };
+    let steps = [
+        ("thesis rule", ControlMode::Thesis, &unaided),
+        ("+ re-choose after every primitive", ControlMode::Improved, &unaided),
+        ("+ learned ball response and state values", ControlMode::Improved, &without_route),
+        ("+ route to the learned push region (improved)", ControlMode::Improved, world),
+    ];
+    for (label, mode, world) in steps {
         let (mut goals, mut own) = (Running::default(), Running::default());
         let mut outcomes = BTreeMap::new();
         for (i, t) in trials.iter().enumerate() {
@@ -57,7 +70,7 @@ fn report(name: &str, lab: &Laboratory, trials: &[TrialResult], world: &WorldMod
             }
         }
         println!(
-            "imitators ({mode:?} control): goals {:.1} ({:.1}), own goals {:.1} ({:.1}) in {} attempts",
+            "imitators, {label}: goals {:.1} ({:.1}), own goals {:.1} ({:.1}) in {} attempts",
             goals.mean,
             goals.sd(),
             own.mean,
@@ -91,7 +104,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     };
 
     let heterogeneous = of(&["expert", "tiny", "humanoid"]);
-    let world = WorldModel::learn(&heterogeneous, &Pitch::LARGE, &lab.config);
+    let world = WorldModel::learn(&heterogeneous, &Pitch::LARGE, &lab.motion, &lab.config);
     let rcb = lab.trials(&heterogeneous, &["expert", "tiny", "humanoid"], PhaseOne::ByModel, trials)?;
     report("heterogeneous RCB", &lab, &rcb, &world, attempts);
     let bcr = lab.trials(&heterogeneous, &["humanoid", "tiny", "expert"], PhaseOne::ByModel, trials)?;
@@ -100,7 +113,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let net_goals = (net_goals_of(&recorded, "poor"), net_goals_of(&recorded, "expert"));
     let mut skill = of(&["poor", "expert"]);
     skill.extend(lab.average_demonstrator(&rcb[..rcb.len().min(10)], 25, net_goals)?);
-    let world = WorldModel::learn(&skill, &Pitch::LARGE, &lab.config);
+    let world = WorldModel::learn(&skill, &Pitch::LARGE, &lab.motion, &lab.config);
     let varying = lab.trials(&skill, &["poor", "average", "expert"], PhaseOne::Interleaved, trials)?;
     report("varying skill", &lab, &varying, &world, attempts);
     let hits = lp_order_hits(&varying, &["poor", "average", "expert"]);

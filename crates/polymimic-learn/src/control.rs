@@ -53,6 +53,10 @@ pub enum ControlMode {
     /// then by how much nearer the goal it puts the ball, then the robot to the ball; only the
     /// first primitive runs before choosing again, so a behaviour that comes to rate better
     /// takes over at once (§4.4.1). Preconditions are not consulted: every behaviour competes.
+    /// Behaviours push only from where the demonstrators pushed toward the goal (relative to
+    /// the ball and the goal, [`PushRegion`](crate::PushRegion)), or when one predicts a goal;
+    /// anywhere else the robot takes the shortest route there in its own primitives
+    /// ([`ApproachPlan`](crate::ApproachPlan)), going round the ball rather than through it.
     Improved,
 }
 
@@ -116,18 +120,21 @@ impl ImitatorPolicy<'_> {
 }
 
 impl ImitatorPolicy<'_> {
-    /// The improved mode's choice from `state`: the first primitive of the behaviour whose
-    /// predicted outcome rates best, or `None` if every behaviour would leave the field at once.
+    /// The improved mode's choice from `state`. Where the demonstrators pushed from (or when a
+    /// behaviour predicts a goal, or no route is known): the first primitive of the behaviour
+    /// whose predicted outcome rates best. Elsewhere: the next primitive of the route there.
+    /// `None` if every behaviour would leave the field at once.
     fn choose_primitive(&self, state: &TrackedFrame) -> Option<Primitive> {
         let behaviours = &self.model.behaviours;
-        (0..behaviours.len())
+        let (rating, best) = (0..behaviours.len())
             .filter_map(|i| self.outcome(i, state).map(|rating| (rating, i)))
             .max_by(|(a, i), (b, j)| {
                 a.total_cmp(b)
                     .then(behaviours[*j].primitives.len().cmp(&behaviours[*i].primitives.len()))
                     .then(behaviours[*j].age.cmp(&behaviours[*i].age))
-            })
-            .map(|(_, i)| behaviours[i].primitives[0])
+            })?;
+        let approach = self.world.and_then(|w| w.approach.as_ref()).filter(|_| rating.goal <= 0.0);
+        approach.and_then(|plan| plan.next(state, self.motion, &self.pitch)).or(Some(behaviours[best].primitives[0]))
     }
 
     /// Chains behaviour `index` from `state` with the mean motion of each primitive and the

@@ -1,29 +1,46 @@
 //! What the imitator learns about the field itself from watching: how the ball responds to
-//! each primitive and how good each state is. Both depend only on the demonstrations watched,
-//! not on a trial's random order, so one serves every trial of an experiment.
+//! each primitive, how good each state is, and where pushes toward the goal begin. All depend
+//! only on the demonstrations watched, not on a trial's random order, so one serves every
+//! trial of an experiment.
 
-use serde::{Deserialize, Serialize};
-
+use crate::approach::ApproachPlan;
 use crate::ball_response::BallResponse;
 use crate::config::LearningConfig;
+use crate::prediction::MotionTable;
+use crate::push_region::PushRegion;
 use crate::round::SegmentedDemonstration;
 use crate::state::Pitch;
 use crate::state_value::StateValue;
 
+/// The push region is never narrower than this either side of its middle: one cell of the
+/// approach table (mm) and one heading bin (rad).
+const PUSH_REGION_MIN_HALF_WIDTH: (f64, f64) = (20.0, 10.0 * std::f64::consts::PI / 180.0);
+
 /// The improved control mode's knowledge of the field.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct WorldModel {
     pub ball_response: BallResponse,
     pub state_value: StateValue,
+    /// Routes to where the demonstrators' goalward pushes began (`None` if no demonstration
+    /// on the pitch pushed the ball toward the goal and scored).
+    pub approach: Option<ApproachPlan>,
 }
 
 impl WorldModel {
-    /// Learns from the demonstrations played on `pitch` (the imitator's own field).
+    /// Learns from the demonstrations played on `pitch` (the imitator's own field), moving
+    /// with `motion` (the imitator's primitives).
     #[must_use]
-    pub fn learn(demonstrations: &[SegmentedDemonstration], pitch: &Pitch, config: &LearningConfig) -> Self {
+    pub fn learn(
+        demonstrations: &[SegmentedDemonstration],
+        pitch: &Pitch,
+        motion: &MotionTable,
+        config: &LearningConfig,
+    ) -> Self {
+        let push_region = PushRegion::learn(demonstrations, pitch, config.ball_moved_mm, PUSH_REGION_MIN_HALF_WIDTH);
         Self {
             ball_response: BallResponse::learn(demonstrations, pitch, config.ball_moved_mm),
             state_value: StateValue::learn(demonstrations, pitch),
+            approach: push_region.map(|p| ApproachPlan::new(p, motion)),
         }
     }
 }

@@ -2,10 +2,10 @@
 //! demonstrations recorded and segmented here. The full runs (100 trials) are the
 //! `experiment` example and `polymimic reproduce`.
 
-use polymimic_field::Demonstrator;
+use polymimic_field::{Configuration, Demonstrator, Outcome};
 use polymimic_learn::{
-    ControlMode, Laboratory, LearningConfig, PhaseOne, Pitch, Running, SegmentedDemonstration, TrialResult, WorldModel,
-    lp_order_hits, net_goals_of, summarise,
+    ControlMode, Ending, Laboratory, LearningConfig, PhaseOne, Pitch, Running, SegmentedDemonstration, TrialResult,
+    WorldModel, lp_order_hits, net_goals_of, summarise,
 };
 
 const TRIALS: u64 = 20;
@@ -52,8 +52,9 @@ fn the_experiments_show_the_thesis_shape_and_improved_control_beats_the_thesis_r
     assert!(candidates("expert") > candidates("average").max(candidates("poor")), "{summary:?}");
 
     // Control: the improved mode scores at least 22 goals with at most 5 own goals in 50
-    // attempts; the thesis's rule concedes more.
-    let world = WorldModel::learn(&skill, &Pitch::LARGE, &lab.config);
+    // attempts, clearly more than the Poor demonstrator (who scores only from configuration
+    // 1), and from both configurations; the thesis's rule concedes more.
+    let world = WorldModel::learn(&skill, &Pitch::LARGE, &lab.motion, &lab.config);
     let scores = |mode: ControlMode, trials: &[TrialResult]| -> (Running, Running) {
         let (mut goals, mut own) = (Running::default(), Running::default());
         for (i, trial) in trials.iter().enumerate() {
@@ -65,6 +66,16 @@ fn the_experiments_show_the_thesis_shape_and_improved_control_beats_the_thesis_r
     };
     let (goals, own) = scores(ControlMode::Improved, &varying[..5]);
     assert!(goals.mean >= 22.0 && own.mean <= 5.0, "improved: {goals:?} goals, {own:?} own goals");
+    let poor_goals = recorded.iter().filter(|d| d.demonstrator == "poor" && d.ending == Ending::Goal).count();
+    assert!(goals.mean >= poor_goals as f64 + 10.0, "improved {goals:?} vs the Poor's {poor_goals} goals");
+    let from_configuration_two = lab
+        .score(&varying[0], &world, ControlMode::Improved, 25, 1000)
+        .expect("the field runs")
+        .attempts
+        .iter()
+        .filter(|a| a.configuration == Configuration::Two && a.outcome == Outcome::Goal)
+        .count();
+    assert!(from_configuration_two >= 8, "{from_configuration_two} goals of 25 from configuration 2");
     let (_, thesis_own) = scores(ControlMode::Thesis, &varying[..5]);
     assert!(thesis_own.mean > own.mean + 3.0, "thesis rule {thesis_own:?} vs improved {own:?} own goals");
 }

@@ -203,8 +203,9 @@ pub struct PyImitatorPolicy {
 impl PyImitatorPolicy {
     /// A policy from a saved imitator model (`TrialResult.imitator_model`), the recogniser's
     /// Table 3.1 and the learning config (JSON) its constants come from; `control` is
-    /// `"thesis"` (the thesis's rule) or `"improved"`, which learns how the ball responds and
-    /// how good each state is from `demonstrations` (segmented, as for `learning_trial`).
+    /// `"thesis"` (the thesis's rule) or `"improved"`, which learns how the ball responds, how
+    /// good each state is and where pushes toward the goal are made from `demonstrations`
+    /// (segmented, as for `learning_trial`).
     #[new]
     #[pyo3(signature = (model, motion_stats, *, config=None, control="thesis", demonstrations=None))]
     fn new(
@@ -226,6 +227,7 @@ impl PyImitatorPolicy {
         let model = ForwardModel::from_json(model)
             .map_err(|e| crate::errors::ModelFileError::new_err(format!("imitator model: {e}")))?;
         let config = learning_config(config)?;
+        let motion = motion_table(motion_stats)?;
         let world = match (mode, demonstrations) {
             (ControlMode::Thesis, _) => None,
             (ControlMode::Improved, None) => {
@@ -240,10 +242,10 @@ impl PyImitatorPolicy {
                         "demonstrations: none was played on the imitator's (large) field, so there is nothing to learn the ball's response from",
                     ));
                 }
-                Some(WorldModel::learn(&demos, &Pitch::LARGE, &config))
+                Some(WorldModel::learn(&demos, &Pitch::LARGE, &motion, &config))
             }
         };
-        Ok(Self { model, motion: motion_table(motion_stats)?, config, mode, world })
+        Ok(Self { model, motion, config, mode, world })
     }
 
     /// Attempts from each configuration; one dict per attempt with `frames`, `outcome`,

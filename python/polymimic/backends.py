@@ -111,7 +111,8 @@ class TaskRunner:
             else:
                 ray.init(address=self.address, log_to_driver=False, logging_level=logging.WARNING)
             self._started_ray = True
-        remote = ray.remote(fn)
+        # One task per CPU, each on one Rust thread: Ray already spreads tasks over the cores.
+        remote = ray.remote(num_cpus=1, runtime_env={"env_vars": {"RAYON_NUM_THREADS": "1"}})(fn)
         shared_ref = ray.put(shared)
         pending = {remote.remote(shared_ref, arg): arg for arg in args}
         try:

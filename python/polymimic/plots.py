@@ -90,14 +90,10 @@ def plot_demonstration(demo: Demonstration, *, ax: Axes | None = None,
     True
     """
     from matplotlib.collections import LineCollection
-    from matplotlib.figure import Figure
 
     scene = _scene(demo)
     frames = demo.frames
-    if ax is None:
-        figure = Figure(figsize=(7.5, 5.6), layout="constrained")
-        ax = figure.add_subplot()
-    figure = cast("Figure", ax.figure)
+    figure, ax = _figure_and_axes(ax, (7.5, 5.6))
     _draw_field(ax, scene)
 
     t_s, x, y, theta = frames["t_s"], frames["robot_x_mm"], frames["robot_y_mm"], frames["robot_theta_rad"]
@@ -311,12 +307,7 @@ def plot_log_likelihoods(table: dict[str, dict[str, float]], *, ax: Axes | None 
     >>> len(figure.axes[0].patches)
     4
     """
-    from matplotlib.figure import Figure
-
-    if ax is None:
-        figure = Figure(figsize=(7.0, 4.2), layout="constrained")
-        ax = figure.add_subplot()
-    figure = cast("Figure", ax.figure)
+    figure, ax = _figure_and_axes(ax, (7.0, 4.2))
     models = list(table)
     primitives = list(next(iter(table.values()), {}))
     width = 0.8 / max(len(models), 1)
@@ -357,12 +348,7 @@ def plot_metric_bars(table: dict[str, dict[str, dict[str, float | None]]], *, yl
     >>> len(figure.axes[0].patches)
     4
     """
-    from matplotlib.figure import Figure
-
-    if ax is None:
-        figure = Figure(figsize=(7.0, 4.2), layout="constrained")
-        ax = figure.add_subplot()
-    figure = cast("Figure", ax.figure)
+    figure, ax = _figure_and_axes(ax, (7.0, 4.2))
     groups = list(table)
     models: list[str] = []
     for group in groups:
@@ -410,12 +396,7 @@ def plot_lp_over_time(histories: list[list[float]], *, stride: int, title: str, 
     >>> len(figure.axes[0].lines)   # two trials, and the starting LP
     3
     """
-    from matplotlib.figure import Figure
-
-    if ax is None:
-        figure = Figure(figsize=(7.0, 3.6), layout="constrained")
-        ax = figure.add_subplot()
-    figure = cast("Figure", ax.figure)
+    figure, ax = _figure_and_axes(ax, (7.0, 3.6))
     alpha = max(0.08, min(0.8, 8.0 / max(len(histories), 1)))
     for history in histories:
         ax.plot(np.arange(len(history)) * stride, history, color="tab:blue", linewidth=0.8, alpha=alpha)
@@ -426,6 +407,15 @@ def plot_lp_over_time(histories: list[list[float]], *, stride: int, title: str, 
     ax.set_title(f"{title} ({len(histories)} trials)", fontsize="medium")
     _save(figure, path)
     return figure
+
+
+def _figure_and_axes(ax: Axes | None, size_in: tuple[float, float]) -> tuple[Figure, Axes]:
+    """The figure of ``ax``, or a new figure of ``size_in`` (inches) with one axes."""
+    from matplotlib.figure import Figure
+
+    if ax is None:
+        ax = Figure(figsize=size_in, layout="constrained").add_subplot()
+    return cast("Figure", ax.figure), ax
 
 
 def _save(figure: Figure, path: str | os.PathLike[str] | None, *, dpi: int = 100) -> None:

@@ -6,7 +6,7 @@ use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUnty
 use pyo3::PyTypeInfo;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyList;
+use pyo3::types::{PyList, PyTuple};
 
 use crate::errors::ModelFileError;
 
@@ -172,4 +172,17 @@ pub fn read_text(path: &Path) -> PyResult<String> {
     let bytes = std::fs::read(path)?;
     String::from_utf8(bytes)
         .map_err(|_| ModelFileError::new_err(format!("{} is not a polymimic file (not UTF-8 text)", path.display())))
+}
+
+/// Reads and parses a saved model; a file that does not parse is a `ModelFileError` naming it.
+pub fn read_model<T, E: std::fmt::Display>(path: &Path, parse: impl FnOnce(&str) -> Result<T, E>) -> PyResult<T> {
+    parse(&read_text(path)?).map_err(|e| ModelFileError::new_err(format!("{}: {e}", path.display())))
+}
+
+/// What `__reduce__` returns for a class that rebuilds itself from its JSON with `_from_json`.
+pub fn reduce_to_json<'py, T: pyo3::PyClass>(
+    slf: &Bound<'py, T>,
+    json: String,
+) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+    Ok((slf.as_any().get_type().getattr("_from_json")?, PyTuple::new(slf.py(), [json])?))
 }

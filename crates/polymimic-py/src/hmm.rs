@@ -9,8 +9,10 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};
 
-use crate::convert::{floats, matrix, non_negative, read_text, symbol_sequences, symbols, write_atomically};
-use crate::errors::{ModelFileError, hmm_error};
+use crate::convert::{
+    floats, matrix, non_negative, read_model, reduce_to_json, symbol_sequences, symbols, write_atomically,
+};
+use crate::errors::hmm_error;
 
 /// Sampled symbols and hidden states, each `(n, length)`.
 type SymbolsAndStates<'py> = (Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>);
@@ -296,10 +298,7 @@ impl PyDiscreteHmm {
     #[classmethod]
     #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the path by value
     fn load(_cls: &Bound<'_, PyType>, path: PathBuf) -> PyResult<Self> {
-        let text = read_text(&path)?;
-        let model =
-            DiscreteHmm::from_json(&text).map_err(|e| ModelFileError::new_err(format!("{}: {}", path.display(), e)))?;
-        Ok(Self::wrap(model))
+        Ok(Self::wrap(read_model(&path, DiscreteHmm::from_json)?))
     }
 
     #[staticmethod]
@@ -308,9 +307,7 @@ impl PyDiscreteHmm {
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
-        let text = slf.get().with_model(DiscreteHmm::to_json).map_err(hmm_error)?;
-        let constructor = slf.get_type().getattr("_from_json")?;
-        Ok((constructor, PyTuple::new(slf.py(), [text])?))
+        reduce_to_json(slf, slf.get().with_model(DiscreteHmm::to_json).map_err(hmm_error)?)
     }
 
     fn __repr__(&self) -> String {

@@ -11,8 +11,8 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple, PyType};
 
-use crate::convert::{frame_columns, matrix, non_negative, read_text, write_atomically};
-use crate::errors::{ModelFileError, perceive_error};
+use crate::convert::{frame_columns, matrix, non_negative, read_model, reduce_to_json, write_atomically};
+use crate::errors::perceive_error;
 use crate::hmm::PyDiscreteHmm;
 use crate::vq::PyCodebook;
 
@@ -321,10 +321,7 @@ impl PyPrimitiveRecognizer {
     #[classmethod]
     #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the path by value
     fn load(_cls: &Bound<'_, PyType>, path: PathBuf) -> PyResult<Self> {
-        let text = read_text(&path)?;
-        let recognizer =
-            Recognizer::from_json(&text).map_err(|e| ModelFileError::new_err(format!("{}: {e}", path.display())))?;
-        Ok(Self { recognizer })
+        Ok(Self { recognizer: read_model(&path, Recognizer::from_json)? })
     }
 
     #[staticmethod]
@@ -333,8 +330,7 @@ impl PyPrimitiveRecognizer {
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
-        let text = slf.get().recognizer.to_json().map_err(perceive_error)?;
-        Ok((slf.get_type().getattr("_from_json")?, PyTuple::new(slf.py(), [text])?))
+        reduce_to_json(slf, slf.get().recognizer.to_json().map_err(perceive_error)?)
     }
 
     fn __repr__(&self) -> String {

@@ -7,8 +7,8 @@ use polymimic_vq::{Codebook, LbgParams};
 use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};
 
-use crate::convert::{floats, matrix, non_negative, read_text, write_atomically};
-use crate::errors::{ModelFileError, vq_error, vq_params_error};
+use crate::convert::{floats, matrix, non_negative, read_model, reduce_to_json, write_atomically};
+use crate::errors::{vq_error, vq_params_error};
 
 /// A vector-quantisation codebook: codewords and nearest-codeword encoding.
 #[pyclass(name = "Codebook", module = "polymimic", frozen)]
@@ -128,10 +128,7 @@ impl PyCodebook {
     #[classmethod]
     #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the path by value
     fn load(_cls: &Bound<'_, PyType>, path: PathBuf) -> PyResult<Self> {
-        let text = read_text(&path)?;
-        let codebook =
-            Codebook::from_json(&text).map_err(|e| ModelFileError::new_err(format!("{}: {}", path.display(), e)))?;
-        Ok(Self { codebook })
+        Ok(Self { codebook: read_model(&path, Codebook::from_json)? })
     }
 
     #[staticmethod]
@@ -140,9 +137,7 @@ impl PyCodebook {
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
-        let text = slf.get().codebook.to_json().map_err(vq_error)?;
-        let constructor = slf.get_type().getattr("_from_json")?;
-        Ok((constructor, PyTuple::new(slf.py(), [text])?))
+        reduce_to_json(slf, slf.get().codebook.to_json().map_err(vq_error)?)
     }
 
     fn __repr__(&self) -> String {

@@ -17,7 +17,7 @@ from __future__ import annotations
 import collections
 import time
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, Literal, TypedDict
 
 import numpy as np
 
@@ -38,12 +38,15 @@ THESIS_SEGMENTS = {
 }
 """Table 4.5 of the thesis: share of classifiable segments whose label matched the commands."""
 
+Representation = Literal["thesis", "egocentric"]
+Emissions = Literal["discrete", "gaussian"]
+
 CLASSIFIABLE_SHARE = 0.75
 """A segment is classifiable when this share of its frames carry one equivalent primitive."""
 
 
 def train_recognizer(sequences: Sequence[PrimitiveSequence], *, n_states: int = 1, codebook_size: int = 512,
-                     representation: str = "thesis", emissions: str = "discrete",
+                     representation: Representation = "thesis", emissions: Emissions = "discrete",
                      seed: int = 0) -> PrimitiveRecognizer:
     """A :class:`~polymimic.PrimitiveRecognizer` trained on self-observation sequences."""
     return PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences],
@@ -151,7 +154,15 @@ def segment_table(recognizer: PrimitiveRecognizer, demonstrations: Sequence[Demo
     }
 
 
-VARIANTS = (
+class Variant(TypedDict):
+    """One way of recognising primitives: how frames are represented, how symbols are emitted."""
+
+    name: str
+    representation: Representation
+    emissions: Emissions
+
+
+VARIANTS: tuple[Variant, ...] = (
     {"name": "thesis (positional/rotational, discrete)", "representation": "thesis", "emissions": "discrete"},
     {"name": "egocentric, discrete", "representation": "egocentric", "emissions": "discrete"},
     {"name": "thesis, Gaussian", "representation": "thesis", "emissions": "gaussian"},

@@ -27,6 +27,9 @@ const CONTACT_COST: u32 = 50;
 const MOVES: [Primitive; 4] = [Primitive::Forward, Primitive::Backward, Primitive::Left, Primitive::Right];
 
 const CELLS: usize = (2 * HALF_CELLS + 1) as usize;
+/// The push region must hold at least one cell and one heading bin either side of its middle
+/// (mm, rad), or the table could find no cell inside it.
+pub(crate) const MIN_REGION_HALF_WIDTH: (f64, f64) = (CELL_MM, TAU / HEADING_BINS as f64);
 const UNREACHABLE: u32 = u32::MAX;
 /// What a pose with no route counts as, in primitives still to go.
 const LOST_STEPS: f64 = 4.0 * CONTACT_COST as f64;
@@ -58,15 +61,14 @@ fn centre(index: usize) -> BallGoalPose {
     }
 }
 
-/// A primitive's outcomes in the ball–goal frame (the ball does not move): its mean motion,
-/// then one sd either side in distance and in rotation.
-fn outcomes(pose: &BallGoalPose, primitive: Primitive, motion: &MotionTable) -> [BallGoalPose; 5] {
-    let robot = Pose { x_mm: pose.along_mm, y_mm: pose.across_mm, theta_rad: pose.heading_rad };
-    motion.spread_steps(robot, primitive).map(|after| BallGoalPose {
-        along_mm: after.x_mm,
-        across_mm: after.y_mm,
-        heading_rad: after.theta_rad,
-    })
+/// The ball–goal frame as a field of its own (the ball does not move), so the primitives'
+/// motion applies to it unchanged.
+fn as_pose(pose: &BallGoalPose) -> Pose {
+    Pose { x_mm: pose.along_mm, y_mm: pose.across_mm, theta_rad: pose.heading_rad }
+}
+
+fn from_pose(pose: Pose) -> BallGoalPose {
+    BallGoalPose { along_mm: pose.x_mm, across_mm: pose.y_mm, heading_rad: pose.theta_rad }
 }
 
 /// What a move from `from` to `to` costs: one primitive, and [`CONTACT_COST`] more if on the
@@ -93,7 +95,7 @@ impl ApproachPlan {
         for from in 0..states {
             let pose = centre(from);
             for primitive in MOVES {
-                let [after, ..] = outcomes(&pose, primitive, motion);
+                let after = from_pose(motion.mean_step(as_pose(&pose), primitive));
                 match index(&after) {
                     Some(to) if to != from => into[to].push((from as u32, move_cost(&pose, &after, &push_region))),
                     _ => {}
@@ -149,7 +151,9 @@ impl ApproachPlan {
                 pitch.contains(robot.x_mm, robot.y_mm)
             })
             .map(|primitive| {
-                let cost: f64 = outcomes(&cell, primitive, motion)
+                let cost: f64 = motion
+                    .spread_steps(as_pose(&cell), primitive)
+                    .map(from_pose)
                     .iter()
                     .map(|after| match self.steps_from(after) {
                         Some(steps) => f64::from(steps + move_cost(&cell, after, &self.push_region)),
@@ -165,29 +169,12 @@ impl ApproachPlan {
 
 #[cfg(test)]
 mod tests {
-    use polymimic_perceive::MotionStats;
-
     use super::*;
     use crate::push_region::Interval;
 
     /// Exact primitives: 40 mm forward or back, 30° turns on the spot.
     fn exact_motion() -> MotionTable {
-        let stats = |primitive, distance_mean_mm, rotation_mean_deg| MotionStats {
-            primitive,
-            count: 1,
-            distance_mean_mm,
-            distance_sd_mm: 0.0,
-            rotation_mean_deg,
-            rotation_sd_deg: 0.0,
-        };
-        MotionTable::new(&[
-            stats(Primitive::Forward, 40.0, 0.0),
-            stats(Primitive::Backward, -40.0, 0.0),
-            stats(Primitive::Left, 0.0, 30.0),
-            stats(Primitive::Right, 0.0, -30.0),
-            stats(Primitive::Stop, 0.0, 0.0),
-        ])
-        .expect("a motion table")
+        MotionTable::exact(40.0, 30.0)
     }
 
     /// Pushes from 130 to 170 mm behind the ball, within 20 mm of the line, facing the goal.

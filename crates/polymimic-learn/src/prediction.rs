@@ -47,7 +47,8 @@ impl MotionTable {
     /// The pose after one primitive from `pose` with its mean distance and rotation.
     #[must_use]
     pub fn mean_step(&self, pose: Pose, primitive: Primitive) -> Pose {
-        self.spread_steps(pose, primitive)[0]
+        let [distance, _, rotation, _] = self.row(primitive);
+        advance(pose, distance, rotation)
     }
 
     /// The poses after one primitive from `pose` with its mean distance and rotation, then with
@@ -55,11 +56,8 @@ impl MotionTable {
     #[must_use]
     pub fn spread_steps(&self, pose: Pose, primitive: Primitive) -> [Pose; 5] {
         let [d, d_sd, r, r_sd] = self.row(primitive);
-        [(d, r), (d + d_sd, r), (d - d_sd, r), (d, r + r_sd), (d, r - r_sd)].map(|(distance, rotation)| Pose {
-            x_mm: pose.x_mm + distance * pose.theta_rad.cos(),
-            y_mm: pose.y_mm + distance * pose.theta_rad.sin(),
-            theta_rad: wrap_angle_rad(pose.theta_rad + rotation),
-        })
+        [(d, r), (d + d_sd, r), (d - d_sd, r), (d, r + r_sd), (d, r - r_sd)]
+            .map(|(distance, rotation)| advance(pose, distance, rotation))
     }
 
     /// The pose after one primitive from `pose`: move the drawn distance along the heading,
@@ -68,11 +66,38 @@ impl MotionTable {
         let [d_mean, d_sd, r_mean, r_sd] = self.row(primitive);
         let distance = d_mean + d_sd / noise_divisor * normal(rng);
         let rotation = r_mean + r_sd / noise_divisor * normal(rng);
-        Pose {
-            x_mm: pose.x_mm + distance * pose.theta_rad.cos(),
-            y_mm: pose.y_mm + distance * pose.theta_rad.sin(),
-            theta_rad: wrap_angle_rad(pose.theta_rad + rotation),
-        }
+        advance(pose, distance, rotation)
+    }
+
+    /// A table without spread: forward and backward move `step_mm`, left and right turn
+    /// `turn_deg` on the spot, so predictions are exact.
+    #[cfg(test)]
+    pub(crate) fn exact(step_mm: f64, turn_deg: f64) -> Self {
+        let stats = |primitive, distance_mean_mm, rotation_mean_deg| MotionStats {
+            primitive,
+            count: 1,
+            distance_mean_mm,
+            distance_sd_mm: 0.0,
+            rotation_mean_deg,
+            rotation_sd_deg: 0.0,
+        };
+        Self::new(&[
+            stats(Primitive::Forward, step_mm, 0.0),
+            stats(Primitive::Backward, -step_mm, 0.0),
+            stats(Primitive::Left, 0.0, turn_deg),
+            stats(Primitive::Right, 0.0, -turn_deg),
+            stats(Primitive::Stop, 0.0, 0.0),
+        ])
+        .expect("finite statistics for every primitive")
+    }
+}
+
+/// Moves `distance_mm` along the heading, then turns by `rotation_rad`.
+fn advance(pose: Pose, distance_mm: f64, rotation_rad: f64) -> Pose {
+    Pose {
+        x_mm: pose.x_mm + distance_mm * pose.theta_rad.cos(),
+        y_mm: pose.y_mm + distance_mm * pose.theta_rad.sin(),
+        theta_rad: wrap_angle_rad(pose.theta_rad + rotation_rad),
     }
 }
 
@@ -147,22 +172,7 @@ mod tests {
     use rand::SeedableRng;
 
     fn table() -> MotionTable {
-        let stat = |primitive, d: f64, r: f64| MotionStats {
-            primitive,
-            count: 1000,
-            distance_mean_mm: d,
-            distance_sd_mm: 0.0,
-            rotation_mean_deg: r,
-            rotation_sd_deg: 0.0,
-        };
-        MotionTable::new(&[
-            stat(Primitive::Forward, 40.0, 0.0),
-            stat(Primitive::Backward, -40.0, 0.0),
-            stat(Primitive::Left, 0.0, 90.0),
-            stat(Primitive::Right, 0.0, -90.0),
-            stat(Primitive::Stop, 0.0, 0.0),
-        ])
-        .unwrap()
+        MotionTable::exact(40.0, 90.0)
     }
 
     #[test]

@@ -1,28 +1,13 @@
 //! Learning on synthetic demonstrations whose segments follow the primitives exactly.
 
-use polymimic_perceive::{Label, MotionStats, Pose, Primitive, Segment, TrackedFrame};
+use polymimic_perceive::{Label, Pose, Primitive, Segment, TrackedFrame};
 
 use crate::*;
 
 /// Forward moves 50 mm (more than the 40 mm match tolerance, so one forward never matches
 /// two segments), left turns 90°, without spread: predictions are exact.
 fn exact_motion() -> MotionTable {
-    let stat = |primitive, d: f64, r: f64| MotionStats {
-        primitive,
-        count: 100,
-        distance_mean_mm: d,
-        distance_sd_mm: 0.0,
-        rotation_mean_deg: r,
-        rotation_sd_deg: 0.0,
-    };
-    MotionTable::new(&[
-        stat(Primitive::Forward, 50.0, 0.0),
-        stat(Primitive::Backward, -50.0, 0.0),
-        stat(Primitive::Left, 0.0, 90.0),
-        stat(Primitive::Right, 0.0, -90.0),
-        stat(Primitive::Stop, 0.0, 0.0),
-    ])
-    .unwrap()
+    MotionTable::exact(50.0, 90.0)
 }
 
 /// A demonstration driving straight along +x toward a ball ahead for `count` forward

@@ -3,7 +3,7 @@
 //! only on the demonstrations watched, not on a trial's random order, so one serves every
 //! trial of an experiment.
 
-use crate::approach::ApproachPlan;
+use crate::approach::{ApproachPlan, MIN_REGION_HALF_WIDTH};
 use crate::ball_response::BallResponse;
 use crate::config::LearningConfig;
 use crate::prediction::MotionTable;
@@ -11,10 +11,6 @@ use crate::push_region::PushRegion;
 use crate::round::SegmentedDemonstration;
 use crate::state::Pitch;
 use crate::state_value::StateValue;
-
-/// The push region is never narrower than this either side of its middle: one cell of the
-/// approach table (mm) and one heading bin (rad).
-const PUSH_REGION_MIN_HALF_WIDTH: (f64, f64) = (20.0, 10.0 * std::f64::consts::PI / 180.0);
 
 /// The improved control mode's knowledge of the field.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -36,7 +32,7 @@ impl WorldModel {
         motion: &MotionTable,
         config: &LearningConfig,
     ) -> Self {
-        let push_region = PushRegion::learn(demonstrations, pitch, config.ball_moved_mm, PUSH_REGION_MIN_HALF_WIDTH);
+        let push_region = PushRegion::learn(demonstrations, pitch, config.ball_moved_mm, MIN_REGION_HALF_WIDTH);
         Self {
             ball_response: BallResponse::learn(demonstrations, pitch, config.ball_moved_mm),
             state_value: StateValue::learn(demonstrations, pitch),

@@ -174,6 +174,15 @@ pub fn read_text(path: &Path) -> PyResult<String> {
         .map_err(|_| ModelFileError::new_err(format!("{} is not a polymimic file (not UTF-8 text)", path.display())))
 }
 
+/// The option named `value` of a string parameter, or a ValueError naming the parameter and
+/// every name it takes.
+pub fn one_of<T: Copy>(parameter: &str, value: &str, options: &[(&str, T)]) -> PyResult<T> {
+    options.iter().find(|(name, _)| *name == value).map(|&(_, option)| option).ok_or_else(|| {
+        let names: Vec<String> = options.iter().map(|(name, _)| format!("{name:?}")).collect();
+        PyValueError::new_err(format!("{parameter} must be {}, got {value:?}", names.join(" or ")))
+    })
+}
+
 /// Reads and parses a saved model; a file that does not parse is a `ModelFileError` naming it.
 pub fn read_model<T, E: std::fmt::Display>(path: &Path, parse: impl FnOnce(&str) -> Result<T, E>) -> PyResult<T> {
     parse(&read_text(path)?).map_err(|e| ModelFileError::new_err(format!("{}: {e}", path.display())))

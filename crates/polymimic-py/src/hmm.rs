@@ -10,7 +10,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyTuple, PyType};
 
 use crate::convert::{
-    floats, matrix, non_negative, read_model, reduce_to_json, symbol_sequences, symbols, write_atomically,
+    floats, matrix, non_negative, one_of, read_model, reduce_to_json, symbol_sequences, symbols, write_atomically,
 };
 use crate::errors::hmm_error;
 
@@ -129,13 +129,7 @@ impl PyDiscreteHmm {
     /// Trains on a list of 1-D integer sequences; returns the model.
     #[pyo3(signature = (sequences, *, init="segments"))]
     fn fit<'py>(slf: Bound<'py, Self>, sequences: &Bound<'py, PyAny>, init: &str) -> PyResult<Bound<'py, Self>> {
-        let init = match init {
-            "segments" => Init::Segments,
-            "given" => Init::Given,
-            other => {
-                return Err(PyValueError::new_err(format!("init must be \"segments\" or \"given\", got {other:?}")));
-            }
-        };
+        let init = one_of("init", init, &[("segments", Init::Segments), ("given", Init::Given)])?;
         let this = slf.get();
         let sequences = symbol_sequences(sequences, this.n_symbols())?;
         let mut model = this.snapshot();
@@ -165,13 +159,7 @@ impl PyDiscreteHmm {
         sequences: &Bound<'py, PyAny>,
         impossible: &str,
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
-        let raise = match impossible {
-            "raise" => true,
-            "-inf" => false,
-            other => {
-                return Err(PyValueError::new_err(format!("impossible must be \"raise\" or \"-inf\", got {other:?}")));
-            }
-        };
+        let raise = one_of("impossible", impossible, &[("raise", true), ("-inf", false)])?;
         let sequences = symbol_sequences(sequences, self.n_symbols())?;
         let model = self.snapshot();
         let scores = py

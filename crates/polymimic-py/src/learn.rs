@@ -10,7 +10,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use crate::convert::non_negative;
+use crate::convert::{non_negative, one_of};
 
 fn value_error(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
@@ -166,15 +166,8 @@ pub fn learning_trial<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let demos = segmented_demonstrations(demonstrations)?;
     let config = learning_config(config)?;
-    let phase_one = match phase_one {
-        "by-model" => PhaseOne::ByModel,
-        "interleaved" => PhaseOne::Interleaved,
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "phase_one must be \"by-model\" or \"interleaved\", got {other:?}"
-            )));
-        }
-    };
+    let phase_one =
+        one_of("phase_one", phase_one, &[("by-model", PhaseOne::ByModel), ("interleaved", PhaseOne::Interleaved)])?;
     let motion = motion_table(motion_stats)?;
     let seed = non_negative("seed", seed)? as u64;
     let result = py.detach(|| run_trial(&demos, &ordering, &motion, &config, phase_one, seed)).map_err(value_error)?;
@@ -215,15 +208,8 @@ impl PyImitatorPolicy {
         control: &str,
         demonstrations: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let mode = match control {
-            "thesis" => ControlMode::Thesis,
-            "improved" => ControlMode::Improved,
-            other => {
-                return Err(PyValueError::new_err(format!(
-                    "unknown control mode {other:?}: expected \"thesis\" or \"improved\""
-                )));
-            }
-        };
+        let mode =
+            one_of("control mode", control, &[("thesis", ControlMode::Thesis), ("improved", ControlMode::Improved)])?;
         let model = ForwardModel::from_json(model)
             .map_err(|e| crate::errors::ModelFileError::new_err(format!("imitator model: {e}")))?;
         let config = learning_config(config)?;

@@ -11,7 +11,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple, PyType};
 
-use crate::convert::{frame_columns, matrix, non_negative, read_model, reduce_to_json, write_atomically};
+use crate::convert::{frame_columns, matrix, non_negative, one_of, read_model, reduce_to_json, write_atomically};
 use crate::errors::perceive_error;
 use crate::hmm::PyDiscreteHmm;
 use crate::vq::PyCodebook;
@@ -50,13 +50,14 @@ fn primitive(name: &str) -> PyResult<Primitive> {
 }
 
 fn representations(name: &str) -> PyResult<(Representation, Representation)> {
-    match name {
-        "thesis" => Ok((Representation::Positional, Representation::Rotational)),
-        "egocentric" => Ok((Representation::Egocentric, Representation::Egocentric)),
-        other => {
-            Err(PyValueError::new_err(format!("representation must be \"thesis\" or \"egocentric\", got {other:?}")))
-        }
-    }
+    one_of(
+        "representation",
+        name,
+        &[
+            ("thesis", (Representation::Positional, Representation::Rotational)),
+            ("egocentric", (Representation::Egocentric, Representation::Egocentric)),
+        ],
+    )
 }
 
 fn segmenter_config(
@@ -115,15 +116,8 @@ impl PyPrimitiveRecognizer {
         min_variance: f64,
         seed: i64,
     ) -> PyResult<Self> {
-        let emissions = match emissions {
-            "discrete" => Emissions::Discrete,
-            "gaussian" => Emissions::Gaussian,
-            other => {
-                return Err(PyValueError::new_err(format!(
-                    "emissions must be \"discrete\" or \"gaussian\", got {other:?}"
-                )));
-            }
-        };
+        let emissions =
+            one_of("emissions", emissions, &[("discrete", Emissions::Discrete), ("gaussian", Emissions::Gaussian)])?;
         let sequences: Vec<Bound<'_, PyAny>> = sequences.try_iter()?.collect::<PyResult<_>>()?;
         if sequences.len() != labels.len() {
             return Err(PyValueError::new_err(format!(

@@ -37,7 +37,7 @@ def main():
         start = polymimic.DiscreteHMM(n_states, 512, max_iter=0, seed=0).fit(sequences)
         params = (start.startprob_, start.transmat_, start.emissionprob_)
 
-        def ours_fit(iterations):
+        def ours_fit(iterations, params=params):
             model = polymimic.DiscreteHMM.from_params(*params, max_iter=iterations, tol=float("-inf"))
             return best_of(lambda: model.fit(sequences, init="given"), args.repeats)
 
@@ -45,11 +45,11 @@ def main():
 
         peer_s = {}
         for implementation in ("scaling", "log"):
-            def peer_fit(iterations):
+            def peer_fit(iterations, n_states=n_states, implementation=implementation, params=params):
                 peer = hmm.CategoricalHMM(n_components=n_states, n_features=512, implementation=implementation,
                                           init_params="", params="ste", n_iter=iterations, tol=-np.inf)
 
-                def fit():
+                def fit(peer=peer, params=params):
                     peer.startprob_, peer.transmat_, peer.emissionprob_ = (p.copy() for p in params)
                     with warnings.catch_warnings():
                         warnings.simplefilter("ignore")

@@ -32,9 +32,9 @@ def test_readme_quick_start_is_what_ci_runs():
 
 
 MODULES = [polymimic] + [
-    importlib.import_module(f"polymimic.{info.name}")
-    for info in pkgutil.iter_modules(polymimic.__path__)
-    if not info.name.startswith("_") and info.name != "__main__"
+    importlib.import_module(info.name)
+    for info in pkgutil.walk_packages(polymimic.__path__, prefix="polymimic.")
+    if not info.name.rsplit(".", 1)[-1].startswith("_")
 ]
 
 

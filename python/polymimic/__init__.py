@@ -37,7 +37,7 @@ from polymimic.learning import (
 from polymimic.plots import animate_demonstration, plot_demonstration, plot_log_likelihoods
 
 if importlib.util.find_spec("gymnasium") is not None:
-    from polymimic import env as _env  # registers PenaltyKick-v0 with Gymnasium
+    from polymimic import env as _env  # noqa: F401  (registers PenaltyKick-v0 with Gymnasium)
 
 __all__ = [
     "Codebook",

@@ -12,6 +12,16 @@ import sys
 import time
 from typing import Any
 
+from polymimic import __version__, demo
+from polymimic._native import ModelFileError
+from polymimic.datasets import load_demonstrations
+from polymimic.plots import animate_demonstration
+from polymimic.reproduce.backends import TaskRunner
+from polymimic.reproduce.config import ConfigError, RunConfig
+from polymimic.reproduce.roster import CONTROLS, DEMONSTRATORS, EXPERIMENTS
+from polymimic.reproduce.rundir import MissingInputError, RunDir, RunError, latest_run_path, new_run_path
+from polymimic.reproduce.stages import Context, reproduce, run_stage
+
 EXIT_USAGE = 2
 """Bad input: a missing stage input, a bad config, an unreadable file (as argparse's own errors)."""
 EXIT_INTERRUPTED = 130
@@ -30,7 +40,6 @@ _STARTS_A_RUN = ("self-observe", "reproduce")
 
 
 def _demo(args: argparse.Namespace) -> int:
-    from polymimic import demo
 
     print(demo.report(demo.run(n_train=args.train, n_test=args.test, codebook_size=args.codebook_size,
                                n_states=args.states, seed=args.seed)))
@@ -64,9 +73,6 @@ def _run_options(*, tasks: bool) -> argparse.ArgumentParser:
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from polymimic import __version__
-    from polymimic.experiments import CONTROLS, EXPERIMENTS
-    from polymimic.stages import ALL_DEMONSTRATORS
 
     parser = argparse.ArgumentParser(prog="polymimic", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -94,7 +100,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     replay = commands.add_parser("replay", parents=[_run_options(tasks=False)],
                                  help="an episode as an animated GIF: a demonstration, or an imitator's attempt")
-    replay.add_argument("who", choices=[*ALL_DEMONSTRATORS, "imitator"])
+    replay.add_argument("who", choices=[*DEMONSTRATORS, "imitator"])
     replay.add_argument("--episode", type=int, default=0, help="which episode, from 0 (default 0)")
     replay.add_argument("--experiment", choices=list(EXPERIMENTS), default="varying_skill",
                         help="whose imitator, for `imitator` (its first evaluated one)")
@@ -109,7 +115,6 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _requested_config(args: argparse.Namespace) -> Any:
     """The config asked for on the command line, or None when none was."""
-    from polymimic.runconfig import RunConfig
 
     if args.config is None and not args.quick:
         return None
@@ -118,10 +123,9 @@ def _requested_config(args: argparse.Namespace) -> Any:
 
 
 def _run_path(args: argparse.Namespace, *, new: bool) -> pathlib.Path:
-    from polymimic.rundir import MissingInputError, latest_run_path, new_run_path
 
     if args.run_dir is not None:
-        return args.run_dir
+        return pathlib.Path(args.run_dir)
     if new:
         return new_run_path()
     latest = latest_run_path()
@@ -132,7 +136,6 @@ def _run_path(args: argparse.Namespace, *, new: bool) -> pathlib.Path:
 
 
 def _open(args: argparse.Namespace, *, new: bool) -> Any:
-    from polymimic.rundir import MissingInputError, RunDir
 
     run = RunDir(_run_path(args, new=new))
     if not new and not run.manifest_path.exists():
@@ -142,8 +145,6 @@ def _open(args: argparse.Namespace, *, new: bool) -> Any:
 
 
 def _config(args: argparse.Namespace) -> int:
-    from polymimic.rundir import RunDir
-    from polymimic.runconfig import RunConfig
 
     if args.run_dir is not None and (args.run_dir / "manifest.json").exists():
         config = RunDir(args.run_dir).open(_requested_config(args))
@@ -154,8 +155,6 @@ def _config(args: argparse.Namespace) -> int:
 
 
 def _stage(args: argparse.Namespace) -> int:
-    from polymimic.backends import TaskRunner
-    from polymimic.stages import Context, reproduce, run_stage
 
     run, config = _open(args, new=args.stage in _STARTS_A_RUN)
     with TaskRunner(backend=args.backend, workers=args.workers, address=args.address) as runner:
@@ -177,9 +176,6 @@ def _stage(args: argparse.Namespace) -> int:
 
 
 def _replay(args: argparse.Namespace) -> int:
-    from polymimic.datasets import load_demonstrations
-    from polymimic.plots import animate_demonstration
-    from polymimic.rundir import RunError
 
     run, _ = _open(args, new=False)
     if args.who == "imitator":
@@ -197,9 +193,6 @@ def _replay(args: argparse.Namespace) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
-    from polymimic._native import ModelFileError
-    from polymimic.rundir import RunError
-    from polymimic.runconfig import ConfigError
 
     parser = build_parser()
     args = parser.parse_args(argv)

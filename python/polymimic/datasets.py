@@ -330,7 +330,7 @@ def _per_group(columns: dict[str, np.ndarray], name: str, starts: np.ndarray, st
                where: str | os.PathLike[str], group: str) -> np.ndarray:
     """The value of a per-group column for each group, checked to be the same on all its rows."""
     values = columns[name]
-    first = values[starts]
+    first: np.ndarray = values[starts]
     if len(values) and not (values == np.repeat(first, stops - starts)).all():
         raise ModelFileError(f"{os.fspath(where)} has a {name!r} that changes within one {group}")
     return first

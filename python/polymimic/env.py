@@ -40,6 +40,7 @@ import numpy as np
 
 from polymimic._native import Episode, FieldRunError
 from polymimic.field import PRIMITIVES, _field_config
+from polymimic.plots import state_image
 
 try:
     import gymnasium
@@ -138,10 +139,8 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         """With ``render_mode="rgb_array"``: an ``(H, W, 3)`` uint8 picture of the field now."""
         if self.render_mode is None or self._episode is None:
             return None
-        from polymimic.plots import _state_image
-
         seen = self._episode.observation()
-        return _state_image("lego", seen["robot"], seen["ball"], f"t = {seen['t_s']:.1f} s")
+        return state_image("lego", seen["robot"], seen["ball"], f"t = {seen['t_s']:.1f} s")
 
     def _observation(self) -> np.ndarray:
         assert self._episode is not None

@@ -17,6 +17,7 @@ True
 from __future__ import annotations
 
 import dataclasses
+import json
 from typing import Any
 
 import numpy as np
@@ -128,6 +129,5 @@ def command_primitives() -> np.ndarray:
 
 def default_config() -> dict[str, Any]:
     """The field's configuration (tracker noise, physics substeps, time limit, ball)."""
-    import json
-
-    return json.loads(_native.default_field_config())
+    config: dict[str, Any] = json.loads(_native.default_field_config())
+    return config

@@ -22,7 +22,8 @@ from typing import Any
 
 from polymimic import _native
 from polymimic._atomic import atomic_write_text
-from polymimic.field import Demonstration
+from polymimic._toml import loads, write_value
+from polymimic.field import Demonstration, _field_config, as_frames, record
 
 SMALL_FIELD_BODIES = frozenset({"tiny"})
 
@@ -89,14 +90,12 @@ class LearningConfig:
 
     def to_toml(self) -> str:
         """One ``name = value`` line per constant."""
-        return "".join(f"{name} = {value!r}\n" for name, value in dataclasses.asdict(self).items())
+        return "".join(f"{name} = {write_value(value)}\n" for name, value in dataclasses.asdict(self).items())
 
     @classmethod
     def from_toml(cls, text: str) -> LearningConfig:
         """A config from TOML; missing keys take their defaults, unknown ones are refused."""
-        import tomllib
-
-        values = tomllib.loads(text)
+        values = loads(text)
         unknown = sorted(set(values) - {f.name for f in dataclasses.fields(cls)})
         if unknown:
             raise ValueError(f"unknown learning constants: {', '.join(unknown)}")
@@ -170,7 +169,7 @@ class TrialResult:
 
 
 def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.PrimitiveRecognizer,
-              **segmenter: Any) -> list[dict]:
+              **segmenter: Any) -> list[dict[str, Any]]:
     """The demonstrations as the learner takes them: segments, field size and outcome;
     ``segmenter`` passes the segmenter's settings (``min_frames``, ``gap_margin``, …)."""
     segments = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
@@ -179,8 +178,8 @@ def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.Primi
             for d, s in zip(demonstrations, segments)]
 
 
-def _segmented_items(demonstrations: Sequence[Demonstration] | Sequence[dict],
-                     recognizer: _native.PrimitiveRecognizer) -> list[dict]:
+def _segmented_items(demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]],
+                     recognizer: _native.PrimitiveRecognizer) -> list[dict[str, Any]]:
     """Demonstrations as :func:`segmented` gives them, segmenting recordings, passing on what is
     segmented already."""
     if len(demonstrations) and isinstance(demonstrations[0], dict):
@@ -188,9 +187,9 @@ def _segmented_items(demonstrations: Sequence[Demonstration] | Sequence[dict],
     return segmented(demonstrations, recognizer)  # type: ignore[arg-type]
 
 
-def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict], *, recognizer: _native.PrimitiveRecognizer,
-              ordering: Sequence[str], config: LearningConfig | None = None, phase_one: str = "by-model",
-              seed: int = 0) -> TrialResult:
+def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]], *,
+              recognizer: _native.PrimitiveRecognizer, ordering: Sequence[str], config: LearningConfig | None = None,
+              phase_one: str = "by-model", seed: int = 0) -> TrialResult:
     """One learning trial: phase 1 (each demonstrator's model learns its own demonstrations;
     ``phase_one="interleaved"`` mixes them at random), phase 2 (every demonstration, in random
     order, to every demonstrator's model and then to the imitator's), and the final pruning.
@@ -229,7 +228,7 @@ class ImitatorPolicy:
 
     def __init__(self, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
                  config: LearningConfig | None = None, control: str = "thesis",
-                 demonstrations: Sequence[Demonstration] | Sequence[dict] | None = None) -> None:
+                 demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]] | None = None) -> None:
         items = None
         if demonstrations is not None and control == "improved":
             items = _segmented_items(demonstrations, recognizer)
@@ -261,8 +260,6 @@ def evaluate(policy: ImitatorPolicy, *, attempts_per_configuration: int = 25, se
              field_config: dict[str, Any] | str | None = None) -> Evaluation:
     """``attempts_per_configuration`` attempts from each field configuration, in parallel, on the
     field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's)."""
-    from polymimic.field import _field_config, as_frames
-
     raw = policy._native.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
     attempts = [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator="imitator",
                               configuration=a["configuration"], seed=a["seed"]) for a in raw]
@@ -307,8 +304,6 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
     polymimic.PolymimicError
         If no imitator of ``max_trials`` trials falls between the two.
     """
-    from polymimic.field import record
-
     if recorded is None:
         recorded = {who: [d for c in (1, 2) for d in record(who, configuration=c, n=n, seed=seed,
                                                              config=field_config)]

@@ -195,7 +195,7 @@ def animate_demonstration(demo: Demonstration, path: str | os.PathLike[str], *, 
             writer.grab_frame()
 
 
-def _state_image(body: str, robot: tuple[float, float, float], ball: tuple[float, float] | None,
+def state_image(body: str, robot: tuple[float, float, float], ball: tuple[float, float] | None,
                  title: str) -> np.ndarray:
     """An ``(H, W, 3)`` uint8 picture of the field with the robot at pose ``robot`` and the ball."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -213,8 +213,10 @@ def _state_image(body: str, robot: tuple[float, float, float], ball: tuple[float
         ax.add_patch(Circle(ball, scene.ball_diameter_mm / 2, facecolor=_BALL_COLOUR, edgecolor="black",
                             linewidth=0.8, zorder=5))
     ax.set_title(title, fontsize="medium")
-    canvas.draw()
-    return np.asarray(canvas.buffer_rgba())[..., :3].copy()
+    # matplotlib leaves the Agg canvas's methods untyped.
+    canvas.draw()  # type: ignore[no-untyped-call]
+    rgba = np.asarray(canvas.buffer_rgba())  # type: ignore[no-untyped-call]
+    return rgba[..., :3].copy()
 
 
 def _drawn_frames(n_frames: int, stride: int) -> list[int]:
@@ -262,7 +264,8 @@ def _robot_outline(scene: _Scene, x_mm: float, y_mm: float, theta_rad: float) ->
     hl, hw = scene.robot_length_mm / 2, scene.robot_width_mm / 2
     robot_frame = np.array([[-hl, -hw], [hl * 0.6, -hw], [hl, 0.0], [hl * 0.6, hw], [-hl, hw]])
     c, s = math.cos(theta_rad), math.sin(theta_rad)
-    return robot_frame @ np.array([[c, s], [-s, c]]) + np.array([x_mm, y_mm])
+    outline: np.ndarray = robot_frame @ np.array([[c, s], [-s, c]]) + np.array([x_mm, y_mm])
+    return outline
 
 
 def _robot_patch(scene: _Scene, x_mm: float, y_mm: float, theta_rad: float, *, filled: bool) -> Any:

@@ -26,18 +26,6 @@ from polymimic.field import Demonstration, PrimitiveSequence, command_primitives
 
 MOVING = ("forward", "backward", "left", "right")
 
-THESIS_ACCURACY = {"forward": 0.9800, "backward": 0.9869, "left": 0.9684, "right": 0.9124}
-"""Table 4.3 of the thesis: held-out accuracy of each primitive's HMM."""
-
-THESIS_SEGMENTS = {
-    "tiny": {"command_match": 0.314},
-    "expert": {"command_match": 0.355},
-    "humanoid": {"command_match": 0.116},
-    "poor": {"command_match": 0.501},
-    "average": {"command_match": 0.362},
-}
-"""Table 4.5 of the thesis: share of classifiable segments whose label matched the commands."""
-
 Representation = Literal["thesis", "egocentric"]
 Emissions = Literal["discrete", "gaussian"]
 
@@ -131,7 +119,7 @@ def segment_table(recognizer: PrimitiveRecognizer, demonstrations: Sequence[Demo
     label is the equivalent primitive of the commands sent) and ``gaps`` (share of all
     segments that are gaps), with the counts behind them."""
     primitive_of = command_primitives()
-    tally: dict[str, collections.Counter] = collections.defaultdict(collections.Counter)
+    tally: dict[str, collections.Counter[str]] = collections.defaultdict(collections.Counter)
     segmented = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
     for demo, segments in zip(demonstrations, segmented):
         sent = primitive_of[demo.frames["command"]]

@@ -17,7 +17,7 @@
 >>> run.require(run.recognizer_path, "train")
 Traceback (most recent call last):
 ...
-polymimic.rundir.MissingInputError: .../models/recognizer.json is missing: run `polymimic train --run-dir ...` first
+polymimic.reproduce.rundir.MissingInputError: .../models/recognizer.json is missing: run `polymimic train ...` first
 """
 
 from __future__ import annotations
@@ -29,7 +29,8 @@ import pathlib
 from typing import Any
 
 from polymimic._atomic import atomic_write_text
-from polymimic.runconfig import ConfigError, RunConfig
+from polymimic._native import __version__
+from polymimic.reproduce.config import ConfigError, RunConfig
 
 __all__ = ["MissingInputError", "RunDir", "RunError", "new_run_path"]
 
@@ -135,7 +136,6 @@ class RunDir:
         config = config or RunConfig()
         for folder in (self.datasets, self.models, self.plots):
             folder.mkdir(parents=True, exist_ok=True)
-        from polymimic import __version__
 
         self._write({"format": MANIFEST_FORMAT, "version": MANIFEST_VERSION, "polymimic_version": __version__,
                      "created": _now(), "config": config.to_dict(), "seeds": config.to_dict()["seeds"],
@@ -155,7 +155,8 @@ class RunDir:
             RunConfig.from_dict(data["config"])
         except (ConfigError, KeyError) as error:
             raise RunError(f"{self.manifest_path}: its config cannot be read ({error})") from error
-        return data
+        manifest: dict[str, Any] = data
+        return manifest
 
     def stage_started(self, stage: str, **details: Any) -> None:
         manifest = self.manifest()

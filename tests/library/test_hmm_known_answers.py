@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 import polymimic
-from conftest import random_stochastic
 
 WEATHER_START = [0.6, 0.4]
 WEATHER_TRANS = [[0.7, 0.3], [0.4, 0.6]]
@@ -37,10 +36,10 @@ def joint_probabilities(start, trans, emit, seq):
 
 
 @pytest.mark.parametrize("n_states,length", [(2, 7), (3, 6), (4, 5)])
-def test_score_and_decode_match_enumeration_of_all_paths(rng, n_states, length):
-    start = random_stochastic(rng, 1, n_states)[0]
-    trans = random_stochastic(rng, n_states, n_states)
-    emit = random_stochastic(rng, n_states, 4)
+def test_score_and_decode_match_enumeration_of_all_paths(rng, stochastic, n_states, length):
+    start = stochastic(1, n_states)[0]
+    trans = stochastic(n_states, n_states)
+    emit = stochastic(n_states, 4)
     model = polymimic.DiscreteHMM.from_params(start, trans, emit, topology="ergodic")
     for _ in range(5):
         seq = rng.integers(0, 4, size=length)

@@ -59,7 +59,9 @@ def test_heterogeneous_trial_grows_behaviours_and_raises_lps(recognizer, heterog
 
 
 def test_same_seed_same_trial_other_seed_other_trial(recognizer, heterogeneous):
-    run = lambda seed: polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert", "tiny"], seed=seed)
+    def run(seed):
+        return polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert", "tiny"], seed=seed)
+
     assert run(4) == run(4)
     assert run(4).models["expert"].lp_history != run(5).models["expert"].lp_history
 
@@ -107,7 +109,8 @@ def test_a_corrupt_imitator_model_is_refused(recognizer):
 
 @pytest.fixture(scope="module")
 def expert_and_poor(recognizer):
-    demos = [d for who in ("expert", "poor") for c in (1, 2) for d in polymimic.record(who, configuration=c, n=15, seed=3)]
+    demos = [d for who in ("expert", "poor") for c in (1, 2)
+             for d in polymimic.record(who, configuration=c, n=15, seed=3)]
     return learning.segmented(demos, recognizer)
 
 

@@ -15,7 +15,7 @@ True
 >>> RunConfig.from_toml("[recognizer]\\ncodebok_size = 3\\n")
 Traceback (most recent call last):
 ...
-polymimic.runconfig.ConfigError: unknown key in [recognizer]: codebok_size
+polymimic.reproduce.config.ConfigError: unknown key in [recognizer]: codebok_size
 """
 
 from __future__ import annotations
@@ -25,6 +25,7 @@ import json
 import os
 from typing import Any
 
+from polymimic._toml import loads, write_table
 from polymimic.field import default_config
 from polymimic.learning import LearningConfig
 
@@ -177,20 +178,18 @@ class RunConfig:
             section = getattr(self, name)
             if dataclasses.is_dataclass(section) and not isinstance(section, type):
                 docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(section)}
-                _toml_table(lines, name, dataclasses.asdict(section), docs)
+                write_table(lines, name, dataclasses.asdict(section), docs)
             else:
                 lines.append("# The simulated field of self-observation and of every recorded demonstration.")
-                _toml_table(lines, name, section, {})
+                write_table(lines, name, section, {})
         return "\n".join(lines).rstrip() + "\n"
 
     @classmethod
     def from_toml(cls, text: str, *, base: RunConfig | None = None) -> RunConfig:
-        import tomllib
-
         try:
-            data = tomllib.loads(text)
-        except tomllib.TOMLDecodeError as error:
-            raise ConfigError(f"not valid TOML: {error}") from error
+            data = loads(text)
+        except ValueError as error:
+            raise ConfigError(str(error)) from error
         return cls.from_dict(data, base=base)
 
     @classmethod
@@ -245,25 +244,3 @@ def _merged(section: str, defaults: dict[str, Any], values: dict[str, Any]) -> d
         else:
             merged[key] = _typed(f"[{section}] {key}", value, defaults[key])
     return merged
-
-
-def _toml_table(lines: list[str], name: str, values: dict[str, Any], docs: dict[str, str]) -> None:
-    lines.append(f"[{name}]")
-    nested = {k: v for k, v in values.items() if isinstance(v, dict)}
-    for key, value in values.items():
-        if key not in nested:
-            line = f"{key} = {_toml_value(value)}"
-            lines.append(f"{line:<40} # {docs[key]}" if docs.get(key) else line)
-    lines.append("")
-    for key, value in nested.items():
-        _toml_table(lines, f"{name}.{key}", value, {})
-
-
-def _toml_value(value: Any) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, (int, float)):
-        return repr(value)  # repr of a float is valid TOML, and round-trips exactly
-    if isinstance(value, str):
-        return json.dumps(value)
-    raise TypeError(f"cannot write {value!r} as TOML")

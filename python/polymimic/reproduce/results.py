@@ -25,15 +25,16 @@ import numpy as np
 from polymimic import __version__, recognition
 from polymimic._native import PrimitiveRecognizer
 from polymimic.datasets import load_demonstrations, load_self_observation
-from polymimic.experiments import EXPERIMENTS, Experiment, evaluated_seeds, trial_seeds
 from polymimic.field import Demonstration
 from polymimic.learning import LearningConfig, ModelResult, TrialResult
-from polymimic.rundir import MissingInputError, RunDir
-from polymimic.runconfig import RunConfig
+from polymimic.reproduce.config import RunConfig
+from polymimic.reproduce.experiments import evaluated_seeds, trial_seeds
+from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
+from polymimic.reproduce.rundir import MissingInputError, RunDir
 
 __all__ = ["appendix_b", "gather", "lp_climb", "mean_sd", "summarize_evaluations", "summarize_experiment"]
 
-FORMAT = "polymimic.results"
+FORMAT = "polymimic.reproduce.results"
 FORMAT_VERSION = 1
 BEHAVIOUR_COUNTS = ("created", "deleted", "permanent", "candidates", "duplicates", "candidates_permanent")
 LP_CLIMB_SHARE = 0.9
@@ -99,9 +100,10 @@ def summarize_experiment(experiment: Experiment, trials: Sequence[TrialResult], 
 def summarize_evaluations(evaluations: Sequence[dict[str, Any]], *, attempts: int) -> dict[str, Any]:
     """Goals and own goals of the evaluated imitators: mean and sd over imitators.
 
-    >>> summarize_evaluations([{"goals": 10, "own_goals": 2, "control": "thesis"},
-    ...                        {"goals": 14, "own_goals": 0, "control": "thesis"}], attempts=50)
-    {'goals': 12.0, 'own_goals': 1.0, 'attempts': 50, 'goals_sd': 2.8284271247461903, 'own_goals_sd': 1.4142135623730951, 'imitators': 2, 'control': 'thesis'}
+    >>> summary = summarize_evaluations([{"goals": 10, "own_goals": 2, "control": "thesis"},
+    ...                                  {"goals": 14, "own_goals": 0, "control": "thesis"}], attempts=50)
+    >>> summary["goals"], summary["goals_sd"], summary["own_goals"], summary["imitators"], summary["control"]
+    (12.0, 2.8284271247461903, 1.0, 2, 'thesis')
     """
     goals, own = mean_sd(e["goals"] for e in evaluations), mean_sd(e["own_goals"] for e in evaluations)
     used = sorted({e["control"] for e in evaluations})
@@ -112,7 +114,8 @@ def summarize_evaluations(evaluations: Sequence[dict[str, Any]], *, attempts: in
 def _predicts_ball(behaviour: dict[str, Any], config: LearningConfig) -> bool:
     """The learner's own test: enough ball samples, bearing spread small enough."""
     angle = behaviour.get("ball_angle_deg") or [0.0, math.inf]
-    return behaviour.get("ball_samples", 0) >= config.ball_min_samples and angle[1] <= config.ball_max_angle_sd_deg
+    return bool(behaviour.get("ball_samples", 0) >= config.ball_min_samples
+                and angle[1] <= config.ball_max_angle_sd_deg)
 
 
 def appendix_b(trials: Iterable[TrialResult], config: LearningConfig, *, rows: int = APPENDIX_B_ROWS) -> dict[str, Any]:
@@ -187,13 +190,12 @@ def _outcomes(demos: Sequence[Demonstration]) -> dict[str, int]:
 
 def gather(run: RunDir, config: RunConfig) -> dict[str, Any]:
     """Everything in the run directory, summarised as ``results.json`` holds it."""
-    from polymimic.stages import ALL_DEMONSTRATORS
 
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
     demos = {who: load_demonstrations(run.require(run.demonstrations_path(who), "record" if who != "average"
                                                   else "segment"))
-             for who in ALL_DEMONSTRATORS}
-    to_segment = [d for who in ALL_DEMONSTRATORS for d in demos[who]]
+             for who in DEMONSTRATORS}
+    to_segment = [d for who in DEMONSTRATORS for d in demos[who]]
     imitator_attempts = run.attempts_path("varying_skill", "thesis")
     if imitator_attempts.exists():  # the thesis's VaryingSkillTrained row of Table 4.5
         # As for every demonstrator, only attempts the tracker followed throughout.
@@ -226,7 +228,8 @@ def gather(run: RunDir, config: RunConfig) -> dict[str, Any]:
         "experiments": experiments,
         "appendix_b": appendix_b(all_trials, config.learning),
     }
-    return finite(results)
+    checked: dict[str, Any] = finite(results)
+    return checked
 
 
 def finite(value: Any) -> Any:

@@ -6,14 +6,10 @@ Three experiments, each of many trials that differ only in their seed:
 * ``heterogeneous_bcr``: the same demonstrations, the reverse order (BCR);
 * ``varying_skill``: Poor, Average, Expert, their demonstrations interleaved in phase one.
 
-Trials and evaluations run as tasks on a :class:`~polymimic.backends.TaskRunner`; every result
+Trials and evaluations run as tasks on a :class:`~polymimic.reproduce.backends.TaskRunner`; every result
 is written to the run directory, atomically, as it arrives, so an interrupted stage resumes
-where it stopped and a finished one is never redone.
-
->>> EXPERIMENTS["varying_skill"].ordering
-('poor', 'average', 'expert')
->>> [e.name for e in EXPERIMENTS.values() if e.skill_order is None]
-['heterogeneous_rcb', 'heterogeneous_bcr']
+where it stopped and a finished one is never redone. Who takes part is in
+:mod:`polymimic.reproduce.roster`.
 """
 
 from __future__ import annotations
@@ -25,44 +21,16 @@ from typing import Any
 
 from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
-from polymimic.backends import TaskRunner
 from polymimic.datasets import save_demonstrations
 from polymimic.learning import ImitatorPolicy, LearningConfig, TrialResult, evaluate, run_trial
-from polymimic.progress import progress
-from polymimic.rundir import MissingInputError, RunDir
-from polymimic.runconfig import RunConfig
+from polymimic.reproduce.backends import TaskRunner
+from polymimic.reproduce.config import RunConfig
+from polymimic.reproduce.progress import progress
+from polymimic.reproduce.roster import CONTROLS, EXPERIMENTS, Experiment
+from polymimic.reproduce.rundir import MissingInputError, RunDir
 from polymimic.segments import load_segments
 
-__all__ = ["CONTROLS", "EXPERIMENTS", "Experiment", "evaluate_imitators", "imitator_policy", "learn", "trial_seeds"]
-
-CONTROLS = ("improved", "thesis")
-"""How an imitator's model drives the robot: polymimic's control, and the thesis's rule."""
-
-
-@dataclasses.dataclass(frozen=True)
-class Experiment:
-    """One experiment: whose demonstrations, in which phase-one order, mixed or by model."""
-
-    name: str
-    title: str
-    demonstrators: tuple[str, ...]
-    """Whose demonstrations, in the order they are handed to every trial."""
-    ordering: tuple[str, ...]
-    """The demonstrators' models in phase-one order."""
-    phase_one: str
-    skill_order: tuple[str, ...] | None
-    """The demonstrators from most to least skilled, where the experiment defines one."""
-
-
-_HETEROGENEOUS = ("expert", "tiny", "humanoid")
-EXPERIMENTS = {e.name: e for e in (
-    Experiment("heterogeneous_rcb", "heterogeneous bodies, RCB ordering", _HETEROGENEOUS,
-               ("expert", "tiny", "humanoid"), "by-model", None),
-    Experiment("heterogeneous_bcr", "heterogeneous bodies, BCR ordering", _HETEROGENEOUS,
-               ("humanoid", "tiny", "expert"), "by-model", None),
-    Experiment("varying_skill", "varying skill", ("poor", "average", "expert"),
-               ("poor", "average", "expert"), "interleaved", ("expert", "average", "poor")),
-)}
+__all__ = ["evaluate_imitators", "evaluated_seeds", "imitator_policy", "learn", "trial_seeds"]
 
 
 def trial_seeds(config: RunConfig) -> list[int]:
@@ -183,7 +151,7 @@ def _evaluation_done(path: Any, control: str, attempts: int) -> bool:
     # A file that says another control drove its imitator (as builds that could not choose
     # wrote "control_used") is not this evaluation.
     driven_by = saved.get("control_used", saved.get("control"))
-    return driven_by == control and saved.get("attempts") == attempts
+    return bool(driven_by == control and saved.get("attempts") == attempts)
 
 
 def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,

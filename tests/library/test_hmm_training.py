@@ -5,12 +5,10 @@ import subprocess
 import sys
 
 import numpy as np
-import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import polymimic
-from conftest import left_right_mask
 
 sequence_lists = st.lists(
     st.lists(st.integers(0, 5), min_size=1, max_size=25).map(np.array), min_size=1, max_size=30
@@ -20,7 +18,7 @@ topologies = st.sampled_from(["left-right", "ergodic"])
 
 @settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(seqs=sequence_lists, n_states=st.integers(1, 6), topology=topologies, seed=st.integers(0, 2**32))
-def test_trained_rows_are_distributions_and_likelihood_never_falls(seqs, n_states, topology, seed):
+def test_trained_rows_are_distributions_and_likelihood_never_falls(left_right_mask, seqs, n_states, topology, seed):
     model = polymimic.DiscreteHMM(n_states, 6, topology=topology, max_iter=25, tol=float("-inf"), seed=seed)
     model.fit(seqs)
     for table in (model.startprob_[None, :], model.transmat_, model.emissionprob_):

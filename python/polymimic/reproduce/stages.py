@@ -27,18 +27,18 @@ from collections.abc import Callable, Sequence
 
 from polymimic import _native
 from polymimic._native import PrimitiveRecognizer
-from polymimic.backends import TaskRunner
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
-from polymimic.experiments import evaluate_imitators, learn
-from polymimic.field import DEMONSTRATORS, record, self_observation
+from polymimic.field import record, self_observation
 from polymimic.learning import average_demonstrator
-from polymimic.rundir import RunDir, RunError
-from polymimic.runconfig import RunConfig
+from polymimic.reproduce.backends import TaskRunner
+from polymimic.reproduce.config import RunConfig
+from polymimic.reproduce.experiments import evaluate_imitators, learn
+from polymimic.reproduce.report import write_report
+from polymimic.reproduce.roster import DEMONSTRATORS, HETEROGENEOUS, RECORDED
+from polymimic.reproduce.rundir import RunDir, RunError
 from polymimic.segments import save_segments, segment_demonstrations
 
 __all__ = ["STAGES", "Context", "reproduce", "run_stage"]
-
-ALL_DEMONSTRATORS = (*DEMONSTRATORS, "average")
 
 
 @dataclasses.dataclass
@@ -68,7 +68,7 @@ def _self_observe(ctx: Context) -> int:
 
 def _record(ctx: Context) -> int:
     n, made = ctx.config.experiments.demonstrations_per_configuration, 0
-    for who in DEMONSTRATORS:
+    for who in RECORDED:
         path = ctx.run.demonstrations_path(who)
         if not path.exists():
             demos = [d for configuration in (1, 2)
@@ -92,7 +92,7 @@ def _record_average(ctx: Context) -> int:
     settings = ctx.config.experiments
     try:
         recorded = {who: load_demonstrations(ctx.run.require(ctx.run.demonstrations_path(who), "record"))
-                    for who in ("expert", "tiny", "humanoid", "poor")}
+                    for who in (*HETEROGENEOUS, "poor")}
         demos, trial = average_demonstrator(recognizer, n=settings.demonstrations_per_configuration,
                                             seed=ctx.config.seeds.demonstrations,
                                             max_trials=settings.average_max_trials, config=ctx.config.learning,
@@ -121,7 +121,7 @@ def _segment(ctx: Context) -> int:
     recognizer = PrimitiveRecognizer.load(ctx.run.require(ctx.run.recognizer_path, "train"))
     made = _record_average(ctx)
     segmenter = dataclasses.asdict(ctx.config.segmenter)
-    for who in ALL_DEMONSTRATORS:
+    for who in DEMONSTRATORS:
         path = ctx.run.segments_path(who)
         if not path.exists():
             demos = load_demonstrations(ctx.run.require(ctx.run.demonstrations_path(who), "record"))
@@ -143,8 +143,6 @@ def _evaluate(ctx: Context, experiments: Sequence[str] | None = None) -> int:
 
 
 def _report(ctx: Context) -> int:
-    from polymimic.reports import write_report
-
     write_report(ctx.run, ctx.config, quiet=ctx.quiet)
     return 1
 

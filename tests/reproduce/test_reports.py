@@ -4,25 +4,24 @@ import json
 import re
 
 import pytest
-from tiny_runs import tiny_run_toml
 
-from polymimic import markdown, reports, thesis
-from polymimic.backends import TaskRunner
-from polymimic.figures import FIGURES
-from polymimic.rundir import RunDir
-from polymimic.runconfig import RunConfig
-from polymimic.stages import Context, reproduce
+from polymimic.reproduce import markdown, thesis
+from polymimic.reproduce import report as reports
+from polymimic.reproduce.backends import TaskRunner
+from polymimic.reproduce.config import RunConfig
+from polymimic.reproduce.figures import FIGURES
+from polymimic.reproduce.rundir import RunDir
+from polymimic.reproduce.stages import Context, reproduce
 
-TINY = tiny_run_toml(extra="lp_stride = 50\n")
 PRIMITIVES = {"forward", "backward", "left", "right", "stop"}
 MOVING = {"forward", "backward", "left", "right"}
 COUNTS = {"created", "deleted", "permanent", "candidates", "duplicates", "candidates_permanent"}
 
 
 @pytest.fixture(scope="module")
-def run(tmp_path_factory):
+def run(tiny_run_toml, tmp_path_factory):
     run = RunDir(tmp_path_factory.mktemp("run") / "tiny")
-    config = run.open(RunConfig.from_toml(TINY))
+    config = run.open(RunConfig.from_toml(tiny_run_toml(extra="lp_stride = 50\n")))
     reproduce(Context(run=run, config=config, runner=TaskRunner(workers=1), quiet=True))
     return run
 

@@ -1,21 +1,23 @@
 """The reproduction commands: config, the stages one by one, replay, and clear errors."""
 
 import json
-import tomllib
 
 import pytest
-from tiny_runs import tiny_run_toml
+import tomllib
 
 from polymimic import cli
-from polymimic.runconfig import RunConfig
-
-TINY = tiny_run_toml(trials=2, evaluated_imitators=1, attempts_per_configuration=2)
+from polymimic.reproduce.config import RunConfig
 
 
 @pytest.fixture(scope="module")
-def tiny_toml(tmp_path_factory):
+def tiny(tiny_run_toml):
+    return tiny_run_toml(trials=2, evaluated_imitators=1, attempts_per_configuration=2)
+
+
+@pytest.fixture(scope="module")
+def tiny_toml(tiny, tmp_path_factory):
     path = tmp_path_factory.mktemp("config") / "tiny.toml"
-    path.write_text(TINY)
+    path.write_text(tiny)
     return path
 
 
@@ -48,11 +50,11 @@ def test_config_prints_every_parameter_with_the_thesis_defaults(capsys):
     assert RunConfig.from_toml(capsys.readouterr().out) == RunConfig.quick()
 
 
-def test_config_of_a_file_and_of_a_run(capsys, tiny_toml, reproduced):
+def test_config_of_a_file_and_of_a_run(capsys, tiny, tiny_toml, reproduced):
     assert cli.main(["config", "--config", str(tiny_toml)]) == 0
     assert tomllib.loads(capsys.readouterr().out)["experiments"]["trials"] == 2
     assert cli.main(["config", "--run-dir", str(reproduced)]) == 0
-    assert RunConfig.from_toml(capsys.readouterr().out) == RunConfig.from_toml(TINY)
+    assert RunConfig.from_toml(capsys.readouterr().out) == RunConfig.from_toml(tiny)
 
 
 def test_the_stages_fill_the_run_directory(reproduced, capsys):

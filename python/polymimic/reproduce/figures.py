@@ -16,7 +16,8 @@ import os
 import pathlib
 from typing import Any
 
-from polymimic.progress import progress
+from polymimic.plots import plot_log_likelihoods, plot_lp_over_time, plot_metric_bars
+from polymimic.reproduce.progress import progress
 
 __all__ = ["FIGURES", "METRIC_LABELS", "draw_figures"]
 
@@ -64,7 +65,6 @@ def draw_figures(results: dict[str, Any], run_path: str | os.PathLike[str], *,
                  quiet: bool = False) -> dict[str, str]:
     """Draw every figure; return each one's path relative to ``run_path``, by figure number
     (``"final_lp_heterogeneous"`` for the extra one)."""
-    from polymimic.plots import plot_lp_over_time, plot_log_likelihoods, plot_metric_bars
 
     root = pathlib.Path(run_path)
     (root / "plots").mkdir(exist_ok=True)

@@ -16,19 +16,18 @@ import json
 from collections.abc import Sequence
 from typing import Any
 
-from polymimic import thesis
 from polymimic._atomic import atomic_write_text
-from polymimic.figures import METRIC_LABELS, draw_figures
-from polymimic.markdown import to_html
-from polymimic.results import BEHAVIOUR_COUNTS, gather
-from polymimic.rundir import RunDir
-from polymimic.runconfig import RunConfig
+from polymimic.recognition import MOVING
+from polymimic.reproduce import thesis
+from polymimic.reproduce.config import RunConfig
+from polymimic.reproduce.figures import METRIC_LABELS, draw_figures
+from polymimic.reproduce.markdown import to_html
+from polymimic.reproduce.results import BEHAVIOUR_COUNTS, gather
+from polymimic.reproduce.roster import HETEROGENEOUS, VARYING_SKILL
+from polymimic.reproduce.rundir import RunDir
 
 __all__ = ["render", "verdict", "write_report"]
 
-MOVING = ("forward", "backward", "left", "right")
-HETEROGENEOUS = ("expert", "tiny", "humanoid")
-VARYING = ("poor", "average", "expert")
 
 
 def pct(share: float | None, digits: int = 1) -> str:
@@ -341,19 +340,19 @@ def _imitator_table(report: _Report, title: str, groups: dict[str, tuple[str, di
 
 def _varying_skill(report: _Report) -> None:
     e = report.r["experiments"]["varying_skill"]
-    models = ["imitator", *VARYING]
+    models = ["imitator", *VARYING_SKILL]
     report.heading("Table 4.10: prediction rounds with a match, varying skill")
     report.table(["model", "ours", "thesis"], _match_rows([e], [thesis.MATCH_RATE["varying_skill"]], models))
     report.check("the Expert's model matches best of the demonstrators'",
-                 _most({n: _mean(e["match_rate"][n]) for n in VARYING}, "expert"))
+                 _most({n: _mean(e["match_rate"][n]) for n in VARYING_SKILL}, "expert"))
 
     report.heading("Figs 4.19–4.24: behaviours of each model, varying skill")
-    expert_most = _each(lambda v: _most({k: v[k] for k in VARYING}, "expert"))
+    expert_most = _each(lambda v: _most({k: v[k] for k in VARYING_SKILL}, "expert"))
     claims = {
         "created": ("the Expert's models create the fewest behaviours",
-                    _each(lambda v: _least({k: v[k] for k in VARYING}, "expert"))),
+                    _each(lambda v: _least({k: v[k] for k in VARYING_SKILL}, "expert"))),
         "deleted": ("the Expert's models delete the fewest behaviours",
-                    _each(lambda v: _least({k: v[k] for k in VARYING}, "expert"))),
+                    _each(lambda v: _least({k: v[k] for k in VARYING_SKILL}, "expert"))),
         "permanent": ("the Expert's models keep the most permanent behaviours", expert_most),
         "candidates": ("the Expert's models nominate the most candidates", expert_most),
         "duplicates": ("the Expert's models have the most duplicate candidates", expert_most),
@@ -364,8 +363,8 @@ def _varying_skill(report: _Report) -> None:
     report.heading("Fig 4.25: final learning preference, varying skill")
     report.figure("4.25", "final LP of each demonstrator's model, mean (sd) over trials")
     report.figure("final_lp_heterogeneous", "final LP, heterogeneous bodies (no figure in the thesis)")
-    report.table(["model", "final LP, ours"], [(w, msd(e["final_lp"][w], digits=3)) for w in VARYING])
-    finals = {w: _mean(e["final_lp"][w]) for w in VARYING}
+    report.table(["model", "final LP, ours"], [(w, msd(e["final_lp"][w], digits=3)) for w in VARYING_SKILL])
+    finals = {w: _mean(e["final_lp"][w]) for w in VARYING_SKILL}
     ordered = (finals["expert"] > finals["average"] > finals["poor"]  # type: ignore[operator]
                if _all_known(*finals.values()) else None)
     report.check("final LPs order Expert > Average > Poor on average", ordered)
@@ -374,7 +373,7 @@ def _varying_skill(report: _Report) -> None:
 
     report.heading("Figs 4.26–4.28: learning preference over time, varying skill")
     stride = e["lp_over_time"]["stride"]
-    for number, who in zip(range(26, 29), VARYING):
+    for number, who in zip(range(26, 29), VARYING_SKILL):
         report.figure(f"4.{number}", f"LP of the {who} model, every {stride}th change, all trials")
     poor, expert = finals["poor"], finals["expert"]
     report.check("the Poor model's LP ends below the starting 0.5, the Expert's near 0.9 or above",

@@ -4,18 +4,17 @@ import numpy as np
 import pytest
 
 import polymimic
-from conftest import left_right_mask, random_stochastic
 
 hmm = pytest.importorskip("hmmlearn.hmm")
 
 N_ITER = 10
 
 
-def training_sequences(rng, n_symbols):
+def training_sequences(rng, stochastic, n_symbols):
     truth = polymimic.DiscreteHMM.from_params(
         [1.0, 0.0, 0.0],
         [[0.7, 0.2, 0.1], [0.0, 0.8, 0.2], [0.0, 0.0, 1.0]],
-        random_stochastic(rng, 3, n_symbols),
+        stochastic(3, n_symbols),
     )
     seqs = []
     for length in rng.integers(5, 31, size=60):
@@ -40,16 +39,16 @@ def peer_fit(start, trans, emit, seqs):
 
 
 @pytest.mark.parametrize("topology", ["left-right", "ergodic"])
-def test_baum_welch_matches_hmmlearn(rng, topology):
+def test_baum_welch_matches_hmmlearn(rng, stochastic, left_right_mask, topology):
     n_states, n_symbols = 5, 7
-    seqs = training_sequences(rng, n_symbols)
+    seqs = training_sequences(rng, stochastic, n_symbols)
     if topology == "left-right":
         start = np.eye(n_states)[0]
-        trans = random_stochastic(rng, n_states, n_states, left_right_mask(n_states, 2))
+        trans = stochastic(n_states, n_states, left_right_mask(n_states, 2))
     else:
-        start = random_stochastic(rng, 1, n_states)[0]
-        trans = random_stochastic(rng, n_states, n_states)
-    emit = random_stochastic(rng, n_states, n_symbols)
+        start = stochastic(1, n_states)[0]
+        trans = stochastic(n_states, n_states)
+    emit = stochastic(n_states, n_symbols)
 
     ours = polymimic.DiscreteHMM.from_params(
         start, trans, emit, topology=topology, max_iter=N_ITER, tol=float("-inf")
@@ -67,10 +66,10 @@ def test_baum_welch_matches_hmmlearn(rng, topology):
         assert np.all(ours.startprob_[1:] == 0.0)
 
 
-def test_scores_match_hmmlearn(rng):
-    start = random_stochastic(rng, 1, 4)[0]
-    trans = random_stochastic(rng, 4, 4)
-    emit = random_stochastic(rng, 4, 9)
+def test_scores_match_hmmlearn(rng, stochastic):
+    start = stochastic(1, 4)[0]
+    trans = stochastic(4, 4)
+    emit = stochastic(4, 9)
     ours = polymimic.DiscreteHMM.from_params(start, trans, emit, topology="ergodic")
     peer = hmm.CategoricalHMM(n_components=4, n_features=9, implementation="scaling")
     peer.startprob_, peer.transmat_, peer.emissionprob_ = start, trans, emit

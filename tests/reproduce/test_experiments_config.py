@@ -1,12 +1,12 @@
 """The run configuration: every parameter, a TOML round trip, and clear refusals."""
 
 import dataclasses
-import tomllib
 
 import pytest
+import tomllib
 
 import polymimic
-from polymimic.runconfig import ConfigError, RunConfig
+from polymimic.reproduce.config import ConfigError, RunConfig
 
 
 def test_defaults_are_the_thesis_sizes():

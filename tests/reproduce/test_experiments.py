@@ -4,16 +4,13 @@ stopped, and summarise to known answers."""
 import shutil
 
 import pytest
-from tiny_runs import tiny_run_toml
 
-from polymimic import experiments, results
-from polymimic.backends import TaskRunner
 from polymimic.learning import ModelResult, TrialResult
-from polymimic.rundir import MissingInputError, RunDir
-from polymimic.runconfig import RunConfig
-from polymimic.stages import Context, run_stage
-
-TINY = tiny_run_toml()
+from polymimic.reproduce import experiments, results
+from polymimic.reproduce.backends import TaskRunner
+from polymimic.reproduce.config import RunConfig
+from polymimic.reproduce.rundir import MissingInputError, RunDir
+from polymimic.reproduce.stages import Context, run_stage
 
 
 def _context(path, runner=None, config=None):
@@ -22,10 +19,10 @@ def _context(path, runner=None, config=None):
 
 
 @pytest.fixture(scope="module")
-def segmented(tmp_path_factory):
+def segmented(tiny_run_toml, tmp_path_factory):
     """A tiny run, up to and including segmentation."""
     path = tmp_path_factory.mktemp("run") / "segmented"
-    ctx = _context(path, config=RunConfig.from_toml(TINY))
+    ctx = _context(path, config=RunConfig.from_toml(tiny_run_toml()))
     for stage in ("self-observe", "record", "train", "segment"):
         run_stage(ctx, stage)
     return path

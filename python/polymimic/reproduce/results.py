@@ -34,7 +34,7 @@ from polymimic.reproduce.rundir import MissingInputError, RunDir
 
 __all__ = ["appendix_b", "gather", "lp_climb", "mean_sd", "summarize_evaluations", "summarize_experiment"]
 
-FORMAT = "polymimic.reproduce.results"
+FORMAT = "polymimic.results"
 FORMAT_VERSION = 1
 BEHAVIOUR_COUNTS = ("created", "deleted", "permanent", "candidates", "duplicates", "candidates_permanent")
 LP_CLIMB_SHARE = 0.9

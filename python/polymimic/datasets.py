@@ -138,19 +138,9 @@ def load_demonstrations(path: str | os.PathLike[str]) -> list[Demonstration]:
 
 
 def save_self_observation(seqs: Sequence[PrimitiveSequence], path: str | os.PathLike[str]) -> None:
-    """Write self-observation sequences to a Parquet file, atomically.
-
-    Parameters
-    ----------
-    seqs : list of PrimitiveSequence
-        As :func:`polymimic.self_observation` returns them; each needs at least one frame.
-    path : str or path-like
-        The file to write (replaced if it exists). Its directory must exist.
-
-    Raises
-    ------
-    TypeError, ValueError
-        For anything that is not a list of valid sequences; nothing is written then.
+    """Write self-observation sequences (as :func:`polymimic.self_observation` returns them, each
+    with at least one frame) to a Parquet file, atomically; the path and the errors are as for
+    :func:`save_demonstrations`.
 
     Examples
     --------
@@ -176,15 +166,8 @@ def save_self_observation(seqs: Sequence[PrimitiveSequence], path: str | os.Path
 
 
 def load_self_observation(path: str | os.PathLike[str]) -> list[PrimitiveSequence]:
-    """Read the sequences that :func:`save_self_observation` wrote, in their order.
-
-    Raises
-    ------
-    FileNotFoundError
-        If there is no file at ``path``.
-    polymimic.ModelFileError
-        If the file is not Parquet, is damaged, holds another kind of data or a foreign schema,
-        or was written by a later format version; the message names the file and the problem.
+    """Read the sequences that :func:`save_self_observation` wrote, in their order; a missing or
+    damaged file raises as in :func:`load_demonstrations`.
 
     Examples
     --------

@@ -24,7 +24,8 @@ from __future__ import annotations
 import dataclasses
 import math
 import os
-from typing import TYPE_CHECKING, Any, cast
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypedDict, cast
 
 import numpy as np
 
@@ -36,6 +37,13 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 __all__ = ["animate_demonstration", "plot_demonstration"]
+
+
+class MeanSd(TypedDict):
+    """A mean and its sd, as the bar charts take them; ``None`` where there is none."""
+
+    mean: float | None
+    sd: float | None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -290,7 +298,7 @@ def _ball_markers(ax: Axes, scene: _Scene, bx: np.ndarray, by: np.ndarray) -> No
                         alpha=0.9, zorder=4))
 
 
-def plot_log_likelihoods(table: dict[str, dict[str, float]], *, ax: Axes | None = None,
+def plot_log_likelihoods(table: Mapping[str, Mapping[str, float | None]], *, ax: Axes | None = None,
                          path: str | os.PathLike[str] | None = None) -> Figure:
     """Fig 4.5: grouped bars of each HMM's mean log-likelihood on each primitive's test set.
 
@@ -316,7 +324,7 @@ def plot_log_likelihoods(table: dict[str, dict[str, float]], *, ax: Axes | None 
     width = 0.8 / max(len(models), 1)
     positions = np.arange(len(primitives))
     for i, model in enumerate(models):
-        values = [table[model][p] for p in primitives]
+        values = np.array([table[model][p] for p in primitives], dtype=float)  # an unknown mean is NaN
         ax.bar(positions + (i - (len(models) - 1) / 2) * width, values, width, label=f"{model} HMM")
     ax.set_xticks(positions, [f"{p} test set" for p in primitives])
     ax.set_ylabel("mean log-likelihood")
@@ -327,7 +335,7 @@ def plot_log_likelihoods(table: dict[str, dict[str, float]], *, ax: Axes | None 
     return figure
 
 
-def plot_metric_bars(table: dict[str, dict[str, dict[str, float | None]]], *, ylabel: str, title: str,
+def plot_metric_bars(table: Mapping[str, Mapping[str, MeanSd]], *, ylabel: str, title: str,
                      ax: Axes | None = None, path: str | os.PathLike[str] | None = None) -> Figure:
     """Bars of a per-model metric, mean ± sd over trials, with the sd written on top of each bar
     as in the thesis's Figs 4.7–4.12 and 4.19–4.25.
@@ -359,9 +367,9 @@ def plot_metric_bars(table: dict[str, dict[str, dict[str, float | None]]], *, yl
     width = 0.8 / max(len(groups), 1)
     positions = np.arange(len(models))
     for i, group in enumerate(groups):
-        cells = [table[group].get(m) or {} for m in models]
-        means = np.array([np.nan if c.get("mean") is None else c["mean"] for c in cells], dtype=float)
-        sds = np.array([np.nan if c.get("sd") is None else c["sd"] for c in cells], dtype=float)
+        cells = [table[group].get(m) for m in models]
+        means = np.array([np.nan if c is None or c["mean"] is None else c["mean"] for c in cells], dtype=float)
+        sds = np.array([np.nan if c is None or c["sd"] is None else c["sd"] for c in cells], dtype=float)
         shown = np.isfinite(means)
         x = positions[shown] + (i - (len(groups) - 1) / 2) * width
         bars = ax.bar(x, means[shown], width, yerr=np.nan_to_num(sds[shown]), capsize=3, label=group)

@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import os
 import pathlib
-from typing import Any
 
 from polymimic.plots import plot_log_likelihoods, plot_lp_over_time, plot_metric_bars
 from polymimic.reproduce.progress import progress
+from polymimic.reproduce.schema import Results
 
 __all__ = ["FIGURES", "METRIC_LABELS", "draw_figures"]
 
@@ -61,7 +61,7 @@ def figure_file(number: str) -> str:
     return f"plots/fig_{number.replace('.', '_')}.png"
 
 
-def draw_figures(results: dict[str, Any], run_path: str | os.PathLike[str], *,
+def draw_figures(results: Results, run_path: str | os.PathLike[str], *,
                  quiet: bool = False) -> dict[str, str]:
     """Draw every figure; return each one's path relative to ``run_path``, by figure number
     (``"final_lp_heterogeneous"`` for the extra one)."""

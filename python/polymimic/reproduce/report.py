@@ -13,8 +13,8 @@ plain checks on the numbers, collected at the top of the report.
 from __future__ import annotations
 
 import json
-from collections.abc import Sequence
-from typing import Any
+from collections.abc import Mapping, Sequence
+from typing import Any, Literal
 
 from polymimic._atomic import atomic_write_text
 from polymimic.recognition import MOVING
@@ -25,6 +25,7 @@ from polymimic.reproduce.markdown import to_html
 from polymimic.reproduce.results import BEHAVIOUR_COUNTS, gather
 from polymimic.reproduce.roster import HETEROGENEOUS, VARYING_SKILL
 from polymimic.reproduce.rundir import RunDir
+from polymimic.reproduce.schema import ExperimentResults, MeanSd, Outcomes, Results
 
 __all__ = ["render", "verdict", "write_report"]
 
@@ -39,13 +40,13 @@ def num(value: float | None, digits: int = 1) -> str:
     return "—" if value is None else f"{value:.{digits}f}"
 
 
-def msd(cell: dict[str, Any] | None, *, share: bool = False, digits: int = 1) -> str:
+def msd(cell: MeanSd | None, *, share: bool = False, digits: int = 1) -> str:
     """``mean (sd)``, as a percentage for shares."""
-    if not cell or cell.get("mean") is None:
+    if not cell or cell["mean"] is None:
         return "—"
     if share:
         return f"{pct(cell['mean'], digits)} ({pct(cell['sd'], digits)})"
-    return f"{cell['mean']:.{digits}f} ({cell['sd']:.{digits}f})"
+    return f"{cell['mean']:.{digits}f} ({num(cell['sd'], digits)})"
 
 
 def verdict(claim: str, holds: bool | None) -> str:
@@ -60,31 +61,36 @@ def _table(header: Sequence[str], rows: Sequence[Sequence[Any]]) -> list[str]:
     return [*lines, ""]
 
 
-def _mean(cell: dict[str, Any] | None) -> float | None:
-    return None if not cell else cell.get("mean")
+def _mean(cell: MeanSd | None) -> float | None:
+    return None if not cell else cell["mean"]
 
 
 def _all_known(*values: Any) -> bool:
     return all(v is not None for v in values)
 
 
-def _least(values: dict[str, float | None], who: str) -> bool | None:
+def _known(values: Mapping[str, float | None]) -> dict[str, float] | None:
+    """``values`` where every one is known; None where any is missing."""
+    known = {k: v for k, v in values.items() if v is not None}
+    return known if len(known) == len(values) else None
+
+
+def _least(values: Mapping[str, float | None], who: str) -> bool | None:
     """Whether ``who`` has the strictly lowest value (None if any is missing)."""
-    if not _all_known(*values.values()):
-        return None
-    return all(values[who] < v for k, v in values.items() if k != who)  # type: ignore[operator]
+    known = _known(values)
+    return None if known is None else all(known[who] < v for k, v in known.items() if k != who)
 
 
-def _most(values: dict[str, float | None], who: str) -> bool | None:
-    if not _all_known(*values.values()):
-        return None
-    return all(values[who] > v for k, v in values.items() if k != who)  # type: ignore[operator]
+def _most(values: Mapping[str, float | None], who: str) -> bool | None:
+    """Whether ``who`` has the strictly highest value (None if any is missing)."""
+    known = _known(values)
+    return None if known is None else all(known[who] > v for k, v in known.items() if k != who)
 
 
 class _Report:
     """Markdown, section by section, and every verdict given."""
 
-    def __init__(self, results: dict[str, Any], figures: dict[str, str]) -> None:
+    def __init__(self, results: Results, figures: dict[str, str]) -> None:
         self.r, self.figures = results, figures
         self.lines: list[str] = []
         self.verdicts: list[tuple[str, str, bool | None]] = []
@@ -110,7 +116,7 @@ class _Report:
         self.lines += [verdict(claim, holds), ""]
 
 
-def render(results: dict[str, Any], figures: dict[str, str], *, manifest: dict[str, Any] | None = None) -> str:
+def render(results: Results, figures: dict[str, str], *, manifest: dict[str, Any] | None = None) -> str:
     """The whole report as Markdown."""
     report = _Report(results, figures)
     for section in (_recognition, _segments, _demonstrators, _heterogeneous, _varying_skill, _appendix_b):
@@ -124,7 +130,7 @@ def render(results: dict[str, Any], figures: dict[str, str], *, manifest: dict[s
     return "\n".join(head + summary + report.lines).rstrip() + "\n"
 
 
-def _header(results: dict[str, Any], manifest: dict[str, Any] | None) -> list[str]:
+def _header(results: Results, manifest: dict[str, Any] | None) -> list[str]:
     sizes = results["sizes"]
     lines = ["# polymimic: the thesis reproduced", "",
              f"polymimic {results['polymimic_version']}: {sizes['trials']} trials per experiment, "
@@ -163,15 +169,15 @@ def _recognition(report: _Report) -> None:
     report.figure("4.5", "mean log-likelihood of each HMM on each primitive's test set")
     table = r["hmm_log_likelihood"]
     report.table(["HMM \\ test set", *MOVING], [(m, *(num(table[m][p]) for p in MOVING)) for m in MOVING])
-    own_best = all(table[p][p] is not None and all(table[m][p] is None or table[m][p] < table[p][p]
-                                                   for m in MOVING if m != p) for p in MOVING)
+    own_best = all((own := table[p][p]) is not None
+                   and all((other := table[m][p]) is None or other < own for m in MOVING if m != p) for p in MOVING)
     report.check("every primitive's test set is scored highest by its own HMM", own_best)
 
     report.heading("Table 4.3: accuracy of each HMM on held-out sequences")
     accuracy = r["hmm_accuracy"]
     report.table(["HMM", "ours", "thesis"], [(p, pct(accuracy[p], 2), pct(thesis.ACCURACY[p], 2)) for p in MOVING])
     report.check("every primitive recognised more than 90 % of the time",
-                 all(accuracy[p] is not None and accuracy[p] > 0.9 for p in MOVING))
+                 all((share := accuracy[p]) is not None and share > 0.9 for p in MOVING))
 
 
 def _segments(report: _Report) -> None:
@@ -187,12 +193,13 @@ def _segments(report: _Report) -> None:
     report.table(["demonstrator", "matched, ours", "matched, thesis", "gaps, ours", "gaps, thesis", "segments"], rows)
     matches = {w: r["segments"][w]["command_match"] for w in ("tiny", "expert", "humanoid", "poor", "average")}
     report.check("the humanoid's segments match its commands least", _least(matches, "humanoid"))
-    gaps = [r["segments"][w]["gaps"] for w in who_all]
+    gaps = _known({w: r["segments"][w]["gaps"] for w in who_all})
     report.check("gaps are rare (under 5 % for every demonstrator)",
-                 all(g < 0.05 for g in gaps) if _all_known(*gaps) else None)
+                 None if gaps is None else all(g < 0.05 for g in gaps.values()))
 
 
-def _goal_rows(ours: dict[str, Any], theirs: dict[str, Any], names: Sequence[str]) -> list[tuple[Any, ...]]:
+def _goal_rows(ours: Mapping[str, Outcomes], theirs: Mapping[str, Mapping[str, int]],
+               names: Sequence[str]) -> list[tuple[Any, ...]]:
     return [(w, ours[w]["goals"], ours[w]["own_goals"], ours[w]["attempts"], theirs[w]["goals"],
              theirs[w]["own_goals"], theirs[w]["attempts"]) for w in names]
 
@@ -212,7 +219,7 @@ def _demonstrators(report: _Report) -> None:
     report.check("the Poor demonstrator scores the most own goals", _most(own_rate, "poor"))
 
 
-def _match_rows(experiments: Sequence[dict[str, Any]], theses: Sequence[dict[str, Any]],
+def _match_rows(experiments: Sequence[ExperimentResults], theses: Sequence[Mapping[str, MeanSd]],
                 names: Sequence[str]) -> list[tuple[Any, ...]]:
     rows = []
     for name in names:
@@ -223,7 +230,7 @@ def _match_rows(experiments: Sequence[dict[str, Any]], theses: Sequence[dict[str
     return rows
 
 
-def _behaviour_figures(report: _Report, numbers: Sequence[int], groups: dict[str, dict[str, Any]],
+def _behaviour_figures(report: _Report, numbers: Sequence[int], groups: dict[str, ExperimentResults],
                        names: Sequence[str], claims: dict[str, tuple[str, Any]]) -> None:
     for number, metric in zip(numbers, BEHAVIOUR_COUNTS):
         label = METRIC_LABELS[metric]
@@ -244,13 +251,12 @@ def _each(test: Any) -> Any:
     return every
 
 
-def _ordering_changes_little(groups: dict[str, dict[str, float | None]], experiments: Sequence[dict[str, Any]],
-                             metric: str) -> bool | None:
+def _ordering_changes_little(experiments: Sequence[ExperimentResults], metric: str) -> bool | None:
     rcb, bcr = experiments
     out = []
     for name in HETEROGENEOUS:
         a, b = rcb["behaviours"][name][metric], bcr["behaviours"][name][metric]
-        if a["mean"] is None or b["mean"] is None:
+        if a["mean"] is None or b["mean"] is None or a["sd"] is None or b["sd"] is None:
             return None
         out.append(abs(a["mean"] - b["mean"]) <= max(a["sd"], b["sd"], 0.5))
     return all(out)
@@ -266,8 +272,8 @@ def _heterogeneous(report: _Report) -> None:
                                           thesis.MATCH_RATE["heterogeneous_bcr"]], models))
     answers = [_least({n: _mean(e["match_rate"][n]) for n in HETEROGENEOUS}, "humanoid") for e in (rcb, bcr)]
     report.check("the humanoid's model matches least, in both orderings", None if None in answers else all(answers))
-    close = [abs(_mean(rcb["match_rate"][n]) - _mean(bcr["match_rate"][n])) <= 0.02  # type: ignore[operator]
-             for n in models if _all_known(_mean(rcb["match_rate"][n]), _mean(bcr["match_rate"][n]))]
+    close = [abs(a - b) <= 0.02 for n in models
+             if (a := _mean(rcb["match_rate"][n])) is not None and (b := _mean(bcr["match_rate"][n])) is not None]
     report.check("the ordering moves no model's match rate by more than 2 points", all(close) if close else None)
 
     report.heading("Figs 4.7–4.12: behaviours of each model, heterogeneous bodies")
@@ -277,7 +283,7 @@ def _heterogeneous(report: _Report) -> None:
         "created": ("the humanoid's models create the most behaviours", _each(lambda v: _most(v, "humanoid"))),
         "deleted": ("the humanoid's models delete the most behaviours", _each(lambda v: _most(v, "humanoid"))),
         "permanent": ("the ordering changes no model's permanent behaviours by more than an sd",
-                      lambda g: _ordering_changes_little(g, pair, "permanent")),
+                      lambda g: _ordering_changes_little(pair, "permanent")),
         "candidates": ("the Expert's models nominate more candidates when first (RCB) than last (BCR)",
                        lambda g: None if None in (g["RCB"]["expert"], g["BCR"]["expert"])
                        else g["RCB"]["expert"] > g["BCR"]["expert"]),
@@ -305,9 +311,9 @@ def _heterogeneous(report: _Report) -> None:
                "final value.")
     report.table(["model", "final LP, RCB", "changes to settle, RCB", "final LP, BCR", "changes to settle, BCR"],
                  rows)
-    finals = [_mean(e["final_lp"][w]) for e in (rcb, bcr) for w in HETEROGENEOUS]
+    finals = _known({f"{w} {label}": _mean(e["final_lp"][w]) for label, e in groups.items() for w in HETEROGENEOUS})
     report.check("every heterogeneous model's LP climbs high (final mean ≥ 0.8)",
-                 all(f >= 0.8 for f in finals) if _all_known(*finals) else None)  # type: ignore[operator]
+                 None if finals is None else all(f >= 0.8 for f in finals.values()))
     slow = [_most({w: _mean(e["lp_climb"][w]["changes"]) for w in HETEROGENEOUS}, "humanoid") for e in (rcb, bcr)]
     report.check("the humanoid's LP settles slowest, in both orderings", None if None in slow else all(slow))
 
@@ -315,7 +321,7 @@ def _heterogeneous(report: _Report) -> None:
                     {"RCB": ("heterogeneous_rcb", rcb), "BCR": ("heterogeneous_bcr", bcr)})
 
 
-def _imitator_table(report: _Report, title: str, groups: dict[str, tuple[str, dict[str, Any]]]) -> None:
+def _imitator_table(report: _Report, title: str, groups: dict[str, tuple[str, ExperimentResults]]) -> None:
     report.heading(title)
     report.say("Mean (sd) over the evaluated imitators; the thesis evaluated one. *Improved* is polymimic's "
                "control of the imitator's model; *thesis control* its rule as the thesis gives it.")
@@ -331,9 +337,10 @@ def _imitator_table(report: _Report, title: str, groups: dict[str, tuple[str, di
     better = []
     for name, e in groups.values():
         cell, theirs = e["imitator"], thesis.IMITATOR_GOALS[name]
-        if cell["goals"] is not None:
-            better.append(cell["goals"] / cell["attempts"] > theirs["goals"] / theirs["attempts"]
-                          and cell["own_goals"] / cell["attempts"] < theirs["own_goals"] / theirs["attempts"])
+        goals, own_goals = cell["goals"], cell["own_goals"]
+        if goals is not None and own_goals is not None:
+            better.append(goals / cell["attempts"] > theirs["goals"] / theirs["attempts"]
+                          and own_goals / cell["attempts"] < theirs["own_goals"] / theirs["attempts"])
     report.check("our imitators score more goals and fewer own goals than the thesis's",
                  all(better) if better else None)
 
@@ -364,9 +371,8 @@ def _varying_skill(report: _Report) -> None:
     report.figure("4.25", "final LP of each demonstrator's model, mean (sd) over trials")
     report.figure("final_lp_heterogeneous", "final LP, heterogeneous bodies (no figure in the thesis)")
     report.table(["model", "final LP, ours"], [(w, msd(e["final_lp"][w], digits=3)) for w in VARYING_SKILL])
-    finals = {w: _mean(e["final_lp"][w]) for w in VARYING_SKILL}
-    ordered = (finals["expert"] > finals["average"] > finals["poor"]  # type: ignore[operator]
-               if _all_known(*finals.values()) else None)
+    finals = _known({w: _mean(e["final_lp"][w]) for w in VARYING_SKILL})
+    ordered = None if finals is None else finals["expert"] > finals["average"] > finals["poor"]
     report.check("final LPs order Expert > Average > Poor on average", ordered)
     hits = e["lp_order_hits"]
     report.say(f"Trials whose final LPs fell strictly in that order: {hits} of {e['trials']}.")
@@ -375,25 +381,25 @@ def _varying_skill(report: _Report) -> None:
     stride = e["lp_over_time"]["stride"]
     for number, who in zip(range(26, 29), VARYING_SKILL):
         report.figure(f"4.{number}", f"LP of the {who} model, every {stride}th change, all trials")
-    poor, expert = finals["poor"], finals["expert"]
     report.check("the Poor model's LP ends below the starting 0.5, the Expert's near 0.9 or above",
-                 poor < 0.5 and expert >= 0.85 if _all_known(poor, expert) else None)  # type: ignore[operator]
+                 None if finals is None else finals["poor"] < 0.5 and finals["expert"] >= 0.85)
 
     _imitator_table(report, "Table 4.11: goals of the trained imitators, varying skill",
                     {"varying skill": ("varying_skill", e)})
     poor, imitator = report.r["demonstrators"]["poor"], e["imitator"]
     clearly = None
-    if imitator["goals"] is not None and poor["attempts"]:
+    if (imitator_goals := imitator["goals"]) is not None and poor["attempts"]:
         margin = 2 * (imitator["goals_sd"] or 0.0)
-        clearly = (imitator["goals"] - margin) / imitator["attempts"] > poor["goals"] / poor["attempts"]
+        clearly = (imitator_goals - margin) / imitator["attempts"] > poor["goals"] / poor["attempts"]
     report.check("the improved imitator scores clearly more than the Poor demonstrator (by over two sd)", clearly)
 
 
 def _appendix_b(report: _Report) -> None:
     ours, theirs = report.r["appendix_b"], thesis.APPENDIX_B
-    titles = {"created": "Table B.1: behaviours found in most forward models",
-              "permanent": "Table B.2: behaviours made permanent in most forward models",
-              "predicting_ball": "Table B.3: behaviours predicting the ball in most forward models"}
+    titles: dict[Literal["created", "permanent", "predicting_ball"], str] = {
+        "created": "Table B.1: behaviours found in most forward models",
+        "permanent": "Table B.2: behaviours made permanent in most forward models",
+        "predicting_ball": "Table B.3: behaviours predicting the ball in most forward models"}
     report.heading("Appendix B: the behaviours learned most often")
     report.say(f"Over all {ours['models']} forward models of our trials (the thesis: {theirs['models']}), as a "
                "share of models. Ours counts the models holding a behaviour at the end of their trial; the thesis "
@@ -414,14 +420,14 @@ def _appendix_b(report: _Report) -> None:
                      shared >= 5 if top_ours else None)
 
 
-def _behaviour_cells(row: dict[str, Any] | None, models: int) -> tuple[str, str, str, str]:
+def _behaviour_cells(row: Mapping[str, Any] | None, models: int) -> tuple[str, str, str, str]:
     if row is None:
         return ("", "", "", "")
     return (row["primitives"], pct(row["count"] / models, 0), pct(row["permanent"] / models, 0),
             pct(row["predicting_ball"] / models, 0))
 
 
-def write_report(run: RunDir, config: RunConfig, *, quiet: bool = False) -> dict[str, Any]:
+def write_report(run: RunDir, config: RunConfig, *, quiet: bool = False) -> Results:
     """Gather ``results.json``, draw the figures, and write ``report.md`` and ``report.html``."""
     results = gather(run, config)
     atomic_write_text(run.results_path, json.dumps(results, indent=1, allow_nan=False) + "\n")

@@ -18,7 +18,7 @@ import dataclasses
 import json
 import math
 from collections.abc import Iterable, Sequence
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -31,6 +31,19 @@ from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.experiments import evaluated_seeds, trial_seeds
 from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
 from polymimic.reproduce.rundir import MissingInputError, RunDir
+from polymimic.reproduce.schema import (
+    AppendixB,
+    BehaviourRow,
+    ExperimentResults,
+    ExperimentSummary,
+    ImitatorScore,
+    LpClimb,
+    MeanSd,
+    Outcomes,
+    PrimitiveStats,
+    Results,
+    SegmentRow,
+)
 
 __all__ = ["appendix_b", "gather", "lp_climb", "mean_sd", "summarize_evaluations", "summarize_experiment"]
 
@@ -42,7 +55,7 @@ LP_CLIMB_SHARE = 0.9
 APPENDIX_B_ROWS = 30
 
 
-def mean_sd(values: Iterable[float]) -> dict[str, float | None]:
+def mean_sd(values: Iterable[float]) -> MeanSd:
     """Mean and sample standard deviation (0 for one value; both ``None`` for none)."""
     array = np.asarray(list(values), dtype=float)
     if array.size == 0:
@@ -50,7 +63,7 @@ def mean_sd(values: Iterable[float]) -> dict[str, float | None]:
     return {"mean": float(array.mean()), "sd": float(array.std(ddof=1)) if array.size > 1 else 0.0}
 
 
-def lp_climb(histories: Sequence[Sequence[float]], *, share: float = LP_CLIMB_SHARE) -> dict[str, Any]:
+def lp_climb(histories: Sequence[Sequence[float]], *, share: float = LP_CLIMB_SHARE) -> LpClimb:
     """How many LP changes a model took to first cover ``share`` of the way from its starting LP
     to its final one (up or down), over trials: how fast the learner made up its mind."""
     changes = []
@@ -69,7 +82,7 @@ def _sampled(history: Sequence[float], stride: int) -> list[float]:
 
 
 def summarize_experiment(experiment: Experiment, trials: Sequence[TrialResult], *,
-                         lp_stride: int = 200) -> dict[str, Any]:
+                         lp_stride: int = 200) -> ExperimentSummary:
     """An experiment's trials summarised: match rates, behaviour counts, final LPs, how often the
     final LPs fell in skill order, and the LP over time of every trial."""
     models: dict[str, list[ModelResult]] = {"imitator": [t.imitator for t in trials]}
@@ -97,7 +110,7 @@ def summarize_experiment(experiment: Experiment, trials: Sequence[TrialResult], 
     }
 
 
-def summarize_evaluations(evaluations: Sequence[dict[str, Any]], *, attempts: int) -> dict[str, Any]:
+def summarize_evaluations(evaluations: Sequence[dict[str, Any]], *, attempts: int) -> ImitatorScore:
     """Goals and own goals of the evaluated imitators: mean and sd over imitators.
 
     >>> summary = summarize_evaluations([{"goals": 10, "own_goals": 2, "control": "thesis"},
@@ -118,7 +131,7 @@ def _predicts_ball(behaviour: dict[str, Any], config: LearningConfig) -> bool:
                 and angle[1] <= config.ball_max_angle_sd_deg)
 
 
-def appendix_b(trials: Iterable[TrialResult], config: LearningConfig, *, rows: int = APPENDIX_B_ROWS) -> dict[str, Any]:
+def appendix_b(trials: Iterable[TrialResult], config: LearningConfig, *, rows: int = APPENDIX_B_ROWS) -> AppendixB:
     """Appendix B: over every forward model of every trial (the imitator's included), the
     behaviours of two or more primitives found in most models at the end of their trial
     (``created``), made permanent in most, and predicting the ball in most.
@@ -144,11 +157,11 @@ def appendix_b(trials: Iterable[TrialResult], config: LearningConfig, *, rows: i
                 permanent[letters] += is_permanent
                 ball[letters] += predicts
 
-    def row(letters: str) -> dict[str, Any]:
+    def row(letters: str) -> BehaviourRow:
         return {"primitives": ",".join(letters), "count": count[letters], "permanent": permanent[letters],
                 "predicting_ball": ball[letters]}
 
-    def top(key: collections.Counter[str]) -> list[dict[str, Any]]:
+    def top(key: collections.Counter[str]) -> list[BehaviourRow]:
         ranked = sorted((b for b in count if key[b] > 0), key=lambda b: (-key[b], -count[b], b))
         return [row(b) for b in ranked[:rows]]
 
@@ -174,21 +187,19 @@ def load_evaluations(run: RunDir, config: RunConfig, experiment: str, control: s
     return [json.loads(p.read_text(encoding="utf-8")) for p in paths]
 
 
-def _recognition(run: RunDir, recognizer: PrimitiveRecognizer) -> dict[str, Any]:
-    test = load_self_observation(run.require(run.self_observation_path("test"), "self-observe"))
-    stats = recognizer.motion_stats()
-    keys = ("distance_mean_mm", "distance_sd_mm", "rotation_mean_deg", "rotation_sd_deg", "count")
-    return {"primitive_stats": {p: {k: row[k] for k in keys} for p, row in stats.items()},
-            "hmm_accuracy": recognition.accuracy_table(recognizer, test),
-            "hmm_log_likelihood": recognition.log_likelihood_table(recognizer, test)}
+def _primitive_stats(recognizer: PrimitiveRecognizer) -> dict[str, PrimitiveStats]:
+    return {p: PrimitiveStats(distance_mean_mm=row["distance_mean_mm"], distance_sd_mm=row["distance_sd_mm"],
+                              rotation_mean_deg=row["rotation_mean_deg"], rotation_sd_deg=row["rotation_sd_deg"],
+                              count=cast(int, row["count"]))
+            for p, row in recognizer.motion_stats().items()}
 
 
-def _outcomes(demos: Sequence[Demonstration]) -> dict[str, int]:
+def _outcomes(demos: Sequence[Demonstration]) -> Outcomes:
     return {"goals": sum(d.outcome == "goal" for d in demos), "own_goals": sum(d.outcome == "own_goal" for d in demos),
             "attempts": len(demos)}
 
 
-def gather(run: RunDir, config: RunConfig) -> dict[str, Any]:
+def gather(run: RunDir, config: RunConfig) -> Results:
     """Everything in the run directory, summarised as ``results.json`` holds it."""
 
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
@@ -201,16 +212,18 @@ def gather(run: RunDir, config: RunConfig) -> dict[str, Any]:
         # As for every demonstrator, only attempts the tracker followed throughout.
         to_segment += [a for a in load_demonstrations(imitator_attempts) if a.tracked_throughout]
     segments = recognition.segment_table(recognizer, to_segment, **dataclasses.asdict(config.segmenter))
-    experiments, all_trials = {}, []
+    experiments: dict[str, ExperimentResults] = {}
+    all_trials: list[TrialResult] = []
+    attempts = 2 * config.experiments.attempts_per_configuration
     for name, experiment in EXPERIMENTS.items():
         trials = load_trials(run, config, name)
         all_trials += trials
-        summary = summarize_experiment(experiment, trials, lp_stride=config.experiments.lp_stride)
-        attempts = 2 * config.experiments.attempts_per_configuration
-        for key, control in (("imitator", "improved"), ("imitator_thesis_control", "thesis")):
-            summary[key] = summarize_evaluations(load_evaluations(run, config, name, control), attempts=attempts)
-        experiments[name] = summary
-    results = {
+        scores = {control: summarize_evaluations(load_evaluations(run, config, name, control), attempts=attempts)
+                  for control in ("improved", "thesis")}
+        experiments[name] = {**summarize_experiment(experiment, trials, lp_stride=config.experiments.lp_stride),
+                             "imitator": scores["improved"], "imitator_thesis_control": scores["thesis"]}
+    test = load_self_observation(run.require(run.self_observation_path("test"), "self-observe"))
+    results: Results = {
         "format": FORMAT,
         "version": FORMAT_VERSION,
         "polymimic_version": __version__,
@@ -221,15 +234,17 @@ def gather(run: RunDir, config: RunConfig) -> dict[str, Any]:
                   "trials": config.experiments.trials,
                   "evaluated_imitators": len(evaluated_seeds(config)),
                   "attempts_per_configuration": config.experiments.attempts_per_configuration},
-        **_recognition(run, recognizer),
-        "segments": {who: {k: row[k] for k in ("command_match", "gaps", "segments", "classifiable")}
+        "primitive_stats": _primitive_stats(recognizer),
+        "hmm_accuracy": {**recognition.accuracy_table(recognizer, test)},
+        "hmm_log_likelihood": {m: {**row} for m, row in recognition.log_likelihood_table(recognizer, test).items()},
+        "segments": {who: SegmentRow(command_match=row["command_match"], gaps=row["gaps"],
+                                     segments=int(row["segments"]), classifiable=int(row["classifiable"]))
                      for who, row in segments.items()},
         "demonstrators": {who: _outcomes(d) for who, d in demos.items()},
         "experiments": experiments,
         "appendix_b": appendix_b(all_trials, config.learning),
     }
-    checked: dict[str, Any] = finite(results)
-    return checked
+    return cast(Results, finite(results))
 
 
 def finite(value: Any) -> Any:

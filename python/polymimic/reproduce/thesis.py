@@ -18,6 +18,7 @@ from __future__ import annotations
 from typing import Any
 
 from polymimic._native import thesis_table_3_1
+from polymimic.reproduce.schema import MeanSd
 
 __all__ = ["ACCURACY", "APPENDIX_B", "DEMONSTRATOR_GOALS", "IMITATOR_GOALS", "MATCH_RATE", "SEGMENTS",
            "TABLE_3_1"]
@@ -51,7 +52,7 @@ DEMONSTRATOR_GOALS = {
 """Tables 4.6 and 4.9: goals and own goals of each demonstrator over its 50 demonstrations."""
 
 
-def _share(mean_percent: float, sd_percent: float) -> dict[str, float]:
+def _share(mean_percent: float, sd_percent: float) -> MeanSd:
     return {"mean": round(mean_percent / 100, 6), "sd": round(sd_percent / 100, 6)}
 
 

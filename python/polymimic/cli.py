@@ -13,7 +13,7 @@ import time
 from typing import Any
 
 from polymimic import __version__, demo
-from polymimic._native import ModelFileError
+from polymimic._native import PolymimicError
 from polymimic.datasets import load_demonstrations
 from polymimic.plots import animate_demonstration
 from polymimic.reproduce.backends import TaskRunner
@@ -40,7 +40,6 @@ _STARTS_A_RUN = ("self-observe", "reproduce")
 
 
 def _demo(args: argparse.Namespace) -> int:
-
     print(demo.report(demo.run(n_train=args.train, n_test=args.test, codebook_size=args.codebook_size,
                                n_states=args.states, seed=args.seed)))
     return 0
@@ -73,7 +72,6 @@ def _run_options(*, tasks: bool) -> argparse.ArgumentParser:
 
 
 def build_parser() -> argparse.ArgumentParser:
-
     parser = argparse.ArgumentParser(prog="polymimic", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
@@ -123,7 +121,6 @@ def _requested_config(args: argparse.Namespace) -> Any:
 
 
 def _run_path(args: argparse.Namespace, *, new: bool) -> pathlib.Path:
-
     if args.run_dir is not None:
         return pathlib.Path(args.run_dir)
     if new:
@@ -135,17 +132,15 @@ def _run_path(args: argparse.Namespace, *, new: bool) -> pathlib.Path:
     return latest
 
 
-def _open(args: argparse.Namespace, *, new: bool) -> Any:
-
-    run = RunDir(_run_path(args, new=new))
-    if not new and not run.manifest_path.exists():
+def _existing(run: RunDir) -> RunDir:
+    """``run``, refused with a hint where it is not a run directory."""
+    if not run.manifest_path.exists():
         raise MissingInputError(f"{run.path} is not a run directory (no manifest.json): start it with "
                                 f"`polymimic self-observe --run-dir {run.path}` or `polymimic reproduce`")
-    return run, run.open(_requested_config(args))
+    return run
 
 
 def _config(args: argparse.Namespace) -> int:
-
     if args.run_dir is not None and (args.run_dir / "manifest.json").exists():
         config = RunDir(args.run_dir).open(_requested_config(args))
     else:
@@ -155,8 +150,16 @@ def _config(args: argparse.Namespace) -> int:
 
 
 def _stage(args: argparse.Namespace) -> int:
+    new = args.stage in _STARTS_A_RUN
+    run = RunDir(_run_path(args, new=new))
+    if not new:
+        _existing(run)
+    requested = _requested_config(args)  # read before the run directory is touched
+    with run.lock(f"polymimic {args.stage}"):
+        return _run_stages(run, run.open(requested), args)
 
-    run, config = _open(args, new=args.stage in _STARTS_A_RUN)
+
+def _run_stages(run: RunDir, config: RunConfig, args: argparse.Namespace) -> int:
     with TaskRunner(backend=args.backend, workers=args.workers, address=args.address) as runner:
         ctx = Context(run=run, config=config, runner=runner, quiet=args.quiet)
         ctx.say(f"run directory: {run.path}")
@@ -176,8 +179,8 @@ def _stage(args: argparse.Namespace) -> int:
 
 
 def _replay(args: argparse.Namespace) -> int:
-
-    run, _ = _open(args, new=False)
+    run = _existing(RunDir(_run_path(args, new=False)))
+    run.open(_requested_config(args))
     if args.who == "imitator":
         source = run.require(run.attempts_path(args.experiment, args.control), "evaluate")
     else:
@@ -193,7 +196,6 @@ def _replay(args: argparse.Namespace) -> int:
 
 
 def main(argv: list[str] | None = None) -> int:
-
     parser = build_parser()
     args = parser.parse_args(argv)
     if getattr(args, "address", None) is not None and args.backend != "ray":
@@ -201,8 +203,9 @@ def main(argv: list[str] | None = None) -> int:
     started = time.perf_counter()
     try:
         return int(args.handler(args))
-    except (RunError, ConfigError, ModelFileError) as error:
-        print(f"polymimic {args.command}: error: {error}", file=sys.stderr)
+    except (PolymimicError, ConfigError) as error:  # bad input: files, configs, runs; a bug still raises
+        one_line = "; ".join(line.strip() for line in str(error).splitlines() if line.strip())
+        print(f"polymimic {args.command}: error: {one_line}", file=sys.stderr)
         return EXIT_USAGE
     except KeyboardInterrupt:
         print(f"\npolymimic {args.command}: interrupted after {time.perf_counter() - started:.0f} s; run the same "

@@ -18,6 +18,8 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -81,12 +83,56 @@ class PrimitiveSequence:
     frames: np.ndarray
 
 
-def _field_config(config: dict[str, Any] | str | None) -> str | None:
-    if config is None or isinstance(config, str):
-        return config
-    import json
+def check_config(config: Mapping[str, Any] | str) -> dict[str, Any]:
+    """A field configuration checked whole, with every key it leaves out filled in from
+    :func:`default_config`: every key known (nested tables by their dotted name), every value of
+    its default's type and in range.
 
-    return json.dumps(config)
+    >>> check_config({"time_limit_s": 30.0})["time_limit_s"]
+    30.0
+    >>> check_config({"time_limt_s": 30.0})
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown key 'time_limt_s' in the field config; known keys: substeps_per_frame, time_limit_s, ...
+    """
+    if isinstance(config, str):
+        try:
+            config = json.loads(config)
+        except ValueError as error:
+            raise ValueError(f"the field config is not valid JSON: {error}") from error
+    if not isinstance(config, Mapping):
+        raise TypeError(f"the field config must be a mapping, got {type(config).__name__}")
+    merged = _checked_table("", default_config(), config)
+    checked: dict[str, Any] = json.loads(_native.check_field_config(json.dumps(merged)))
+    return checked
+
+
+def _checked_table(prefix: str, defaults: Mapping[str, Any], values: Mapping[str, Any]) -> dict[str, Any]:
+    merged = dict(defaults)
+    for key, value in values.items():
+        name = f"{prefix}{key}"
+        if key not in defaults:
+            raise ValueError(f"unknown key {name!r} in the field config; known keys: "
+                             f"{', '.join(prefix + k for k in defaults)}")
+        default = defaults[key]
+        if isinstance(default, Mapping):
+            if not isinstance(value, Mapping):
+                raise TypeError(f"field config {name!r} must be a table, got {value!r}")
+            merged[key] = _checked_table(f"{name}.", default, value)
+        elif isinstance(value, bool) or not isinstance(value, (int, float)) or (
+                isinstance(default, int) and not isinstance(value, int)):
+            kind = "an integer" if isinstance(default, int) else "a number"
+            raise TypeError(f"field config {name!r} must be {kind}, like the default {default!r}; got {value!r}")
+        elif not math.isfinite(value):
+            raise ValueError(f"field config {name!r} must be a finite number, got {value!r}")
+        else:
+            merged[key] = value
+    return merged
+
+
+def _field_config(config: Mapping[str, Any] | str | None) -> str | None:
+    """The JSON the native field takes, checked; ``None`` for the default field."""
+    return None if config is None else json.dumps(check_config(config))
 
 
 def record(demonstrator: str, *, configuration: int, n: int, seed: int = 0,

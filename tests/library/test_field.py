@@ -147,8 +147,30 @@ def test_stepping_a_finished_episode_is_a_field_run_error():
     assert len(frames) == 16  # 15 steps and the final state
     with pytest.raises(polymimic.FieldRunError, match="already ended"):
         episode.step("forward")
+    with pytest.raises(polymimic.FieldRunError, match="already ended"):
+        episode.run(["forward"])
     with pytest.raises(polymimic.PolymimicError):
         episode.place_robot(0.0, 0.0, 0.0)
+
+
+def test_field_configs_are_checked_whole_by_name():
+    with pytest.raises(ValueError, match="unknown key 'time_limt_s' in the field config; known keys: "):
+        polymimic.record("expert", configuration=1, n=1, config={"time_limt_s": 30.0})
+    with pytest.raises(ValueError, match="unknown key 'tracker.sigma'"):
+        polymimic.self_observation(1, config={"tracker": {"sigma": 1.0}})
+    with pytest.raises(TypeError, match="'substeps_per_frame' must be an integer, like the default 8; got 2.5"):
+        polymimic.record("expert", configuration=1, n=1, config={"substeps_per_frame": 2.5})
+    with pytest.raises(TypeError, match="'tracker' must be a table"):
+        polymimic.record("expert", configuration=1, n=1, config={"tracker": 3})
+    with pytest.raises(ValueError, match="position_sigma_mm"):
+        polymimic.record("expert", configuration=1, n=1, config={"tracker": {"position_sigma_mm": -1.0}})
+    with pytest.raises(ValueError, match="'time_limit_s' must be a finite number, got nan"):
+        polymimic.record("expert", configuration=1, n=1, config={"time_limit_s": float("nan")})
+    with pytest.raises(ValueError, match="not valid JSON"):
+        polymimic.record("expert", configuration=1, n=1, config="{time_limit_s: 1}")
+    partial = default_config()
+    partial["time_limit_s"] = 5.0
+    assert polymimic.field.check_config({"time_limit_s": 5.0}) == partial
 
 
 def test_bad_episode_arguments_are_named():

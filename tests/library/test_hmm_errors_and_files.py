@@ -139,5 +139,16 @@ def test_corrupt_foreign_and_future_files_are_refused(tmp_path, model):
     for name, match in cases.items():
         with pytest.raises(polymimic.ModelFileError, match=match):
             polymimic.DiscreteHMM.load(tmp_path / name)
-    with pytest.raises(FileNotFoundError):
-        polymimic.DiscreteHMM.load(tmp_path / "missing.json")
+    for load in (polymimic.DiscreteHMM.load, polymimic.Codebook.load, polymimic.PrimitiveRecognizer.load):
+        with pytest.raises(FileNotFoundError, match=r"No such file or directory.*missing\.json"):
+            load(tmp_path / "missing.json")
+    with pytest.raises(IsADirectoryError, match=str(tmp_path.name)):
+        polymimic.DiscreteHMM.load(tmp_path)
+
+
+def test_saves_leave_no_temporary_behind(tmp_path, model):
+    model.save(tmp_path / "model.json")
+    model.save(tmp_path / "model.json")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["model.json"]
+    with pytest.raises(FileNotFoundError, match="nowhere"):
+        model.save(tmp_path / "nowhere" / "model.json")

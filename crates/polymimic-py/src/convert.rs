@@ -1,10 +1,14 @@
 //! numpy and Python values in and out, with the checks that give clear errors.
 
+use std::io::Write;
 use std::path::Path;
+use std::sync::atomic::{AtomicU32, Ordering};
 
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::PyTypeInfo;
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::{
+    PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError, PyTypeError, PyValueError,
+};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 
@@ -157,19 +161,42 @@ pub fn matrix<T: numpy::Element>(
     PyArray1::from_vec(py, values).reshape([rows, cols])
 }
 
-/// Writes `text` to `path` through a temporary file and a rename, so a crash never leaves a
-/// half-written model behind.
+/// An `OSError` of the kind Python raises for `error`, naming `path` as Python's own do.
+pub fn io_error(path: &Path, error: &std::io::Error) -> PyErr {
+    let args = (error.raw_os_error().unwrap_or(0), error.to_string(), path.display().to_string());
+    match error.kind() {
+        std::io::ErrorKind::NotFound => PyFileNotFoundError::new_err(args),
+        std::io::ErrorKind::PermissionDenied => PyPermissionError::new_err(args),
+        std::io::ErrorKind::IsADirectory => PyIsADirectoryError::new_err(args),
+        _ => PyOSError::new_err(args),
+    }
+}
+
+/// Writes `text` to `path` through a temporary file beside it (named as the Python side names
+/// its own, `.<name>.<8 hex>.tmp.<ext>`, so a stage that finds one left by a crash removes it),
+/// flushed to disk and renamed over `path`: a crash never leaves a half-written model behind.
 pub fn write_atomically(path: &Path, text: &str) -> PyResult<()> {
-    let mut temporary = path.as_os_str().to_owned();
-    temporary.push(".partial");
-    std::fs::write(&temporary, text)?;
-    std::fs::rename(&temporary, path)?;
+    static WRITES: AtomicU32 = AtomicU32::new(0);
+    let name = path.file_name().map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+    let extension = path.extension().map_or_else(String::new, |e| format!(".{}", e.to_string_lossy()));
+    let tag = std::process::id().rotate_left(16) ^ WRITES.fetch_add(1, Ordering::Relaxed);
+    let temporary = path.with_file_name(format!(".{name}.{tag:08x}.tmp{extension}"));
+    let written = (|| {
+        let mut file = std::fs::OpenOptions::new().write(true).create_new(true).open(&temporary)?;
+        file.write_all(text.as_bytes())?;
+        file.sync_all()?;
+        std::fs::rename(&temporary, path)
+    })();
+    if let Err(error) = written {
+        let _ = std::fs::remove_file(&temporary);
+        return Err(io_error(path, &error));
+    }
     Ok(())
 }
 
-/// Reads a saved model's text, naming the file when it is not text.
+/// Reads a saved model's text, naming the file when it is missing or not text.
 pub fn read_text(path: &Path) -> PyResult<String> {
-    let bytes = std::fs::read(path)?;
+    let bytes = std::fs::read(path).map_err(|error| io_error(path, &error))?;
     String::from_utf8(bytes)
         .map_err(|_| ModelFileError::new_err(format!("{} is not a polymimic file (not UTF-8 text)", path.display())))
 }

@@ -149,6 +149,12 @@ pub fn default_field_config() -> String {
     FieldConfig::default().to_json()
 }
 
+/// Checks a field configuration given as JSON (every value in range); returns it in full.
+#[pyfunction]
+pub fn check_field_config(config: &str) -> PyResult<String> {
+    Ok(field_config(Some(config))?.to_json())
+}
+
 /// A primitive name or a command id (see `commands()`).
 fn parse_command(command: &Bound<'_, PyAny>) -> PyResult<Command> {
     if let Ok(name) = command.extract::<String>() {
@@ -237,8 +243,10 @@ impl PyEpisode {
             .detach(|| {
                 self.with(|e| {
                     let first = e.frames().len();
-                    for &command in &commands {
-                        if e.is_finished() {
+                    // The first command steps even a finished episode, so that it refuses as
+                    // `step` does; the rest stop where the episode ends.
+                    for (i, &command) in commands.iter().enumerate() {
+                        if i > 0 && e.is_finished() {
                             break;
                         }
                         e.step(command)?;

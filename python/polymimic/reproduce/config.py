@@ -22,11 +22,12 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
 import os
 from typing import Any
 
 from polymimic._toml import loads, write_table
-from polymimic.field import default_config
+from polymimic.field import check_config, default_config
 from polymimic.learning import LearningConfig
 
 __all__ = ["ConfigError", "ExperimentSettings", "RecognizerSettings", "RunConfig", "SeedSettings", "SegmenterSettings"]
@@ -40,6 +41,16 @@ def _doc(text: str, default: Any) -> Any:
     return dataclasses.field(default=default, metadata={"doc": text})
 
 
+def _in_range(section: str, name: str, value: float, low: float, high: float | None = None, *,
+              exclusive_low: bool = False) -> None:
+    """A :class:`ConfigError` naming ``[section] name`` unless ``value`` is a finite number in range."""
+    below = value <= low if exclusive_low else value < low
+    if not math.isfinite(value) or below or (high is not None and value > high):
+        bound = f"{'above' if exclusive_low else 'at least'} {low}"
+        bound += f" and at most {high}" if high is not None else ""
+        raise ConfigError(f"[{section}] {name} = {value!r} must be {bound}")
+
+
 @dataclasses.dataclass(frozen=True)
 class SeedSettings:
     """Where every random draw of the run starts; the same seeds give the same bits."""
@@ -49,6 +60,10 @@ class SeedSettings:
     demonstrations: int = _doc("every demonstrator's recorded attempts; the Average demonstrator's first trial", 0)
     first_trial: int = _doc("trial i of every experiment has seed first_trial + i", 0)
     evaluation: int = _doc("starting positions and noise of every imitator's attempts", 1000)
+
+    def __post_init__(self) -> None:
+        for f in dataclasses.fields(self):
+            _in_range("seeds", f.name, getattr(self, f.name), 0, 2**64 - 1)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -70,8 +85,13 @@ class RecognizerSettings:
 
     def __post_init__(self) -> None:
         for name in ("train_per_primitive", "test_per_primitive", "n_states", "codebook_size", "links", "max_iter"):
-            if getattr(self, name) < 1:
-                raise ConfigError(f"[recognizer] {name} = {getattr(self, name)} must be at least 1")
+            _in_range("recognizer", name, getattr(self, name), 1)
+        _in_range("recognizer", "n_states", self.n_states, 1, 20)
+        _in_range("recognizer", "tol", self.tol, 0.0, exclusive_low=True)
+        # At most one over the codebook's size, so that an emission row can still sum to 1.
+        _in_range("recognizer", "emission_floor", self.emission_floor, 0.0, 1.0 / self.codebook_size)
+        _in_range("recognizer", "min_variance", self.min_variance, 0.0, exclusive_low=True)
+        _in_range("recognizer", "seed", self.seed, 0, 2**64 - 1)
         if self.representation not in ("thesis", "egocentric"):
             raise ConfigError(f"[recognizer] representation = {self.representation!r} must be \"thesis\" or "
                               "\"egocentric\"")
@@ -89,6 +109,13 @@ class SegmenterSettings:
     limit_sds: float = _doc("a segment ends when its motion leaves this many sds of a primitive's", 2.0)
     gap_margin: float = _doc("log-likelihood margin below which a segment is a gap", 2.0)
 
+    def __post_init__(self) -> None:
+        _in_range("segmenter", "min_frames", self.min_frames, 2)
+        _in_range("segmenter", "stop_distance_mm", self.stop_distance_mm, 0.0)
+        _in_range("segmenter", "stop_rotation_deg", self.stop_rotation_deg, 0.0, 180.0)
+        _in_range("segmenter", "limit_sds", self.limit_sds, 0.0)
+        _in_range("segmenter", "gap_margin", self.gap_margin, 0.0)
+
 
 @dataclasses.dataclass(frozen=True)
 class ExperimentSettings:
@@ -105,10 +132,8 @@ class ExperimentSettings:
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
                      "average_max_trials", "lp_stride"):
-            if getattr(self, name) < 1:
-                raise ConfigError(f"[experiments] {name} = {getattr(self, name)} must be at least 1")
-        if self.evaluated_imitators < 0:
-            raise ConfigError(f"[experiments] evaluated_imitators = {self.evaluated_imitators} must be at least 0")
+            _in_range("experiments", name, getattr(self, name), 1)
+        _in_range("experiments", "evaluated_imitators", self.evaluated_imitators, 0)
 
 
 _SECTIONS = {"seeds": SeedSettings, "recognizer": RecognizerSettings, "segmenter": SegmenterSettings,
@@ -162,7 +187,12 @@ class RunConfig:
                 values = _checked(name, _table(name, data[name]), dataclasses.asdict(current))
                 changes[name] = dataclasses.replace(current, **values)
         if "field" in data:
-            changes["field"] = _merged("field", base.field, _table("field", data["field"]))
+            field = _merged("field", base.field, _table("field", data["field"]))
+            try:
+                check_config(field)
+            except (ValueError, TypeError) as error:
+                raise ConfigError(f"[field] {str(error).removeprefix('field config: ')}") from error
+            changes["field"] = field
         if "learning" in data:
             values = _checked("learning", _table("learning", data["learning"]), dataclasses.asdict(base.learning))
             try:

@@ -16,12 +16,15 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import os
+import pathlib
 from collections.abc import Sequence
-from typing import Any
+from typing import Any, TypedDict
 
 from polymimic._atomic import atomic_write_text
-from polymimic._native import PrimitiveRecognizer
-from polymimic.datasets import save_demonstrations
+from polymimic._native import ModelFileError, PrimitiveRecognizer
+from polymimic.datasets import load_demonstrations, save_demonstrations
+from polymimic.field import OUTCOMES
 from polymimic.learning import ImitatorPolicy, LearningConfig, TrialResult, evaluate, run_trial
 from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.config import RunConfig
@@ -30,7 +33,8 @@ from polymimic.reproduce.roster import CONTROLS, EXPERIMENTS, Experiment
 from polymimic.reproduce.rundir import MissingInputError, RunDir
 from polymimic.segments import load_segments
 
-__all__ = ["evaluate_imitators", "evaluated_seeds", "imitator_policy", "learn", "trial_seeds"]
+__all__ = ["SavedEvaluation", "evaluate_imitators", "evaluated_seeds", "imitator_policy", "learn", "load_evaluation",
+           "trial_seeds"]
 
 
 def trial_seeds(config: RunConfig) -> list[int]:
@@ -126,7 +130,8 @@ def learn(run: RunDir, config: RunConfig, runner: TaskRunner, *, experiments: Se
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
     ran = {}
     for experiment in _selected(experiments):
-        missing = [s for s in trial_seeds(config) if not run.trial_path(experiment.name, s).exists()]
+        missing = [s for s in trial_seeds(config)
+                   if not run.finished(run.trial_path(experiment.name, s), TrialResult.load)]
         missing = missing[:limit] if limit is not None else missing
         ran[experiment.name] = len(missing)
         if not missing:
@@ -141,17 +146,67 @@ def learn(run: RunDir, config: RunConfig, runner: TaskRunner, *, experiments: Se
     return ran
 
 
-def _evaluation_done(path: Any, control: str, attempts: int) -> bool:
-    if not path.exists():
-        return False
+class SavedEvaluation(TypedDict):
+    """What an evaluation file holds: one trial's imitator driven by one control."""
+
+    trial_seed: int
+    control: str
+    seed: int
+    goals: int
+    own_goals: int
+    attempts: int
+    outcomes: list[str]
+
+
+def load_evaluation(path: str | os.PathLike[str]) -> SavedEvaluation:
+    """An evaluation file, checked whole: every key there with a value of its type and range,
+    and goals and own goals as its outcomes count them.
+
+    Raises
+    ------
+    polymimic.ModelFileError
+        Naming the file and the key, for anything missing, damaged, truncated or foreign.
+    """
+    where = os.fspath(path)
     try:
-        saved = json.loads(path.read_text(encoding="utf-8"))
-    except ValueError:
+        data = json.loads(pathlib.Path(path).read_bytes().decode("utf-8"))
+    except (OSError, ValueError) as error:
+        raise ModelFileError(f"{where}: not a saved evaluation ({error})") from error
+    if not isinstance(data, dict):
+        raise ModelFileError(f"{where}: not a saved evaluation (a JSON object is expected)")
+    if "control_used" in data:  # builds that could not choose the control wrote which one drove
+        data["control"] = data.pop("control_used")
+
+    def integer(key: str, low: int, high: int | None = None) -> int:
+        value = data.get(key)
+        if type(value) is not int or value < low or (high is not None and value > high):
+            span = f"{low}..{high}" if high is not None else f"at least {low}"
+            raise ModelFileError(f"{where}: key {key!r} must be an integer {span}, got {value!r}")
+        return value
+
+    attempts, control, outcomes = integer("attempts", 1), data.get("control"), data.get("outcomes")
+    if control not in CONTROLS:
+        raise ModelFileError(f"{where}: key 'control' must be one of {', '.join(CONTROLS)}, got {control!r}")
+    if not isinstance(outcomes, list) or len(outcomes) != attempts or not all(o in OUTCOMES for o in outcomes):
+        raise ModelFileError(f"{where}: key 'outcomes' must list {attempts} outcomes, each one of "
+                             f"{', '.join(OUTCOMES)}")
+    saved = SavedEvaluation(trial_seed=integer("trial_seed", 0), control=control, seed=integer("seed", 0),
+                            goals=integer("goals", 0, attempts), own_goals=integer("own_goals", 0, attempts),
+                            attempts=attempts, outcomes=outcomes)
+    for key, value, outcome in (("goals", saved["goals"], "goal"), ("own_goals", saved["own_goals"], "own_goal")):
+        if value != outcomes.count(outcome):
+            raise ModelFileError(f"{where}: key {key!r} is {value} but its outcomes count {outcomes.count(outcome)}")
+    return saved
+
+
+def _evaluation_done(run: RunDir, path: pathlib.Path, control: str, attempts: int) -> bool:
+    """Whether ``path`` holds this evaluation: whole, driven by ``control``, ``attempts`` long.
+    A damaged file is removed (with a warning) and made again; a file another control drove or
+    of another size is simply redone."""
+    if not run.finished(path, load_evaluation):
         return False
-    # A file that says another control drove its imitator (as builds that could not choose
-    # wrote "control_used") is not this evaluation.
-    driven_by = saved.get("control_used", saved.get("control"))
-    return bool(driven_by == control and saved.get("attempts") == attempts)
+    saved = load_evaluation(path)
+    return saved["control"] == control and saved["attempts"] == attempts
 
 
 def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
@@ -168,11 +223,11 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
         for seed in seeds:
             for control in CONTROLS:
                 keep = seed == seeds[0]
-                if _evaluation_done(run.evaluation_path(experiment.name, seed, control), control, attempts) and (
-                        not keep or run.attempts_path(experiment.name, control).exists()):
+                if _evaluation_done(run, run.evaluation_path(experiment.name, seed, control), control, attempts) and (
+                        not keep or run.finished(run.attempts_path(experiment.name, control), load_demonstrations)):
                     continue
                 trial_path = run.trial_path(experiment.name, seed)
-                if not trial_path.exists():
+                if not run.finished(trial_path, TrialResult.load):
                     raise MissingInputError(f"{trial_path} is missing: run `polymimic learn --run-dir {run.path}` "
                                             "first")
                 jobs.append((seed, trial_path.read_text(encoding="utf-8"), control, keep))

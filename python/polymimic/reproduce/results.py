@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import collections
 import dataclasses
-import json
 import math
 from collections.abc import Iterable, Sequence
 from typing import Any, cast
@@ -28,7 +27,7 @@ from polymimic.datasets import load_demonstrations, load_self_observation
 from polymimic.field import Demonstration
 from polymimic.learning import LearningConfig, ModelResult, TrialResult
 from polymimic.reproduce.config import RunConfig
-from polymimic.reproduce.experiments import evaluated_seeds, trial_seeds
+from polymimic.reproduce.experiments import evaluated_seeds, load_evaluation, trial_seeds
 from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
 from polymimic.reproduce.rundir import MissingInputError, RunDir
 from polymimic.reproduce.schema import (
@@ -184,7 +183,7 @@ def load_evaluations(run: RunDir, config: RunConfig, experiment: str, control: s
     if missing:
         raise MissingInputError(f"{len(missing)} of {len(paths)} evaluations of {experiment} are missing (first: "
                                 f"{missing[0].name}): run `polymimic evaluate --run-dir {run.path}` first")
-    return [json.loads(p.read_text(encoding="utf-8")) for p in paths]
+    return [dict(load_evaluation(p)) for p in paths]
 
 
 def _primitive_stats(recognizer: PrimitiveRecognizer) -> dict[str, PrimitiveStats]:

@@ -22,15 +22,23 @@ polymimic.reproduce.rundir.MissingInputError: .../models/recognizer.json is miss
 
 from __future__ import annotations
 
+import contextlib
 import datetime
 import json
 import os
 import pathlib
-from typing import Any
+import re
+import socket
+import sys
+from collections.abc import Callable, Iterator
+from typing import Any, TypeVar
 
 from polymimic._atomic import atomic_write_text
-from polymimic._native import __version__
+from polymimic._native import ModelFileError, PolymimicError, __version__
 from polymimic.reproduce.config import ConfigError, RunConfig
+
+if sys.platform != "win32":
+    import fcntl
 
 __all__ = ["MissingInputError", "RunDir", "RunError", "new_run_path"]
 
@@ -38,8 +46,9 @@ MANIFEST_FORMAT = "polymimic.run"
 MANIFEST_VERSION = 1
 
 
-class RunError(Exception):
-    """A stage cannot run: its inputs are missing, or the run directory disagrees with the config."""
+class RunError(PolymimicError):
+    """A stage cannot run: its inputs are missing, the run directory is damaged, in use, or
+    disagrees with the config."""
 
 
 class MissingInputError(RunError):
@@ -63,6 +72,18 @@ def latest_run_path(root: str | os.PathLike[str] = "runs") -> pathlib.Path | Non
     return runs[-1] if runs else None
 
 
+_TEMPORARY = re.compile(r"^\..+\.[0-9a-f]{8}\.tmp(\.[^.]*)?$")
+"""The name :func:`polymimic._atomic.atomic_path` gives a file while it is being written."""
+
+_LOCK_NAME = ".lock"
+
+Loaded = TypeVar("Loaded")
+
+
+def _warn(message: str) -> None:
+    print(f"warning: {message}", file=sys.stderr)
+
+
 def _now() -> str:
     return datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="milliseconds")
 
@@ -72,6 +93,9 @@ class RunDir:
 
     def __init__(self, path: str | os.PathLike[str]) -> None:
         self.path = pathlib.Path(path)
+        if self.path.exists() and not self.path.is_dir():
+            raise RunError(f"{self.path} is a file, not a run directory: name a directory with --run-dir")
+        self._lock_depth = 0
         self.datasets = self.path / "datasets"
         self.models = self.path / "models"
         self.plots = self.path / "plots"
@@ -116,6 +140,60 @@ class RunDir:
             raise MissingInputError(f"{path} is missing: run `polymimic {stage} --run-dir {self.path}` first")
         return path
 
+    def finished(self, path: pathlib.Path, load: Callable[[pathlib.Path], Loaded], *,
+                 say: Callable[[str], None] | None = None) -> bool:
+        """Whether a stage's output at ``path`` is there and whole: ``load`` reads it without
+        error. A damaged one is reported through ``say`` (a warning on stderr, shown even in a
+        quiet run), removed, and counts as not finished, so that the stage makes it again."""
+        if not path.exists():
+            return False
+        try:
+            load(path)
+        except (ModelFileError, RunError, ValueError, OSError) as error:
+            (say or _warn)(f"{path} is damaged ({error}): making it again")
+            path.unlink(missing_ok=True)
+            return False
+        return True
+
+    # Exclusive use, and what an interrupted writer left behind.
+
+    @contextlib.contextmanager
+    def lock(self, command: str) -> Iterator[None]:
+        """Hold the run directory for ``command`` while it writes; another process asking for
+        it meanwhile gets a :class:`RunError` naming the holder. The holder may take it again
+        (a stage within ``reproduce``). On entry, temporary files an interrupted writer left
+        are removed: no one else is writing. Where the platform has no ``fcntl`` (Windows),
+        the directory is not locked."""
+        if self._lock_depth:
+            self._lock_depth += 1
+            try:
+                yield
+            finally:
+                self._lock_depth -= 1
+            return
+        self.path.mkdir(parents=True, exist_ok=True)
+        with open(self.path / _LOCK_NAME, "a+", encoding="utf-8") as handle:
+            _acquire(handle, self.path)
+            handle.seek(0)
+            handle.truncate()
+            handle.write(f"pid {os.getpid()} on {socket.gethostname()}, {command}, since {_now()}\n")
+            handle.flush()
+            self._lock_depth = 1
+            try:
+                self.remove_temporaries()
+                yield
+            finally:
+                self._lock_depth = 0
+                handle.seek(0)
+                handle.truncate()
+
+    def remove_temporaries(self) -> list[pathlib.Path]:
+        """Remove the half-written files an interrupted stage left behind; return them."""
+        stale = [p for p in self.path.rglob(".*") if p.is_file() and _TEMPORARY.match(p.name)]
+        for path in stale:
+            path.unlink(missing_ok=True)
+        return stale
+
     # The manifest.
 
     def open(self, config: RunConfig | None) -> RunConfig:
@@ -131,7 +209,7 @@ class RunDir:
                                f"out --config/--quick to go on with its own (`polymimic config --run-dir "
                                f"{self.path}` prints it)")
             return stored
-        if self.path.exists() and any(self.path.iterdir()):
+        if self.path.exists() and any(p.name != _LOCK_NAME for p in self.path.iterdir()):
             raise RunError(f"{self.path} exists, is not empty and holds no manifest.json: not a run directory")
         config = config or RunConfig()
         for folder in (self.datasets, self.models, self.plots):
@@ -149,11 +227,20 @@ class RunDir:
             raise MissingInputError(f"{self.path} is not a run directory (no manifest.json)") from None
         except (OSError, ValueError) as error:
             raise RunError(f"{self.manifest_path}: not a readable manifest ({error})") from error
-        if data.get("format") != MANIFEST_FORMAT or data.get("version", 0) > MANIFEST_VERSION:
-            raise RunError(f"{self.manifest_path}: not a polymimic run manifest of version ≤ {MANIFEST_VERSION}")
+        if not isinstance(data, dict):
+            raise RunError(f"{self.manifest_path}: not a polymimic run manifest (a JSON object is expected, got "
+                           f"{type(data).__name__})")
+        version = data.get("version")
+        if data.get("format") != MANIFEST_FORMAT or type(version) is not int or not 1 <= version <= MANIFEST_VERSION:
+            raise RunError(f"{self.manifest_path}: not a polymimic run manifest of version ≤ {MANIFEST_VERSION} "
+                           f"(format {data.get('format')!r}, version {version!r})")
+        if not isinstance(data.get("stages"), dict):
+            raise RunError(f"{self.manifest_path}: key 'stages' must be an object, got {data.get('stages')!r}")
+        if not isinstance(data.get("config"), dict):
+            raise RunError(f"{self.manifest_path}: key 'config' must be an object, got {data.get('config')!r}")
         try:
             RunConfig.from_dict(data["config"])
-        except (ConfigError, KeyError) as error:
+        except ConfigError as error:
             raise RunError(f"{self.manifest_path}: its config cannot be read ({error})") from error
         manifest: dict[str, Any] = data
         return manifest
@@ -177,3 +264,15 @@ class RunDir:
 
     def _write(self, manifest: dict[str, Any]) -> None:
         atomic_write_text(self.manifest_path, json.dumps(manifest, indent=1) + "\n")
+
+
+def _acquire(handle: Any, path: pathlib.Path) -> None:
+    """Lock ``handle``'s file without waiting; a :class:`RunError` naming the holder if taken."""
+    if sys.platform == "win32":  # no fcntl: the directory is not locked
+        return
+    try:
+        fcntl.flock(handle.fileno(), fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        handle.seek(0)
+        holder = handle.read().strip() or "another process"
+        raise RunError(f"{path} is in use by {holder}: wait for it to finish, or stop it") from None

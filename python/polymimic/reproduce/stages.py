@@ -21,22 +21,24 @@ the recogniser: ``record`` records it when the recogniser exists, ``segment`` ot
 from __future__ import annotations
 
 import dataclasses
+import pathlib
 import sys
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Sequence, Sized
+from typing import cast
 
 from polymimic import _native
 from polymimic._native import PrimitiveRecognizer
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
-from polymimic.field import record, self_observation
-from polymimic.learning import average_demonstrator
+from polymimic.field import PRIMITIVES, record, self_observation
+from polymimic.learning import TrialResult, average_demonstrator
 from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.experiments import evaluate_imitators, learn
 from polymimic.reproduce.report import write_report
 from polymimic.reproduce.roster import DEMONSTRATORS, HETEROGENEOUS, RECORDED
 from polymimic.reproduce.rundir import RunDir, RunError
-from polymimic.segments import save_segments, segment_demonstrations
+from polymimic.segments import load_segments, save_segments, segment_demonstrations
 
 __all__ = ["STAGES", "Context", "reproduce", "run_stage"]
 
@@ -54,13 +56,24 @@ class Context:
         if not self.quiet:
             print(message, file=sys.stderr)
 
+    def finished(self, path: pathlib.Path, load: Callable[[pathlib.Path], object], *,
+                 count: int | None = None) -> bool:
+        """Whether ``path`` holds a whole output (``count`` items, where given); a damaged one is
+        removed, with a warning, so that the stage makes it again."""
+        def checked(p: pathlib.Path) -> object:
+            loaded = load(p)
+            if count is not None and len(cast(Sized, loaded)) != count:
+                raise RunError(f"it holds {len(cast(Sized, loaded))} items where the config asks for {count}")
+            return loaded
+        return self.run.finished(path, checked)
+
 
 def _self_observe(ctx: Context) -> int:
     settings, seeds, made = ctx.config.recognizer, ctx.config.seeds, 0
     for split, n, seed in (("train", settings.train_per_primitive, seeds.self_observation_train),
                            ("test", settings.test_per_primitive, seeds.self_observation_test)):
         path = ctx.run.self_observation_path(split)
-        if not path.exists():
+        if not ctx.finished(path, load_self_observation, count=len(PRIMITIVES) * n):
             save_self_observation(self_observation(n, seed=seed, config=ctx.config.field), path)
             made += 1
     return made
@@ -70,7 +83,7 @@ def _record(ctx: Context) -> int:
     n, made = ctx.config.experiments.demonstrations_per_configuration, 0
     for who in RECORDED:
         path = ctx.run.demonstrations_path(who)
-        if not path.exists():
+        if not ctx.finished(path, load_demonstrations, count=2 * n):
             demos = [d for configuration in (1, 2)
                      for d in record(who, configuration=configuration, n=n, seed=ctx.config.seeds.demonstrations,
                                      config=ctx.config.field)]
@@ -85,8 +98,9 @@ def _record_average(ctx: Context) -> int:
     """The Average demonstrator: of the heterogeneous (RCB) imitators tried, driven by the thesis's
     rule, the one whose net goals lie nearest the middle of the Poor's and the Expert's (§4.4.2;
     see :func:`polymimic.average_demonstrator`)."""
-    path = ctx.run.demonstrations_path("average")
-    if path.exists():
+    path, n = ctx.run.demonstrations_path("average"), ctx.config.experiments.demonstrations_per_configuration
+    if ctx.finished(ctx.run.average_trial_path, TrialResult.load) and ctx.finished(path, load_demonstrations,
+                                                                                   count=2 * n):
         return 0
     recognizer = PrimitiveRecognizer.load(ctx.run.require(ctx.run.recognizer_path, "train"))
     settings = ctx.config.experiments
@@ -106,7 +120,7 @@ def _record_average(ctx: Context) -> int:
 
 
 def _train(ctx: Context) -> int:
-    if ctx.run.recognizer_path.exists():
+    if ctx.finished(ctx.run.recognizer_path, PrimitiveRecognizer.load):
         return 0
     sequences = load_self_observation(ctx.run.require(ctx.run.self_observation_path("train"), "self-observe"))
     settings = dataclasses.asdict(ctx.config.recognizer)
@@ -123,7 +137,7 @@ def _segment(ctx: Context) -> int:
     segmenter = dataclasses.asdict(ctx.config.segmenter)
     for who in DEMONSTRATORS:
         path = ctx.run.segments_path(who)
-        if not path.exists():
+        if not ctx.finished(path, load_segments, count=2 * ctx.config.experiments.demonstrations_per_configuration):
             demos = load_demonstrations(ctx.run.require(ctx.run.demonstrations_path(who), "record"))
             save_segments(segment_demonstrations(demos, recognizer, **segmenter), path)
             made += 1
@@ -163,24 +177,26 @@ def run_stage(ctx: Context, stage: str, **options: object) -> float:
     """Run one stage, recording its start and finish in the manifest; return its time (s).
 
     A stage that finds everything done keeps the times of the run that did it."""
-    ctx.say(f"{stage} …")
-    before = ctx.run.manifest()["stages"].get(stage)
-    ctx.run.stage_started(stage, backend=ctx.runner.backend, workers=ctx.runner.workers)
-    started = time.perf_counter()
-    made = STAGES[stage](ctx, **options)
-    seconds = time.perf_counter() - started
-    if made == 0 and before and before.get("finished"):
-        ctx.run.stage_restored(stage, before)
-        ctx.say(f"{stage}: already done")
-    else:
-        ctx.run.stage_finished(stage, seconds)
-        ctx.say(f"{stage} done in {seconds:.1f} s")
-    return seconds
+    with ctx.run.lock(f"polymimic {stage}"):
+        ctx.say(f"{stage} …")
+        before = ctx.run.manifest()["stages"].get(stage)
+        ctx.run.stage_started(stage, backend=ctx.runner.backend, workers=ctx.runner.workers)
+        started = time.perf_counter()
+        made = STAGES[stage](ctx, **options)
+        seconds = time.perf_counter() - started
+        if made == 0 and isinstance(before, dict) and before.get("finished"):
+            ctx.run.stage_restored(stage, before)
+            ctx.say(f"{stage}: already done")
+        else:
+            ctx.run.stage_finished(stage, seconds)
+            ctx.say(f"{stage} done in {seconds:.1f} s")
+        return seconds
 
 
 def reproduce(ctx: Context) -> float:
     """Every stage in turn; return the total time (s)."""
     started = time.perf_counter()
-    for stage in STAGES:
-        run_stage(ctx, stage)
+    with ctx.run.lock("polymimic reproduce"):
+        for stage in STAGES:
+            run_stage(ctx, stage)
     return time.perf_counter() - started

@@ -1,10 +1,13 @@
 """Experiments: trials and evaluations give the same bits on any backend, resume where they
 stopped, and summarise to known answers."""
 
+import json
+import re
 import shutil
 
 import pytest
 
+from polymimic import ModelFileError
 from polymimic.learning import ModelResult, TrialResult
 from polymimic.reproduce import experiments, results
 from polymimic.reproduce.backends import TaskRunner
@@ -181,14 +184,35 @@ def test_appendix_b_counts_models_not_copies():
     assert [row["primitives"] for row in table["predicting_ball"]] == ["F,F"]
 
 
-def test_an_evaluation_counts_as_done_only_for_its_control_and_size(tmp_path):
+def test_an_evaluation_counts_as_done_only_for_its_control_and_size(tmp_path, capsys):
+    run = RunDir(tmp_path)
     path = tmp_path / "evaluation_0_improved.json"
-    assert not experiments._evaluation_done(path, "improved", 50)
-    path.write_text('{"control": "improved", "attempts": 50}')
-    assert experiments._evaluation_done(path, "improved", 50)
-    assert not experiments._evaluation_done(path, "improved", 20)
+    saved = {"trial_seed": 0, "control": "improved", "seed": 1000, "goals": 1, "own_goals": 0, "attempts": 2,
+             "outcomes": ["goal", "ball_out"]}
+    assert not experiments._evaluation_done(run, path, "improved", 2)
+    path.write_text(json.dumps(saved))
+    assert experiments._evaluation_done(run, path, "improved", 2)
+    assert not experiments._evaluation_done(run, path, "thesis", 2)
     # Written by a build that could only drive by the thesis's rule.
-    path.write_text('{"control": "improved", "control_used": "thesis", "attempts": 50}')
-    assert not experiments._evaluation_done(path, "improved", 50)
+    path.write_text(json.dumps({**saved, "control_used": "thesis"}))
+    assert not experiments._evaluation_done(run, path, "improved", 2)
+    assert path.exists(), "a whole file of another control is redone, not reported damaged"
     path.write_text("{not json")
-    assert not experiments._evaluation_done(path, "improved", 50)
+    assert not experiments._evaluation_done(run, path, "improved", 2)
+    assert "evaluation_0_improved.json is damaged" in capsys.readouterr().err and not path.exists()
+
+
+@pytest.mark.parametrize("change, complaint", [
+    ({"goals": 2}, "key 'goals' is 2 but its outcomes count 1"),
+    ({"attempts": 0}, "key 'attempts' must be an integer at least 1, got 0"),
+    ({"outcomes": ["goal", "own-goal"]}, "key 'outcomes' must list 2 outcomes"),
+    ({"control": "improvd"}, "key 'control' must be one of improved, thesis, got 'improvd'"),
+    ({"trial_seed": -1}, "key 'trial_seed' must be an integer at least 0"),
+    ({"goals": True}, "key 'goals' must be an integer"),
+])
+def test_a_saved_evaluation_is_checked_key_by_key(tmp_path, change, complaint):
+    path = tmp_path / "evaluation_0_improved.json"
+    path.write_text(json.dumps({"trial_seed": 0, "control": "improved", "seed": 1000, "goals": 1, "own_goals": 0,
+                                "attempts": 2, "outcomes": ["goal", "ball_out"], **change}))
+    with pytest.raises(ModelFileError, match=re.escape(f"{path}: {complaint}")):
+        experiments.load_evaluation(path)

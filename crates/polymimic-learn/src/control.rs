@@ -276,16 +276,24 @@ impl ImitatorPolicy<'_> {
         field: &FieldConfig,
         seed: u64,
     ) -> Result<Vec<Attempt>, FieldError> {
-        let jobs: Vec<(Configuration, u64)> = Configuration::ALL
-            .iter()
-            .enumerate()
-            .flat_map(|(c, &configuration)| {
-                (0..attempts_per_configuration as u64)
-                    .map(move |i| (configuration, derive_seed(seed, 100 + c as u64, i)))
-            })
-            .collect();
+        let jobs = attempt_seeds(attempts_per_configuration, seed);
         jobs.par_iter().map(|&(configuration, s)| self.attempt(configuration, field, s)).collect()
     }
+}
+
+/// The configuration and episode seed of every attempt an evaluation under `seed` makes:
+/// `attempts_per_configuration` from configuration 1, then as many from configuration 2;
+/// attempt i of configuration c runs with a seed derived from (`seed`, c, i). Any policy
+/// evaluated on these meets the same starts and the same noise.
+#[must_use]
+pub fn attempt_seeds(attempts_per_configuration: usize, seed: u64) -> Vec<(Configuration, u64)> {
+    Configuration::ALL
+        .iter()
+        .enumerate()
+        .flat_map(|(c, &configuration)| {
+            (0..attempts_per_configuration as u64).map(move |i| (configuration, derive_seed(seed, 100 + c as u64, i)))
+        })
+        .collect()
 }
 
 fn run_primitive(episode: &mut Episode, primitive: Primitive) -> Result<(), FieldError> {

@@ -24,6 +24,7 @@ mod init;
 mod model;
 mod params;
 mod persist;
+mod posterior;
 mod probabilities;
 mod sample;
 mod topology;

@@ -51,6 +51,26 @@ impl Topology {
         transmat
     }
 
+    /// The topology a model's probabilities imply: left-right, with as many links as its
+    /// longest forward jump, where it starts in state 0 and never moves back; ergodic otherwise.
+    /// (`transmat` is row-major `n × n`; `startprob` has `n` entries.)
+    #[must_use]
+    pub fn implied_by(startprob: &[f64], transmat: &[f64], n_states: usize) -> Self {
+        let starts_first = startprob.iter().skip(1).all(|&p| p == 0.0);
+        let mut links = 0;
+        for (from, row) in transmat.chunks_exact(n_states).enumerate() {
+            for (to, &p) in row.iter().enumerate() {
+                if p != 0.0 {
+                    if to < from {
+                        return Self::Ergodic;
+                    }
+                    links = links.max(to - from);
+                }
+            }
+        }
+        if starts_first { Self::LeftRight { links } } else { Self::Ergodic }
+    }
+
     /// The start distribution a fresh model begins with.
     #[must_use]
     pub fn initial_startprob(self, n_states: usize) -> Vec<f64> {
@@ -89,5 +109,18 @@ mod tests {
         let mut rng = ChaCha8Rng::seed_from_u64(1);
         let a = Topology::Ergodic.random_transitions(3, &mut rng);
         assert!(a.iter().all(|&p| p > 0.0));
+    }
+
+    #[test]
+    fn implied_topology_reads_the_band_and_the_start() {
+        let band = [0.5, 0.3, 0.2, 0.0, 0.0, 0.6, 0.4, 0.0, 0.0, 0.0, 0.7, 0.3, 0.0, 0.0, 0.0, 1.0];
+        assert_eq!(Topology::implied_by(&[1.0, 0.0, 0.0, 0.0], &band, 4), Topology::LeftRight { links: 2 });
+        let chain = [0.9, 0.1, 0.0, 0.0, 0.8, 0.2, 0.0, 0.0, 1.0];
+        assert_eq!(Topology::implied_by(&[1.0, 0.0, 0.0], &chain, 3), Topology::LeftRight { links: 1 });
+        // Starting anywhere but state 0, or any move back, is ergodic.
+        assert_eq!(Topology::implied_by(&[0.5, 0.5, 0.0], &chain, 3), Topology::Ergodic);
+        let back = [0.9, 0.1, 0.0, 0.1, 0.7, 0.2, 0.0, 0.0, 1.0];
+        assert_eq!(Topology::implied_by(&[1.0, 0.0, 0.0], &back, 3), Topology::Ergodic);
+        assert_eq!(Topology::implied_by(&[1.0], &[1.0], 1), Topology::LeftRight { links: 0 });
     }
 }

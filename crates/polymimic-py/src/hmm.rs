@@ -5,14 +5,14 @@ use std::sync::RwLock;
 
 use numpy::{PyArray1, PyArray2};
 use polymimic_hmm::{DiscreteHmm, HmmError, HmmParams, Init, Topology};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyImportError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyTuple, PyType};
+use pyo3::types::{PyDict, PyTuple, PyType};
 
 use crate::convert::{
     floats, matrix, non_negative, one_of, read_model, reduce_to_json, symbol_sequences, symbols, write_atomically,
 };
-use crate::errors::hmm_error;
+use crate::errors::{NotFittedError, hmm_error};
 
 /// Sampled symbols and hidden states, each `(n, length)`.
 type SymbolsAndStates<'py> = (Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>);
@@ -92,15 +92,15 @@ impl PyDiscreteHmm {
     }
 
     #[classmethod]
-    #[pyo3(signature = (startprob, transmat, emissionprob, *, topology="left-right", links=2, max_iter=100, tol=1e-4, emission_floor=1e-8, seed=0))]
+    #[pyo3(signature = (startprob, transmat, emissionprob, *, topology=None, links=None, max_iter=100, tol=1e-4, emission_floor=1e-8, seed=0))]
     #[allow(clippy::too_many_arguments)]
     fn from_params(
         _cls: &Bound<'_, PyType>,
         startprob: &Bound<'_, PyAny>,
         transmat: &Bound<'_, PyAny>,
         emissionprob: &Bound<'_, PyAny>,
-        topology: &str,
-        links: i64,
+        topology: Option<&str>,
+        links: Option<i64>,
         max_iter: i64,
         tol: f64,
         emission_floor: f64,
@@ -120,7 +120,13 @@ impl PyDiscreteHmm {
                 "emissionprob has shape {emit_shape:?} but startprob has {n} states: expected [{n}, n_symbols]"
             )));
         }
-        let params = params(n as i64, emit_shape[1] as i64, topology, links, max_iter, tol, emission_floor, seed)?;
+        let mut params = params(n as i64, emit_shape[1] as i64, "ergodic", 0, max_iter, tol, emission_floor, seed)?;
+        params.topology = match (topology, links) {
+            (None, None) => Topology::implied_by(&start, &trans, n),
+            // Links are a left-right model's; giving them names the topology.
+            (None, Some(links)) => self::topology("left-right", links)?,
+            (Some(name), links) => self::topology(name, links.unwrap_or(2))?,
+        };
         let valid = params.check().map_err(|e| hmm_error(e.into()))?;
         let model = DiscreteHmm::from_probabilities(valid, start, trans, emit).map_err(|e| hmm_error(e.into()))?;
         Ok(Self::wrap(model))
@@ -185,6 +191,90 @@ impl PyDiscreteHmm {
         let model = self.snapshot();
         let (path, log_p) = py.detach(|| model.decode(&seq)).map_err(hmm_error)?;
         Ok((PyArray1::from_vec(py, path.into_iter().map(|s| s as i64).collect()), log_p))
+    }
+
+    /// The posterior of every state at every step, γ_t(i) = P(q_t = i | O): a `(T, n_states)`
+    /// array whose rows sum to 1 (hmmlearn's `predict_proba`).
+    fn predict_proba<'py>(&self, py: Python<'py>, sequence: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let seq = symbols(sequence, "sequence", self.n_symbols())?;
+        let model = self.snapshot();
+        let gammas = py.detach(|| model.posteriors(&seq)).map_err(hmm_error)?;
+        let n_states = model.params().n_states;
+        matrix(py, gammas.into_iter().flatten().collect(), seq.len(), n_states)
+    }
+
+    /// A model from a fitted `hmmlearn.hmm.CategoricalHMM`: its probabilities exactly, its
+    /// `n_iter` and `tol`, and the topology its `startprob_` and `transmat_` imply (see
+    /// `from_params`). The seed is `seed`, else its integer `random_state` (0 for None); a
+    /// `RandomState` (what fitting leaves there) cannot be carried over, so `seed` is needed.
+    #[classmethod]
+    #[pyo3(signature = (model, *, seed=None))]
+    fn from_hmmlearn(cls: &Bound<'_, PyType>, model: &Bound<'_, PyAny>, seed: Option<i64>) -> PyResult<Self> {
+        let py = model.py();
+        let categorical = py.import("hmmlearn.hmm").and_then(|m| m.getattr("CategoricalHMM"));
+        if !categorical.is_ok_and(|class| model.is_instance(&class).unwrap_or(false)) {
+            let kind = model.get_type().name().map_or_else(|_| "?".to_owned(), |n| n.to_string());
+            return Err(PyTypeError::new_err(format!(
+                "from_hmmlearn takes a fitted hmmlearn.hmm.CategoricalHMM, got a {kind}"
+            )));
+        }
+        for name in ["startprob_", "transmat_", "emissionprob_"] {
+            if !model.hasattr(name)? {
+                return Err(NotFittedError::new_err(format!(
+                    "the CategoricalHMM is not fitted: it has no {name} (fit it, or set its parameters, first)"
+                )));
+            }
+        }
+        let random_state = model.getattr("random_state")?;
+        let seed = match seed {
+            Some(seed) => seed,
+            None if random_state.is_none() => 0,
+            None => random_state.extract::<i64>().map_err(|_| {
+                PyValueError::new_err(format!(
+                    "the CategoricalHMM's random_state must be an int or None to carry over, got {random_state}: \
+                     pass seed="
+                ))
+            })?,
+        };
+        Self::from_params(
+            cls,
+            &model.getattr("startprob_")?,
+            &model.getattr("transmat_")?,
+            &model.getattr("emissionprob_")?,
+            None,
+            None,
+            model.getattr("n_iter")?.extract()?,
+            model.getattr("tol")?.extract()?,
+            HmmParams::new(1, 1).emission_floor,
+            seed,
+        )
+    }
+
+    /// The model as a `hmmlearn.hmm.CategoricalHMM` (scaling implementation), ready to score,
+    /// decode or train further: the same probabilities, `n_iter`, `tol` and `random_state`,
+    /// with `init_params=""` so that fitting starts from them.
+    fn to_hmmlearn<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let hmm = py
+            .import("hmmlearn.hmm")
+            .map_err(|_| PyImportError::new_err("to_hmmlearn needs hmmlearn: pip install hmmlearn"))?;
+        let (n_states, n_symbols, max_iter, tol, seed) = self.with_model(|m| {
+            let p = m.params();
+            (p.n_states, p.n_symbols, p.max_iter, p.tol, p.seed)
+        });
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("n_components", n_states)?;
+        kwargs.set_item("n_features", n_symbols)?;
+        kwargs.set_item("n_iter", max_iter)?;
+        kwargs.set_item("tol", tol)?;
+        kwargs.set_item("random_state", seed)?;
+        kwargs.set_item("init_params", "")?;
+        kwargs.set_item("params", "ste")?;
+        kwargs.set_item("implementation", "scaling")?;
+        let peer = hmm.getattr("CategoricalHMM")?.call((), Some(&kwargs))?;
+        peer.setattr("startprob_", self.startprob_(py)?)?;
+        peer.setattr("transmat_", self.transmat_(py)?)?;
+        peer.setattr("emissionprob_", self.emissionprob_(py)?)?;
+        Ok(peer)
     }
 
     /// `n` sequences of `length` symbols and their hidden states, as two `(n, length)` arrays.

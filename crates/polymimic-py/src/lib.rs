@@ -18,12 +18,15 @@ mod _native {
 
     #[pymodule_export]
     use super::field::{
-        PyEpisode, check_field_config, commands, default_field_config, record_demonstrations, record_self_observation, thesis_table_3_1,
+        PyEpisode, check_field_config, commands, default_field_config, record_demonstrations, record_self_observation,
+        thesis_table_3_1,
     };
     #[pymodule_export]
     use super::hmm::PyDiscreteHmm;
     #[pymodule_export]
-    use super::learn::{PyImitatorPolicy, attempt_seeds, check_learning_config, default_learning_config, learning_trial};
+    use super::learn::{
+        PyImitatorPolicy, attempt_seeds, check_learning_config, default_learning_config, learning_trial,
+    };
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;
     #[pymodule_export]

@@ -64,8 +64,10 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
 
     Parameters
     ----------
-    configuration : {1, 2}, default 1
-        The field configuration used when ``reset`` gets no ``options={"configuration": ...}``.
+    configuration : {1, 2, "random"}, default "random"
+        The field configuration used when ``reset`` gets no ``options={"configuration": ...}``;
+        ``"random"`` draws 1 or 2, with equal chances, for every episode from the env's own
+        random generator (so ``reset(seed=...)`` fixes it too).
     frames_per_action : int, default 30
         Tracker frames (1/30 s each) one action is held for.
     config : dict or str, optional
@@ -85,7 +87,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
 
     metadata: ClassVar[dict[str, Any]] = {"render_modes": ["rgb_array"], "render_fps": 1}
 
-    def __init__(self, *, configuration: int = 1, frames_per_action: int = 30,
+    def __init__(self, *, configuration: int | str = "random", frames_per_action: int = 30,
                  config: dict[str, Any] | str | None = None, render_mode: str | None = None) -> None:
         if gymnasium is None:
             raise ModuleNotFoundError("PenaltyKickEnv needs gymnasium: pip install \"polymimic[gym]\"")
@@ -100,7 +102,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         self.frames_per_action = int(frames_per_action)
         self.render_mode = render_mode
         self._config = _field_config(config)
-        Episode("lego", configuration=configuration, seed=0, config=self._config)  # fail now on a bad config
+        Episode("lego", configuration=1, seed=0, config=self._config)  # fail now on a bad config
         margin_x, margin_y = 0.25 * _FIELD_LENGTH_MM, 0.25 * _FIELD_WIDTH_MM
         high = np.array([_FIELD_LENGTH_MM / 2 + margin_x, _FIELD_WIDTH_MM / 2 + margin_y, math.pi,
                          _FIELD_LENGTH_MM / 2 + margin_x, _FIELD_WIDTH_MM / 2 + margin_y], dtype=np.float32)
@@ -110,13 +112,16 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
 
     def reset(self, *, seed: int | None = None,
               options: dict[str, Any] | None = None) -> tuple[np.ndarray, dict[str, Any]]:
-        """Start a new episode: ``options={"configuration": 1 or 2}`` picks the start."""
+        """Start a new episode: ``options={"configuration": 1, 2 or "random"}`` picks the start
+        (default: the constructor's)."""
         super().reset(seed=seed)
         options = dict(options or {})
         configuration = options.pop("configuration", self.configuration)
         if options:
             raise ValueError(f"unknown reset option(s) {', '.join(map(repr, options))}; expected 'configuration'")
         _check_configuration(configuration)
+        if configuration == "random":
+            configuration = int(self.np_random.integers(1, 3))
         episode_seed = int(self.np_random.integers(0, 2**63))
         self._episode = Episode("lego", configuration=configuration, seed=episode_seed, config=self._config)
         return self._observation(), self._info()
@@ -171,9 +176,11 @@ def register() -> None:
 
 
 def _check_configuration(configuration: Any) -> None:
+    if configuration == "random" and isinstance(configuration, str):
+        return
     if not isinstance(configuration, (int, np.integer)) or isinstance(configuration, bool) \
             or configuration not in (1, 2):
-        raise ValueError(f"configuration must be 1 or 2, got {configuration!r}")
+        raise ValueError(f"configuration must be 1, 2 or \"random\", got {configuration!r}")
 
 
 if gymnasium is not None:

@@ -52,6 +52,27 @@ def test_random_play_ends_with_an_outcome(configuration):
         assert all(env.observation_space.contains(o) for o in observations)
 
 
+def _configuration_of(observation):
+    """Configuration 1 starts the robot at −L/6, configuration 2 at +L/6."""
+    return 1 if observation[0] < 0 else 2
+
+
+def test_random_configurations_come_from_the_envs_own_generator():
+    env = PenaltyKickEnv()
+    drawn = [_configuration_of(env.reset(seed=seed)[0]) for seed in range(40)]
+    assert 10 <= drawn.count(1) <= 30 and drawn.count(1) + drawn.count(2) == 40
+    assert drawn == [_configuration_of(PenaltyKickEnv().reset(seed=seed)[0]) for seed in range(40)]
+    # Unseeded resets go on drawing from the same generator; an option overrides the default.
+    env.reset(seed=5)
+    following = [_configuration_of(env.reset()[0]) for _ in range(30)]
+    assert set(following) == {1, 2}
+    assert _configuration_of(env.reset(options={"configuration": 2})[0]) == 2
+    fixed = PenaltyKickEnv(configuration=1)
+    assert {_configuration_of(fixed.reset(seed=seed)[0]) for seed in range(10)} == {1}
+    assert {_configuration_of(fixed.reset(seed=seed, options={"configuration": "random"})[0])
+            for seed in range(20)} == {1, 2}
+
+
 def test_same_seed_same_trajectory_other_seed_another():
     a = play(PenaltyKickEnv(), 7, 2)[0]
     b = play(PenaltyKickEnv(), 7, 2)[0]
@@ -61,12 +82,12 @@ def test_same_seed_same_trajectory_other_seed_another():
 
 
 def test_a_step_is_one_second_of_one_primitive():
-    env = PenaltyKickEnv()
+    env = PenaltyKickEnv(configuration=1)
     start, _ = env.reset(seed=1)
     moved, _, _, _, info = env.step(0)
     assert info["t_s"] == pytest.approx(1.0)
     assert moved[0] - start[0] > 10  # forward moves toward +x in configuration 1
-    half = PenaltyKickEnv(frames_per_action=15)
+    half = PenaltyKickEnv(configuration=1, frames_per_action=15)
     half.reset(seed=1)
     assert half.step(0)[4]["t_s"] == pytest.approx(0.5)
 
@@ -78,15 +99,17 @@ def test_misuse_is_named():
     env.reset(seed=0)
     with pytest.raises(ValueError, match="action must be an integer in 0..4"):
         env.step(5)
-    with pytest.raises(ValueError, match="configuration must be 1 or 2, got 3"):
+    with pytest.raises(ValueError, match='configuration must be 1, 2 or "random", got 3'):
         env.reset(options={"configuration": 3})
+    with pytest.raises(ValueError, match="got 'Random'"):
+        env.reset(options={"configuration": "Random"})
     with pytest.raises(ValueError, match="unknown reset option"):
         env.reset(options={"speed": 2})
-    with pytest.raises(ValueError, match="configuration must be 1 or 2"):
+    with pytest.raises(ValueError, match="configuration must be 1, 2 or"):
         PenaltyKickEnv(configuration=0)
     with pytest.raises(ValueError, match="frames_per_action must be an integer ≥ 1"):
         PenaltyKickEnv(frames_per_action=0)
-    with pytest.raises(ValueError, match="field config"):
+    with pytest.raises(ValueError, match="unknown key 'nonsense' in the field config"):
         PenaltyKickEnv(config='{"nonsense": 1}')
 
 

@@ -15,9 +15,11 @@ from typing import Any
 from polymimic import __version__, demo
 from polymimic._native import PolymimicError
 from polymimic.datasets import load_demonstrations
+from polymimic.export import ACTIONS
 from polymimic.plots import animate_demonstration
 from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.config import ConfigError, RunConfig
+from polymimic.reproduce.export import export_run
 from polymimic.reproduce.roster import CONTROLS, DEMONSTRATORS, EXPERIMENTS
 from polymimic.reproduce.rundir import MissingInputError, RunDir, RunError, latest_run_path, new_run_path
 from polymimic.reproduce.stages import Context, reproduce, run_stage
@@ -108,6 +110,18 @@ def build_parser() -> argparse.ArgumentParser:
     replay.add_argument("--stride", type=_positive, default=3,
                         help="every stride-th tracker frame (3 at 10 fps: real time)")
     replay.set_defaults(handler=_replay)
+
+    exporting = commands.add_parser("export", parents=[_run_options(tasks=False)],
+                                    help="write a run's demonstrations as Minari datasets of PenaltyKick-v0 episodes")
+    exporting.add_argument("--prefix", default="polymimic/run",
+                           help="dataset ids are <prefix>-<demonstrator>-v0 (default polymimic/run)")
+    exporting.add_argument("--actions", choices=ACTIONS, default="recognizer",
+                           help="the recogniser's reading (learned from observation, default) or the commands sent")
+    exporting.add_argument("--overwrite", action="store_true", help="replace datasets of the same ids")
+    exporting.add_argument("--author", help="the datasets' author (Minari asks for one)")
+    exporting.add_argument("--author-email")
+    exporting.add_argument("--code-permalink")
+    exporting.set_defaults(handler=_export)
     return parser
 
 
@@ -192,6 +206,18 @@ def _replay(args: argparse.Namespace) -> int:
     out.parent.mkdir(parents=True, exist_ok=True)
     animate_demonstration(episodes[args.episode], out, fps=args.fps, stride=args.stride)
     print(out)
+    return 0
+
+
+def _export(args: argparse.Namespace) -> int:
+    run = _existing(RunDir(_run_path(args, new=False)))
+    config = run.open(_requested_config(args))
+    try:
+        written = export_run(run, config, prefix=args.prefix, actions=args.actions, overwrite=args.overwrite,
+                             author=args.author, author_email=args.author_email, code_permalink=args.code_permalink)
+    except ValueError as error:  # an existing dataset id, or a bad prefix: bad input, named
+        raise RunError(str(error)) from error
+    print("\n".join(written))
     return 0
 
 

@@ -39,6 +39,10 @@ FRAME_DTYPE = np.dtype([
 being sent (for evaluation only; see :func:`command_table`)."""
 
 DEMONSTRATORS = ("expert", "poor", "tiny", "humanoid")
+BODIES = {"expert": "lego", "poor": "lego", "tiny": "tiny", "humanoid": "humanoid", "average": "lego",
+          "imitator": "lego"}
+"""The body of every demonstrator polymimic knows, by name: ``lego`` (the imitator's own),
+``tiny`` or ``humanoid``."""
 PRIMITIVES = ("forward", "backward", "left", "right", "stop")
 OUTCOMES = ("goal", "own_goal", "ball_out", "robot_out", "time_up")
 
@@ -81,6 +85,20 @@ class PrimitiveSequence:
 
     primitive: str
     frames: np.ndarray
+
+
+def body_of(demonstrator: str) -> str:
+    """The body ``demonstrator`` has (see :data:`BODIES`); a ``ValueError`` for a name polymimic
+    does not know.
+
+    >>> body_of("poor"), body_of("tiny")
+    ('lego', 'tiny')
+    """
+    try:
+        return BODIES[demonstrator]
+    except (KeyError, TypeError):
+        raise ValueError(f"unknown demonstrator {demonstrator!r}: polymimic knows the bodies of "
+                         f"{', '.join(BODIES)}") from None
 
 
 def check_config(config: Mapping[str, Any] | str) -> dict[str, Any]:

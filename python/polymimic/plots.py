@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any, TypedDict, cast
 import numpy as np
 
 from polymimic._atomic import atomic_path
-from polymimic.field import Demonstration
+from polymimic.field import BODIES, Demonstration
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -63,7 +63,6 @@ _SCENES = {
     "humanoid": _Scene(*_LARGE, 70.0, 110.0),
     "tiny": _Scene(*_SMALL, 15.0, 15.0),
 }
-_BODY_OF = {"expert": "lego", "poor": "lego", "tiny": "tiny", "humanoid": "humanoid"}
 _TARGET_COLOUR, _OWN_COLOUR, _BALL_COLOUR = "tab:blue", "tab:red", "tab:orange"
 
 
@@ -238,7 +237,7 @@ def _scene(demo: Demonstration) -> _Scene:
         raise TypeError(f"expected a Demonstration, got {type(demo).__name__}")
     if len(demo.frames) == 0:
         raise ValueError("the demonstration has no frames to draw")
-    return _SCENES[_BODY_OF.get(demo.demonstrator, "lego")]
+    return _SCENES[BODIES.get(demo.demonstrator, "lego")]  # a demonstrator of its own is drawn as the imitator
 
 
 def _draw_field(ax: Axes, scene: _Scene) -> None:

@@ -119,3 +119,19 @@ def test_bad_configs_and_options_are_usage_errors(tmp_path, capsys):
             cli.main(argv)
         assert exit_.value.code == 2
         capsys.readouterr()
+
+
+def test_export_writes_minari_datasets_of_the_runs_lego_demonstrators(reproduced, capsys, tmp_path, monkeypatch):
+    minari = pytest.importorskip("minari")
+    monkeypatch.setenv("MINARI_DATASETS_PATH", str(tmp_path / "minari"))
+    who = ["--author", "tests", "--author-email", "tests@polymimic.invalid", "--code-permalink", "tests"]
+    assert cli.main(["export", "--run-dir", str(reproduced), "--prefix", "polymimic/tiny", *who]) == 0
+    written = capsys.readouterr().out.split()
+    assert written == ["polymimic/tiny-expert-v0", "polymimic/tiny-poor-v0", "polymimic/tiny-average-v0"]
+    expert = minari.load_dataset("polymimic/tiny-expert-v0")
+    assert expert.total_episodes == 16 and expert.storage.metadata["learned_from_observation"] is True
+    code, err = _error(capsys, ["export", "--run-dir", str(reproduced), "--prefix", "polymimic/tiny", *who])
+    assert code == 2 and "exists already: pass overwrite=True" in err
+    assert cli.main(["export", "--run-dir", str(reproduced), "--prefix", "polymimic/tiny", "--actions", "commands",
+                     "--overwrite", *who]) == 0
+    assert minari.load_dataset("polymimic/tiny-poor-v0").storage.metadata["polymimic_actions"] == "commands"

@@ -1,0 +1,262 @@
+"""Demonstrations out to the tools offline-RL and imitation users already have: Minari datasets
+of ``PenaltyKick-v0`` episodes, and back.
+
+An episode is a demonstration cut into the environment's steps: every ``step_frames`` tracker
+frames (30 a second) the observation the environment would give (robot x, y, θ and ball x, y,
+the last good reading repeated through a tracking dropout), so that a dataset holds one more
+observation than it has actions, as Minari expects. Its reward is the environment's (+1 on
+the step of a goal, −1 on an own goal, 0 otherwise); it terminates on a goal, an own goal or
+the ball or robot leaving the field, and is truncated by the time limit.
+
+Actions, one of the five primitives a step, come from one of two places:
+
+- ``actions="recognizer"`` (the default): the imitator's own reading of the demonstration,
+  the primitives its recogniser names its segments — learning from observation, as the
+  imitator itself learns (the dataset says so in its metadata). A step takes the primitive
+  most of its frames are named; frames in gaps (no primitive fits, as for a humanoid
+  side-step) or in no segment name nothing, and a step made only of such frames takes the
+  primitive of the nearest named frame, flagged ``infos["gap"]``.
+- ``actions="commands"``: the primitive equivalent of the commands the demonstrator sent
+  (privileged: a real tracker does not see them), the most frequent over the step.
+
+Each episode's demonstrator, body, configuration, episode seed and outcome go in its Minari
+episode metadata, and :func:`from_minari` reads them back. Needs ``pip install
+"polymimic[minari]"``.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+
+from polymimic._native import PrimitiveRecognizer
+from polymimic.env import ENV_ID
+from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, body_of, command_primitives
+
+__all__ = ["ACTIONS", "OBSERVED", "from_minari", "steps_of", "to_minari"]
+
+ACTIONS = ("recognizer", "commands")
+"""Where a dataset's actions come from (see the module's documentation)."""
+
+OBSERVED = ("robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm")
+"""The frame columns an observation holds, in order."""
+
+_REWARDS = {"goal": 1.0, "own_goal": -1.0}
+_TRUNCATING = frozenset({"time_up"})
+_SIMULATED_BODIES = ("lego",)
+
+
+@dataclasses.dataclass(frozen=True)
+class Steps:
+    """One demonstration as environment steps: ``observations`` ``(T + 1, 5)`` float32,
+    ``actions`` ``(T,)`` primitive indices, ``rewards``, ``terminations``, ``truncations`` and
+    ``gap`` (a step whose action no named frame gave) ``(T,)``."""
+
+    observations: np.ndarray
+    actions: np.ndarray
+    rewards: np.ndarray
+    terminations: np.ndarray
+    truncations: np.ndarray
+    gap: np.ndarray
+
+
+def steps_of(demonstration: Demonstration, *, step_frames: int = 30, actions: str = "recognizer",
+             recognizer: PrimitiveRecognizer | None = None, segmenter: Mapping[str, Any] | None = None) -> Steps:
+    """``demonstration`` cut into environment steps of ``step_frames`` frames (the last may be
+    shorter: it ends where the demonstration ends).
+
+    Examples
+    --------
+    >>> import polymimic
+    >>> demo = polymimic.record("expert", configuration=1, n=1, seed=4)[0]
+    >>> steps = steps_of(demo, actions="commands")
+    >>> len(steps.observations) == len(steps.actions) + 1, steps.observations.dtype
+    (True, dtype('float32'))
+    """
+    _check_step_frames(step_frames)
+    if actions not in ACTIONS:
+        raise ValueError(f"actions must be one of {', '.join(map(repr, ACTIONS))}, got {actions!r}")
+    frames = demonstration.frames
+    if len(frames) < 2:
+        raise ValueError(f"a demonstration of {len(frames)} frame(s) has no step: it needs at least 2")
+    observed = _filled(np.column_stack([frames[c] for c in OBSERVED]).astype(np.float32))
+    n_steps = -(-(len(frames) - 1) // step_frames)
+    ends = np.minimum(np.arange(1, n_steps + 1) * step_frames, len(frames) - 1)
+    starts = np.concatenate([[0], ends[:-1]])
+    if actions == "commands":
+        labels = command_primitives()[frames["command"]]
+        named = np.array([PRIMITIVES.index(str(p)) for p in labels])
+    else:
+        if recognizer is None:
+            raise ValueError('actions="recognizer" needs the recognizer= that reads the demonstrations')
+        named = _recognised(recognizer.segment(frames, **dict(segmenter or {})), len(frames))
+    chosen, gap = zip(*(_majority(named, a, b) for a, b in zip(starts, ends)))
+    rewards = np.zeros(n_steps)
+    rewards[-1] = _REWARDS.get(demonstration.outcome, 0.0)
+    terminations, truncations = np.zeros(n_steps, dtype=bool), np.zeros(n_steps, dtype=bool)
+    if demonstration.outcome in _TRUNCATING:
+        truncations[-1] = True
+    else:
+        terminations[-1] = True
+    return Steps(observations=observed[np.concatenate([[0], ends])], actions=np.array(chosen, dtype=np.int64),
+                 rewards=rewards, terminations=terminations, truncations=truncations, gap=np.array(gap, dtype=bool))
+
+
+def to_minari(demonstrations: Sequence[Demonstration], dataset_id: str, *, actions: str = "recognizer",
+              recognizer: PrimitiveRecognizer | None = None, segmenter: Mapping[str, Any] | None = None,
+              step_frames: int = 30, overwrite: bool = False, author: str | None = None,
+              author_email: str | None = None, code_permalink: str | None = None,
+              description: str | None = None) -> Any:
+    """Write ``demonstrations`` as a Minari dataset of ``PenaltyKick-v0`` episodes; return it.
+
+    Parameters
+    ----------
+    demonstrations : list of Demonstration
+        Of bodies the environment simulates (the Lego robot: the Expert, the Poor, the
+        Average, an imitator's attempts).
+    dataset_id : str
+        Minari's id, ``[namespace/](env_name-)(dataset_name)(-v(version))``, e.g.
+        ``"polymimic/expert-v0"``. An existing one is refused unless ``overwrite=True``.
+    actions : {"recognizer", "commands"}
+        The imitator's own reading (learning from observation), or the commands sent.
+    recognizer, segmenter
+        The recogniser (and segmenter settings) that reads them, for ``actions="recognizer"``.
+    step_frames : int
+        Tracker frames a step (the environment's ``frames_per_action``).
+    author, author_email, code_permalink, description
+        Passed to Minari, which asks for them.
+
+    Raises
+    ------
+    ValueError
+        An existing ``dataset_id`` (without ``overwrite``), a demonstration of a body the
+        environment does not simulate (naming it), or bad arguments.
+    ModuleNotFoundError
+        Without Minari installed.
+    """
+    minari, episode_buffer = _minari()
+    if not demonstrations:
+        raise ValueError("no demonstrations: a dataset needs at least one")
+    for i, demo in enumerate(demonstrations):
+        if not isinstance(demo, Demonstration):
+            raise TypeError(f"demonstration {i} is a {type(demo).__name__}, not a polymimic.Demonstration")
+        if body_of(demo.demonstrator) not in _SIMULATED_BODIES:
+            raise ValueError(f"demonstration {i} ({demo.demonstrator}) is of the {body_of(demo.demonstrator)} body; "
+                             f"{ENV_ID} simulates the Lego robot only")
+    if dataset_id in minari.list_local_datasets():
+        if not overwrite:
+            raise ValueError(f"a Minari dataset {dataset_id!r} exists already: pass overwrite=True to replace it")
+        minari.delete_dataset(dataset_id)
+    all_steps = [steps_of(d, step_frames=step_frames, actions=actions, recognizer=recognizer, segmenter=segmenter)
+                 for d in demonstrations]
+    buffers = [episode_buffer(observations=s.observations, actions=s.actions, rewards=s.rewards.tolist(),
+                              terminations=s.terminations.tolist(), truncations=s.truncations.tolist(),
+                              infos={"gap": [*s.gap.tolist(), False]}) for s in all_steps]
+    spec = _env_spec(step_frames)
+    learned_from = "observation" if actions == "recognizer" else "the commands sent"
+    dataset = minari.create_dataset_from_buffers(
+        dataset_id, buffers, env=spec, eval_env=spec, algorithm_name=f"polymimic ({actions})",
+        author=author, author_email=author_email, code_permalink=code_permalink, data_format="arrow",
+        description=description or f"polymimic demonstrations; actions learned from {learned_from}")
+    dataset.storage.update_metadata({"polymimic_actions": actions, "learned_from_observation": actions == "recognizer",
+                                     "step_frames": step_frames})
+    dataset.storage.update_episode_metadata(
+        [{"demonstrator": d.demonstrator, "body": body_of(d.demonstrator), "configuration": d.configuration,
+          "episode_seed": str(d.seed), "outcome": d.outcome} for d in demonstrations],
+        range(len(demonstrations)))
+    return minari.load_dataset(dataset_id)
+
+
+def from_minari(dataset: Any) -> list[Demonstration]:
+    """The episodes of a dataset :func:`to_minari` wrote (a ``MinariDataset`` or its id), as
+    demonstrations at the dataset's step rate: one frame per observation, ``t_s`` the step's
+    time, ``command`` the step's action (the primitive's command id; the last frame repeats the
+    last action), with the demonstrator, configuration, seed and outcome restored.
+
+    Raises
+    ------
+    ValueError
+        A dataset polymimic did not write (no ``polymimic_actions`` in its metadata).
+    """
+    minari, _ = _minari()
+    if isinstance(dataset, str):
+        dataset = minari.load_dataset(dataset)
+    metadata = dataset.storage.metadata
+    if "polymimic_actions" not in metadata:
+        raise ValueError(f"{metadata.get('dataset_id')!r} was not written by polymimic.export.to_minari")
+    step_s = int(metadata["step_frames"]) / 30.0
+    episodes = list(dataset.iterate_episodes())
+    info = list(dataset.storage.get_episode_metadata([e.id for e in episodes]))
+    demonstrations = []
+    for episode, meta in zip(episodes, info):
+        observations = np.asarray(episode.observations, dtype=float)
+        frames = np.zeros(len(observations), dtype=FRAME_DTYPE)
+        frames["t_s"] = np.arange(len(observations)) * step_s
+        for i, column in enumerate(OBSERVED):
+            frames[column] = observations[:, i]
+        actions = np.asarray(episode.actions, dtype=int)
+        frames["command"] = np.append(actions, actions[-1:])  # a primitive's command id is its index
+        if meta["outcome"] not in OUTCOMES:
+            raise ValueError(f"episode {episode.id} has outcome {meta['outcome']!r}; expected one of "
+                             f"{', '.join(OUTCOMES)}")
+        demonstrations.append(Demonstration(frames=frames, outcome=meta["outcome"], demonstrator=meta["demonstrator"],
+                                            configuration=int(meta["configuration"]), seed=int(meta["episode_seed"])))
+    return demonstrations
+
+
+def _minari() -> tuple[Any, Any]:
+    try:
+        import minari
+        from minari.data_collector import EpisodeBuffer
+    except ImportError as error:
+        raise ModuleNotFoundError('Minari export needs minari: pip install "polymimic[minari]"') from error
+    return minari, EpisodeBuffer
+
+
+def _env_spec(step_frames: int) -> Any:
+    """``PenaltyKick-v0``'s spec with the dataset's step length, so the env is remade as recorded."""
+    import gymnasium
+
+    return dataclasses.replace(gymnasium.spec(ENV_ID), kwargs={"frames_per_action": step_frames})
+
+
+def _check_step_frames(step_frames: Any) -> None:
+    if not isinstance(step_frames, int) or isinstance(step_frames, bool) or step_frames < 1:
+        raise ValueError(f"step_frames must be an integer ≥ 1, got {step_frames!r}")
+
+
+def _filled(observed: np.ndarray) -> np.ndarray:
+    """Each NaN reading replaced by the last good one before it (as the environment repeats it)."""
+    filled = observed.copy()
+    for t in range(1, len(filled)):
+        lost = ~np.isfinite(filled[t])
+        filled[t, lost] = filled[t - 1, lost]
+    return filled
+
+
+def _recognised(segments: Mapping[str, Any], n_frames: int) -> np.ndarray:
+    """The primitive index each frame's segment is named (−1: a gap, or in no segment)."""
+    named = np.full(n_frames, -1)
+    for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
+        if label in PRIMITIVES:
+            named[int(first):int(last)] = PRIMITIVES.index(label)
+    return named
+
+
+def _majority(named: np.ndarray, start: int, end: int) -> tuple[int, bool]:
+    """The primitive most frames of ``[start, end)`` are named (the first such on a tie), and
+    whether none is: then the nearest named frame's, outward from the step."""
+    window = named[start:end]
+    known = window[window >= 0]
+    if len(known):
+        return int(np.bincount(known, minlength=len(PRIMITIVES)).argmax()), False
+    labelled = np.flatnonzero(named >= 0)
+    if not len(labelled):
+        raise ValueError("the recogniser names no frame of this demonstration: it is all gaps")
+    nearest = labelled[np.argmin(np.abs(labelled - start))]
+    return int(named[nearest]), True
+
+

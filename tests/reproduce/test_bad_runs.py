@@ -170,3 +170,38 @@ def test_killed_at_any_stage_and_rerun_gives_the_same_results(finished_run, tiny
         assert rerun.returncode == 0, rerun.stderr
         assert (run_dir / "results.json").read_bytes() == expected, delay_s
         assert not _partial_files(run_dir), _partial_files(run_dir)
+
+
+def _config_tables():
+    """Run configs as a careless hand writes them: known and misspelt sections and keys, values
+    of every TOML type (NaN and infinities among the floats)."""
+    from hypothesis import strategies as st
+
+    defaults = RunConfig().to_dict()
+    sections = st.sampled_from([*defaults, "experiment", "Seeds"])
+    values = st.one_of(st.integers(-2**65, 2**65), st.floats(allow_nan=True, allow_infinity=True), st.booleans(),
+                       st.text(max_size=6), st.lists(st.integers(), max_size=2),
+                       st.dictionaries(st.text(max_size=4), st.integers(), max_size=2))
+
+    def keys_of(section):
+        known = list(defaults.get(section, {})) or ["x"]
+        return st.dictionaries(st.sampled_from([*known, known[0] + "s"]), values, max_size=3)
+
+    return sections.flatmap(lambda s: st.fixed_dictionaries({s: keys_of(s)}))
+
+
+def test_any_config_is_refused_by_name_or_read_whole():
+    from hypothesis import given, settings
+
+    @settings(max_examples=int(os.environ.get("POLYMIMIC_BATTERY_EXAMPLES", "40")), deadline=None, derandomize=True)
+    @given(data=_config_tables())
+    def check(data):
+        try:
+            config = RunConfig.from_dict(data)
+        except ConfigError as error:
+            section = next(iter(data))
+            assert section in str(error) or "unknown section" in str(error), (data, error)
+            return
+        assert RunConfig.from_toml(config.to_toml()) == config
+
+    check()

@@ -13,6 +13,8 @@ const VERSION: u32 = 1;
 #[derive(Serialize, Deserialize)]
 struct Saved {
     params: HmmParams,
+    /// Required (null for an unfitted model): a file that lost the key is damaged, not unfitted.
+    #[serde(deserialize_with = "Option::deserialize")]
     probabilities: Option<Probabilities>,
     history: Vec<f64>,
     converged: bool,
@@ -51,5 +53,22 @@ impl DiscreteHmm {
         model.history = saved.history;
         model.converged = saved.converged;
         Ok(model)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{DiscreteHmm, HmmParams};
+
+    #[test]
+    fn a_file_that_lost_its_probabilities_is_damaged_not_unfitted() {
+        let model = DiscreteHmm::new(HmmParams::new(2, 3).check().unwrap());
+        let text = model.to_json().unwrap();
+        assert!(text.contains("\"probabilities\":null"), "{text}");
+        assert!(DiscreteHmm::from_json(&text).is_ok(), "an unfitted model's own file loads");
+        let lost = text.replace(",\"probabilities\":null", "");
+        assert_ne!(lost, text);
+        let error = DiscreteHmm::from_json(&lost).err().expect("refused").to_string();
+        assert!(error.contains("probabilities"), "{error}");
     }
 }

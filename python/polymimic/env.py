@@ -103,10 +103,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         self.render_mode = render_mode
         self._config = _field_config(config)
         Episode("lego", configuration=1, seed=0, config=self._config)  # fail now on a bad config
-        margin_x, margin_y = 0.25 * _FIELD_LENGTH_MM, 0.25 * _FIELD_WIDTH_MM
-        high = np.array([_FIELD_LENGTH_MM / 2 + margin_x, _FIELD_WIDTH_MM / 2 + margin_y, math.pi,
-                         _FIELD_LENGTH_MM / 2 + margin_x, _FIELD_WIDTH_MM / 2 + margin_y], dtype=np.float32)
-        self.observation_space = spaces.Box(low=-high, high=high, dtype=np.float32)
+        self.observation_space = observation_space()
         self.action_space = spaces.Discrete(len(PRIMITIVES))
         self._episode: Episode | None = None
 
@@ -159,6 +156,15 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
                 "valid": self._episode.valid}
 
 
+def observation_space() -> Any:
+    """The observation's space: the field with a quarter of its size around it (a robot or ball
+    leaving the field is seen a little beyond the line), and the heading in [−π, π]."""
+    margin_x, margin_y = 0.25 * _FIELD_LENGTH_MM, 0.25 * _FIELD_WIDTH_MM
+    high = np.array([_FIELD_LENGTH_MM / 2 + margin_x, _FIELD_WIDTH_MM / 2 + margin_y, math.pi,
+                     _FIELD_LENGTH_MM / 2 + margin_x, _FIELD_WIDTH_MM / 2 + margin_y], dtype=np.float32)
+    return spaces.Box(low=-high, high=high, dtype=np.float32)
+
+
 def register() -> None:
     """Register ``PenaltyKick-v0`` with Gymnasium (again is a no-op); needs Gymnasium.
 
@@ -172,7 +178,8 @@ def register() -> None:
     if gymnasium is None:
         raise ModuleNotFoundError("registering PenaltyKick-v0 needs gymnasium: pip install \"polymimic[gym]\"")
     if ENV_ID not in gymnasium.registry:
-        gymnasium.register(id=ENV_ID, entry_point="polymimic.env:PenaltyKickEnv")
+        gymnasium.register(id=ENV_ID, entry_point="polymimic.env:PenaltyKickEnv",
+                           vector_entry_point="polymimic.vector_env:PenaltyKickVectorEnv")
 
 
 def _check_configuration(configuration: Any) -> None:

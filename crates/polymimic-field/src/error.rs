@@ -63,6 +63,12 @@ pub enum FieldError {
         /// Attempts made.
         attempts: usize,
     },
+    /// A batch was stepped before every one of its episodes was started.
+    #[error("episode {index} of the batch has not been started: reset it before stepping")]
+    NotStarted {
+        /// The first slot without an episode.
+        index: usize,
+    },
     /// The physics produced a non-finite state (should never happen; reported, not panicked).
     #[error("the simulation diverged: {0}")]
     Diverged(&'static str),

@@ -39,6 +39,7 @@
 //! # Ok::<(), polymimic_field::FieldError>(())
 //! ```
 
+mod batch;
 pub mod body;
 pub mod command;
 pub mod controller;
@@ -53,6 +54,7 @@ mod setup;
 mod stats;
 mod tracker;
 
+pub use batch::EpisodeBatch;
 pub use body::BodyKind;
 pub use command::{Command, CommandInfo, ExpertCommand, HumanoidCommand, Language, Primitive, command_table};
 pub use controller::Controller;

@@ -35,7 +35,7 @@ pub(crate) fn field_config(json: Option<&str>) -> PyResult<FieldConfig> {
     Ok(config)
 }
 
-fn configuration(number: i64) -> PyResult<Configuration> {
+pub(crate) fn configuration(number: i64) -> PyResult<Configuration> {
     match number {
         1 => Ok(Configuration::One),
         2 => Ok(Configuration::Two),

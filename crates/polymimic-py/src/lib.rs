@@ -4,6 +4,7 @@
 mod convert;
 mod errors;
 mod field;
+mod field_batch;
 mod hmm;
 mod learn;
 mod perceive;
@@ -21,6 +22,8 @@ mod _native {
         PyEpisode, check_field_config, commands, default_field_config, record_demonstrations, record_self_observation,
         thesis_table_3_1,
     };
+    #[pymodule_export]
+    use super::field_batch::PyEpisodeBatch;
     #[pymodule_export]
     use super::hmm::PyDiscreteHmm;
     #[pymodule_export]

@@ -18,7 +18,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.baselines import bco
+from polymimic.baselines.bco import labelled
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import check_demonstrations, check_weights
 from polymimic.baselines.policy import ClonedPolicy
@@ -40,5 +40,5 @@ def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecogni
         every weight is 0.
     """
     checked = check_weights(weights, check_demonstrations(demonstrations))
-    return train("bco_lp", bco.labelled(demonstrations, recognizer=recognizer, segmenter=segmenter),
+    return train("bco_lp", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter),
                  hyperparameters, seed=seed, weights=checked)

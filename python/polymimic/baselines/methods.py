@@ -18,7 +18,9 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.baselines import bc, bc_best, bco
+from polymimic.baselines.bc import labelled as bc_labelled
+from polymimic.baselines.bc_best import labelled as bc_best_labelled
+from polymimic.baselines.bco import labelled as bco_labelled
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import Labelled, check_demonstrations, check_weights
 from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
@@ -60,14 +62,14 @@ def prepare(method: str, demonstrations: Sequence[Demonstration], *,
         return Prepared(method, [])
     demos = check_demonstrations(demonstrations)
     if method == "bc":
-        return Prepared(method, bc.labelled(demos))
+        return Prepared(method, bc_labelled(demos))
     if method == "bc_best":
         if member is None:
             raise ValueError("bc_best needs member: the name of the demonstrator to clone")
-        return Prepared(method, bc_best.labelled(demos, member=member))
+        return Prepared(method, bc_best_labelled(demos, member=member))
     if recognizer is None:
         raise ValueError(f"{method} needs recognizer: a polymimic.PrimitiveRecognizer trained on self-observation")
-    labelled = bco.labelled(demos, recognizer=recognizer, segmenter=segmenter)
+    labelled = bco_labelled(demos, recognizer=recognizer, segmenter=segmenter)
     if method == "bco":
         return Prepared(method, labelled)
     if weights is None:

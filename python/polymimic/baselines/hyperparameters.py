@@ -100,15 +100,17 @@ DEFAULT = Hyperparameters("hist_gradient_boosting", _params(max_iter=100, learni
 
 
 def candidates(budget: int, *, seed: int = 0) -> list[Hyperparameters]:
-    """``budget`` distinct candidates: :data:`DEFAULT`, then draws from :data:`GRID` (a family
-    at random, then its parameters, a feature set, a step length and balancing), seeded."""
+    """``budget`` distinct candidates: :data:`DEFAULT`, then draws from :data:`GRID` with the
+    families taken in turn (so every family is tried about as often), each with parameters, a
+    feature set, a step length and balancing drawn at random, seeded."""
     if isinstance(budget, bool) or not isinstance(budget, (int, np.integer)) or budget < 1:
         raise ValueError(f"budget must be an integer ≥ 1 (candidates to try), got {budget!r}")
     rng = np.random.default_rng(seed)
     chosen = [DEFAULT]
     size = sum(len(g) for g in GRID.values()) * len(FEATURE_SETS) * len(FRAMES_PER_ACTION) * 2
+    turn = 0
     while len(chosen) < min(budget, size):
-        family = FAMILIES[int(rng.integers(len(FAMILIES)))]
+        family = FAMILIES[turn % len(FAMILIES)]
         grid = GRID[family]
         candidate = Hyperparameters(family, grid[int(rng.integers(len(grid)))],
                                     FEATURE_SETS[int(rng.integers(len(FEATURE_SETS)))],
@@ -116,4 +118,5 @@ def candidates(budget: int, *, seed: int = 0) -> list[Hyperparameters]:
                                     bool(rng.integers(2)))
         if candidate not in chosen:
             chosen.append(candidate)
+            turn += 1
     return chosen

@@ -50,4 +50,4 @@ def fit(demonstrations: Sequence[Demonstration], *, hyperparameters: Hyperparame
     ValueError
         If ``demonstrations`` is empty.
     """
-    return train("bc", labelled(demonstrations), hyperparameters, seed=seed)
+    return train("bc", labelled(demonstrations), hyperparameters=hyperparameters, seed=seed)

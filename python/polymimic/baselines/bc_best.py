@@ -45,4 +45,4 @@ def fit(demonstrations: Sequence[Demonstration], *, member: str, hyperparameters
     ValueError
         If ``demonstrations`` is empty or holds none by ``member``.
     """
-    return train("bc_best", labelled(demonstrations, member=member), hyperparameters, seed=seed)
+    return train("bc_best", labelled(demonstrations, member=member), hyperparameters=hyperparameters, seed=seed)

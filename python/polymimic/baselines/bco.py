@@ -65,5 +65,5 @@ def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecogni
     ValueError
         If ``demonstrations`` is empty, or no frame is labelled (all gaps).
     """
-    return train("bco", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter), hyperparameters,
-                 seed=seed)
+    return train("bco", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter),
+                 hyperparameters=hyperparameters, seed=seed)

@@ -41,4 +41,4 @@ def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecogni
     """
     checked = check_weights(weights, check_demonstrations(demonstrations))
     return train("bco_lp", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter),
-                 hyperparameters, seed=seed, weights=checked)
+                 hyperparameters=hyperparameters, seed=seed, weights=checked)

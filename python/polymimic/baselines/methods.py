@@ -77,7 +77,7 @@ def prepare(method: str, demonstrations: Sequence[Demonstration], *,
     return Prepared(method, labelled, check_weights(weights, demos))
 
 
-def fit_prepared(prepared: Prepared, hyperparameters: Hyperparameters | None = None, *,
+def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None = None,
                  seed: int = 0) -> ClonedPolicy | RandomPolicy:
     """The policy ``prepared.method`` learns with ``hyperparameters`` (default
     :data:`~polymimic.baselines.hyperparameters.DEFAULT`); ``random`` takes only their step
@@ -85,7 +85,7 @@ def fit_prepared(prepared: Prepared, hyperparameters: Hyperparameters | None = N
     if prepared.method == "random":
         return RandomPolicy(seed=seed, frames_per_action=30 if hyperparameters is None
                             else hyperparameters.frames_per_action)
-    return train(prepared.method, prepared.labelled, hyperparameters or DEFAULT, seed=seed,
+    return train(prepared.method, prepared.labelled, hyperparameters=hyperparameters or DEFAULT, seed=seed,
                  weights=prepared.weights)
 
 
@@ -105,4 +105,4 @@ def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters
     """
     prepared = prepare(method, demonstrations, recognizer=recognizer, weights=weights, member=member,
                        segmenter=segmenter)
-    return fit_prepared(prepared, hyperparameters, seed=seed)
+    return fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed)

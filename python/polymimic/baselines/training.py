@@ -11,7 +11,7 @@ before fitting, so that a member weighted 0 is exactly a member left out.
 >>> import polymimic
 >>> from polymimic.baselines.labels import command_labels
 >>> labelled = command_labels(polymimic.record("poor", configuration=1, n=2, seed=0))
->>> policy = train("bc", labelled, DEFAULT, seed=0)
+>>> policy = train("bc", labelled, hyperparameters=DEFAULT, seed=0)
 >>> policy.predict(labelled[0].observations[:1]).tolist()
 [0]
 """
@@ -58,7 +58,7 @@ def decision_samples(labelled: Sequence[Labelled], *, weights: Mapping[str, floa
     return X, y, w
 
 
-def train(method: str, labelled: Sequence[Labelled], hyperparameters: Hyperparameters, *, seed: int = 0,
+def train(method: str, labelled: Sequence[Labelled], *, hyperparameters: Hyperparameters, seed: int = 0,
           weights: Mapping[str, float] | None = None) -> ClonedPolicy:
     """A :class:`ClonedPolicy` fitted on the decision samples of ``labelled``.
 

@@ -128,7 +128,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
     scores: list[dict[str, Any]] = []
     best: tuple[tuple[int, int], int, ClonedPolicy | RandomPolicy] | None = None
     for index, hyperparameters in enumerate(tried):
-        policy = fit_prepared(prepared, hyperparameters, seed=seed)
+        policy = fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed)
         result = play(policy, attempts, field_config=field_config)
         scores.append({"hyperparameters": _chosen(method, hyperparameters), "goals": result.goals,
                        "own_goals": result.own_goals})

@@ -178,6 +178,7 @@ def test_tuning_never_sees_the_evaluation_and_repeats_its_choice():
     validation = {s for _, s in one.validation_attempts}
     assert validation.isdisjoint(s for _, s in attempts_of(25, seed=3))
     assert validation.isdisjoint(s for _, s in attempts_of(25, seed=0))
+    assert {binding_seed(s) for s in validation}.isdisjoint(binding_seed(s) for _, s in attempts_of(25, seed=3))
     assert one.chosen == two.chosen and one.scores == two.scores
     assert len(one.scores) == 2 and one.hyperparameters == baselines.Hyperparameters.from_dict(one.chosen)
 

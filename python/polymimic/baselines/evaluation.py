@@ -2,7 +2,8 @@
 
 :func:`evaluate_policy` plays the attempts :func:`polymimic.evaluate` plays for the imitator:
 the same configurations and episode seeds (``polymimic._native.attempt_seeds``), so the same
-starts and the same noise. At every decision one batched ``predict`` goes over the
+starts and the same noise (but see :func:`binding_seed`: this build's ``Episode`` cannot take
+half of those seeds yet). At every decision one batched ``predict`` goes over the
 observations of every unfinished episode, and each runs its primitive for the policy's
 ``frames_per_action`` frames; a vector environment can replace the stepping without the
 policies changing. During a tracking dropout the observation repeats the last good reading.

@@ -10,7 +10,7 @@ forward, its spin a left or right, its brake a stop.
 >>> demos = polymimic.record("poor", configuration=1, n=2, seed=0)
 >>> policy = bc.fit(demos, seed=0)
 >>> policy.method, policy.frames_per_action
-('bc', 10)
+('bc', 15)
 """
 
 from __future__ import annotations

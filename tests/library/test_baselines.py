@@ -5,6 +5,7 @@ import re
 
 import numpy as np
 import pytest
+from threadpoolctl import threadpool_limits
 
 import polymimic
 from polymimic import _native, baselines, recognition
@@ -50,6 +51,13 @@ def turning_demonstrations(seed, n):
     return [scripted(turn_to_ball, seed=seed * 1000 + i, max_frames=40,
                      place=(rng.uniform(-400, 400), rng.uniform(-300, 300), rng.uniform(-math.pi, math.pi)))
             for i in range(n)]
+
+
+@pytest.fixture(scope="module", autouse=True)
+def one_thread():
+    """Small fits on a shared node: threads only add contention (three times slower here)."""
+    with threadpool_limits(limits=1):
+        yield
 
 
 @pytest.fixture(scope="module")

@@ -1,0 +1,48 @@
+"""``bc_best``: :mod:`~polymimic.baselines.bc` on one named member's demonstrations only (an
+oracle of who is best: SPEC §6.2 names the member of lowest lapse ε).
+
+>>> import polymimic
+>>> from polymimic.baselines import bc_best
+>>> demos = polymimic.record("poor", configuration=1, n=1, seed=0) + polymimic.record("expert", configuration=1, n=1)
+>>> bc_best.fit(demos, member="expert").method
+'bc_best'
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
+from polymimic.baselines.labels import Labelled, check_demonstrations, command_labels
+from polymimic.baselines.policy import ClonedPolicy
+from polymimic.baselines.training import train
+from polymimic.field import Demonstration
+
+__all__ = ["fit", "labelled", "member_demonstrations"]
+
+
+def member_demonstrations(demonstrations: Sequence[Demonstration], member: str) -> list[Demonstration]:
+    """``member``'s demonstrations, or a ValueError naming the members there are."""
+    demos = check_demonstrations(demonstrations)
+    chosen = [d for d in demos if d.demonstrator == member]
+    if not chosen:
+        members = sorted({d.demonstrator for d in demos})
+        raise ValueError(f"unknown member {member!r}: the demonstrations are by {', '.join(map(repr, members))}")
+    return chosen
+
+
+def labelled(demonstrations: Sequence[Demonstration], *, member: str) -> list[Labelled]:
+    """``member``'s demonstrations with every frame labelled by its command's primitive."""
+    return command_labels(member_demonstrations(demonstrations, member))
+
+
+def fit(demonstrations: Sequence[Demonstration], *, member: str, hyperparameters: Hyperparameters = DEFAULT,
+        seed: int = 0) -> ClonedPolicy:
+    """:func:`polymimic.baselines.bc.fit` on ``member``'s demonstrations alone.
+
+    Raises
+    ------
+    ValueError
+        If ``demonstrations`` is empty or holds none by ``member``.
+    """
+    return train("bc_best", labelled(demonstrations, member=member), hyperparameters=hyperparameters, seed=seed)

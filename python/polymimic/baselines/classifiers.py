@@ -1,0 +1,99 @@
+"""The scikit-learn classifier families a cloned policy may use, built from plain parameters.
+
+Every family takes per-sample weights (a demonstrator's weight times its class's balancing
+weight); k-nearest neighbours, which scikit-learn fits without weights, votes with them instead
+(:class:`WeightedKNeighbors`). Features are standardised for the families that measure
+distances or follow gradients (k-NN, logistic regression, MLP).
+
+>>> import numpy as np
+>>> model = make_classifier("knn", {"n_neighbors": 3}, seed=0)
+>>> X, y = np.array([[0.0], [0.1], [0.2], [1.0], [1.1], [1.2]]), np.array([0, 0, 0, 1, 1, 1])
+>>> fit_weighted(model, X, y, np.ones(6)).predict(np.array([[0.05], [1.15]])).tolist()
+[0, 1]
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+from sklearn.base import BaseEstimator, ClassifierMixin  # type: ignore[import-untyped, unused-ignore]
+from sklearn.dummy import DummyClassifier  # type: ignore[import-untyped, unused-ignore]
+from sklearn.ensemble import HistGradientBoostingClassifier, RandomForestClassifier  # type: ignore[import-untyped, unused-ignore]
+from sklearn.exceptions import ConvergenceWarning  # type: ignore[import-untyped, unused-ignore]
+from sklearn.linear_model import LogisticRegression  # type: ignore[import-untyped, unused-ignore]
+from sklearn.neighbors import NearestNeighbors  # type: ignore[import-untyped, unused-ignore]
+from sklearn.neural_network import MLPClassifier  # type: ignore[import-untyped, unused-ignore]
+from sklearn.pipeline import Pipeline  # type: ignore[import-untyped, unused-ignore]
+from sklearn.preprocessing import StandardScaler  # type: ignore[import-untyped, unused-ignore]
+
+__all__ = ["FAMILIES", "WeightedKNeighbors", "fit_weighted", "make_classifier"]
+
+FAMILIES = ("hist_gradient_boosting", "random_forest", "knn", "logistic_regression", "mlp")
+
+
+class WeightedKNeighbors(ClassifierMixin, BaseEstimator):  # type: ignore[misc]
+    """k-nearest neighbours whose votes weigh by the neighbours' sample weights (and by
+    inverse distance when ``weights="distance"``); a zero-weight sample never votes."""
+
+    def __init__(self, n_neighbors: int = 5, weights: str = "uniform") -> None:
+        self.n_neighbors = n_neighbors
+        self.weights = weights
+
+    def fit(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None = None) -> WeightedKNeighbors:
+        weight = np.ones(len(y)) if sample_weight is None else np.asarray(sample_weight, dtype=np.float64)
+        keep = weight > 0
+        self.classes_, self.y_ = np.unique(np.asarray(y)[keep], return_inverse=True)
+        self.weight_ = weight[keep]
+        self.index_ = NearestNeighbors(n_neighbors=min(self.n_neighbors, int(keep.sum()))).fit(X[keep])
+        return self
+
+    def predict_proba(self, X: np.ndarray) -> np.ndarray:
+        distance, index = self.index_.kneighbors(X)
+        vote = self.weight_[index]
+        if self.weights == "distance":
+            vote = vote / np.maximum(distance, 1e-9)
+        proba = np.zeros((len(X), len(self.classes_)))
+        np.add.at(proba, (np.arange(len(X))[:, None], self.y_[index]), vote)
+        total = proba.sum(axis=1, keepdims=True)
+        return np.asarray(proba / np.where(total > 0, total, 1.0))
+
+    def predict(self, X: np.ndarray) -> np.ndarray:
+        return np.asarray(self.classes_[self.predict_proba(X).argmax(axis=1)])
+
+
+def make_classifier(family: str, params: Mapping[str, Any], *, seed: int) -> Any:
+    """An unfitted classifier of ``family`` (one of :data:`FAMILIES`) with ``params``, seeded."""
+    params = dict(params)
+    if family == "hist_gradient_boosting":
+        return HistGradientBoostingClassifier(random_state=seed, early_stopping=False, **params)
+    if family == "random_forest":
+        return RandomForestClassifier(random_state=seed, n_jobs=1, **params)
+    if family == "knn":
+        return Pipeline([("scale", StandardScaler()), ("model", WeightedKNeighbors(**params))])
+    if family == "logistic_regression":
+        return Pipeline([("scale", StandardScaler()), ("model", LogisticRegression(max_iter=2000, **params))])
+    if family == "mlp":
+        return Pipeline([("scale", StandardScaler()),
+                         ("model", MLPClassifier(random_state=seed, max_iter=300, early_stopping=False, **params))])
+    raise ValueError(f"unknown classifier family {family!r}; expected one of {', '.join(FAMILIES)}")
+
+
+def fit_weighted(model: Any, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray) -> Any:
+    """``model`` fitted on the samples of positive weight, with their weights; where they hold
+    one class only, a constant classifier of that class instead (no family fits one class).
+    An iterative fit that stops at its iteration cap is kept as it is (the cap is a
+    hyperparameter, not a failure)."""
+    keep = sample_weight > 0
+    X, y, sample_weight = X[keep], y[keep], sample_weight[keep]
+    if len(np.unique(y)) == 1:
+        return DummyClassifier(strategy="most_frequent").fit(X, y)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)
+        if isinstance(model, Pipeline):
+            model.fit(X, y, model__sample_weight=sample_weight)
+        else:
+            model.fit(X, y, sample_weight=sample_weight)
+    return model

@@ -1,0 +1,156 @@
+"""Any baseline policy on the imitator's own attempts, every episode stepped together.
+
+:func:`evaluate_policy` plays the attempts :func:`polymimic.evaluate` plays for the imitator:
+the same configurations and episode seeds (``polymimic._native.attempt_seeds``), so the same
+starts and the same noise (but see :func:`binding_seed`: this build's ``Episode`` cannot take
+half of those seeds yet). At every decision one batched ``predict`` goes over the
+observations of every unfinished episode, and each runs its primitive for the policy's
+``frames_per_action`` frames; a vector environment can replace the stepping without the
+policies changing. During a tracking dropout the observation repeats the last good reading.
+
+Seeds from :data:`VALIDATION_SEED_BASE` on are reserved for validation (tuning), so an
+evaluation seed is below it.
+
+>>> from polymimic.baselines.policy import RandomPolicy
+>>> result = evaluate_policy(RandomPolicy(seed=0), attempts_per_configuration=1, seed=0)
+>>> len(result.attempts), [a.configuration for a in result.attempts]
+(2, [1, 2])
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+from threadpoolctl import threadpool_limits  # type: ignore[import-untyped, unused-ignore]
+
+from polymimic import _native
+from polymimic.baselines.policy import Policy
+from polymimic.field import PRIMITIVES, Demonstration, _field_config, as_frames
+from polymimic.learning import Evaluation
+
+__all__ = ["VALIDATION_SEED_BASE", "attempts_of", "binding_seed", "evaluate_policy", "play"]
+
+VALIDATION_SEED_BASE = 2**62
+"""Evaluation seeds lie in ``[0, 2**62)``, validation seeds in ``[2**62, 2**63)``: the two
+never meet, and the episode seeds derived from them (a hash of the seed, the configuration and
+the attempt) are disjoint but for a 64-bit collision, which :func:`polymimic.baselines.tune`
+checks for."""
+
+_LETTERS = ("F", "B", "L", "R", "S")
+
+
+def _check_seed(seed: Any, *, low: int, high: int, what: str) -> int:
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not low <= seed < high:
+        raise ValueError(f"seed must be an integer in [{low}, {high}) ({what}), got {seed!r}")
+    return int(seed)
+
+
+def _check_attempts(attempts_per_configuration: Any) -> int:
+    n = attempts_per_configuration
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+        raise ValueError(f"attempts_per_configuration must be an integer ≥ 1, got {n!r}")
+    return int(n)
+
+
+def attempts_of(attempts_per_configuration: int, *, seed: int) -> list[tuple[int, int]]:
+    """The (configuration, episode seed) of every attempt an evaluation under ``seed`` plays."""
+    return [(int(c), int(s)) for c, s in _native.attempt_seeds(_check_attempts(attempts_per_configuration),
+                                                                 seed=seed)]
+
+
+def play(policy: Policy, attempts: list[tuple[int, int]], *,
+         field_config: dict[str, Any] | str | None = None) -> Evaluation:
+    """``policy`` on the given (configuration, episode seed) attempts, all stepped together."""
+    if not isinstance(policy, Policy):
+        raise ValueError(f"policy must have frames_per_action, predict, reset and save; got {type(policy).__name__}")
+    config = _field_config(field_config)
+    attempts = [(c, binding_seed(s)) for c, s in attempts]
+    episodes = [_native.Episode("lego", configuration=c, seed=s, config=config) for c, s in attempts]
+    policy.reset()
+    with threadpool_limits(limits=1):  # a batch of ≤ 50 rows gains nothing from threads, and loses on a busy node
+        executed = _step_together(policy, episodes)
+    demos = [Demonstration(frames=as_frames(e.frames), outcome=str(e.outcome), demonstrator=_name(policy),
+                           configuration=c, seed=s) for e, (c, s) in zip(episodes, attempts)]
+    return Evaluation(goals=sum(d.outcome == "goal" for d in demos),
+                      own_goals=sum(d.outcome == "own_goal" for d in demos), attempts=demos, behaviours=executed)
+
+
+def _step_together(policy: Policy, episodes: list[_native.Episode]) -> list[list[str]]:
+    """Every episode to its end, one batched decision at a time; the primitives each chose."""
+    hold = int(policy.frames_per_action)
+    last_seen = [_observation(e, None) for e in episodes]
+    executed: list[list[str]] = [[] for _ in episodes]
+    active = [i for i, e in enumerate(episodes) if not e.finished]
+    while active:
+        for i in active:
+            last_seen[i] = _observation(episodes[i], last_seen[i])
+        actions = np.asarray(policy.predict(np.array([last_seen[i] for i in active])))
+        if actions.shape != (len(active),):
+            raise ValueError(f"policy.predict returned shape {actions.shape} for {len(active)} observations")
+        for i, action in zip(active, actions.tolist()):
+            if not 0 <= action < len(PRIMITIVES):
+                raise ValueError(f"policy.predict returned {action!r}; actions are 0..4 ({', '.join(PRIMITIVES)})")
+            executed[i].append(_LETTERS[action])
+            episodes[i].run([PRIMITIVES[action]] * hold)
+        active = [i for i in active if not episodes[i].finished]
+    return executed
+
+
+def evaluate_policy(policy: Policy, *, attempts_per_configuration: int = 25, seed: int = 0,
+                    field_config: dict[str, Any] | str | None = None) -> Evaluation:
+    """Goals, own goals and every attempt of ``policy`` over ``attempts_per_configuration``
+    attempts from each configuration, the imitator's own (:func:`polymimic.evaluate`'s for the
+    same ``seed``). ``behaviours`` lists the primitives each attempt chose (``F B L R S``).
+
+    Raises
+    ------
+    ValueError
+        If ``seed`` is outside ``[0, 2**62)`` (the validation seeds lie above), the attempts
+        are not a positive integer, or the policy returns the wrong number of actions.
+    """
+    seed = _check_seed(seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's")
+    return play(policy, attempts_of(attempts_per_configuration, seed=seed), field_config=field_config)
+
+
+def binding_seed(seed: int) -> int:
+    """The episode seed ``polymimic.Episode`` is given for an attempt's seed.
+
+    ``attempt_seeds`` derives 64-bit seeds, but this build's ``Episode`` takes seeds below
+    2**63 only; until it takes any 64-bit seed, a seed from 2**63 up loses its top bit, and
+    that attempt starts from the same configuration with other noise than the imitator's. The
+    attempt records the seed it ran with.
+    """
+    if seed < 2**63 or _EPISODE_TAKES_64_BIT_SEEDS:
+        return seed
+    return seed - 2**63
+
+
+def _takes_64_bit_seeds() -> bool:
+    try:
+        _native.Episode("lego", configuration=1, seed=2**63)
+    except (OverflowError, ValueError):
+        return False
+    return True
+
+
+_EPISODE_TAKES_64_BIT_SEEDS = _takes_64_bit_seeds()
+
+
+def _observation(episode: _native.Episode, last: np.ndarray | None) -> np.ndarray:
+    """What the robot sees now, ``[robot x, y, θ, ball x, y]``; the ball's last reading when
+    it is out of sight (the robot's pose already repeats the last good one in a dropout)."""
+    seen = episode.observation()
+    robot = seen["robot"]
+    ball = seen["ball"]
+    if ball is None or not all(math.isfinite(v) for v in ball):
+        if last is not None:
+            ball = (float(last[3]), float(last[4]))
+        else:  # never seen yet: where the configuration puts it
+            ball = (math.copysign(seen["field"][0] / 6, robot[0]) * -1.0, 0.0)
+    return np.array([*robot, *ball], dtype=np.float64)
+
+
+def _name(policy: Policy) -> str:
+    return str(getattr(policy, "method", type(policy).__name__))

@@ -1,0 +1,124 @@
+"""What a cloning method may tune: classifier family and parameters, features, step length.
+
+:func:`candidates` draws the same number of candidates for every method from one grid, with a
+seed, so that every method gets the same tuning effort (SPEC §6.2); the first candidate is
+always :data:`DEFAULT`.
+
+>>> [h.classifier for h in candidates(3, seed=0)]
+['mlp', 'hist_gradient_boosting', 'random_forest']
+>>> Hyperparameters.from_dict(DEFAULT.to_dict()) == DEFAULT
+True
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import json
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from polymimic.baselines.classifiers import FAMILIES
+from polymimic.baselines.features import FEATURE_SETS
+
+__all__ = ["DEFAULT", "FRAMES_PER_ACTION", "GRID", "Hyperparameters", "candidates"]
+
+FRAMES_PER_ACTION = (5, 10, 15, 30)
+"""Step lengths (tracker frames a primitive is held for) a candidate may take; 30 is the
+environment's default one-second primitive."""
+
+
+@dataclasses.dataclass(frozen=True)
+class Hyperparameters:
+    """One choice of a cloning method's hyperparameters.
+
+    Attributes
+    ----------
+    classifier : str
+        A family of :data:`polymimic.baselines.classifiers.FAMILIES`.
+    params : tuple of (str, value) pairs
+        The family's parameters (a tuple so the choice is hashable; :meth:`to_dict` gives a dict).
+    feature_set : str
+        One of :data:`polymimic.baselines.features.FEATURE_SETS`.
+    frames_per_action : int
+        Tracker frames each chosen primitive is held for (1/30 s each).
+    balanced : bool
+        Whether every primitive's samples weigh the same in total (the Expert stops rarely, the
+        Poor never turns: unbalanced, a rare primitive is never chosen).
+    """
+
+    classifier: str
+    params: tuple[tuple[str, Any], ...]
+    feature_set: str
+    frames_per_action: int
+    balanced: bool
+
+    def __post_init__(self) -> None:
+        if self.classifier not in FAMILIES:
+            raise ValueError(f"unknown classifier {self.classifier!r}; expected one of {', '.join(FAMILIES)}")
+        if self.feature_set not in FEATURE_SETS:
+            raise ValueError(f"unknown feature_set {self.feature_set!r}; expected one of {', '.join(FEATURE_SETS)}")
+        if isinstance(self.frames_per_action, bool) or not isinstance(self.frames_per_action, (int, np.integer)) \
+                or self.frames_per_action < 1:
+            raise ValueError(f"frames_per_action must be an integer ≥ 1, got {self.frames_per_action!r}")
+
+    def to_dict(self) -> dict[str, Any]:
+        """Plain data for a report (JSON-ready)."""
+        return {"classifier": self.classifier, "params": dict(self.params), "feature_set": self.feature_set,
+                "frames_per_action": int(self.frames_per_action), "balanced": self.balanced}
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> Hyperparameters:
+        params = {k: tuple(v) if isinstance(v, list) else v for k, v in dict(data["params"]).items()}
+        return cls(classifier=data["classifier"], params=tuple(sorted(params.items())),
+                   feature_set=data["feature_set"], frames_per_action=int(data["frames_per_action"]),
+                   balanced=bool(data["balanced"]))
+
+    def __str__(self) -> str:
+        return json.dumps(self.to_dict(), sort_keys=True)
+
+
+def _params(**values: Any) -> tuple[tuple[str, Any], ...]:
+    return tuple(sorted(values.items()))
+
+
+GRID: dict[str, tuple[tuple[tuple[str, Any], ...], ...]] = {
+    "hist_gradient_boosting": tuple(_params(max_iter=m, learning_rate=r, max_leaf_nodes=n)
+                                    for m, r, n in itertools.product((100, 300), (0.05, 0.1), (15, 31))),
+    "random_forest": tuple(_params(n_estimators=100, min_samples_leaf=s, max_features=f)
+                           for s, f in itertools.product((1, 3, 10), ("sqrt", None))),
+    "knn": tuple(_params(n_neighbors=k, weights=w) for k, w in itertools.product((5, 15, 45), ("uniform", "distance"))),
+    "logistic_regression": tuple(_params(C=c) for c in (0.1, 1.0, 10.0)),
+    "mlp": tuple(_params(hidden_layer_sizes=h, alpha=a) for h, a in itertools.product(((64,), (64, 64)), (1e-4, 1e-2))),
+}
+"""Each family's parameter choices."""
+
+DEFAULT = Hyperparameters("mlp", _params(hidden_layer_sizes=(64, 64), alpha=1e-4), "ball_relative", 15, True)
+"""The first candidate of every tuning: the best BC on the Expert's demonstrations over two
+sets of validation attempts (validation seeds 0 and 1, never the evaluation's), a smooth
+classifier with a half-second step."""
+
+
+def candidates(budget: int, *, seed: int = 0) -> list[Hyperparameters]:
+    """``budget`` distinct candidates: :data:`DEFAULT`, then draws from :data:`GRID` with the
+    families taken in turn (so every family is tried about as often), each with parameters, a
+    feature set, a step length and balancing drawn at random, seeded."""
+    if isinstance(budget, bool) or not isinstance(budget, (int, np.integer)) or budget < 1:
+        raise ValueError(f"budget must be an integer ≥ 1 (candidates to try), got {budget!r}")
+    rng = np.random.default_rng(seed)
+    chosen = [DEFAULT]
+    size = sum(len(g) for g in GRID.values()) * len(FEATURE_SETS) * len(FRAMES_PER_ACTION) * 2
+    turn = 0
+    while len(chosen) < min(budget, size):
+        family = FAMILIES[turn % len(FAMILIES)]
+        grid = GRID[family]
+        candidate = Hyperparameters(family, grid[int(rng.integers(len(grid)))],
+                                    FEATURE_SETS[int(rng.integers(len(FEATURE_SETS)))],
+                                    FRAMES_PER_ACTION[int(rng.integers(len(FRAMES_PER_ACTION)))],
+                                    bool(rng.integers(2)))
+        if candidate not in chosen:
+            chosen.append(candidate)
+            turn += 1
+    return chosen

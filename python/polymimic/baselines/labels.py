@@ -1,0 +1,138 @@
+"""Demonstrations as a cloning method learns from them: what the robot saw, frame by frame,
+and which primitive each frame is labelled with.
+
+Two ways to label, the difference between ``bc`` and ``bco`` (SPEC §6.2):
+
+- :func:`command_labels` (privileged): the primitive equivalent of the command the
+  demonstrator sent in each frame (``polymimic.field.command_primitives()``);
+- :func:`segment_labels` (tracker frames only): the primitive of the recogniser's segment
+  covering each frame (``recognizer.segment_many``, SPEC §3); frames in a gap segment, or in
+  none, carry no label (a gap is no primitive) and give no training sample.
+
+Observations are the frames' tracker readings (a dropout repeats the last good reading, as the
+environment does). Demonstrators of the small field (:data:`polymimic.learning.SMALL_FIELD_BODIES`)
+are scaled onto the imitator's field, x by 1020/560 and y by 810/345 (a choice: the task, not
+the millimetres, is what carries over).
+
+>>> import polymimic
+>>> demos = polymimic.record("poor", configuration=1, n=1, seed=0)
+>>> labelled = command_labels(demos)
+>>> labelled[0].observations.shape[1], set(labelled[0].labels.tolist()) <= {0, 1, 2, 3, 4}
+(5, True)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+
+from polymimic._native import PrimitiveRecognizer
+from polymimic.field import PRIMITIVES, Demonstration, command_primitives
+from polymimic.learning import SMALL_FIELD_BODIES
+
+__all__ = ["NO_LABEL", "Labelled", "check_demonstrations", "check_weights", "command_labels", "segment_labels"]
+
+NO_LABEL = -1
+"""The label of a frame that gives no training sample (a gap, or no segment)."""
+
+_SMALL_TO_LARGE = np.array([1020.0 / 560.0, 810.0 / 345.0])
+_SEGMENT_LABELS = {"F": 0, "B": 1, "L": 2, "R": 3, "S": 4, **{p: i for i, p in enumerate(PRIMITIVES)}}
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Labelled:
+    """One demonstration, ready to learn from.
+
+    Attributes
+    ----------
+    demonstrator : str
+    observations : ndarray, shape (n_frames, 5)
+        ``[robot x mm, robot y mm, robot θ rad, ball x mm, ball y mm]`` per frame, on the
+        imitator's field.
+    labels : ndarray of int, shape (n_frames,)
+        Index into :data:`polymimic.field.PRIMITIVES` per frame, or :data:`NO_LABEL`.
+    """
+
+    demonstrator: str
+    observations: np.ndarray
+    labels: np.ndarray
+
+    def __post_init__(self) -> None:
+        if self.observations.shape != (len(self.labels), 5):
+            raise ValueError(f"observations must be ({len(self.labels)}, 5) for {len(self.labels)} labels, "
+                             f"got {self.observations.shape}")
+
+
+def check_demonstrations(demonstrations: Sequence[Demonstration]) -> list[Demonstration]:
+    """The demonstrations as a list, or a ValueError if there are none or one is not one."""
+    demos = list(demonstrations)
+    if not demos:
+        raise ValueError("demonstrations is empty: cloning needs at least one demonstration")
+    for i, demo in enumerate(demos):
+        if not isinstance(demo, Demonstration):
+            raise ValueError(f"demonstrations[{i}] must be a polymimic.Demonstration, got {type(demo).__name__}")
+    return demos
+
+
+def check_weights(weights: Mapping[str, float], demonstrations: Sequence[Demonstration]) -> dict[str, float]:
+    """Every demonstrator's weight, in [0, 1], or a ValueError naming the one missing or wrong."""
+    checked = {}
+    for name in sorted({d.demonstrator for d in demonstrations}):
+        if name not in weights:
+            raise ValueError(f"weights has no weight for demonstrator {name!r}; it has {sorted(weights)}")
+        value = weights[name]
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not 0.0 <= value <= 1.0:
+            raise ValueError(f"weights[{name!r}] must be a number in [0, 1], got {value!r}")
+        checked[name] = float(value)
+    return checked
+
+
+def observations_of(demo: Demonstration) -> np.ndarray:
+    """The ``(n, 5)`` observations of a demonstration's frames: NaN readings (lost tracking,
+    a ball out of sight) repeat the last good one, and a small-field body is scaled up."""
+    frames = demo.frames
+    obs = np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
+                                                "ball_x_mm", "ball_y_mm")]).astype(np.float64)
+    for column in range(obs.shape[1]):
+        obs[:, column] = _repeat_last_good(obs[:, column])
+    if demo.demonstrator in SMALL_FIELD_BODIES:
+        obs[:, [0, 1]] *= _SMALL_TO_LARGE
+        obs[:, [3, 4]] *= _SMALL_TO_LARGE
+    return obs
+
+
+def _repeat_last_good(values: np.ndarray) -> np.ndarray:
+    """NaN entries replaced by the last finite one before them (the first finite one before
+    any); all NaN stays NaN."""
+    good = np.isfinite(values)
+    if good.all() or not good.any():
+        return values
+    index = np.maximum.accumulate(np.where(good, np.arange(len(values)), -1))
+    index[index < 0] = int(np.argmax(good))
+    return values[index]
+
+
+def command_labels(demonstrations: Sequence[Demonstration]) -> list[Labelled]:
+    """Each frame labelled with the primitive equivalent of the command sent (privileged)."""
+    lookup = command_primitives()
+    index = np.array([PRIMITIVES.index(p) if p else NO_LABEL for p in lookup], dtype=np.int64)
+    return [Labelled(d.demonstrator, observations_of(d), index[d.frames["command"].astype(np.int64)])
+            for d in check_demonstrations(demonstrations)]
+
+
+def segment_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer,
+                   **segmenter: Any) -> list[Labelled]:
+    """Each frame labelled with the primitive of the recogniser's segment covering it (none in
+    a gap or outside every segment); ``segmenter`` passes the segmenter's settings."""
+    demos = check_demonstrations(demonstrations)
+    segmented = recognizer.segment_many([d.frames for d in demos], **segmenter)
+    labelled = []
+    for demo, segments in zip(demos, segmented):
+        labels = np.full(len(demo.frames), NO_LABEL, dtype=np.int64)
+        for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
+            labels[int(first):int(last) + 1] = _SEGMENT_LABELS.get(label, NO_LABEL)
+        labelled.append(Labelled(demo.demonstrator, observations_of(demo), labels))
+    return labelled

@@ -1,0 +1,108 @@
+"""Every baseline by name: what each learns from, prepared once, and fitted for any choice of
+hyperparameters (what :func:`polymimic.baselines.tune` needs to try many cheaply).
+
+>>> import polymimic
+>>> policy = fit("bc", polymimic.record("poor", configuration=1, n=1, seed=0))
+>>> policy.method
+'bc'
+>>> fit("bcx", [])
+Traceback (most recent call last):
+...
+ValueError: unknown method 'bcx'; expected one of bc, bco, bco_lp, bc_best, random
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from polymimic._native import PrimitiveRecognizer
+from polymimic.baselines.bc import labelled as bc_labelled
+from polymimic.baselines.bc_best import labelled as bc_best_labelled
+from polymimic.baselines.bco import labelled as bco_labelled
+from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
+from polymimic.baselines.labels import Labelled, check_demonstrations, check_weights
+from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
+from polymimic.baselines.training import train
+from polymimic.field import Demonstration
+
+__all__ = ["METHODS", "Prepared", "check_method", "fit", "fit_prepared", "prepare"]
+
+METHODS = ("bc", "bco", "bco_lp", "bc_best", "random")
+"""The baselines of SPEC §6.2 that learn from demonstrations (or nothing); ``ppo`` learns from
+the environment instead (:mod:`polymimic.baselines.ppo`)."""
+
+
+def check_method(method: Any) -> str:
+    if method not in METHODS:
+        raise ValueError(f"unknown method {method!r}; expected one of {', '.join(METHODS)}")
+    return str(method)
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Prepared:
+    """What a method learns from: labelled demonstrations and per-demonstrator weights."""
+
+    method: str
+    labelled: list[Labelled]
+    weights: dict[str, float] | None = None
+
+
+def prepare(method: str, demonstrations: Sequence[Demonstration], *,
+            recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
+            member: str | None = None, segmenter: Mapping[str, Any] | None = None) -> Prepared:
+    """Label the demonstrations as ``method`` does (segmenting them once, for ``bco``).
+
+    ``recognizer`` is needed by ``bco`` and ``bco_lp``, ``weights`` by ``bco_lp``, ``member``
+    by ``bc_best``; ``random`` needs nothing (and takes an empty list).
+    """
+    method = check_method(method)
+    if method == "random":
+        return Prepared(method, [])
+    demos = check_demonstrations(demonstrations)
+    if method == "bc":
+        return Prepared(method, bc_labelled(demos))
+    if method == "bc_best":
+        if member is None:
+            raise ValueError("bc_best needs member: the name of the demonstrator to clone")
+        return Prepared(method, bc_best_labelled(demos, member=member))
+    if recognizer is None:
+        raise ValueError(f"{method} needs recognizer: a polymimic.PrimitiveRecognizer trained on self-observation")
+    labelled = bco_labelled(demos, recognizer=recognizer, segmenter=segmenter)
+    if method == "bco":
+        return Prepared(method, labelled)
+    if weights is None:
+        raise ValueError("bco_lp needs weights: a weight in [0, 1] for every demonstrator (e.g. its final LP)")
+    return Prepared(method, labelled, check_weights(weights, demos))
+
+
+def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None = None,
+                 seed: int = 0) -> ClonedPolicy | RandomPolicy:
+    """The policy ``prepared.method`` learns with ``hyperparameters`` (default
+    :data:`~polymimic.baselines.hyperparameters.DEFAULT`); ``random`` takes only their step
+    length, and without them holds each primitive for the environment's one second."""
+    if prepared.method == "random":
+        return RandomPolicy(seed=seed, frames_per_action=30 if hyperparameters is None
+                            else hyperparameters.frames_per_action)
+    return train(prepared.method, prepared.labelled, hyperparameters=hyperparameters or DEFAULT, seed=seed,
+                 weights=prepared.weights)
+
+
+def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters: Hyperparameters | None = None,
+        seed: int = 0, recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
+        member: str | None = None, segmenter: Mapping[str, Any] | None = None) -> ClonedPolicy | RandomPolicy:
+    """Fit baseline ``method`` (one of :data:`METHODS`) on ``demonstrations``.
+
+    The same as the method's own ``fit`` (:func:`polymimic.baselines.bc.fit`, …), by name.
+    ``hyperparameters`` default to :data:`~polymimic.baselines.hyperparameters.DEFAULT` (for
+    ``random``: one primitive a second, the environment's step).
+
+    Raises
+    ------
+    ValueError
+        If ``method`` is unknown, or the method's input is missing or bad (see :func:`prepare`).
+    """
+    prepared = prepare(method, demonstrations, recognizer=recognizer, weights=weights, member=member,
+                       segmenter=segmenter)
+    return fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed)

@@ -1,0 +1,148 @@
+"""Baseline policies: observation batch in, primitive batch out, saved to and loaded from a file.
+
+Every policy has ``frames_per_action`` (tracker frames each chosen primitive is held for),
+``predict(observations)`` mapping an ``(n, 5)`` batch of ``PenaltyKick-v0`` observations to
+``n`` primitive indices (0 forward, 1 backward, 2 left, 3 right, 4 stop: the environment's
+actions), ``reset()`` (restarts any random stream, so evaluations repeat), and ``save(path)``;
+:func:`load_policy` reads any of them back (see :mod:`polymimic.baselines.files` for the format).
+
+>>> import numpy as np, pathlib, tempfile
+>>> policy = RandomPolicy(seed=3)
+>>> first = policy.predict(np.zeros((4, 5)))
+>>> path = pathlib.Path(tempfile.mkdtemp()) / "random.pmp"
+>>> policy.save(path)
+>>> again = load_policy(path)
+>>> again.reset(); policy.reset()
+>>> bool((again.predict(np.zeros((4, 5))) == policy.predict(np.zeros((4, 5)))).all())
+True
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Protocol, runtime_checkable
+
+import numpy as np
+
+from polymimic._native import ModelFileError
+from polymimic.baselines.features import check_observations, features
+from polymimic.baselines.files import read_policy_file, write_policy_file
+from polymimic.baselines.hyperparameters import Hyperparameters
+from polymimic.field import PRIMITIVES
+
+__all__ = ["ClonedPolicy", "Policy", "RandomPolicy", "load_policy"]
+
+
+@runtime_checkable
+class Policy(Protocol):
+    """What :func:`polymimic.baselines.evaluate_policy` drives."""
+
+    @property
+    def frames_per_action(self) -> int: ...
+
+    def predict(self, observations: np.ndarray) -> np.ndarray: ...
+
+    def reset(self) -> None: ...
+
+    def save(self, path: str | os.PathLike[str]) -> None: ...
+
+
+class ClonedPolicy:
+    """A classifier from observation features to primitives, learned by a cloning method.
+
+    Parameters
+    ----------
+    method : str
+        The method that learned it (``"bc"``, ``"bco"``, …), for the record.
+    hyperparameters : Hyperparameters
+    classifier : fitted scikit-learn classifier
+        Maps ``features(observations, feature_set=hyperparameters.feature_set)`` to indices
+        into :data:`polymimic.field.PRIMITIVES`.
+    """
+
+    def __init__(self, method: str, hyperparameters: Hyperparameters, classifier: Any) -> None:
+        self.method = method
+        self.hyperparameters = hyperparameters
+        self.classifier = classifier
+
+    @property
+    def frames_per_action(self) -> int:
+        return int(self.hyperparameters.frames_per_action)
+
+    def predict(self, observations: np.ndarray) -> np.ndarray:
+        """The primitive index for each row of an ``(n, 5)`` observation batch."""
+        obs = check_observations(observations)
+        if len(obs) == 0:
+            return np.empty(0, dtype=np.int64)
+        return np.asarray(self.classifier.predict(features(obs, feature_set=self.hyperparameters.feature_set)),
+                          dtype=np.int64)
+
+    def reset(self) -> None:
+        """Nothing to restart: a cloned policy is deterministic."""
+
+    def save(self, path: str | os.PathLike[str]) -> None:
+        write_policy_file(path, {"kind": "cloned", "method": self.method,
+                                 "hyperparameters": self.hyperparameters.to_dict()}, self)
+
+    def __repr__(self) -> str:
+        return f"ClonedPolicy({self.method}, {self.hyperparameters})"
+
+
+class RandomPolicy:
+    """A uniformly random primitive every step, from a generator seeded with ``seed``.
+
+    Parameters
+    ----------
+    seed : int, default 0
+    frames_per_action : int, default 30
+        The environment's step: one primitive a second.
+    """
+
+    def __init__(self, *, seed: int = 0, frames_per_action: int = 30) -> None:
+        if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+            raise ValueError(f"seed must be an integer ≥ 0, got {seed!r}")
+        if isinstance(frames_per_action, bool) or not isinstance(frames_per_action, (int, np.integer)) \
+                or frames_per_action < 1:
+            raise ValueError(f"frames_per_action must be an integer ≥ 1, got {frames_per_action!r}")
+        self.method = "random"
+        self.seed = int(seed)
+        self._frames_per_action = int(frames_per_action)
+        self.reset()
+
+    @property
+    def frames_per_action(self) -> int:
+        return self._frames_per_action
+
+    def predict(self, observations: np.ndarray) -> np.ndarray:
+        """One uniformly random primitive index per row of an ``(n, 5)`` batch."""
+        obs = check_observations(observations)
+        return self._rng.integers(len(PRIMITIVES), size=len(obs)).astype(np.int64)
+
+    def reset(self) -> None:
+        """Restart the random stream from ``seed``."""
+        self._rng = np.random.default_rng(self.seed)
+
+    def save(self, path: str | os.PathLike[str]) -> None:
+        write_policy_file(path, {"kind": "random", "method": "random", "seed": self.seed,
+                                 "frames_per_action": self._frames_per_action}, self)
+
+    def __repr__(self) -> str:
+        return f"RandomPolicy(seed={self.seed}, frames_per_action={self._frames_per_action})"
+
+
+def load_policy(path: str | os.PathLike[str]) -> Policy:
+    """The policy saved at ``path``, exactly as it was saved (a PPO policy needs
+    stable-baselines3 to load).
+
+    Raises
+    ------
+    polymimic.ModelFileError
+        If the file is not a saved policy, is of a newer format, or is damaged.
+    """
+    header, policy = read_policy_file(path)
+    if header.get("kind") not in _KINDS or not isinstance(policy, Policy):
+        raise ModelFileError(f"{os.fspath(path)}: holds no baseline policy")
+    return policy
+
+
+_KINDS = ("cloned", "random", "ppo")

@@ -1,0 +1,75 @@
+"""From labelled demonstrations to a cloned policy: decision samples, weights, a classifier.
+
+A decision sample is one frame's observation and its label, taken every
+:data:`SAMPLE_STRIDE_FRAMES` frames (any frame is a moment the policy may decide at); frames
+without a label give none. Each sample weighs its demonstrator's weight (1 unless a method
+says otherwise: ``bco_lp`` uses the LP), and, when the hyperparameters ask for balance, its
+primitive's balancing weight too (every primitive's samples then weigh the same in total,
+scikit-learn's ``"balanced"`` rule on the weighted counts). Samples of weight 0 are dropped
+before fitting, so that a member weighted 0 is exactly a member left out.
+
+>>> import polymimic
+>>> from polymimic.baselines.labels import command_labels
+>>> labelled = command_labels(polymimic.record("poor", configuration=1, n=2, seed=0))
+>>> policy = train("bc", labelled, hyperparameters=DEFAULT, seed=0)
+>>> policy.predict(labelled[0].observations[:1]).tolist()
+[0]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+
+from polymimic.baselines.classifiers import fit_weighted, make_classifier
+from polymimic.baselines.features import features
+from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
+from polymimic.baselines.labels import NO_LABEL, Labelled
+from polymimic.baselines.policy import ClonedPolicy
+
+__all__ = ["DEFAULT", "SAMPLE_STRIDE_FRAMES", "decision_samples", "train"]
+
+SAMPLE_STRIDE_FRAMES = 3
+"""Frames between decision samples (every 0.1 s): consecutive frames differ by tracker noise
+only, so denser sampling adds time, not information."""
+
+
+def decision_samples(labelled: Sequence[Labelled], *, weights: Mapping[str, float] | None = None,
+                     balanced: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Observations ``(n, 5)``, labels ``(n,)`` and weights ``(n,)`` of every decision sample."""
+    observations, labels, sample_weight = [], [], []
+    for item in labelled:
+        rows = np.arange(0, len(item.labels), SAMPLE_STRIDE_FRAMES)
+        rows = rows[item.labels[rows] != NO_LABEL]
+        observations.append(item.observations[rows])
+        labels.append(item.labels[rows])
+        weight = 1.0 if weights is None else float(weights[item.demonstrator])
+        sample_weight.append(np.full(len(rows), weight))
+    X = np.concatenate(observations) if observations else np.empty((0, 5))
+    y = np.concatenate(labels).astype(np.int64) if labels else np.empty(0, dtype=np.int64)
+    w = np.concatenate(sample_weight) if sample_weight else np.empty(0)
+    if balanced and len(y):
+        totals = np.bincount(y, weights=w, minlength=5)
+        present = totals > 0
+        per_class = np.zeros(5)
+        per_class[present] = w.sum() / (present.sum() * totals[present])
+        w = w * per_class[y]
+    return X, y, w
+
+
+def train(method: str, labelled: Sequence[Labelled], *, hyperparameters: Hyperparameters, seed: int = 0,
+          weights: Mapping[str, float] | None = None) -> ClonedPolicy:
+    """A :class:`ClonedPolicy` fitted on the decision samples of ``labelled``.
+
+    Raises
+    ------
+    ValueError
+        If no sample has a positive weight (nothing labelled, or every weight 0).
+    """
+    X, y, w = decision_samples(labelled, weights=weights, balanced=hyperparameters.balanced)
+    if not (w > 0).any():
+        raise ValueError(f"{method}: no decision sample to learn from (no labelled frame, or every weight 0)")
+    model = make_classifier(hyperparameters.classifier, dict(hyperparameters.params), seed=seed)
+    classifier = fit_weighted(model, features(X, feature_set=hyperparameters.feature_set), y, w)
+    return ClonedPolicy(method, hyperparameters, classifier)

@@ -1,0 +1,148 @@
+"""Every baseline at its best: hyperparameters chosen on validation attempts, never on the
+evaluation's, with the same number of candidates for every method (SPEC §6.2).
+
+**The seed rule.** Validation attempts are those of
+``polymimic._native.attempt_seeds(n, seed=VALIDATION_SEED_BASE + validation_seed)``, and an
+evaluation (:func:`polymimic.baselines.evaluate_policy`, like the imitator's) takes seeds below
+``VALIDATION_SEED_BASE = 2**62``: the two seed spaces never meet. The episode seeds derived from
+them are 64-bit hashes; :func:`tune` also checks that none of its episodes is one of the
+evaluation's under ``evaluation_seed`` (by the seed the episode really runs with, see
+:func:`~polymimic.baselines.evaluation.binding_seed`), and refuses to tune if one were.
+
+**The effort.** ``budget`` candidates for every method (:func:`~polymimic.baselines.hyperparameters.candidates`:
+the same draws for every method); each is fitted on all the demonstrations and scored by its net
+goals (goals − own goals) over the validation attempts, then by goals; the first best wins.
+``random`` has only its step length to choose, so it tries the distinct step lengths among the
+candidates.
+
+>>> import polymimic
+>>> demos = polymimic.record("poor", configuration=1, n=2, seed=0)
+>>> result = tune("bc", demos, budget=2, attempts_per_configuration=1)
+>>> len(result.scores), result.method
+(2, 'bc')
+>>> sorted(result.chosen)
+['balanced', 'classifier', 'feature_set', 'frames_per_action', 'params']
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from polymimic._native import PrimitiveRecognizer
+from polymimic.baselines.evaluation import VALIDATION_SEED_BASE, _check_seed, attempts_of, binding_seed, play
+from polymimic.baselines.hyperparameters import Hyperparameters
+from polymimic.baselines.hyperparameters import candidates as draw_candidates
+from polymimic.baselines.methods import check_method, fit_prepared, prepare
+from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
+from polymimic.field import Demonstration
+
+__all__ = ["Tuning", "tune", "validation_attempts"]
+
+
+@dataclasses.dataclass(frozen=True, eq=False)
+class Tuning:
+    """The outcome of :func:`tune`.
+
+    Attributes
+    ----------
+    method : str
+    hyperparameters : Hyperparameters
+        The chosen candidate.
+    chosen : dict
+        The same as plain data, for a report (``random``: its step length only).
+    policy : ClonedPolicy or RandomPolicy
+        The chosen candidate fitted on all the demonstrations (what to evaluate).
+    scores : list of dict
+        Every candidate tried, in order: its hyperparameters, goals and own goals on validation.
+    validation_attempts : list of (configuration, episode seed)
+    """
+
+    method: str
+    hyperparameters: Hyperparameters
+    chosen: dict[str, Any]
+    policy: ClonedPolicy | RandomPolicy
+    scores: list[dict[str, Any]]
+    validation_attempts: list[tuple[int, int]]
+
+
+def validation_attempts(attempts_per_configuration: int, *, validation_seed: int = 0) -> list[tuple[int, int]]:
+    """The (configuration, episode seed) of every validation attempt under ``validation_seed``."""
+    seed = _check_seed(validation_seed, low=0, high=2**63 - VALIDATION_SEED_BASE, what="added to 2**62")
+    return attempts_of(attempts_per_configuration, seed=VALIDATION_SEED_BASE + seed)
+
+
+def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Sequence[Hyperparameters] | None = None,
+         budget: int = 12, candidate_seed: int = 0, validation_seed: int = 0, attempts_per_configuration: int = 10,
+         evaluation_seed: int = 0, evaluation_attempts_per_configuration: int = 25, seed: int = 0,
+         recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
+         member: str | None = None, segmenter: Mapping[str, Any] | None = None,
+         field_config: dict[str, Any] | str | None = None) -> Tuning:
+    """Choose ``method``'s hyperparameters on validation attempts.
+
+    Parameters
+    ----------
+    method : str
+        One of :data:`polymimic.baselines.METHODS`.
+    demonstrations : sequence of polymimic.Demonstration
+    candidates : sequence of Hyperparameters, optional
+        The candidates to try; default ``candidates(budget, seed=candidate_seed)``.
+    budget : int, default 12
+        How many candidates (the same for every method).
+    validation_seed : int, default 0
+        Picks the validation attempts (see the seed rule above).
+    attempts_per_configuration : int, default 10
+        Validation attempts per field configuration.
+    evaluation_seed, evaluation_attempts_per_configuration : int
+        The evaluation the validation must not meet (checked).
+    seed : int, default 0
+        Seeds every fit.
+    recognizer, weights, member, segmenter
+        What the method needs (see :func:`polymimic.baselines.fit`).
+    field_config : dict or str, optional
+        The field of the validation attempts.
+
+    Raises
+    ------
+    ValueError
+        On an unknown method, missing or bad input for it, an empty candidate list, or a
+        validation attempt that is also an evaluation attempt.
+    """
+    method = check_method(method)
+    attempts = validation_attempts(attempts_per_configuration, validation_seed=validation_seed)
+    evaluation = {binding_seed(s) for _, s in attempts_of(
+        evaluation_attempts_per_configuration,
+        seed=_check_seed(evaluation_seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's"))}
+    shared = sorted(s for _, s in attempts if binding_seed(s) in evaluation)
+    if shared:
+        raise ValueError(f"validation attempts share episode seeds {shared} with the evaluation; "
+                         f"choose another validation_seed")
+    tried = list(draw_candidates(budget, seed=candidate_seed) if candidates is None else candidates)
+    if not tried:
+        raise ValueError("candidates is empty: tuning needs at least one candidate")
+    if method == "random":
+        steps = list(dict.fromkeys(h.frames_per_action for h in tried))
+        tried = [next(h for h in tried if h.frames_per_action == k) for k in steps]
+    prepared = prepare(method, list(demonstrations) if method != "random" else [], recognizer=recognizer,
+                       weights=weights, member=member, segmenter=segmenter)
+    scores: list[dict[str, Any]] = []
+    best: tuple[tuple[int, int], int, ClonedPolicy | RandomPolicy] | None = None
+    for index, hyperparameters in enumerate(tried):
+        policy = fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed)
+        result = play(policy, attempts, field_config=field_config)
+        scores.append({"hyperparameters": _chosen(method, hyperparameters), "goals": result.goals,
+                       "own_goals": result.own_goals})
+        key = (result.goals - result.own_goals, result.goals)
+        if best is None or key > best[0]:
+            best = (key, index, policy)
+    assert best is not None
+    _, index, policy = best
+    return Tuning(method=method, hyperparameters=tried[index], chosen=_chosen(method, tried[index]), policy=policy,
+                  scores=scores, validation_attempts=attempts)
+
+
+def _chosen(method: str, hyperparameters: Hyperparameters) -> dict[str, Any]:
+    if method == "random":
+        return {"frames_per_action": int(hyperparameters.frames_per_action)}
+    return hyperparameters.to_dict()

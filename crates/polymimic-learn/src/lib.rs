@@ -3,6 +3,7 @@
 //! by a learning preference, candidates nominated to the imitator's model, two-phase training.
 
 mod approach;
+mod average;
 mod ball_response;
 mod behaviour;
 mod config;
@@ -22,14 +23,13 @@ mod trial;
 mod world;
 
 pub use approach::ApproachPlan;
+pub use average::{AverageChoice, AverageSearch, net_goals, net_goals_of, spare_attempts, tracked_throughout};
 pub use ball_response::BallResponse;
 pub use behaviour::Behaviour;
 pub use config::{LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
 pub use control::{Attempt, ControlMode, ImitatorPolicy};
 pub use error::LearnError;
-pub use laboratory::{
-    Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, net_goals_of, pitch_of, summarise,
-};
+pub use laboratory::{FinalLps, Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, pitch_of, summarise};
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};
 pub use push_region::{BallGoalPose, Interval, PushRegion};

@@ -15,6 +15,7 @@ use crate::config::LearningConfig;
 use crate::control::{Attempt, ControlMode, ImitatorPolicy};
 use crate::error::LearnError;
 use crate::prediction::MotionTable;
+use crate::record::TrialRecord;
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::running::Running;
 use crate::state::Pitch;
@@ -235,6 +236,12 @@ pub trait FinalLps {
 impl FinalLps for TrialResult {
     fn final_lp(&self, who: &str) -> Option<f64> {
         self.models.iter().find(|m| m.name == who).map(|m| m.lp)
+    }
+}
+
+impl FinalLps for TrialRecord {
+    fn final_lp(&self, who: &str) -> Option<f64> {
+        self.model(who).map(|m| m.lp)
     }
 }
 

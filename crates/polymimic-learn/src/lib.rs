@@ -14,6 +14,7 @@ mod model;
 mod nearest;
 mod prediction;
 mod push_region;
+mod record;
 mod round;
 mod running;
 mod shaping;
@@ -33,6 +34,7 @@ pub use laboratory::{FinalLps, Laboratory, LaboratoryError, ModelSummary, Score,
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};
 pub use push_region::{BallGoalPose, Interval, PushRegion};
+pub use record::{BehaviourRecord, Json, ModelRecord, RecordError, TrialRecord};
 pub use round::{Ending, SegmentedDemonstration};
 pub use running::Running;
 pub use shaping::{LpCause, LpCauseCounts};

@@ -2,10 +2,11 @@
 
 import os
 from collections.abc import Iterable, Sequence
-from typing import Any, Literal, final
+from typing import Any, Literal, Self, final
 
 import numpy as np
 import numpy.typing as npt
+from typing_extensions import disjoint_base
 
 __version__: str
 
@@ -213,14 +214,104 @@ class Episode:
     @property
     def valid(self) -> bool: ...
 
-def default_learning_config() -> str: ...
-def check_learning_config(config: str) -> str: ...
+@disjoint_base
+class LearningConfig:
+    def __new__(
+        cls,
+        *,
+        creation_threshold: float = 0.3,
+        default_permanency: float = 0.5,
+        permanency_threshold: float = 0.8,
+        deletion_threshold: float = 0.0,
+        min_frequency: float = 0.05,
+        decay_step: float = 0.007,
+        permanency_step: float = 0.02,
+        initial_lp: float = 0.5,
+        imitator_lp: float = 0.9,
+        lp_goal: float = 0.01,
+        lp_ball_to_goal: float = 0.005,
+        lp_robot_to_ball: float = 0.002,
+        lp_event: float = 0.001,
+        match_distance_mm: float = 40.0,
+        match_rotation_deg: float = 45.0,
+        ball_angle_tolerance_deg: float = 22.5,
+        ball_min_samples: int = 5,
+        ball_max_angle_sd_deg: float = 30.0,
+        ball_moved_mm: float = 10.0,
+        prediction_noise_divisor: float = 3.0,
+        ball_dead_band_mm: float = 10.0,
+        robot_dead_band_mm: float = 10.0,
+        lp_bounds: Literal["soft", "clamp"] = "soft",
+        lp_scope: Literal["own_demonstrator", "every"] = "own_demonstrator",
+        lp_criteria: Literal["foremost", "both"] = "foremost",
+        lp_approach_weight: Literal["per_demonstration", "per_span"] = "per_demonstration",
+    ) -> Self: ...
+    def replace(self, **changes: Any) -> Self: ...
+    def to_dict(self) -> dict[str, Any]: ...
+    @classmethod
+    def _from_dict(cls, values: dict[str, Any]) -> Self: ...
+    def __reduce__(self) -> tuple[Any, tuple[dict[str, Any]]]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __hash__(self) -> int: ...
+    @property
+    def creation_threshold(self) -> float: ...
+    @property
+    def default_permanency(self) -> float: ...
+    @property
+    def permanency_threshold(self) -> float: ...
+    @property
+    def deletion_threshold(self) -> float: ...
+    @property
+    def min_frequency(self) -> float: ...
+    @property
+    def decay_step(self) -> float: ...
+    @property
+    def permanency_step(self) -> float: ...
+    @property
+    def initial_lp(self) -> float: ...
+    @property
+    def imitator_lp(self) -> float: ...
+    @property
+    def lp_goal(self) -> float: ...
+    @property
+    def lp_ball_to_goal(self) -> float: ...
+    @property
+    def lp_robot_to_ball(self) -> float: ...
+    @property
+    def lp_event(self) -> float: ...
+    @property
+    def match_distance_mm(self) -> float: ...
+    @property
+    def match_rotation_deg(self) -> float: ...
+    @property
+    def ball_angle_tolerance_deg(self) -> float: ...
+    @property
+    def ball_min_samples(self) -> int: ...
+    @property
+    def ball_max_angle_sd_deg(self) -> float: ...
+    @property
+    def ball_moved_mm(self) -> float: ...
+    @property
+    def prediction_noise_divisor(self) -> float: ...
+    @property
+    def ball_dead_band_mm(self) -> float: ...
+    @property
+    def robot_dead_band_mm(self) -> float: ...
+    @property
+    def lp_bounds(self) -> str: ...
+    @property
+    def lp_scope(self) -> str: ...
+    @property
+    def lp_criteria(self) -> str: ...
+    @property
+    def lp_approach_weight(self) -> str: ...
+
 def learning_trial(
     demonstrations: Iterable[dict[str, Any]],
     ordering: list[str],
     motion_stats: dict[str, dict[str, float]],
     *,
-    config: str | None = None,
+    config: LearningConfig | None = None,
     phase_one: str = "by-model",
     seed: int = 0,
 ) -> dict[str, Any]: ...
@@ -232,7 +323,7 @@ class ImitatorPolicy:
         model: str,
         motion_stats: dict[str, dict[str, float]],
         *,
-        config: str | None = None,
+        config: LearningConfig | None = None,
         control: str = "thesis",
         demonstrations: Sequence[dict[str, Any]] | None = None,
     ) -> ImitatorPolicy: ...

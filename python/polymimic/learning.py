@@ -28,9 +28,13 @@ from polymimic.field import Demonstration, _field_config, as_frames, record
 SMALL_FIELD_BODIES = frozenset({"tiny"})
 
 
-@dataclasses.dataclass(frozen=True)
-class LearningConfig:
+class LearningConfig(_native.LearningConfig):
     """Every constant of learning (thesis Table 3.2, §3.3, §3.4); defaults are the thesis's.
+
+    Keyword arguments set constants; the config is checked once, when made (a value out of
+    range is a ``ValueError`` naming the constant, the value and what it may be; an unknown
+    constant a ``TypeError`` listing them all). It is immutable: :meth:`replace` makes a changed
+    copy, :meth:`to_dict` gives every constant, and it compares, hashes and pickles by value.
 
     Values the thesis leaves open are choices: ``permanency_step``, the ball-prediction
     thresholds (``ball_min_samples``, ``ball_max_angle_sd_deg``, ``ball_moved_mm``), the dead
@@ -53,50 +57,31 @@ class LearningConfig:
       over its outcome) or ``"per_span"`` (a whole step each span, the thesis's letter).
 
     ``save``/``load`` use TOML.
+
+    Examples
+    --------
+    >>> config = LearningConfig(permanency_step=0.03)
+    >>> config.permanency_step, config.lp_bounds, config.replace(ball_min_samples=8).ball_min_samples
+    (0.03, 'soft', 8)
+    >>> LearningConfig.from_toml(config.to_toml()) == config
+    True
+    >>> LearningConfig(lp_bounds="hard")
+    Traceback (most recent call last):
+    ...
+    ValueError: lp_bounds must be "soft" or "clamp", got "hard"
     """
 
-    creation_threshold: float = 0.3
-    default_permanency: float = 0.5
-    permanency_threshold: float = 0.8
-    deletion_threshold: float = 0.0
-    min_frequency: float = 0.05
-    decay_step: float = 0.007
-    permanency_step: float = 0.02
-    initial_lp: float = 0.5
-    imitator_lp: float = 0.9
-    lp_goal: float = 0.01
-    lp_ball_to_goal: float = 0.005
-    lp_robot_to_ball: float = 0.002
-    lp_event: float = 0.001
-    match_distance_mm: float = 40.0
-    match_rotation_deg: float = 45.0
-    ball_angle_tolerance_deg: float = 22.5
-    ball_min_samples: int = 5
-    ball_max_angle_sd_deg: float = 30.0
-    ball_moved_mm: float = 10.0
-    prediction_noise_divisor: float = 3.0
-    ball_dead_band_mm: float = 10.0
-    robot_dead_band_mm: float = 10.0
-    lp_bounds: str = "soft"
-    lp_scope: str = "own_demonstrator"
-    lp_criteria: str = "foremost"
-    lp_approach_weight: str = "per_demonstration"
-
-    def __post_init__(self) -> None:
-        _native.check_learning_config(self.to_json())
-
-    def to_json(self) -> str:
-        return json.dumps(dataclasses.asdict(self))
+    __slots__ = ()
 
     def to_toml(self) -> str:
         """One ``name = value`` line per constant."""
-        return "".join(f"{name} = {write_value(value)}\n" for name, value in dataclasses.asdict(self).items())
+        return "".join(f"{name} = {write_value(value)}\n" for name, value in self.to_dict().items())
 
     @classmethod
     def from_toml(cls, text: str) -> LearningConfig:
         """A config from TOML; missing keys take their defaults, unknown ones are refused."""
         values = loads(text)
-        unknown = sorted(set(values) - {f.name for f in dataclasses.fields(cls)})
+        unknown = sorted(set(values) - set(_native.LearningConfig().to_dict()))
         if unknown:
             raise ValueError(f"unknown learning constants: {', '.join(unknown)}")
         return cls(**values)
@@ -200,8 +185,7 @@ def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]]
     if len(demonstrations) == 0:
         raise ValueError("no demonstrations: a trial needs at least one")
     items = _segmented_items(demonstrations, recognizer)
-    config_json = (config or LearningConfig()).to_json()
-    raw = _native.learning_trial(items, list(ordering), recognizer.motion_stats(), config=config_json,
+    raw = _native.learning_trial(items, list(ordering), recognizer.motion_stats(), config=config,
                                  phase_one=phase_one, seed=seed)
     models = {m["name"]: ModelResult(**m) for m in raw["models"]}
     return TrialResult(models=models, imitator=ModelResult(**raw["imitator"]), seed=seed,
@@ -232,9 +216,8 @@ class ImitatorPolicy:
         items = None
         if demonstrations is not None and control == "improved":
             items = _segmented_items(demonstrations, recognizer)
-        self._native = _native.ImitatorPolicy(trial.imitator_model, recognizer.motion_stats(),
-                                              config=(config or LearningConfig()).to_json(), control=control,
-                                              demonstrations=items)
+        self._native = _native.ImitatorPolicy(trial.imitator_model, recognizer.motion_stats(), config=config,
+                                              control=control, demonstrations=items)
 
     @property
     def control(self) -> str:

@@ -1,5 +1,7 @@
 //! Learning trials from Python: segmented demonstrations in, models and metrics out.
 
+mod config;
+
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use polymimic_learn::{
     ControlMode, Ending, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch,
@@ -10,27 +12,13 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
+pub use config::PyLearningConfig;
+
 use crate::convert::{non_negative, one_of};
+use config::config_or_default;
 
 fn value_error(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
-}
-
-/// The learning constants with their defaults, as JSON.
-#[pyfunction]
-pub fn default_learning_config() -> String {
-    LearningConfig::default().to_json()
-}
-
-/// Checks a learning config given as JSON; returns it with every field filled in.
-#[pyfunction]
-pub fn check_learning_config(config: &str) -> PyResult<String> {
-    Ok(LearningConfig::from_json(config).map_err(value_error)?.to_json())
-}
-
-/// The config a call passes as JSON, or the defaults.
-fn learning_config(json: Option<&str>) -> PyResult<LearningConfig> {
-    json.map_or_else(|| Ok(LearningConfig::default()), |text| LearningConfig::from_json(text).map_err(value_error))
 }
 
 fn motion_table(stats: &Bound<'_, PyDict>) -> PyResult<MotionTable> {
@@ -160,12 +148,12 @@ pub fn learning_trial<'py>(
     demonstrations: &Bound<'py, PyAny>,
     ordering: Vec<String>,
     motion_stats: &Bound<'py, PyDict>,
-    config: Option<&str>,
+    config: Option<&Bound<'py, PyLearningConfig>>,
     phase_one: &str,
     seed: i64,
 ) -> PyResult<Bound<'py, PyDict>> {
     let demos = segmented_demonstrations(demonstrations)?;
-    let config = learning_config(config)?;
+    let config = config_or_default(config);
     let phase_one =
         one_of("phase_one", phase_one, &[("by-model", PhaseOne::ByModel), ("interleaved", PhaseOne::Interleaved)])?;
     let motion = motion_table(motion_stats)?;
@@ -195,7 +183,7 @@ pub struct PyImitatorPolicy {
 #[pymethods]
 impl PyImitatorPolicy {
     /// A policy from a saved imitator model (`TrialResult.imitator_model`), the recogniser's
-    /// Table 3.1 and the learning config (JSON) its constants come from; `control` is
+    /// Table 3.1 and the learning config its constants come from; `control` is
     /// `"thesis"` (the thesis's rule) or `"improved"`, which learns how the ball responds, how
     /// good each state is and where pushes toward the goal are made from `demonstrations`
     /// (segmented, as for `learning_trial`).
@@ -204,7 +192,7 @@ impl PyImitatorPolicy {
     fn new(
         model: &str,
         motion_stats: &Bound<'_, PyDict>,
-        config: Option<&str>,
+        config: Option<&Bound<'_, PyLearningConfig>>,
         control: &str,
         demonstrations: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
@@ -212,7 +200,7 @@ impl PyImitatorPolicy {
             one_of("control mode", control, &[("thesis", ControlMode::Thesis), ("improved", ControlMode::Improved)])?;
         let model = ForwardModel::from_json(model)
             .map_err(|e| crate::errors::ModelFileError::new_err(format!("imitator model: {e}")))?;
-        let config = learning_config(config)?;
+        let config = config_or_default(config);
         let motion = motion_table(motion_stats)?;
         let world = match (mode, demonstrations) {
             (ControlMode::Thesis, _) => None,

@@ -1,7 +1,7 @@
 """Type stubs of the compiled core (kept honest by ``mypy.stubtest polymimic._native``)."""
 
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from typing import Any, Literal, Self, final
 
 import numpy as np
@@ -306,8 +306,28 @@ class LearningConfig:
     @property
     def lp_approach_weight(self) -> str: ...
 
+@final
+class SegmentedDemonstrations:
+    def __new__(
+        cls, demonstrations: Iterable[Mapping[str, Any]], *, frame_counts: Sequence[int] | None = None
+    ) -> SegmentedDemonstrations: ...
+    @staticmethod
+    def concat(batches: Sequence[SegmentedDemonstrations]) -> SegmentedDemonstrations: ...
+    def __add__(self, other: SegmentedDemonstrations, /) -> SegmentedDemonstrations: ...
+    def __len__(self) -> int: ...
+    def __getitem__(self, index: int, /) -> dict[str, Any]: ...
+    def __iter__(self) -> Iterator[dict[str, Any]]: ...
+    @property
+    def demonstrators(self) -> list[str]: ...
+    @property
+    def outcomes(self) -> list[str]: ...
+    @property
+    def pitches(self) -> list[str]: ...
+    def __eq__(self, other: object, /) -> bool: ...
+    def __reduce__(self) -> tuple[Any, tuple[list[dict[str, Any]]]]: ...
+
 def learning_trial(
-    demonstrations: Iterable[dict[str, Any]],
+    demonstrations: SegmentedDemonstrations | Iterable[Mapping[str, Any]],
     ordering: list[str],
     motion_stats: dict[str, dict[str, float]],
     *,
@@ -325,7 +345,7 @@ class ImitatorPolicy:
         *,
         config: LearningConfig | None = None,
         control: str = "thesis",
-        demonstrations: Sequence[dict[str, Any]] | None = None,
+        demonstrations: SegmentedDemonstrations | Iterable[Mapping[str, Any]] | None = None,
     ) -> ImitatorPolicy: ...
     @property
     def control(self) -> str: ...

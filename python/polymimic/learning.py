@@ -18,12 +18,17 @@ import dataclasses
 import json
 import os
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, Union
 
 from polymimic import _native
 from polymimic._atomic import atomic_write_text
+from polymimic._native import SegmentedDemonstrations
 from polymimic._toml import loads, write_value
 from polymimic.field import Demonstration, _field_config, as_frames, record
+
+__all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
+           "SegmentedDemonstrations", "TrialResult", "as_segmented", "average_demonstrator", "evaluate", "run_trial",
+           "segmented", "spare_attempts"]
 
 SMALL_FIELD_BODIES = frozenset({"tiny"})
 
@@ -154,39 +159,54 @@ class TrialResult:
 
 
 def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.PrimitiveRecognizer,
-              **segmenter: Any) -> list[dict[str, Any]]:
-    """The demonstrations as the learner takes them: segments, field size and outcome;
-    ``segmenter`` passes the segmenter's settings (``min_frames``, ``gap_margin``, …)."""
+              **segmenter: Any) -> SegmentedDemonstrations:
+    """The demonstrations as the learner takes them: segments, field size and outcome, checked
+    once; ``segmenter`` passes the segmenter's settings (``min_frames``, ``gap_margin``, …).
+
+    >>> import polymimic
+    >>> from polymimic import recognition
+    >>> recognizer = recognition.train_recognizer(polymimic.self_observation(30, seed=1), codebook_size=16)
+    >>> batch = segmented(polymimic.record("tiny", configuration=1, n=2, seed=0), recognizer)
+    >>> len(batch), batch.pitches
+    (2, ['small', 'small'])
+    """
     segments = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
-    return [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
-             "pitch": "small" if d.demonstrator in SMALL_FIELD_BODIES else "large"}
-            for d, s in zip(demonstrations, segments)]
+    return SegmentedDemonstrations(
+        [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
+          "pitch": "small" if d.demonstrator in SMALL_FIELD_BODIES else "large"}
+         for d, s in zip(demonstrations, segments)],
+        frame_counts=[len(d.frames) for d in demonstrations])
 
 
-def _segmented_items(demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]],
-                     recognizer: _native.PrimitiveRecognizer) -> list[dict[str, Any]]:
-    """Demonstrations as :func:`segmented` gives them, segmenting recordings, passing on what is
-    segmented already."""
-    if len(demonstrations) and isinstance(demonstrations[0], dict):
-        return list(demonstrations)  # type: ignore[arg-type]
-    return segmented(demonstrations, recognizer)  # type: ignore[arg-type]
+Demonstrations = Union[SegmentedDemonstrations, Sequence[Demonstration], Sequence[Mapping[str, Any]]]
+"""What a trial or a policy learns from: a segmented batch (shared as it is), recordings
+(segmented with the recogniser's default settings) or segmented dictionaries (checked)."""
 
 
-def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]], *,
-              recognizer: _native.PrimitiveRecognizer, ordering: Sequence[str], config: LearningConfig | None = None,
-              phase_one: str = "by-model", seed: int = 0) -> TrialResult:
+def as_segmented(demonstrations: Demonstrations, recognizer: _native.PrimitiveRecognizer) -> SegmentedDemonstrations:
+    """``demonstrations`` as one segmented batch: a batch as it is, recordings segmented,
+    dictionaries (as :func:`segmented` once gave them) checked."""
+    if isinstance(demonstrations, SegmentedDemonstrations):
+        return demonstrations
+    items: list[Any] = list(demonstrations)
+    if items and isinstance(items[0], Demonstration):
+        return segmented(items, recognizer)
+    return SegmentedDemonstrations(items)
+
+
+def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRecognizer, ordering: Sequence[str],
+              config: LearningConfig | None = None, phase_one: str = "by-model", seed: int = 0) -> TrialResult:
     """One learning trial: phase 1 (each demonstrator's model learns its own demonstrations;
     ``phase_one="interleaved"`` mixes them at random), phase 2 (every demonstration, in random
     order, to every demonstrator's model and then to the imitator's), and the final pruning.
 
-    ``demonstrations`` may be already segmented (the dictionaries :func:`segmented` returns),
-    so that many trials share one segmentation.
+    ``demonstrations`` may be already segmented (a :class:`SegmentedDemonstrations`, as
+    :func:`segmented` returns), so that many trials share one segmentation.
     """
     if len(demonstrations) == 0:
         raise ValueError("no demonstrations: a trial needs at least one")
-    items = _segmented_items(demonstrations, recognizer)
-    raw = _native.learning_trial(items, list(ordering), recognizer.motion_stats(), config=config,
-                                 phase_one=phase_one, seed=seed)
+    raw = _native.learning_trial(as_segmented(demonstrations, recognizer), list(ordering),
+                                 recognizer.motion_stats(), config=config, phase_one=phase_one, seed=seed)
     models = {m["name"]: ModelResult(**m) for m in raw["models"]}
     return TrialResult(models=models, imitator=ModelResult(**raw["imitator"]), seed=seed,
                        imitator_model=raw["imitator_model"])
@@ -199,7 +219,8 @@ class ImitatorPolicy:
     (else all) predict their outcome with their own ball statistics, and the best by the
     learning-preference criteria runs primitive by primitive, stopping before leaving the
     field. ``control="improved"`` goes where the thesis's future work points, learning from
-    ``demonstrations`` (those the imitator watched; segmented dictionaries or recordings):
+    ``demonstrations`` (those the imitator watched; a segmented batch, recordings or segmented
+    dictionaries):
     every behaviour predicts the ball with the response to each primitive learned from every
     segment of them (§5.4: far more samples); a predicted state is rated by a goal, then by
     whether the demonstrations passing near it ended, on balance, in own goals, then by how
@@ -212,10 +233,10 @@ class ImitatorPolicy:
 
     def __init__(self, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
                  config: LearningConfig | None = None, control: str = "thesis",
-                 demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]] | None = None) -> None:
+                 demonstrations: Demonstrations | None = None) -> None:
         items = None
         if demonstrations is not None and control == "improved":
-            items = _segmented_items(demonstrations, recognizer)
+            items = as_segmented(demonstrations, recognizer)
         self._native = _native.ImitatorPolicy(trial.imitator_model, recognizer.motion_stats(), config=config,
                                               control=control, demonstrations=items)
 

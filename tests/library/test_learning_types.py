@@ -1,10 +1,14 @@
-"""The typed learning boundary: the config refuses bad values by name and round-trips."""
+"""The typed learning boundary: the config and a segmented batch refuse bad values by name, and
+round-trip."""
 
 import pickle
 
+import numpy as np
 import pytest
 
 import polymimic
+
+OUTCOMES = "'goal', 'own_goal', 'ball_out', 'robot_out', 'time_up'"
 
 # The learning config.
 
@@ -57,3 +61,74 @@ def test_config_pickles_compares_and_hashes_by_value():
 def test_bad_config_values_are_named(change, error, match):
     with pytest.raises(error, match=match):
         polymimic.LearningConfig(**change)
+
+
+# Segmented demonstrations.
+
+def _item(**changes):
+    segments = {"label": ["forward", "gap"], "first_frame": np.array([0, 9]), "last_frame": np.array([9, 20]),
+                "start": np.zeros((2, 5)), "end": np.ones((2, 5)), "scores": np.full((2, 4), -3.0)}
+    segments.update(changes.pop("segments", {}))
+    return {"demonstrator": "expert", "outcome": "goal", "segments": segments, "pitch": "large", **changes}
+
+
+def test_a_batch_gives_back_what_it_was_given():
+    batch = polymimic.SegmentedDemonstrations([_item(), _item(demonstrator="tiny", pitch="small", outcome="time_up")])
+    assert len(batch) == 2
+    assert (batch.demonstrators, batch.outcomes, batch.pitches) == (
+        ["expert", "tiny"], ["goal", "time_up"], ["large", "small"])
+    first = batch[0]
+    assert list(first) == ["demonstrator", "outcome", "segments", "pitch"]
+    assert first["segments"]["label"] == ["forward", "gap"]
+    assert first["segments"]["first_frame"].dtype == np.int64
+    assert (first["segments"]["end"] == 1.0).all() and (first["segments"]["scores"] == -3.0).all()
+    assert batch[-1]["demonstrator"] == "tiny"
+    with pytest.raises(IndexError):
+        batch[2]
+    assert [d["pitch"] for d in batch] == ["large", "small"]
+
+
+def test_batches_add_concatenate_and_pickle():
+    one = polymimic.SegmentedDemonstrations([_item()])
+    two = polymimic.SegmentedDemonstrations([_item(outcome="own_goal")])
+    assert (one + two).outcomes == ["goal", "own_goal"]
+    assert polymimic.SegmentedDemonstrations.concat([one, two, one]).outcomes == ["goal", "own_goal", "goal"]
+    both = one + two
+    assert pickle.loads(pickle.dumps(both)) == both
+    assert both != one
+
+
+@pytest.mark.parametrize("item, error, match", [
+    (_item(outcome="own-goal"), ValueError, f"demonstration 0: outcome 'own-goal' is not one of {OUTCOMES}"),
+    (_item(pitch="huge"), ValueError, "demonstration 0: pitch 'huge' is not one of 'large', 'small'"),
+    (_item(segments={"label": ["forward", "jump"]}), ValueError,
+     "demonstration 0: segment 1: label 'jump' is not one of 'forward', 'backward', 'left', 'right', 'stop', 'gap'"),
+    (_item(segments={"first_frame": np.array([0, -4])}), ValueError,
+     "demonstration 0: segment 1: first_frame -4 is negative"),
+    (_item(segments={"first_frame": np.array([12, 9])}), ValueError,
+     "demonstration 0: segment 0: first_frame 12 is after last_frame 9"),
+    (_item(segments={"end": np.array([[0.0] * 5, [0.0, 0.0, np.nan, 0.0, 0.0]])}), ValueError,
+     "demonstration 0: segment 1: end robot_theta_rad = NaN; states must be finite"),
+    (_item(segments={"start": np.zeros((2, 3))}), ValueError, r"demonstration 0: start has shape \[2, 3\]"),
+    (_item(segments={"last_frame": np.array([9])}), ValueError, "demonstration 0: last_frame has 1 values for 2"),
+    (_item(segments={"first_frame": np.array([0.0, 9.0])}), TypeError, "first_frame has dtype float64"),
+    (_item(demonstrator=3), TypeError, "demonstration 0: demonstrator must be a string"),
+    ({"demonstrator": "expert", "pitch": "large", "segments": {}}, ValueError, 'demonstration 0: no "outcome" given'),
+])
+def test_bad_demonstrations_are_named(item, error, match):
+    with pytest.raises(error, match=match):
+        polymimic.SegmentedDemonstrations([item])
+
+
+def test_a_bad_demonstration_is_named_by_its_index():
+    with pytest.raises(ValueError, match="demonstration 1: outcome 'won'"):
+        polymimic.SegmentedDemonstrations([_item(), _item(outcome="won")])
+
+
+def test_frame_counts_keep_segments_inside_their_demonstration():
+    polymimic.SegmentedDemonstrations([_item()], frame_counts=[21])
+    with pytest.raises(ValueError, match="demonstration 0: segment 1: last_frame 20 is outside the demonstration's "
+                                         r"20 frames \(0..20\)"):
+        polymimic.SegmentedDemonstrations([_item()], frame_counts=[20])
+    with pytest.raises(ValueError, match="1 frame_counts for 2 demonstrations"):
+        polymimic.SegmentedDemonstrations([_item(), _item()], frame_counts=[21])

@@ -23,7 +23,7 @@ mod _native {
     #[pymodule_export]
     use super::hmm::PyDiscreteHmm;
     #[pymodule_export]
-    use super::learn::{PyImitatorPolicy, PyLearningConfig, learning_trial};
+    use super::learn::{PyImitatorPolicy, PyLearningConfig, PySegmentedDemonstrations, learning_trial};
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;
     #[pymodule_export]

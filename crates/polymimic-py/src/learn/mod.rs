@@ -1,21 +1,22 @@
 //! Learning trials from Python: segmented demonstrations in, models and metrics out.
 
 mod config;
+mod segments;
 
-use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use polymimic_learn::{
-    ControlMode, Ending, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch,
-    SegmentedDemonstration, WorldModel, run_trial,
+    ControlMode, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch, WorldModel, run_trial,
 };
-use polymimic_perceive::{Label, MotionStats, Pose, Primitive, Segment, TrackedFrame};
+use polymimic_perceive::{MotionStats, Primitive};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
 pub use config::PyLearningConfig;
+pub use segments::PySegmentedDemonstrations;
 
 use crate::convert::{non_negative, one_of};
 use config::config_or_default;
+use segments::batch;
 
 fn value_error(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
@@ -38,57 +39,6 @@ fn motion_table(stats: &Bound<'_, PyDict>) -> PyResult<MotionTable> {
         });
     }
     MotionTable::new(&rows).map_err(value_error)
-}
-
-fn frame(row: &[f64]) -> TrackedFrame {
-    TrackedFrame { robot: Pose { x_mm: row[0], y_mm: row[1], theta_rad: row[2] }, ball_x_mm: row[3], ball_y_mm: row[4] }
-}
-
-fn demonstration(index: usize, item: &Bound<'_, PyAny>) -> PyResult<SegmentedDemonstration> {
-    let what = |field: &str| format!("demonstration {index}: {field}");
-    let demonstrator: String = item.get_item("demonstrator")?.extract()?;
-    let pitch = match item.get_item("pitch")?.extract::<String>()?.as_str() {
-        "large" => Pitch::LARGE,
-        "small" => Pitch::SMALL,
-        other => return Err(PyValueError::new_err(format!("{}: {other:?} is not large or small", what("pitch")))),
-    };
-    let ending = match item.get_item("outcome")?.extract::<String>()?.as_str() {
-        "goal" => Ending::Goal,
-        "own_goal" => Ending::OwnGoal,
-        _ => Ending::Other,
-    };
-    let segments = item.get_item("segments")?;
-    let labels: Vec<String> = segments.get_item("label")?.extract()?;
-    let first: PyReadonlyArray1<i64> = segments.get_item("first_frame")?.extract()?;
-    let last: PyReadonlyArray1<i64> = segments.get_item("last_frame")?.extract()?;
-    let start: PyReadonlyArray2<f64> = segments.get_item("start")?.extract()?;
-    let end: PyReadonlyArray2<f64> = segments.get_item("end")?.extract()?;
-    let (first, last, start, end) = (first.as_array(), last.as_array(), start.as_array(), end.as_array());
-    let k = labels.len();
-    if first.len() != k || last.len() != k || start.shape() != [k, 5] || end.shape() != [k, 5] {
-        return Err(PyValueError::new_err(format!("{}: columns of different lengths", what("segments"))));
-    }
-    let segments = (0..k)
-        .map(|i| {
-            let label = match labels[i].as_str() {
-                "gap" => Label::Gap,
-                name => Label::Primitive(
-                    Primitive::from_name(name)
-                        .ok_or_else(|| PyValueError::new_err(format!("{}: label {name:?}", what("segments"))))?,
-                ),
-            };
-            let row = |a: &numpy::ndarray::ArrayView2<f64>| a.row(i).to_vec();
-            Ok(Segment {
-                label,
-                first_frame: usize::try_from(first[i]).unwrap_or(0),
-                last_frame: usize::try_from(last[i]).unwrap_or(0),
-                start: frame(&row(&start)),
-                end: frame(&row(&end)),
-                scores: [f64::NEG_INFINITY; 4],
-            })
-        })
-        .collect::<PyResult<Vec<_>>>()?;
-    Ok(SegmentedDemonstration { demonstrator, pitch, ending, segments })
 }
 
 fn model_dict<'py>(py: Python<'py>, model: &ForwardModel) -> PyResult<Bound<'py, PyDict>> {
@@ -132,12 +82,8 @@ fn model_dict<'py>(py: Python<'py>, model: &ForwardModel) -> PyResult<Bound<'py,
     Ok(out)
 }
 
-fn segmented_demonstrations(items: &Bound<'_, PyAny>) -> PyResult<Vec<SegmentedDemonstration>> {
-    items.try_iter()?.enumerate().map(|(i, d)| demonstration(i, &d?)).collect()
-}
-
-/// One learning trial. `demonstrations` are dicts with `demonstrator`, `pitch` ("large" or
-/// "small"), `outcome` and `segments` (as `PrimitiveRecognizer.segment` returns them);
+/// One learning trial on segmented demonstrations (a `SegmentedDemonstrations`, or the
+/// dictionaries it is made from);
 /// `motion_stats` is the recogniser's Table 3.1. Returns the models' metrics, LP histories
 /// and behaviours, for every demonstrator's model and the imitator's.
 #[pyfunction]
@@ -152,7 +98,7 @@ pub fn learning_trial<'py>(
     phase_one: &str,
     seed: i64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let demos = segmented_demonstrations(demonstrations)?;
+    let demos = batch(demonstrations)?;
     let config = config_or_default(config);
     let phase_one =
         one_of("phase_one", phase_one, &[("by-model", PhaseOne::ByModel), ("interleaved", PhaseOne::Interleaved)])?;
@@ -210,7 +156,7 @@ impl PyImitatorPolicy {
                 ));
             }
             (ControlMode::Improved, Some(items)) => {
-                let demos = segmented_demonstrations(items)?;
+                let demos = batch(items)?;
                 if !demos.iter().any(|d| d.pitch == Pitch::LARGE) {
                     return Err(PyValueError::new_err(
                         "demonstrations: none was played on the imitator's (large) field, so there is nothing to learn the ball's response from",

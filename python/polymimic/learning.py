@@ -15,20 +15,19 @@ demonstrator's forward model and the imitator's learn from them in Rust.
 from __future__ import annotations
 
 import dataclasses
-import json
 import os
 from collections.abc import Mapping, Sequence
 from typing import Any, Union
 
 from polymimic import _native
 from polymimic._atomic import atomic_write_text
-from polymimic._native import SegmentedDemonstrations
+from polymimic._native import ModelResult, SegmentedDemonstrations, TrialResult
 from polymimic._toml import loads, write_value
 from polymimic.field import Demonstration, _field_config, as_frames, record
 
 __all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
-           "SegmentedDemonstrations", "TrialResult", "as_segmented", "average_demonstrator", "evaluate", "run_trial",
-           "segmented", "spare_attempts"]
+           "SegmentedDemonstrations", "TrialResult", "as_segmented", "average_demonstrator", "evaluate",
+           "net_goals", "run_trial", "segmented", "spare_attempts"]
 
 SMALL_FIELD_BODIES = frozenset({"tiny"})
 
@@ -100,64 +99,6 @@ class LearningConfig(_native.LearningConfig):
             return cls.from_toml(file.read())
 
 
-@dataclasses.dataclass(frozen=True)
-class ModelResult:
-    """One forward model at the end of a trial: its LP (and every change of it), the share of
-    prediction rounds with a match, the counts of Tables 4.1 and 4.2, and its behaviours."""
-
-    name: str
-    lp: float
-    lp_history: list[float]
-    match_rate: float
-    created: int
-    deleted: int
-    permanent: int
-    candidates: int
-    duplicates: int
-    candidates_permanent: int
-    rounds: int
-    rounds_matched: int
-    behaviours: list[dict[str, Any]]
-    lp_causes: dict[str, int] = dataclasses.field(default_factory=dict)
-    """How often each cause of Table 3.3 changed the LP (``goal``, ``own_goal``,
-    ``ball_nearer_goal``, ``ball_farther_from_goal``, ``robot_nearer_ball``,
-    ``robot_farther_from_ball``, ``ball_predicted``, ``candidate_permanent``,
-    ``candidate_deleted``)."""
-
-
-@dataclasses.dataclass(frozen=True)
-class TrialResult:
-    """Every demonstrator's model (by name, in the ordering) and the imitator's."""
-
-    models: dict[str, ModelResult]
-    imitator: ModelResult
-    seed: int
-    imitator_model: str = dataclasses.field(repr=False, default="")
-    """The imitator's final model, as versioned JSON (what :class:`ImitatorPolicy` drives)."""
-
-    def to_json(self) -> str:
-        return json.dumps(dataclasses.asdict(self))
-
-    @classmethod
-    def from_json(cls, text: str) -> TrialResult:
-        data = json.loads(text)
-        return cls(models={k: ModelResult(**v) for k, v in data["models"].items()},
-                   imitator=ModelResult(**data["imitator"]), seed=data["seed"],
-                   imitator_model=data.get("imitator_model", ""))
-
-    def save(self, path: str | os.PathLike[str]) -> None:
-        atomic_write_text(path, self.to_json())
-
-    @classmethod
-    def load(cls, path: str | os.PathLike[str]) -> TrialResult:
-        with open(path, encoding="utf-8") as file:
-            text = file.read()
-        try:
-            return cls.from_json(text)
-        except (ValueError, KeyError, TypeError) as error:
-            raise _native.ModelFileError(f"{path}: not a saved trial result ({error})") from error
-
-
 def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.PrimitiveRecognizer,
               **segmenter: Any) -> SegmentedDemonstrations:
     """The demonstrations as the learner takes them: segments, field size and outcome, checked
@@ -205,14 +146,11 @@ def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRe
     """
     if len(demonstrations) == 0:
         raise ValueError("no demonstrations: a trial needs at least one")
-    raw = _native.learning_trial(as_segmented(demonstrations, recognizer), list(ordering),
-                                 recognizer.motion_stats(), config=config, phase_one=phase_one, seed=seed)
-    models = {m["name"]: ModelResult(**m) for m in raw["models"]}
-    return TrialResult(models=models, imitator=ModelResult(**raw["imitator"]), seed=seed,
-                       imitator_model=raw["imitator_model"])
+    return _native.learning_trial(as_segmented(demonstrations, recognizer), list(ordering), recognizer,
+                                  config=config, phase_one=phase_one, seed=seed)
 
 
-class ImitatorPolicy:
+class ImitatorPolicy(_native.ImitatorPolicy):
     """The imitator's final model driving the Lego robot.
 
     ``control="thesis"`` is the thesis's rule (§3.4): behaviours whose preconditions hold
@@ -220,33 +158,29 @@ class ImitatorPolicy:
     learning-preference criteria runs primitive by primitive, stopping before leaving the
     field. ``control="improved"`` goes where the thesis's future work points, learning from
     ``demonstrations`` (those the imitator watched; a segmented batch, recordings or segmented
-    dictionaries):
-    every behaviour predicts the ball with the response to each primitive learned from every
-    segment of them (§5.4: far more samples); a predicted state is rated by a goal, then by
-    whether the demonstrations passing near it ended, on balance, in own goals, then by how
-    many millimetres the ball comes nearer the goal, then the robot nearer the ball; and only
-    the first primitive runs before choosing again (§4.4.1). Behaviours push only from where
-    the scoring demonstrations pushed the ball toward the goal (a region relative to the ball
-    and the goal, learned from them) or when one predicts a goal; anywhere else the robot takes
-    the shortest route there in its own primitives, round the ball rather than through it.
+    dictionaries): every behaviour predicts the ball with the response to each primitive
+    learned from every segment of them (§5.4: far more samples); a predicted state is rated by
+    a goal, then by whether the demonstrations passing near it ended, on balance, in own goals,
+    then by how many millimetres the ball comes nearer the goal, then the robot nearer the
+    ball; and only the first primitive runs before choosing again (§4.4.1). Behaviours push
+    only from where the scoring demonstrations pushed the ball toward the goal (a region
+    relative to the ball and the goal, learned from them) or when one predicts a goal; anywhere
+    else the robot takes the shortest route there in its own primitives, round the ball rather
+    than through it.
+
+    The policy itself is the compiled one; this class only segments recordings it is given.
     """
 
-    def __init__(self, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
-                 config: LearningConfig | None = None, control: str = "thesis",
-                 demonstrations: Demonstrations | None = None) -> None:
-        items = None
+    __slots__ = ()
+
+    def __new__(cls, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
+                config: LearningConfig | None = None, control: str = "thesis",
+                demonstrations: Demonstrations | None = None) -> ImitatorPolicy:
+        batch = None
         if demonstrations is not None and control == "improved":
-            items = as_segmented(demonstrations, recognizer)
-        self._native = _native.ImitatorPolicy(trial.imitator_model, recognizer.motion_stats(), config=config,
-                                              control=control, demonstrations=items)
-
-    @property
-    def control(self) -> str:
-        """``"thesis"`` or ``"improved"``."""
-        return self._native.control
-
-    def __len__(self) -> int:
-        return len(self._native)
+            batch = as_segmented(demonstrations, recognizer)
+        return super().__new__(cls, trial, recognizer=recognizer, config=config, control=control,
+                               demonstrations=batch)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -260,25 +194,39 @@ class Evaluation:
     behaviours: list[list[str]]
 
 
-def evaluate(policy: ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0,
+def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0,
              field_config: dict[str, Any] | str | None = None) -> Evaluation:
     """``attempts_per_configuration`` attempts from each field configuration, in parallel, on the
     field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's)."""
-    raw = policy._native.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
-    attempts = [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator="imitator",
-                              configuration=a["configuration"], seed=a["seed"]) for a in raw]
+    raw = policy.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
+    attempts = _attempts(raw, "imitator")
     return Evaluation(goals=sum(a.outcome == "goal" for a in attempts),
                       own_goals=sum(a.outcome == "own_goal" for a in attempts), attempts=attempts,
                       behaviours=[a["behaviours"] for a in raw])
 
 
-def _net_goals(demos: Sequence[Demonstration]) -> int:
-    return sum(d.outcome == "goal" for d in demos) - sum(d.outcome == "own_goal" for d in demos)
+def _attempts(raw: list[dict[str, Any]], demonstrator: str) -> list[Demonstration]:
+    return [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator=demonstrator,
+                          configuration=a["configuration"], seed=a["seed"]) for a in raw]
 
 
 def spare_attempts(n: int) -> int:
-    """Attempts made beyond ``n``, to stand in for any whose tracking is lost."""
-    return max(5, n // 5)
+    """Attempts made beyond ``n``, to stand in for any whose tracking is lost.
+
+    >>> spare_attempts(10), spare_attempts(100)
+    (5, 20)
+    """
+    return _native.spare_attempts(n)
+
+
+def net_goals(demonstrations: Sequence[Demonstration]) -> int:
+    """Goals less own goals.
+
+    >>> import polymimic
+    >>> net_goals(polymimic.record("expert", configuration=1, n=2, seed=0))
+    2
+    """
+    return _native.net_goals([d.outcome for d in demonstrations])
 
 
 def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25, seed: int = 0,
@@ -296,7 +244,8 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
     nearest the middle of the Poor's and the Expert's, strictly between them (the earliest on a
     tie). Net goals, not goals, because that is what put the thesis's own Average between its
     Poor and its Expert: it scored fewer goals than the Poor but far fewer own goals. Its
-    attempts, renamed ``"average"``, are returned with the trial that made it.
+    attempts, renamed ``"average"``, are returned with the trial that made it. The choice is
+    the one the Rust ``Laboratory`` makes, in the same compiled function.
 
     ``recorded`` gives the Expert's, Tiny's, Humanoid's and Poor's demonstrations (``n`` per
     configuration each) when they exist already; otherwise they are recorded with ``seed`` on
@@ -312,27 +261,10 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
         recorded = {who: [d for c in (1, 2) for d in record(who, configuration=c, n=n, seed=seed,
                                                              config=field_config)]
                     for who in ("expert", "tiny", "humanoid", "poor")}
-    poor, expert = _net_goals(recorded["poor"]), _net_goals(recorded["expert"])
-    items = segmented([d for who in ("expert", "tiny", "humanoid") for d in recorded[who]], recognizer,
-                      **(segmenter or {}))
-    best: tuple[int, list[Demonstration], TrialResult] | None = None
-    for trial_seed in range(seed, seed + max_trials):
-        trial = run_trial(items, recognizer=recognizer, ordering=["expert", "tiny", "humanoid"], config=config,
-                          seed=trial_seed)
-        evaluation = evaluate(ImitatorPolicy(trial, recognizer=recognizer, config=config),
-                              attempts_per_configuration=n + spare_attempts(n), seed=trial_seed,
-                              field_config=field_config)
-        valid = [a for c in (1, 2)
-                 for a in [a for a in evaluation.attempts if a.configuration == c and a.tracked_throughout][:n]]
-        if len(valid) < 2 * n:
-            continue
-        net = _net_goals(valid)
-        off_middle = abs(2 * net - (poor + expert))
-        if poor < net < expert and (best is None or off_middle < best[0]):
-            best = (off_middle, valid, trial)
-    if best is None:
-        raise _native.PolymimicError(
-            f"no imitator of {max_trials} trials, with tracking held in enough attempts, scored net goals (goals "
-            f"less own goals) between the Poor's ({poor}) and the Expert's ({expert})")
-    _, valid, trial = best
-    return [dataclasses.replace(a, demonstrator="average") for a in valid], trial
+    ordering = ["expert", "tiny", "humanoid"]
+    batch = segmented([d for who in ordering for d in recorded[who]], recognizer, **(segmenter or {}))
+    trial, raw = _native.average_demonstrator(
+        batch, recognizer, ordering=ordering, poor_net_goals=net_goals(recorded["poor"]),
+        expert_net_goals=net_goals(recorded["expert"]), per_configuration=n, first_seed=seed, max_trials=max_trials,
+        config=config, field_config=_field_config(field_config))
+    return _attempts(raw, "average"), trial

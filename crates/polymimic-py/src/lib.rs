@@ -23,7 +23,10 @@ mod _native {
     #[pymodule_export]
     use super::hmm::PyDiscreteHmm;
     #[pymodule_export]
-    use super::learn::{PyImitatorPolicy, PyLearningConfig, PySegmentedDemonstrations, learning_trial};
+    use super::learn::{
+        PyImitatorPolicy, PyLearningConfig, PyModelResult, PySegmentedDemonstrations, PyTrialResult,
+        average_demonstrator, learning_trial, lp_order_hits, net_goals, spare_attempts,
+    };
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;
     #[pymodule_export]

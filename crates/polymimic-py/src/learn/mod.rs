@@ -1,219 +1,139 @@
-//! Learning trials from Python: segmented demonstrations in, models and metrics out.
+//! Learning from Python: typed configs, segmented demonstrations, trial results and the
+//! imitator's policy in; the shared selections of the experiments (the Average demonstrator,
+//! net goals, the LP order) out.
 
 mod config;
+mod policy;
 mod segments;
+mod trial;
 
+use polymimic_field::Outcome;
 use polymimic_learn::{
-    ControlMode, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch, WorldModel, run_trial,
+    AverageSearch, Ending, LaboratoryError, MotionTable, PhaseOne, TrialRecord, lp_order_hits as count_lp_order_hits,
+    net_goals as count_net_goals, run_trial, spare_attempts as spares,
 };
-use polymimic_perceive::{MotionStats, Primitive};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::PyList;
 
 pub use config::PyLearningConfig;
+pub use policy::PyImitatorPolicy;
 pub use segments::PySegmentedDemonstrations;
+pub use trial::{PyModelResult, PyTrialResult};
 
 use crate::convert::{non_negative, one_of};
+use crate::errors::laboratory_error;
+use crate::perceive::PyPrimitiveRecognizer;
 use config::config_or_default;
 use segments::batch;
 
-fn value_error(e: impl std::fmt::Display) -> PyErr {
-    PyValueError::new_err(e.to_string())
+/// The recogniser's Table 3.1 as the learner's motion table.
+fn motion_table(recognizer: &PyPrimitiveRecognizer) -> PyResult<MotionTable> {
+    MotionTable::new(recognizer.recognizer.motion_stats()).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
-fn motion_table(stats: &Bound<'_, PyDict>) -> PyResult<MotionTable> {
-    let mut rows = Vec::new();
-    for primitive in Primitive::ALL {
-        let row = stats
-            .get_item(primitive.name())?
-            .ok_or_else(|| PyValueError::new_err(format!("motion_stats has no row for {}", primitive.name())))?;
-        let get = |key: &str| -> PyResult<f64> { row.get_item(key)?.extract() };
-        rows.push(MotionStats {
-            primitive,
-            count: row.get_item("count").and_then(|c| c.extract()).unwrap_or(0),
-            distance_mean_mm: get("distance_mean_mm")?,
-            distance_sd_mm: get("distance_sd_mm")?,
-            rotation_mean_deg: get("rotation_mean_deg")?,
-            rotation_sd_deg: get("rotation_sd_deg")?,
-        });
-    }
-    MotionTable::new(&rows).map_err(value_error)
-}
-
-fn model_dict<'py>(py: Python<'py>, model: &ForwardModel) -> PyResult<Bound<'py, PyDict>> {
-    let out = PyDict::new(py);
-    let m = &model.metrics;
-    out.set_item("name", &model.name)?;
-    out.set_item("lp", model.lp)?;
-    out.set_item("lp_history", model.lp_history.clone())?;
-    out.set_item("match_rate", model.match_rate())?;
-    for (key, value) in [
-        ("created", m.created),
-        ("deleted", m.deleted),
-        ("permanent", m.made_permanent),
-        ("candidates", m.candidates),
-        ("duplicates", m.duplicates),
-        ("candidates_permanent", m.candidates_permanent),
-        ("rounds", m.rounds),
-        ("rounds_matched", m.rounds_matched),
-    ] {
-        out.set_item(key, value)?;
-    }
-    let causes = PyDict::new(py);
-    for (key, value) in m.lp_causes.named() {
-        causes.set_item(key, value)?;
-    }
-    out.set_item("lp_causes", causes)?;
-    let behaviours = PyList::empty(py);
-    for b in &model.behaviours {
-        let row = PyDict::new(py);
-        row.set_item("primitives", b.letters())?;
-        row.set_item("permanency", b.permanency)?;
-        row.set_item("permanent", b.permanent)?;
-        row.set_item("age", b.age)?;
-        row.set_item("selected", b.selected)?;
-        row.set_item("ball_samples", b.ball_angle_deg.count)?;
-        row.set_item("ball_angle_deg", [b.ball_angle_deg.mean, b.ball_angle_deg.sd()])?;
-        row.set_item("ball_distance_mm", [b.ball_distance_mm.mean, b.ball_distance_mm.sd()])?;
-        behaviours.append(row)?;
-    }
-    out.set_item("behaviours", behaviours)?;
-    Ok(out)
-}
-
-/// One learning trial on segmented demonstrations (a `SegmentedDemonstrations`, or the
-/// dictionaries it is made from);
-/// `motion_stats` is the recogniser's Table 3.1. Returns the models' metrics, LP histories
-/// and behaviours, for every demonstrator's model and the imitator's.
+/// One learning trial on segmented demonstrations; the recogniser's Table 3.1 moves the
+/// predictions. Returns every model's result and the imitator's final model.
 #[pyfunction]
-#[pyo3(signature = (demonstrations, ordering, motion_stats, *, config=None, phase_one="by-model", seed=0))]
+#[pyo3(signature = (demonstrations, ordering, recognizer, *, config=None, phase_one="by-model", seed=0))]
 #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the ordering by value
-pub fn learning_trial<'py>(
-    py: Python<'py>,
-    demonstrations: &Bound<'py, PyAny>,
+pub fn learning_trial(
+    py: Python<'_>,
+    demonstrations: &Bound<'_, PyAny>,
     ordering: Vec<String>,
-    motion_stats: &Bound<'py, PyDict>,
-    config: Option<&Bound<'py, PyLearningConfig>>,
+    recognizer: &PyPrimitiveRecognizer,
+    config: Option<&Bound<'_, PyLearningConfig>>,
     phase_one: &str,
     seed: i64,
-) -> PyResult<Bound<'py, PyDict>> {
+) -> PyResult<PyTrialResult> {
     let demos = batch(demonstrations)?;
     let config = config_or_default(config);
     let phase_one =
         one_of("phase_one", phase_one, &[("by-model", PhaseOne::ByModel), ("interleaved", PhaseOne::Interleaved)])?;
-    let motion = motion_table(motion_stats)?;
+    let motion = motion_table(recognizer)?;
     let seed = non_negative("seed", seed)? as u64;
-    let result = py.detach(|| run_trial(&demos, &ordering, &motion, &config, phase_one, seed)).map_err(value_error)?;
-    let out = PyDict::new(py);
-    let models = PyList::empty(py);
-    for model in &result.models {
-        models.append(model_dict(py, model)?)?;
-    }
-    out.set_item("models", models)?;
-    out.set_item("imitator", model_dict(py, &result.imitator)?)?;
-    out.set_item("imitator_model", result.imitator.to_json())?;
-    Ok(out)
+    let result = py
+        .detach(|| run_trial(&demos, &ordering, &motion, &config, phase_one, seed))
+        .map_err(|e| PyValueError::new_err(e.to_string()))?;
+    Ok(PyTrialResult::wrap(TrialRecord::of(&result, seed)))
 }
 
-/// The imitator's trained model driving the Lego robot on the field.
-#[pyclass(name = "ImitatorPolicy", module = "polymimic", frozen)]
-pub struct PyImitatorPolicy {
-    model: ForwardModel,
-    motion: MotionTable,
-    config: LearningConfig,
-    mode: ControlMode,
-    world: Option<WorldModel>,
+/// The thesis's Average demonstrator (§4.4.2), as `Laboratory::average_demonstrator` chooses
+/// it: trials with seeds `first_seed` … `first_seed + max_trials - 1` on `demonstrations`
+/// (phase one by model, in `ordering`), each imitator driven by the thesis's rule with its
+/// trial's seed; the one whose net goals lie nearest the middle of the Poor's and the Expert's,
+/// strictly between. Returns its trial and its attempts (as `ImitatorPolicy.evaluate` gives
+/// them).
+#[pyfunction]
+#[pyo3(signature = (demonstrations, recognizer, *, ordering, poor_net_goals, expert_net_goals,
+                    per_configuration, first_seed, max_trials, config=None, field_config=None))]
+#[allow(clippy::too_many_arguments, clippy::needless_pass_by_value)] // pyo3 extracts by value
+pub fn average_demonstrator<'py>(
+    py: Python<'py>,
+    demonstrations: &Bound<'py, PyAny>,
+    recognizer: &PyPrimitiveRecognizer,
+    ordering: Vec<String>,
+    poor_net_goals: i64,
+    expert_net_goals: i64,
+    per_configuration: i64,
+    first_seed: i64,
+    max_trials: i64,
+    config: Option<&Bound<'py, PyLearningConfig>>,
+    field_config: Option<&str>,
+) -> PyResult<(PyTrialResult, Bound<'py, PyList>)> {
+    let demos = batch(demonstrations)?;
+    let config = config_or_default(config);
+    let motion = motion_table(recognizer)?;
+    let field = crate::field::field_config(field_config)?;
+    let first = non_negative("first_seed", first_seed)? as u64;
+    let trials = non_negative("max_trials", max_trials)? as u64;
+    let search = AverageSearch {
+        motion: &motion,
+        config: &config,
+        field: &field,
+        per_configuration: non_negative("per_configuration", per_configuration)?,
+        poor_net_goals,
+        expert_net_goals,
+    };
+    let chosen = py
+        .detach(|| {
+            let candidates = (first..first + trials).map(|seed| {
+                let trial = run_trial(&demos, &ordering, &motion, &config, PhaseOne::ByModel, seed)?;
+                Ok::<_, LaboratoryError>((seed, trial))
+            });
+            search.choose(candidates)
+        })
+        .map_err(laboratory_error)?;
+    let attempts = policy::attempt_list(py, &chosen.attempts)?;
+    Ok((PyTrialResult::wrap(TrialRecord::of(&chosen.trial, chosen.seed)), attempts))
 }
 
-#[pymethods]
-impl PyImitatorPolicy {
-    /// A policy from a saved imitator model (`TrialResult.imitator_model`), the recogniser's
-    /// Table 3.1 and the learning config its constants come from; `control` is
-    /// `"thesis"` (the thesis's rule) or `"improved"`, which learns how the ball responds, how
-    /// good each state is and where pushes toward the goal are made from `demonstrations`
-    /// (segmented, as for `learning_trial`).
-    #[new]
-    #[pyo3(signature = (model, motion_stats, *, config=None, control="thesis", demonstrations=None))]
-    fn new(
-        model: &str,
-        motion_stats: &Bound<'_, PyDict>,
-        config: Option<&Bound<'_, PyLearningConfig>>,
-        control: &str,
-        demonstrations: Option<&Bound<'_, PyAny>>,
-    ) -> PyResult<Self> {
-        let mode =
-            one_of("control mode", control, &[("thesis", ControlMode::Thesis), ("improved", ControlMode::Improved)])?;
-        let model = ForwardModel::from_json(model)
-            .map_err(|e| crate::errors::ModelFileError::new_err(format!("imitator model: {e}")))?;
-        let config = config_or_default(config);
-        let motion = motion_table(motion_stats)?;
-        let world = match (mode, demonstrations) {
-            (ControlMode::Thesis, _) => None,
-            (ControlMode::Improved, None) => {
-                return Err(PyValueError::new_err(
-                    "the improved control learns from the demonstrations the imitator watched: pass demonstrations=",
-                ));
-            }
-            (ControlMode::Improved, Some(items)) => {
-                let demos = batch(items)?;
-                if !demos.iter().any(|d| d.pitch == Pitch::LARGE) {
-                    return Err(PyValueError::new_err(
-                        "demonstrations: none was played on the imitator's (large) field, so there is nothing to learn the ball's response from",
-                    ));
-                }
-                Some(WorldModel::learn(&demos, &Pitch::LARGE, &motion, &config))
-            }
-        };
-        Ok(Self { model, motion, config, mode, world })
-    }
+/// Goals less own goals over outcomes (`"goal"`, `"own_goal"`, `"ball_out"`, `"robot_out"`,
+/// `"time_up"`); any other name is a ValueError.
+#[pyfunction]
+#[allow(clippy::needless_pass_by_value)] // pyo3 extracts the outcomes by value
+pub fn net_goals(outcomes: Vec<String>) -> PyResult<i64> {
+    let table =
+        [Outcome::Goal, Outcome::OwnGoal, Outcome::BallOut, Outcome::RobotOut, Outcome::TimeUp].map(|o| (o.name(), o));
+    let endings = outcomes
+        .iter()
+        .enumerate()
+        .map(|(i, name)| one_of(&format!("outcome {i}"), name, &table).map(Ending::from))
+        .collect::<PyResult<Vec<_>>>()?;
+    Ok(count_net_goals(endings))
+}
 
-    /// Attempts from each configuration; one dict per attempt with `frames`, `outcome`,
-    /// `configuration`, `seed` and the `behaviours` executed.
-    #[pyo3(signature = (attempts_per_configuration, *, seed=0, field_config=None))]
-    fn evaluate<'py>(
-        &self,
-        py: Python<'py>,
-        attempts_per_configuration: i64,
-        seed: i64,
-        field_config: Option<&str>,
-    ) -> PyResult<Bound<'py, PyList>> {
-        let attempts = non_negative("attempts_per_configuration", attempts_per_configuration)?;
-        let field = crate::field::field_config(field_config)?;
-        let policy = ImitatorPolicy {
-            model: &self.model,
-            motion: &self.motion,
-            config: &self.config,
-            pitch: Pitch::LARGE,
-            mode: self.mode,
-            world: self.world.as_ref(),
-        };
-        let seed = non_negative("seed", seed)? as u64;
-        let results = py.detach(|| policy.evaluate(attempts, &field, seed)).map_err(crate::errors::field_error)?;
-        let out = PyList::empty(py);
-        for attempt in &results {
-            let item = PyDict::new(py);
-            item.set_item("frames", crate::field::frames_array(py, &attempt.frames)?)?;
-            item.set_item("outcome", attempt.outcome.name())?;
-            item.set_item("configuration", crate::field::configuration_number(attempt.configuration))?;
-            item.set_item("seed", attempt.seed)?;
-            item.set_item("behaviours", attempt.behaviours.clone())?;
-            out.append(item)?;
-        }
-        Ok(out)
-    }
+/// Trials whose demonstrators' final LPs rise strictly along `order` (least skilled first).
+#[pyfunction]
+#[allow(clippy::needless_pass_by_value)] // pyo3 extracts the lists by value
+pub fn lp_order_hits(trials: Vec<PyRef<'_, PyTrialResult>>, order: Vec<String>) -> usize {
+    let records: Vec<&TrialRecord> = trials.iter().map(|t| &*t.record).collect();
+    let order: Vec<&str> = order.iter().map(String::as_str).collect();
+    count_lp_order_hits(&records, &order)
+}
 
-    /// `"thesis"` or `"improved"`.
-    #[getter]
-    fn control(&self) -> &'static str {
-        match self.mode {
-            ControlMode::Thesis => "thesis",
-            ControlMode::Improved => "improved",
-        }
-    }
-
-    /// How many behaviours the model holds.
-    fn __len__(&self) -> usize {
-        self.model.behaviours.len()
-    }
+/// Attempts made beyond `per_configuration`, to stand in for any whose tracking is lost.
+#[pyfunction]
+pub fn spare_attempts(per_configuration: i64) -> PyResult<usize> {
+    Ok(spares(non_negative("per_configuration", per_configuration)?))
 }

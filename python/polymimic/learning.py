@@ -15,22 +15,30 @@ demonstrator's forward model and the imitator's learn from them in Rust.
 from __future__ import annotations
 
 import dataclasses
-import json
 import os
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, Union
 
 from polymimic import _native
 from polymimic._atomic import atomic_write_text
+from polymimic._native import ModelResult, SegmentedDemonstrations, TrialResult
 from polymimic._toml import loads, write_value
 from polymimic.field import Demonstration, _field_config, as_frames, record
+
+__all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
+           "SegmentedDemonstrations", "TrialResult", "as_segmented", "average_demonstrator", "evaluate",
+           "net_goals", "run_trial", "segmented", "spare_attempts"]
 
 SMALL_FIELD_BODIES = frozenset({"tiny"})
 
 
-@dataclasses.dataclass(frozen=True)
-class LearningConfig:
+class LearningConfig(_native.LearningConfig):
     """Every constant of learning (thesis Table 3.2, §3.3, §3.4); defaults are the thesis's.
+
+    Keyword arguments set constants; the config is checked once, when made (a value out of
+    range is a ``ValueError`` naming the constant, the value and what it may be; an unknown
+    constant a ``TypeError`` listing them all). It is immutable: :meth:`replace` makes a changed
+    copy, :meth:`to_dict` gives every constant, and it compares, hashes and pickles by value.
 
     Values the thesis leaves open are choices: ``permanency_step``, the ball-prediction
     thresholds (``ball_min_samples``, ``ball_max_angle_sd_deg``, ``ball_moved_mm``), the dead
@@ -53,50 +61,31 @@ class LearningConfig:
       over its outcome) or ``"per_span"`` (a whole step each span, the thesis's letter).
 
     ``save``/``load`` use TOML.
+
+    Examples
+    --------
+    >>> config = LearningConfig(permanency_step=0.03)
+    >>> config.permanency_step, config.lp_bounds, config.replace(ball_min_samples=8).ball_min_samples
+    (0.03, 'soft', 8)
+    >>> LearningConfig.from_toml(config.to_toml()) == config
+    True
+    >>> LearningConfig(lp_bounds="hard")
+    Traceback (most recent call last):
+    ...
+    ValueError: lp_bounds must be "soft" or "clamp", got "hard"
     """
 
-    creation_threshold: float = 0.3
-    default_permanency: float = 0.5
-    permanency_threshold: float = 0.8
-    deletion_threshold: float = 0.0
-    min_frequency: float = 0.05
-    decay_step: float = 0.007
-    permanency_step: float = 0.02
-    initial_lp: float = 0.5
-    imitator_lp: float = 0.9
-    lp_goal: float = 0.01
-    lp_ball_to_goal: float = 0.005
-    lp_robot_to_ball: float = 0.002
-    lp_event: float = 0.001
-    match_distance_mm: float = 40.0
-    match_rotation_deg: float = 45.0
-    ball_angle_tolerance_deg: float = 22.5
-    ball_min_samples: int = 5
-    ball_max_angle_sd_deg: float = 30.0
-    ball_moved_mm: float = 10.0
-    prediction_noise_divisor: float = 3.0
-    ball_dead_band_mm: float = 10.0
-    robot_dead_band_mm: float = 10.0
-    lp_bounds: str = "soft"
-    lp_scope: str = "own_demonstrator"
-    lp_criteria: str = "foremost"
-    lp_approach_weight: str = "per_demonstration"
-
-    def __post_init__(self) -> None:
-        _native.check_learning_config(self.to_json())
-
-    def to_json(self) -> str:
-        return json.dumps(dataclasses.asdict(self))
+    __slots__ = ()
 
     def to_toml(self) -> str:
         """One ``name = value`` line per constant."""
-        return "".join(f"{name} = {write_value(value)}\n" for name, value in dataclasses.asdict(self).items())
+        return "".join(f"{name} = {write_value(value)}\n" for name, value in self.to_dict().items())
 
     @classmethod
     def from_toml(cls, text: str) -> LearningConfig:
         """A config from TOML; missing keys take their defaults, unknown ones are refused."""
         values = loads(text)
-        unknown = sorted(set(values) - {f.name for f in dataclasses.fields(cls)})
+        unknown = sorted(set(values) - set(_native.LearningConfig().to_dict()))
         if unknown:
             raise ValueError(f"unknown learning constants: {', '.join(unknown)}")
         return cls(**values)
@@ -110,139 +99,88 @@ class LearningConfig:
             return cls.from_toml(file.read())
 
 
-@dataclasses.dataclass(frozen=True)
-class ModelResult:
-    """One forward model at the end of a trial: its LP (and every change of it), the share of
-    prediction rounds with a match, the counts of Tables 4.1 and 4.2, and its behaviours."""
-
-    name: str
-    lp: float
-    lp_history: list[float]
-    match_rate: float
-    created: int
-    deleted: int
-    permanent: int
-    candidates: int
-    duplicates: int
-    candidates_permanent: int
-    rounds: int
-    rounds_matched: int
-    behaviours: list[dict[str, Any]]
-    lp_causes: dict[str, int] = dataclasses.field(default_factory=dict)
-    """How often each cause of Table 3.3 changed the LP (``goal``, ``own_goal``,
-    ``ball_nearer_goal``, ``ball_farther_from_goal``, ``robot_nearer_ball``,
-    ``robot_farther_from_ball``, ``ball_predicted``, ``candidate_permanent``,
-    ``candidate_deleted``)."""
-
-
-@dataclasses.dataclass(frozen=True)
-class TrialResult:
-    """Every demonstrator's model (by name, in the ordering) and the imitator's."""
-
-    models: dict[str, ModelResult]
-    imitator: ModelResult
-    seed: int
-    imitator_model: str = dataclasses.field(repr=False, default="")
-    """The imitator's final model, as versioned JSON (what :class:`ImitatorPolicy` drives)."""
-
-    def to_json(self) -> str:
-        return json.dumps(dataclasses.asdict(self))
-
-    @classmethod
-    def from_json(cls, text: str) -> TrialResult:
-        data = json.loads(text)
-        return cls(models={k: ModelResult(**v) for k, v in data["models"].items()},
-                   imitator=ModelResult(**data["imitator"]), seed=data["seed"],
-                   imitator_model=data.get("imitator_model", ""))
-
-    def save(self, path: str | os.PathLike[str]) -> None:
-        atomic_write_text(path, self.to_json())
-
-    @classmethod
-    def load(cls, path: str | os.PathLike[str]) -> TrialResult:
-        with open(path, encoding="utf-8") as file:
-            text = file.read()
-        try:
-            return cls.from_json(text)
-        except (ValueError, KeyError, TypeError) as error:
-            raise _native.ModelFileError(f"{path}: not a saved trial result ({error})") from error
-
-
 def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.PrimitiveRecognizer,
-              **segmenter: Any) -> list[dict[str, Any]]:
-    """The demonstrations as the learner takes them: segments, field size and outcome;
-    ``segmenter`` passes the segmenter's settings (``min_frames``, ``gap_margin``, …)."""
+              **segmenter: Any) -> SegmentedDemonstrations:
+    """The demonstrations as the learner takes them: segments, field size and outcome, checked
+    once; ``segmenter`` passes the segmenter's settings (``min_frames``, ``gap_margin``, …).
+
+    >>> import polymimic
+    >>> from polymimic import recognition
+    >>> recognizer = recognition.train_recognizer(polymimic.self_observation(30, seed=1), codebook_size=16)
+    >>> batch = segmented(polymimic.record("tiny", configuration=1, n=2, seed=0), recognizer)
+    >>> len(batch), batch.pitches
+    (2, ['small', 'small'])
+    """
     segments = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
-    return [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
-             "pitch": "small" if d.demonstrator in SMALL_FIELD_BODIES else "large"}
-            for d, s in zip(demonstrations, segments)]
+    return SegmentedDemonstrations(
+        [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
+          "pitch": "small" if d.demonstrator in SMALL_FIELD_BODIES else "large"}
+         for d, s in zip(demonstrations, segments)],
+        frame_counts=[len(d.frames) for d in demonstrations])
 
 
-def _segmented_items(demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]],
-                     recognizer: _native.PrimitiveRecognizer) -> list[dict[str, Any]]:
-    """Demonstrations as :func:`segmented` gives them, segmenting recordings, passing on what is
-    segmented already."""
-    if len(demonstrations) and isinstance(demonstrations[0], dict):
-        return list(demonstrations)  # type: ignore[arg-type]
-    return segmented(demonstrations, recognizer)  # type: ignore[arg-type]
+Demonstrations = Union[SegmentedDemonstrations, Sequence[Demonstration], Sequence[Mapping[str, Any]]]
+"""What a trial or a policy learns from: a segmented batch (shared as it is), recordings
+(segmented with the recogniser's default settings) or segmented dictionaries (checked)."""
 
 
-def run_trial(demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]], *,
-              recognizer: _native.PrimitiveRecognizer, ordering: Sequence[str], config: LearningConfig | None = None,
-              phase_one: str = "by-model", seed: int = 0) -> TrialResult:
+def as_segmented(demonstrations: Demonstrations, recognizer: _native.PrimitiveRecognizer) -> SegmentedDemonstrations:
+    """``demonstrations`` as one segmented batch: a batch as it is, recordings segmented,
+    dictionaries (as :func:`segmented` once gave them) checked."""
+    if isinstance(demonstrations, SegmentedDemonstrations):
+        return demonstrations
+    items: list[Any] = list(demonstrations)
+    if items and isinstance(items[0], Demonstration):
+        return segmented(items, recognizer)
+    return SegmentedDemonstrations(items)
+
+
+def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRecognizer, ordering: Sequence[str],
+              config: LearningConfig | None = None, phase_one: str = "by-model", seed: int = 0) -> TrialResult:
     """One learning trial: phase 1 (each demonstrator's model learns its own demonstrations;
     ``phase_one="interleaved"`` mixes them at random), phase 2 (every demonstration, in random
     order, to every demonstrator's model and then to the imitator's), and the final pruning.
 
-    ``demonstrations`` may be already segmented (the dictionaries :func:`segmented` returns),
-    so that many trials share one segmentation.
+    ``demonstrations`` may be already segmented (a :class:`SegmentedDemonstrations`, as
+    :func:`segmented` returns), so that many trials share one segmentation.
     """
     if len(demonstrations) == 0:
         raise ValueError("no demonstrations: a trial needs at least one")
-    items = _segmented_items(demonstrations, recognizer)
-    config_json = (config or LearningConfig()).to_json()
-    raw = _native.learning_trial(items, list(ordering), recognizer.motion_stats(), config=config_json,
-                                 phase_one=phase_one, seed=seed)
-    models = {m["name"]: ModelResult(**m) for m in raw["models"]}
-    return TrialResult(models=models, imitator=ModelResult(**raw["imitator"]), seed=seed,
-                       imitator_model=raw["imitator_model"])
+    return _native.learning_trial(as_segmented(demonstrations, recognizer), list(ordering), recognizer,
+                                  config=config, phase_one=phase_one, seed=seed)
 
 
-class ImitatorPolicy:
+class ImitatorPolicy(_native.ImitatorPolicy):
     """The imitator's final model driving the Lego robot.
 
     ``control="thesis"`` is the thesis's rule (§3.4): behaviours whose preconditions hold
     (else all) predict their outcome with their own ball statistics, and the best by the
     learning-preference criteria runs primitive by primitive, stopping before leaving the
     field. ``control="improved"`` goes where the thesis's future work points, learning from
-    ``demonstrations`` (those the imitator watched; segmented dictionaries or recordings):
-    every behaviour predicts the ball with the response to each primitive learned from every
-    segment of them (§5.4: far more samples); a predicted state is rated by a goal, then by
-    whether the demonstrations passing near it ended, on balance, in own goals, then by how
-    many millimetres the ball comes nearer the goal, then the robot nearer the ball; and only
-    the first primitive runs before choosing again (§4.4.1). Behaviours push only from where
-    the scoring demonstrations pushed the ball toward the goal (a region relative to the ball
-    and the goal, learned from them) or when one predicts a goal; anywhere else the robot takes
-    the shortest route there in its own primitives, round the ball rather than through it.
+    ``demonstrations`` (those the imitator watched; a segmented batch, recordings or segmented
+    dictionaries): every behaviour predicts the ball with the response to each primitive
+    learned from every segment of them (§5.4: far more samples); a predicted state is rated by
+    a goal, then by whether the demonstrations passing near it ended, on balance, in own goals,
+    then by how many millimetres the ball comes nearer the goal, then the robot nearer the
+    ball; and only the first primitive runs before choosing again (§4.4.1). Behaviours push
+    only from where the scoring demonstrations pushed the ball toward the goal (a region
+    relative to the ball and the goal, learned from them) or when one predicts a goal; anywhere
+    else the robot takes the shortest route there in its own primitives, round the ball rather
+    than through it.
+
+    The policy itself is the compiled one; this class only segments recordings it is given.
     """
 
-    def __init__(self, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
-                 config: LearningConfig | None = None, control: str = "thesis",
-                 demonstrations: Sequence[Demonstration] | Sequence[dict[str, Any]] | None = None) -> None:
-        items = None
+    __slots__ = ()
+
+    def __new__(cls, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
+                config: LearningConfig | None = None, control: str = "thesis",
+                demonstrations: Demonstrations | None = None) -> ImitatorPolicy:
+        batch = None
         if demonstrations is not None and control == "improved":
-            items = _segmented_items(demonstrations, recognizer)
-        self._native = _native.ImitatorPolicy(trial.imitator_model, recognizer.motion_stats(),
-                                              config=(config or LearningConfig()).to_json(), control=control,
-                                              demonstrations=items)
-
-    @property
-    def control(self) -> str:
-        """``"thesis"`` or ``"improved"``."""
-        return self._native.control
-
-    def __len__(self) -> int:
-        return len(self._native)
+            batch = as_segmented(demonstrations, recognizer)
+        return super().__new__(cls, trial, recognizer=recognizer, config=config, control=control,
+                               demonstrations=batch)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -256,25 +194,39 @@ class Evaluation:
     behaviours: list[list[str]]
 
 
-def evaluate(policy: ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0,
+def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0,
              field_config: dict[str, Any] | str | None = None) -> Evaluation:
     """``attempts_per_configuration`` attempts from each field configuration, in parallel, on the
     field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's)."""
-    raw = policy._native.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
-    attempts = [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator="imitator",
-                              configuration=a["configuration"], seed=a["seed"]) for a in raw]
+    raw = policy.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
+    attempts = _attempts(raw, "imitator")
     return Evaluation(goals=sum(a.outcome == "goal" for a in attempts),
                       own_goals=sum(a.outcome == "own_goal" for a in attempts), attempts=attempts,
                       behaviours=[a["behaviours"] for a in raw])
 
 
-def _net_goals(demos: Sequence[Demonstration]) -> int:
-    return sum(d.outcome == "goal" for d in demos) - sum(d.outcome == "own_goal" for d in demos)
+def _attempts(raw: list[dict[str, Any]], demonstrator: str) -> list[Demonstration]:
+    return [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator=demonstrator,
+                          configuration=a["configuration"], seed=a["seed"]) for a in raw]
 
 
 def spare_attempts(n: int) -> int:
-    """Attempts made beyond ``n``, to stand in for any whose tracking is lost."""
-    return max(5, n // 5)
+    """Attempts made beyond ``n``, to stand in for any whose tracking is lost.
+
+    >>> spare_attempts(10), spare_attempts(100)
+    (5, 20)
+    """
+    return _native.spare_attempts(n)
+
+
+def net_goals(demonstrations: Sequence[Demonstration]) -> int:
+    """Goals less own goals.
+
+    >>> import polymimic
+    >>> net_goals(polymimic.record("expert", configuration=1, n=2, seed=0))
+    2
+    """
+    return _native.net_goals([d.outcome for d in demonstrations])
 
 
 def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25, seed: int = 0,
@@ -292,7 +244,8 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
     nearest the middle of the Poor's and the Expert's, strictly between them (the earliest on a
     tie). Net goals, not goals, because that is what put the thesis's own Average between its
     Poor and its Expert: it scored fewer goals than the Poor but far fewer own goals. Its
-    attempts, renamed ``"average"``, are returned with the trial that made it.
+    attempts, renamed ``"average"``, are returned with the trial that made it. The choice is
+    the one the Rust ``Laboratory`` makes, in the same compiled function.
 
     ``recorded`` gives the Expert's, Tiny's, Humanoid's and Poor's demonstrations (``n`` per
     configuration each) when they exist already; otherwise they are recorded with ``seed`` on
@@ -308,27 +261,10 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
         recorded = {who: [d for c in (1, 2) for d in record(who, configuration=c, n=n, seed=seed,
                                                              config=field_config)]
                     for who in ("expert", "tiny", "humanoid", "poor")}
-    poor, expert = _net_goals(recorded["poor"]), _net_goals(recorded["expert"])
-    items = segmented([d for who in ("expert", "tiny", "humanoid") for d in recorded[who]], recognizer,
-                      **(segmenter or {}))
-    best: tuple[int, list[Demonstration], TrialResult] | None = None
-    for trial_seed in range(seed, seed + max_trials):
-        trial = run_trial(items, recognizer=recognizer, ordering=["expert", "tiny", "humanoid"], config=config,
-                          seed=trial_seed)
-        evaluation = evaluate(ImitatorPolicy(trial, recognizer=recognizer, config=config),
-                              attempts_per_configuration=n + spare_attempts(n), seed=trial_seed,
-                              field_config=field_config)
-        valid = [a for c in (1, 2)
-                 for a in [a for a in evaluation.attempts if a.configuration == c and a.tracked_throughout][:n]]
-        if len(valid) < 2 * n:
-            continue
-        net = _net_goals(valid)
-        off_middle = abs(2 * net - (poor + expert))
-        if poor < net < expert and (best is None or off_middle < best[0]):
-            best = (off_middle, valid, trial)
-    if best is None:
-        raise _native.PolymimicError(
-            f"no imitator of {max_trials} trials, with tracking held in enough attempts, scored net goals (goals "
-            f"less own goals) between the Poor's ({poor}) and the Expert's ({expert})")
-    _, valid, trial = best
-    return [dataclasses.replace(a, demonstrator="average") for a in valid], trial
+    ordering = ["expert", "tiny", "humanoid"]
+    batch = segmented([d for who in ordering for d in recorded[who]], recognizer, **(segmenter or {}))
+    trial, raw = _native.average_demonstrator(
+        batch, recognizer, ordering=ordering, poor_net_goals=net_goals(recorded["poor"]),
+        expert_net_goals=net_goals(recorded["expert"]), per_configuration=n, first_seed=seed, max_trials=max_trials,
+        config=config, field_config=_field_config(field_config))
+    return _attempts(raw, "average"), trial

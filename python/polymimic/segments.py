@@ -13,8 +13,8 @@ A round trip is exact, and a demonstration with no segment keeps its row.
 >>> path = pathlib.Path(tempfile.mkdtemp()) / "segments_tiny.parquet"
 >>> save_segments(items, path)
 >>> again = load_segments(path)
->>> again[0]["pitch"], bool((again[0]["segments"]["start"] == items[0]["segments"]["start"]).all())
-('small', True)
+>>> again == items, again[0]["pitch"], bool((again[0]["segments"]["start"] == items[0]["segments"]["start"]).all())
+(True, 'small', True)
 """
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from polymimic._atomic import atomic_path
-from polymimic._native import ModelFileError, PrimitiveRecognizer
+from polymimic._native import ModelFileError, PrimitiveRecognizer, SegmentedDemonstrations
 from polymimic.field import Demonstration
 from polymimic.learning import segmented
 
@@ -41,17 +41,18 @@ _ARRAYS = {"first_frame": (np.int64, 0), "last_frame": (np.int64, 0), "start": (
 
 
 def segment_demonstrations(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer,
-                           **segmenter: Any) -> list[dict[str, Any]]:
+                           **segmenter: Any) -> SegmentedDemonstrations:
     """Demonstrations cut into named segments, in the form :func:`polymimic.run_trial` takes
     (:func:`polymimic.learning.segmented`)."""
     return segmented(demonstrations, recognizer, **segmenter)
 
 
-def save_segments(items: Sequence[dict[str, Any]], path: str | os.PathLike[str]) -> None:
+def save_segments(items: SegmentedDemonstrations | Sequence[dict[str, Any]], path: str | os.PathLike[str]) -> None:
     """Write segmented demonstrations to a Parquet file, atomically."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
+    items = list(items)
     columns: dict[str, Any] = {key: pa.array([item[key] for item in items], pa.string())
                                for key in ("demonstrator", "outcome", "pitch")}
     columns["label"] = pa.array([list(item["segments"]["label"]) for item in items], pa.list_(pa.string()))
@@ -66,8 +67,9 @@ def save_segments(items: Sequence[dict[str, Any]], path: str | os.PathLike[str])
         pq.write_table(table, temporary)
 
 
-def load_segments(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
-    """The segmented demonstrations :func:`save_segments` wrote."""
+def load_segments(path: str | os.PathLike[str]) -> SegmentedDemonstrations:
+    """The segmented demonstrations :func:`save_segments` wrote, checked as every batch is (a
+    value out of range is a :class:`~polymimic.ModelFileError` naming the file)."""
     import pyarrow.parquet as pq
 
     try:
@@ -86,4 +88,7 @@ def load_segments(path: str | os.PathLike[str]) -> list[dict[str, Any]]:
             segments[key] = array.reshape(-1, width) if width else array
         items.append({"demonstrator": demonstrator, "outcome": data["outcome"][i], "segments": segments,
                       "pitch": data["pitch"][i]})
-    return items
+    try:
+        return SegmentedDemonstrations(items)
+    except (ValueError, TypeError) as error:
+        raise ModelFileError(f"{os.fspath(path)}: {error}") from error

@@ -1,8 +1,5 @@
 """Learning trials on recorded demonstrations, and the learning config."""
 
-import dataclasses
-import json
-
 import pytest
 
 import polymimic
@@ -22,7 +19,7 @@ def heterogeneous(recognizer):
 
 
 def test_python_defaults_are_the_cores():
-    assert json.loads(_native.default_learning_config()) == dataclasses.asdict(polymimic.LearningConfig())
+    assert polymimic.LearningConfig().to_dict() == _native.LearningConfig().to_dict()
 
 
 def test_config_round_trips_through_toml(tmp_path):
@@ -101,10 +98,11 @@ def test_the_imitator_drives_the_robot_and_scores(recognizer):
     assert [a.frames.tobytes() for a in again.attempts] == [a.frames.tobytes() for a in evaluation.attempts]
 
 
-def test_a_corrupt_imitator_model_is_refused(recognizer):
-    bad = polymimic.TrialResult(models={}, imitator=None, seed=0, imitator_model="{}")  # type: ignore[arg-type]
-    with pytest.raises(polymimic.ModelFileError, match="imitator model"):
-        polymimic.ImitatorPolicy(bad, recognizer=recognizer)
+def test_a_corrupt_imitator_model_is_refused(recognizer, heterogeneous):
+    result = polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["tiny"], seed=0)
+    text = result.to_json().replace('\\"format\\":\\"polymimic.ForwardModel\\"', '\\"format\\":\\"other\\"')
+    with pytest.raises(polymimic.ModelFileError, match="imitator_model: "):
+        polymimic.TrialResult.from_json(text)
 
 
 @pytest.fixture(scope="module")

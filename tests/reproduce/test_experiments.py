@@ -169,8 +169,9 @@ def test_lp_over_time_keeps_every_stride_th_change():
 
 def test_appendix_b_counts_models_not_copies():
     def b(letters, permanent=False, samples=0, angle_sd=0.0):
-        return {"primitives": letters, "permanent": permanent, "ball_samples": samples,
-                "ball_angle_deg": [0.0, angle_sd]}
+        return {"primitives": letters, "permanency": 1.0 if permanent else 0.5, "permanent": permanent, "age": 0,
+                "selected": 0, "ball_samples": samples, "ball_angle_deg": [0.0, angle_sd],
+                "ball_distance_mm": [0.0, 0.0]}
 
     first = TrialResult(models={"expert": _model("expert", lp=1, match_rate=1, behaviours=[
         b("F"), b("FF", True, 9, 5.0), b("FF"), b("LR")])},

@@ -30,7 +30,7 @@ def test_toml_round_trip_is_exact(config):
     # Every parameter is written, section by section.
     sections = tomllib.loads(text)
     assert set(sections) == {"seeds", "field", "recognizer", "segmenter", "learning", "experiments"}
-    assert sections["learning"] == dataclasses.asdict(config.learning)
+    assert sections["learning"] == config.learning.to_dict()
     assert sections["field"] == config.field
 
 

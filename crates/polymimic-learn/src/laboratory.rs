@@ -3,19 +3,19 @@
 //! the trained imitators scored on the field. Python's `polymimic.experiments` orchestrates the
 //! same steps at scale; this is the quick path for studying learning itself.
 
-use polymimic_field::{
-    Configuration, Demonstrator, FieldConfig, FieldError, Frame, Outcome, record_all, self_observation,
-};
+use polymimic_field::{Demonstrator, FieldConfig, FieldError, Frame, Outcome, record_all, self_observation};
 use polymimic_perceive::{
     LabelledSequence, PerceiveError, Pose, Primitive, Recognizer, RecognizerConfig, SegmenterConfig, TrackedFrame,
     segment,
 };
 use thiserror::Error;
 
+use crate::average::AverageSearch;
 use crate::config::LearningConfig;
 use crate::control::{Attempt, ControlMode, ImitatorPolicy};
 use crate::error::LearnError;
 use crate::prediction::MotionTable;
+use crate::record::TrialRecord;
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::running::Running;
 use crate::state::Pitch;
@@ -39,12 +39,6 @@ pub enum LaboratoryError {
 
 fn pose(f: &Frame) -> Pose {
     Pose { x_mm: f.robot_x_mm, y_mm: f.robot_y_mm, theta_rad: f.robot_theta_rad }
-}
-
-fn tracked_throughout(frames: &[Frame]) -> bool {
-    frames.iter().all(|f| {
-        [f.robot_x_mm, f.robot_y_mm, f.robot_theta_rad, f.ball_x_mm, f.ball_y_mm].iter().all(|v| v.is_finite())
-    })
 }
 
 /// The pitch a demonstrator plays on.
@@ -105,11 +99,7 @@ impl Laboratory {
             .iter()
             .map(|f| TrackedFrame { robot: pose(f), ball_x_mm: f.ball_x_mm, ball_y_mm: f.ball_y_mm })
             .collect();
-        let ending = match outcome {
-            Outcome::Goal => Ending::Goal,
-            Outcome::OwnGoal => Ending::OwnGoal,
-            _ => Ending::Other,
-        };
+        let ending = Ending::from(outcome);
         let segments = segment(&tracked, &self.recognizer, &SegmenterConfig::default())?;
         Ok(SegmentedDemonstration { demonstrator: who.to_owned(), pitch, ending, segments })
     }
@@ -188,63 +178,18 @@ impl Laboratory {
         per_configuration: usize,
         (poor_net_goals, expert_net_goals): (i64, i64),
     ) -> Result<Vec<SegmentedDemonstration>, LaboratoryError> {
-        let world = WorldModel::default();
-        let mut best: Option<(u64, Vec<Attempt>)> = None;
-        for (i, trial) in heterogeneous.iter().enumerate() {
-            let attempts = per_configuration + spare_attempts(per_configuration);
-            let score = self.score(trial, &world, ControlMode::Thesis, attempts, i as u64)?;
-            let valid: Vec<Attempt> = Configuration::ALL
-                .iter()
-                .flat_map(|&c| {
-                    let of_c = score.attempts.iter().filter(move |a| a.configuration == c);
-                    of_c.filter(|a| tracked_throughout(&a.frames)).take(per_configuration).cloned()
-                })
-                .collect();
-            if valid.len() < Configuration::ALL.len() * per_configuration {
-                continue;
-            }
-            let net: i64 = valid.iter().map(|a| net_goal(a.outcome)).sum();
-            // Twice the distance from the middle, in whole goals.
-            let off_middle = (2 * net).abs_diff(poor_net_goals + expert_net_goals);
-            if poor_net_goals < net && net < expert_net_goals && best.as_ref().is_none_or(|(d, _)| off_middle < *d) {
-                best = Some((off_middle, valid));
-            }
-        }
-        let (_, attempts) = best.ok_or(LaboratoryError::NoAverage {
-            tried: heterogeneous.len(),
-            poor: poor_net_goals,
-            expert: expert_net_goals,
-        })?;
-        attempts.iter().map(|a| self.segmented("average", Pitch::LARGE, a.outcome, &a.frames)).collect()
+        let search = AverageSearch {
+            motion: &self.motion,
+            config: &self.config,
+            field: &self.field,
+            per_configuration,
+            poor_net_goals,
+            expert_net_goals,
+        };
+        let candidates = heterogeneous.iter().enumerate().map(|(i, trial)| Ok((i as u64, trial)));
+        let chosen = search.choose(candidates)?;
+        chosen.attempts.iter().map(|a| self.segmented("average", Pitch::LARGE, a.outcome, &a.frames)).collect()
     }
-}
-
-/// Attempts made beyond those needed, to stand in for any whose tracking is lost.
-#[must_use]
-pub fn spare_attempts(per_configuration: usize) -> usize {
-    (per_configuration / 5).max(5)
-}
-
-fn net_goal(outcome: Outcome) -> i64 {
-    match outcome {
-        Outcome::Goal => 1,
-        Outcome::OwnGoal => -1,
-        _ => 0,
-    }
-}
-
-/// Goals less own goals scored by `who` in `demonstrations`.
-#[must_use]
-pub fn net_goals_of(demonstrations: &[SegmentedDemonstration], who: &str) -> i64 {
-    demonstrations
-        .iter()
-        .filter(|d| d.demonstrator == who)
-        .map(|d| match d.ending {
-            Ending::Goal => 1,
-            Ending::OwnGoal => -1,
-            Ending::Other => 0,
-        })
-        .sum()
 }
 
 /// One model's figures over the trials of an experiment, each a mean and sd.
@@ -282,9 +227,34 @@ pub fn summarise(trials: &[TrialResult]) -> Vec<ModelSummary> {
         .collect()
 }
 
-/// Trials whose final LPs rise strictly along `order` (least skilled first).
+/// A trial, as far as its demonstrators' final LPs go: a finished one or its record.
+pub trait FinalLps {
+    /// The final LP of `who`'s model, if the trial had one.
+    fn final_lp(&self, who: &str) -> Option<f64>;
+}
+
+impl FinalLps for TrialResult {
+    fn final_lp(&self, who: &str) -> Option<f64> {
+        self.models.iter().find(|m| m.name == who).map(|m| m.lp)
+    }
+}
+
+impl FinalLps for TrialRecord {
+    fn final_lp(&self, who: &str) -> Option<f64> {
+        self.model(who).map(|m| m.lp)
+    }
+}
+
+impl<T: FinalLps> FinalLps for &T {
+    fn final_lp(&self, who: &str) -> Option<f64> {
+        (**self).final_lp(who)
+    }
+}
+
+/// Trials whose final LPs rise strictly along `order` (least skilled first); a trial without
+/// one of them is no hit.
 #[must_use]
-pub fn lp_order_hits(trials: &[TrialResult], order: &[&str]) -> usize {
-    let lp = |t: &TrialResult, who: &str| t.models.iter().find(|m| m.name == who).map_or(f64::NAN, |m| m.lp);
+pub fn lp_order_hits<T: FinalLps>(trials: &[T], order: &[&str]) -> usize {
+    let lp = |t: &T, who: &str| t.final_lp(who).unwrap_or(f64::NAN);
     trials.iter().filter(|t| order.windows(2).all(|w| lp(t, w[0]) < lp(t, w[1]))).count()
 }

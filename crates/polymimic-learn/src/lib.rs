@@ -3,6 +3,7 @@
 //! by a learning preference, candidates nominated to the imitator's model, two-phase training.
 
 mod approach;
+mod average;
 mod ball_response;
 mod behaviour;
 mod config;
@@ -13,6 +14,7 @@ mod model;
 mod nearest;
 mod prediction;
 mod push_region;
+mod record;
 mod round;
 mod running;
 mod shaping;
@@ -22,17 +24,17 @@ mod trial;
 mod world;
 
 pub use approach::ApproachPlan;
+pub use average::{AverageChoice, AverageSearch, net_goals, net_goals_of, spare_attempts, tracked_throughout};
 pub use ball_response::BallResponse;
 pub use behaviour::Behaviour;
 pub use config::{LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
 pub use control::{Attempt, ControlMode, ImitatorPolicy, attempt_seeds};
 pub use error::LearnError;
-pub use laboratory::{
-    Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, net_goals_of, pitch_of, summarise,
-};
+pub use laboratory::{FinalLps, Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, pitch_of, summarise};
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};
 pub use push_region::{BallGoalPose, Interval, PushRegion};
+pub use record::{BehaviourRecord, Json, ModelRecord, RecordError, TrialRecord};
 pub use round::{Ending, SegmentedDemonstration};
 pub use running::Running;
 pub use shaping::{LpCause, LpCauseCounts};

@@ -24,6 +24,16 @@ pub enum Ending {
     Other,
 }
 
+impl From<polymimic_field::Outcome> for Ending {
+    fn from(outcome: polymimic_field::Outcome) -> Self {
+        match outcome {
+            polymimic_field::Outcome::Goal => Ending::Goal,
+            polymimic_field::Outcome::OwnGoal => Ending::OwnGoal,
+            _ => Ending::Other,
+        }
+    }
+}
+
 /// A demonstration as the learner sees it: who, where, how it ended, and its segments.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SegmentedDemonstration {

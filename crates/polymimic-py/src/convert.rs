@@ -222,3 +222,20 @@ pub fn reduce_to_json<'py, T: pyo3::PyClass>(
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
     Ok((slf.as_any().get_type().getattr("_from_json")?, PyTuple::new(slf.py(), [json])?))
 }
+
+/// A 1-D array of whole numbers (any integer dtype), as `i64`.
+pub fn integers(value: &Bound<'_, PyAny>, name: &str) -> PyResult<Vec<i64>> {
+    let array = asarray(value, None)?;
+    let kind: String = array.getattr("dtype")?.getattr("kind")?.extract()?;
+    if kind != "i" && kind != "u" {
+        let dtype = array.getattr("dtype")?.str()?.to_string();
+        return Err(PyTypeError::new_err(format!("{name} has dtype {dtype}; expected whole numbers")));
+    }
+    let ndim: usize = array.getattr("ndim")?.extract()?;
+    if ndim != 1 {
+        return Err(PyValueError::new_err(format!("{name} must be 1-D, got shape {}", shape_text(&array)?)));
+    }
+    let array = asarray(&array, Some("int64"))?;
+    let array: PyReadonlyArray1<i64> = array.extract()?;
+    Ok(array.as_array().to_vec())
+}

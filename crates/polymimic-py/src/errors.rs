@@ -5,6 +5,7 @@
 
 use polymimic_field::FieldError;
 use polymimic_hmm::HmmError;
+use polymimic_learn::LaboratoryError;
 use polymimic_perceive::PerceiveError;
 use polymimic_vq::{VqError, VqParamsError};
 use pyo3::PyErr;
@@ -75,5 +76,15 @@ pub fn field_error(error: FieldError) -> PyErr {
     match error {
         FieldError::Param(e) => PyValueError::new_err(e.to_string()),
         other => FieldRunError::new_err(other.to_string()),
+    }
+}
+
+#[allow(clippy::needless_pass_by_value)] // used as `map_err(laboratory_error)`
+pub fn laboratory_error(error: LaboratoryError) -> PyErr {
+    match error {
+        LaboratoryError::Field(e) => field_error(e),
+        LaboratoryError::Perceive(e) => perceive_error(e),
+        LaboratoryError::Learn(e) => PyValueError::new_err(e.to_string()),
+        LaboratoryError::NoAverage { .. } => PolymimicError::new_err(error.to_string()),
     }
 }

@@ -28,7 +28,8 @@ mod _native {
     use super::hmm::PyDiscreteHmm;
     #[pymodule_export]
     use super::learn::{
-        PyImitatorPolicy, attempt_seeds, check_learning_config, default_learning_config, learning_trial,
+        PyImitatorPolicy, PyLearningConfig, PyModelResult, PySegmentedDemonstrations, PyTrialResult,
+        attempt_seeds, average_demonstrator, learning_trial, lp_order_hits, net_goals, spare_attempts,
     };
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;

@@ -22,7 +22,7 @@ const FRAME_COLUMNS: [&str; 5] = ["robot_x_mm", "robot_y_mm", "robot_theta_rad",
 /// Recognises the imitator's primitives in tracker frames and segments demonstrations.
 #[pyclass(name = "PrimitiveRecognizer", module = "polymimic", frozen)]
 pub struct PyPrimitiveRecognizer {
-    recognizer: Recognizer,
+    pub(crate) recognizer: Recognizer,
 }
 
 fn poses(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Pose>> {
@@ -77,7 +77,7 @@ fn segmenter_config(
 }
 
 /// Segments as columns: labels, frame ranges, end frames and scores.
-fn segment_columns<'py>(py: Python<'py>, segments: &[Segment]) -> PyResult<Bound<'py, PyDict>> {
+pub(crate) fn segment_columns<'py>(py: Python<'py>, segments: &[Segment]) -> PyResult<Bound<'py, PyDict>> {
     let k = segments.len();
     let out = PyDict::new(py);
     out.set_item("label", PyList::new(py, segments.iter().map(|s| s.label.name()))?)?;
@@ -89,7 +89,7 @@ fn segment_columns<'py>(py: Python<'py>, segments: &[Segment]) -> PyResult<Bound
     Ok(out)
 }
 
-fn frame_row(frame: &TrackedFrame) -> [f64; 5] {
+pub(crate) fn frame_row(frame: &TrackedFrame) -> [f64; 5] {
     [frame.robot.x_mm, frame.robot.y_mm, frame.robot.theta_rad, frame.ball_x_mm, frame.ball_y_mm]
 }
 

@@ -171,7 +171,7 @@ class RunConfig:
         """Plain data, section by section (what ``manifest.json`` keeps)."""
         return {"seeds": dataclasses.asdict(self.seeds), "field": json.loads(json.dumps(self.field)),
                 "recognizer": dataclasses.asdict(self.recognizer), "segmenter": dataclasses.asdict(self.segmenter),
-                "learning": dataclasses.asdict(self.learning), "experiments": dataclasses.asdict(self.experiments)}
+                "learning": self.learning.to_dict(), "experiments": dataclasses.asdict(self.experiments)}
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, base: RunConfig | None = None) -> RunConfig:
@@ -194,9 +194,9 @@ class RunConfig:
                 raise ConfigError(f"[field] {str(error).removeprefix('field config: ')}") from error
             changes["field"] = field
         if "learning" in data:
-            values = _checked("learning", _table("learning", data["learning"]), dataclasses.asdict(base.learning))
+            values = _checked("learning", _table("learning", data["learning"]), base.learning.to_dict())
             try:
-                changes["learning"] = dataclasses.replace(base.learning, **values)
+                changes["learning"] = base.learning.replace(**values)
             except ValueError as error:
                 raise ConfigError(f"[learning] {str(error).removeprefix('config: ')}") from error
         return dataclasses.replace(base, **changes)
@@ -206,7 +206,9 @@ class RunConfig:
         lines = ["# polymimic run configuration: the thesis's values unless changed", ""]
         for name in ("seeds", "field", "recognizer", "segmenter", "learning", "experiments"):
             section = getattr(self, name)
-            if dataclasses.is_dataclass(section) and not isinstance(section, type):
+            if isinstance(section, LearningConfig):
+                write_table(lines, name, section.to_dict(), {})
+            elif dataclasses.is_dataclass(section) and not isinstance(section, type):
                 docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(section)}
                 write_table(lines, name, dataclasses.asdict(section), docs)
             else:

@@ -25,7 +25,14 @@ from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelFileError, PrimitiveRecognizer
 from polymimic.datasets import load_demonstrations, save_demonstrations
 from polymimic.field import OUTCOMES
-from polymimic.learning import ImitatorPolicy, LearningConfig, TrialResult, evaluate, run_trial
+from polymimic.learning import (
+    ImitatorPolicy,
+    LearningConfig,
+    SegmentedDemonstrations,
+    TrialResult,
+    evaluate,
+    run_trial,
+)
 from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.progress import progress
@@ -48,7 +55,7 @@ def evaluated_seeds(config: RunConfig) -> list[int]:
 
 
 def imitator_policy(trial: TrialResult, *, recognizer: PrimitiveRecognizer, config: LearningConfig,
-                    control: str, demonstrations: list[dict[str, Any]]) -> ImitatorPolicy:
+                    control: str, demonstrations: SegmentedDemonstrations) -> ImitatorPolicy:
     """The trial's imitator driving the robot by ``control``; the improved control also learns
     from the (segmented) ``demonstrations`` the imitator watched."""
     if control not in CONTROLS:
@@ -63,7 +70,7 @@ def imitator_policy(trial: TrialResult, *, recognizer: PrimitiveRecognizer, conf
 class TrialInputs:
     """What every trial of an experiment shares."""
 
-    items: list[dict[str, Any]]
+    items: SegmentedDemonstrations
     recognizer: PrimitiveRecognizer
     ordering: tuple[str, ...]
     phase_one: str
@@ -84,7 +91,7 @@ class EvaluationInputs:
     learning: LearningConfig
     attempts_per_configuration: int
     seed: int
-    items: list[dict[str, Any]]
+    items: SegmentedDemonstrations
     """The experiment's segmented demonstrations: what its imitators watched."""
     field: dict[str, Any]
     """The field the imitators play on (the run's)."""
@@ -106,12 +113,10 @@ def evaluation_task(inputs: EvaluationInputs, job: tuple[int, str, str, bool]) -
 
 # Stages.
 
-def experiment_items(run: RunDir, experiment: Experiment) -> list[dict[str, Any]]:
+def experiment_items(run: RunDir, experiment: Experiment) -> SegmentedDemonstrations:
     """The experiment's segmented demonstrations, demonstrator by demonstrator."""
-    items: list[dict[str, Any]] = []
-    for who in experiment.demonstrators:
-        items += load_segments(run.require(run.segments_path(who), "segment"))
-    return items
+    return SegmentedDemonstrations.concat([load_segments(run.require(run.segments_path(who), "segment"))
+                                           for who in experiment.demonstrators])
 
 
 def _selected(names: Sequence[str] | None) -> list[Experiment]:

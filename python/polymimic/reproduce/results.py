@@ -22,7 +22,7 @@ from typing import Any, cast
 import numpy as np
 
 from polymimic import __version__, recognition
-from polymimic._native import PrimitiveRecognizer
+from polymimic._native import PrimitiveRecognizer, lp_order_hits
 from polymimic.datasets import load_demonstrations, load_self_observation
 from polymimic.field import Demonstration
 from polymimic.learning import LearningConfig, ModelResult, TrialResult
@@ -89,9 +89,8 @@ def summarize_experiment(experiment: Experiment, trials: Sequence[TrialResult], 
         models[name] = [t.models[name] for t in trials]
     demonstrators = {name: results for name, results in models.items() if name != "imitator"}
     hits = None
-    if experiment.skill_order is not None:
-        order = experiment.skill_order
-        hits = sum(all(t.models[a].lp > t.models[b].lp for a, b in zip(order, order[1:])) for t in trials)
+    if experiment.skill_order is not None:  # most skilled first; the count takes the least first
+        hits = lp_order_hits(trials, list(experiment.skill_order[::-1]))
     return {
         "title": experiment.title,
         "ordering": list(experiment.ordering),

@@ -1,0 +1,131 @@
+//! `polymimic.ImitatorPolicy`: a trial's imitator driving the Lego robot on the field.
+
+use std::sync::Arc;
+
+use polymimic_learn::{
+    Attempt, ControlMode, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, Pitch, WorldModel,
+};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+use super::config::{PyLearningConfig, config_or_default};
+use super::motion_table;
+use super::segments::batch;
+use super::trial::PyTrialResult;
+use crate::convert::{non_negative, one_of};
+use crate::perceive::PyPrimitiveRecognizer;
+
+/// Attempts as Python dictionaries: ``frames``, ``outcome``, ``configuration``, ``seed`` and the
+/// ``behaviours`` executed.
+pub(crate) fn attempt_list<'py>(py: Python<'py>, attempts: &[Attempt]) -> PyResult<Bound<'py, PyList>> {
+    let out = PyList::empty(py);
+    for attempt in attempts {
+        let item = PyDict::new(py);
+        item.set_item("frames", crate::field::frames_array(py, &attempt.frames)?)?;
+        item.set_item("outcome", attempt.outcome.name())?;
+        item.set_item("configuration", crate::field::configuration_number(attempt.configuration))?;
+        item.set_item("seed", attempt.seed)?;
+        item.set_item("behaviours", attempt.behaviours.clone())?;
+        out.append(item)?;
+    }
+    Ok(out)
+}
+
+/// The imitator's final model driving the Lego robot.
+///
+/// ``control="thesis"`` is the thesis's rule (§3.4): behaviours whose preconditions hold
+/// (else all) predict their outcome with their own ball statistics, and the best by the
+/// learning-preference criteria runs primitive by primitive, stopping before leaving the
+/// field. ``control="improved"`` learns from ``demonstrations`` (those the imitator watched,
+/// segmented) how the ball responds to each primitive, how good each state is and where the
+/// scoring demonstrations pushed from, and chooses again after every primitive.
+#[pyclass(name = "ImitatorPolicy", module = "polymimic", frozen, subclass)]
+pub struct PyImitatorPolicy {
+    model: Arc<ForwardModel>,
+    motion: MotionTable,
+    config: LearningConfig,
+    mode: ControlMode,
+    world: Option<WorldModel>,
+}
+
+#[pymethods]
+impl PyImitatorPolicy {
+    #[new]
+    #[pyo3(signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None))]
+    fn new(
+        py: Python<'_>,
+        trial: &PyTrialResult,
+        recognizer: &PyPrimitiveRecognizer,
+        config: Option<&Bound<'_, PyLearningConfig>>,
+        control: &str,
+        demonstrations: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let mode =
+            one_of("control mode", control, &[("thesis", ControlMode::Thesis), ("improved", ControlMode::Improved)])?;
+        let model = trial.imitator_forward_model()?;
+        let config = config_or_default(config);
+        let motion = motion_table(recognizer)?;
+        let world = match (mode, demonstrations) {
+            (ControlMode::Thesis, _) => None,
+            (ControlMode::Improved, None) => {
+                return Err(PyValueError::new_err(
+                    "the improved control learns from the demonstrations the imitator watched: pass demonstrations=",
+                ));
+            }
+            (ControlMode::Improved, Some(items)) => {
+                let demos = batch(items)?;
+                if !demos.iter().any(|d| d.pitch == Pitch::LARGE) {
+                    return Err(PyValueError::new_err(
+                        "demonstrations: none was played on the imitator's (large) field, so there is nothing to learn the ball's response from",
+                    ));
+                }
+                Some(py.detach(|| WorldModel::learn(&demos, &Pitch::LARGE, &motion, &config)))
+            }
+        };
+        Ok(Self { model, motion, config, mode, world })
+    }
+
+    /// Attempts from each configuration; one dict per attempt with `frames`, `outcome`,
+    /// `configuration`, `seed` and the `behaviours` executed.
+    #[pyo3(signature = (attempts_per_configuration, *, seed=0, field_config=None))]
+    fn evaluate<'py>(
+        &self,
+        py: Python<'py>,
+        attempts_per_configuration: i64,
+        seed: i64,
+        field_config: Option<&str>,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let attempts = non_negative("attempts_per_configuration", attempts_per_configuration)?;
+        let field = crate::field::field_config(field_config)?;
+        let policy = ImitatorPolicy {
+            model: &self.model,
+            motion: &self.motion,
+            config: &self.config,
+            pitch: Pitch::LARGE,
+            mode: self.mode,
+            world: self.world.as_ref(),
+        };
+        let seed = non_negative("seed", seed)? as u64;
+        let results = py.detach(|| policy.evaluate(attempts, &field, seed)).map_err(crate::errors::field_error)?;
+        attempt_list(py, &results)
+    }
+
+    /// `"thesis"` or `"improved"`.
+    #[getter]
+    fn control(&self) -> &'static str {
+        match self.mode {
+            ControlMode::Thesis => "thesis",
+            ControlMode::Improved => "improved",
+        }
+    }
+
+    /// How many behaviours the model holds.
+    fn __len__(&self) -> usize {
+        self.model.behaviours.len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("ImitatorPolicy(control={:?}, behaviours={})", self.control(), self.model.behaviours.len())
+    }
+}

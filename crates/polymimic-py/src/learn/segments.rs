@@ -1,0 +1,339 @@
+//! `polymimic.SegmentedDemonstrations`: demonstrations as the learner takes them, checked once
+//! on the way in from Python and then shared (behind an `Arc`) by every trial and policy.
+// The docstrings are Python's: their examples quote Python lists, not Rust doc links.
+#![allow(clippy::doc_link_with_quotes)]
+
+use std::sync::Arc;
+
+use polymimic_field::Outcome;
+use polymimic_learn::{Ending, Pitch, SegmentedDemonstration};
+use polymimic_perceive::{Label, Pose, Primitive, Segment, TrackedFrame};
+use pyo3::PyTypeInfo;
+use pyo3::exceptions::{PyIndexError, PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyIterator, PyList, PyString, PyTuple};
+
+use crate::convert::{floats, integers};
+use crate::perceive::segment_columns;
+
+const OUTCOMES: [Outcome; 5] = [Outcome::Goal, Outcome::OwnGoal, Outcome::BallOut, Outcome::RobotOut, Outcome::TimeUp];
+const PITCHES: [(&str, Pitch); 2] = [("large", Pitch::LARGE), ("small", Pitch::SMALL)];
+const STATE_COLUMNS: [&str; 5] = ["robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm"];
+
+/// Segmented demonstrations: who demonstrated, how each ended, on which field, and its
+/// segments (as :meth:`PrimitiveRecognizer.segment` gives them).
+///
+/// Built from dictionaries with ``demonstrator``, ``outcome`` (a field outcome: ``"goal"``,
+/// ``"own_goal"``, ``"ball_out"``, ``"robot_out"``, ``"time_up"``), ``pitch`` (``"large"`` or
+/// ``"small"``) and ``segments`` (columns ``label``, ``first_frame``, ``last_frame``, ``start``
+/// and ``end`` of shape ``(k, 5)`` and, optionally, ``scores`` of shape ``(k, 4)``), every value
+/// is checked once, here: a bad one is a ``ValueError`` naming the demonstration, the field,
+/// the value and what is allowed. ``frame_counts`` (one per demonstration) also checks that
+/// every segment lies inside its demonstration. The batch is immutable and shared, not copied,
+/// by every trial and policy it is given to; indexing gives a demonstration back as a
+/// dictionary, and batches add and pickle.
+///
+/// Examples
+/// --------
+/// >>> import numpy as np
+/// >>> state = np.zeros((1, 5))
+/// >>> segments = {"label": ["forward"], "first_frame": np.array([0]), "last_frame": np.array([9]),
+/// ...             "start": state, "end": state}
+/// >>> batch = SegmentedDemonstrations([{"demonstrator": "expert", "outcome": "goal", "pitch": "large",
+/// ...                                   "segments": segments}])
+/// >>> len(batch), batch.outcomes, batch[0]["segments"]["label"]
+/// (1, ['goal'], ['forward'])
+/// >>> SegmentedDemonstrations([{"demonstrator": "expert", "outcome": "own-goal", "pitch": "large",
+/// ...                           "segments": segments}])
+/// Traceback (most recent call last):
+/// ...
+/// ValueError: demonstration 0: outcome 'own-goal' is not one of 'goal', 'own_goal', 'ball_out', 'robot_out', 'time_up'
+#[pyclass(name = "SegmentedDemonstrations", module = "polymimic", frozen, sequence)]
+pub struct PySegmentedDemonstrations {
+    pub(crate) demonstrations: Arc<[SegmentedDemonstration]>,
+    outcomes: Arc<[Outcome]>,
+}
+
+fn pitch_name(pitch: &Pitch) -> &'static str {
+    PITCHES.iter().find(|(_, p)| p == pitch).map_or("large", |(name, _)| name)
+}
+
+fn quoted(names: impl IntoIterator<Item = &'static str>) -> String {
+    names.into_iter().map(|n| format!("'{n}'")).collect::<Vec<_>>().join(", ")
+}
+
+/// One checked demonstration and its outcome. `what` is "demonstration i".
+fn demonstration(
+    item: &Bound<'_, PyAny>,
+    what: &str,
+    frame_count: Option<usize>,
+) -> PyResult<(SegmentedDemonstration, Outcome)> {
+    let get = |key: &str| -> PyResult<Bound<'_, PyAny>> {
+        item.get_item(key).map_err(|_| PyValueError::new_err(format!("{what}: no {key:?} given")))
+    };
+    let text = |key: &str| -> PyResult<String> {
+        let value = get(key)?;
+        value.extract::<String>().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "{what}: {key} must be a string, got {}",
+                value.repr().map_or_else(|_| "?".into(), |r| r.to_string())
+            ))
+        })
+    };
+    let demonstrator = text("demonstrator")?;
+    let outcome_name = text("outcome")?;
+    let outcome = OUTCOMES.into_iter().find(|o| o.name() == outcome_name).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "{what}: outcome '{outcome_name}' is not one of {}",
+            quoted(OUTCOMES.map(Outcome::name))
+        ))
+    })?;
+    let pitch_text = text("pitch")?;
+    let pitch = PITCHES.iter().find(|(n, _)| *n == pitch_text).map(|(_, p)| *p).ok_or_else(|| {
+        PyValueError::new_err(format!("{what}: pitch '{pitch_text}' is not one of {}", quoted(PITCHES.map(|(n, _)| n))))
+    })?;
+    let segments = segments(&get("segments")?, what, frame_count)?;
+    Ok((SegmentedDemonstration { demonstrator, pitch, ending: Ending::from(outcome), segments }, outcome))
+}
+
+fn label(name: &str, what: &str) -> PyResult<Label> {
+    if name == "gap" {
+        return Ok(Label::Gap);
+    }
+    Primitive::from_name(name).map(Label::Primitive).ok_or_else(|| {
+        let allowed = quoted(Primitive::ALL.map(Primitive::name).into_iter().chain(["gap"]));
+        PyValueError::new_err(format!("{what}: label '{name}' is not one of {allowed}"))
+    })
+}
+
+fn states(value: &Bound<'_, PyAny>, what: &str, key: &str, k: usize) -> PyResult<Vec<TrackedFrame>> {
+    let (data, shape) = floats(value, &format!("{what}: {key}"), 2)?;
+    if shape != [k, 5] {
+        return Err(PyValueError::new_err(format!(
+            "{what}: {key} has shape {shape:?}; expected [{k}, 5] (one row of robot x, y, θ and ball x, y per label)"
+        )));
+    }
+    data.chunks_exact(5)
+        .enumerate()
+        .map(|(j, r)| {
+            if let Some(c) = r.iter().position(|v| !v.is_finite()) {
+                return Err(PyValueError::new_err(format!(
+                    "{what}: segment {j}: {key} {} = {}; states must be finite",
+                    STATE_COLUMNS[c], r[c]
+                )));
+            }
+            Ok(TrackedFrame {
+                robot: Pose { x_mm: r[0], y_mm: r[1], theta_rad: r[2] },
+                ball_x_mm: r[3],
+                ball_y_mm: r[4],
+            })
+        })
+        .collect()
+}
+
+fn segments(columns: &Bound<'_, PyAny>, what: &str, frame_count: Option<usize>) -> PyResult<Vec<Segment>> {
+    let get = |key: &str| -> PyResult<Bound<'_, PyAny>> {
+        columns.get_item(key).map_err(|_| PyValueError::new_err(format!("{what}: segments has no column {key:?}")))
+    };
+    let labels: Vec<String> = get("label")?
+        .extract()
+        .map_err(|_| PyTypeError::new_err(format!("{what}: segments label must be a list of strings")))?;
+    let k = labels.len();
+    let first = integers(&get("first_frame")?, &format!("{what}: first_frame"))?;
+    let last = integers(&get("last_frame")?, &format!("{what}: last_frame"))?;
+    for (key, column) in [("first_frame", &first), ("last_frame", &last)] {
+        if column.len() != k {
+            return Err(PyValueError::new_err(format!("{what}: {key} has {} values for {k} labels", column.len())));
+        }
+    }
+    let start = states(&get("start")?, what, "start", k)?;
+    let end = states(&get("end")?, what, "end", k)?;
+    let scores = match columns.get_item("scores") {
+        Err(_) => vec![[f64::NEG_INFINITY; 4]; k],
+        Ok(value) if value.is_none() => vec![[f64::NEG_INFINITY; 4]; k],
+        Ok(value) => {
+            let (data, shape) = floats(&value, &format!("{what}: scores"), 2)?;
+            if shape != [k, 4] {
+                return Err(PyValueError::new_err(format!("{what}: scores has shape {shape:?}; expected [{k}, 4]")));
+            }
+            data.chunks_exact(4).map(|r| [r[0], r[1], r[2], r[3]]).collect()
+        }
+    };
+    (0..k)
+        .map(|j| {
+            let at = format!("{what}: segment {j}");
+            let frame = |key: &str, value: i64| -> PyResult<usize> {
+                let index = usize::try_from(value).map_err(|_| {
+                    PyValueError::new_err(format!("{at}: {key} {value} is negative; frame indices are ≥ 0"))
+                })?;
+                match frame_count {
+                    Some(n) if index >= n => Err(PyValueError::new_err(format!(
+                        "{at}: {key} {value} is outside the demonstration's {n} frames (0..{n})"
+                    ))),
+                    _ => Ok(index),
+                }
+            };
+            let (first_frame, last_frame) = (frame("first_frame", first[j])?, frame("last_frame", last[j])?);
+            if first_frame > last_frame {
+                return Err(PyValueError::new_err(format!(
+                    "{at}: first_frame {first_frame} is after last_frame {last_frame}; a segment ends where or after it starts"
+                )));
+            }
+            Ok(Segment {
+                label: label(&labels[j], &at)?,
+                first_frame,
+                last_frame,
+                start: start[j],
+                end: end[j],
+                scores: scores[j],
+            })
+        })
+        .collect()
+}
+
+impl PySegmentedDemonstrations {
+    fn from_parts(demonstrations: Vec<SegmentedDemonstration>, outcomes: Vec<Outcome>) -> Self {
+        Self { demonstrations: demonstrations.into(), outcomes: outcomes.into() }
+    }
+
+    fn item<'py>(&self, py: Python<'py>, i: usize) -> PyResult<Bound<'py, PyDict>> {
+        let d = &self.demonstrations[i];
+        let out = PyDict::new(py);
+        out.set_item("demonstrator", &d.demonstrator)?;
+        out.set_item("outcome", self.outcomes[i].name())?;
+        out.set_item("segments", segment_columns(py, &d.segments)?)?;
+        out.set_item("pitch", pitch_name(&d.pitch))?;
+        Ok(out)
+    }
+}
+
+#[pymethods]
+impl PySegmentedDemonstrations {
+    #[new]
+    #[pyo3(signature = (demonstrations, *, frame_counts=None))]
+    #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the counts by value
+    fn new(demonstrations: &Bound<'_, PyAny>, frame_counts: Option<Vec<i64>>) -> PyResult<Self> {
+        let items: Vec<Bound<'_, PyAny>> = demonstrations
+            .try_iter()
+            .map_err(|_| PyTypeError::new_err("demonstrations must be an iterable of dictionaries"))?
+            .collect::<PyResult<_>>()?;
+        if let Some(counts) = &frame_counts {
+            if counts.len() != items.len() {
+                return Err(PyValueError::new_err(format!(
+                    "{} frame_counts for {} demonstrations: give one per demonstration",
+                    counts.len(),
+                    items.len()
+                )));
+            }
+        }
+        let mut demos = Vec::with_capacity(items.len());
+        let mut outcomes = Vec::with_capacity(items.len());
+        for (i, item) in items.iter().enumerate() {
+            let what = format!("demonstration {i}");
+            let count = match frame_counts.as_ref().map(|c| c[i]) {
+                None => None,
+                Some(n) => Some(
+                    usize::try_from(n)
+                        .map_err(|_| PyValueError::new_err(format!("{what}: frame count {n} is negative")))?,
+                ),
+            };
+            let (demo, outcome) = demonstration(item, &what, count)?;
+            demos.push(demo);
+            outcomes.push(outcome);
+        }
+        Ok(Self::from_parts(demos, outcomes))
+    }
+
+    /// The batches one after another.
+    ///
+    /// >>> len(SegmentedDemonstrations.concat([SegmentedDemonstrations([]), SegmentedDemonstrations([])]))
+    /// 0
+    #[staticmethod]
+    #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the list by value
+    fn concat(batches: Vec<PyRef<'_, Self>>) -> Self {
+        let demos = batches.iter().flat_map(|b| b.demonstrations.iter().cloned()).collect();
+        let outcomes = batches.iter().flat_map(|b| b.outcomes.iter().copied()).collect();
+        Self::from_parts(demos, outcomes)
+    }
+
+    fn __add__(&self, other: &Self) -> Self {
+        let demos = self.demonstrations.iter().chain(other.demonstrations.iter()).cloned().collect();
+        let outcomes = self.outcomes.iter().chain(other.outcomes.iter()).copied().collect();
+        Self::from_parts(demos, outcomes)
+    }
+
+    fn __len__(&self) -> usize {
+        self.demonstrations.len()
+    }
+
+    /// Demonstration `index` as a dictionary (a copy), as the constructor takes it.
+    fn __getitem__<'py>(&self, py: Python<'py>, index: isize) -> PyResult<Bound<'py, PyDict>> {
+        let n = self.demonstrations.len() as isize;
+        let i = if index < 0 { index + n } else { index };
+        if !(0..n).contains(&i) {
+            return Err(PyIndexError::new_err(format!("demonstration {index} of {n}")));
+        }
+        self.item(py, i as usize)
+    }
+
+    /// Every demonstration as a dictionary (copies), in order.
+    fn __iter__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyIterator>> {
+        let py = slf.py();
+        let items = PyList::empty(py);
+        for i in 0..slf.get().demonstrations.len() {
+            items.append(slf.get().item(py, i)?)?;
+        }
+        items.try_iter()
+    }
+
+    /// Who demonstrated each.
+    #[getter]
+    fn demonstrators(&self) -> Vec<String> {
+        self.demonstrations.iter().map(|d| d.demonstrator.clone()).collect()
+    }
+
+    /// How each ended.
+    #[getter]
+    fn outcomes(&self) -> Vec<&'static str> {
+        self.outcomes.iter().map(|o| o.name()).collect()
+    }
+
+    /// The field each was played on: ``"large"`` or ``"small"``.
+    #[getter]
+    fn pitches(&self) -> Vec<&'static str> {
+        self.demonstrations.iter().map(|d| pitch_name(&d.pitch)).collect()
+    }
+
+    fn __eq__(&self, other: &Self) -> bool {
+        self.demonstrations == other.demonstrations && self.outcomes == other.outcomes
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let py = slf.py();
+        let items = PyList::type_object(py).call1((Self::__iter__(slf)?,))?;
+        Ok((slf.get_type().into_any(), PyTuple::new(py, [items])?))
+    }
+
+    fn __repr__(&self) -> String {
+        let mut counts: Vec<(&str, usize)> = Vec::new();
+        for d in self.demonstrations.iter() {
+            match counts.iter_mut().find(|(who, _)| *who == d.demonstrator) {
+                Some((_, n)) => *n += 1,
+                None => counts.push((&d.demonstrator, 1)),
+            }
+        }
+        let who: Vec<String> = counts.iter().map(|(w, n)| format!("{w} {n}")).collect();
+        format!("SegmentedDemonstrations({} demonstrations: {})", self.demonstrations.len(), who.join(", "))
+    }
+}
+
+/// `value` as a batch: a batch as it is (shared), or dictionaries checked into one.
+pub(crate) fn batch(value: &Bound<'_, PyAny>) -> PyResult<Arc<[SegmentedDemonstration]>> {
+    if let Ok(batch) = value.cast::<PySegmentedDemonstrations>() {
+        return Ok(Arc::clone(&batch.get().demonstrations));
+    }
+    if value.is_instance_of::<PyString>() {
+        return Err(PyTypeError::new_err("demonstrations must be SegmentedDemonstrations, not a string"));
+    }
+    Ok(PySegmentedDemonstrations::new(value, None)?.demonstrations)
+}

@@ -18,7 +18,8 @@ mod _native {
 
     #[pymodule_export]
     use super::field::{
-        PyEpisode, check_field_config, commands, default_field_config, record_demonstrations, record_self_observation, thesis_table_3_1,
+        PyEpisode, check_field_config, commands, default_field_config, record_demonstrations, record_self_observation,
+        thesis_table_3_1,
     };
     #[pymodule_export]
     use super::hmm::PyDiscreteHmm;

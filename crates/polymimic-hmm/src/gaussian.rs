@@ -139,7 +139,8 @@ impl GaussianHmm {
         let (n, d) = (params.n_states, params.dim);
         // Reuse the discrete checks for π and A with a one-symbol emission table.
         crate::Probabilities::new(n, 1, startprob.clone(), transmat.clone(), vec![1.0; n], params.topology)?;
-        if means.len() != n * d || variances.len() != n * d {
+        // Saturating: a product that overflows (a damaged file's dimension) matches no table.
+        if means.len() != n.saturating_mul(d) || variances.len() != n.saturating_mul(d) {
             return Err(HmmParamsError::Shape {
                 name: "means/variances",
                 actual: format!("{} and {} entries", means.len(), variances.len()),

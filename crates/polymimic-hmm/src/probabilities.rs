@@ -35,7 +35,9 @@ impl Probabilities {
     ) -> Result<Self, HmmParamsError> {
         check_len("startprob", startprob.len(), n_states, format!("({n_states},)"))?;
         check_len("transmat", transmat.len(), n_states * n_states, format!("({n_states}, {n_states})"))?;
-        check_len("emissionprob", emissionprob.len(), n_states * n_symbols, format!("({n_states}, {n_symbols})"))?;
+        // Saturating: a product that overflows (a damaged file's symbol count) matches no table.
+        let emissions = n_states.saturating_mul(n_symbols);
+        check_len("emissionprob", emissionprob.len(), emissions, format!("({n_states}, {n_symbols})"))?;
         check_rows("startprob", &startprob, n_states, false)?;
         check_rows("transmat", &transmat, n_states, true)?;
         check_rows("emissionprob", &emissionprob, n_symbols, true)?;

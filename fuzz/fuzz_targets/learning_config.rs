@@ -1,0 +1,3 @@
+#![no_main]
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| polymimic_fuzz::learning_config(&String::from_utf8_lossy(data)));

@@ -1,7 +1,7 @@
 //! A forward model: behaviours, the frequency with which one follows another, and a learning
 //! preference (thesis §3.3, §3.4).
 
-use polymimic_perceive::Primitive;
+use polymimic_types::Primitive;
 use serde::{Deserialize, Serialize};
 
 use crate::behaviour::Behaviour;

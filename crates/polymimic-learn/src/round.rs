@@ -5,7 +5,8 @@
 //! one still matches; among those matching the furthest segment reached, behaviours with an
 //! accurate ball prediction are preferred, then the fewest primitives, then the oldest.
 
-use polymimic_perceive::{Label, Primitive, Segment};
+use polymimic_perceive::{Label, Segment};
+use polymimic_types::{Primitive, wrap_angle_euclid_rad};
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
@@ -104,9 +105,7 @@ impl ForwardModel {
                 .filter(|&i| {
                     ball_moved
                         && predictions[i].ball.is_some_and(|(bearing, _)| {
-                            polymimic_perceive::wrap_angle_rad((bearing - actual_bearing).to_radians())
-                                .to_degrees()
-                                .abs()
+                            wrap_angle_euclid_rad((bearing - actual_bearing).to_radians()).to_degrees().abs()
                                 <= config.ball_angle_tolerance_deg
                         })
                 })

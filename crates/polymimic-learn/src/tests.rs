@@ -1,6 +1,7 @@
 //! Learning on synthetic demonstrations whose segments follow the primitives exactly.
 
-use polymimic_perceive::{Label, Pose, Primitive, Segment, TrackedFrame};
+use polymimic_perceive::{Label, Segment};
+use polymimic_types::{Pose, Primitive, TrackedFrame};
 
 use crate::*;
 
@@ -13,8 +14,7 @@ fn exact_motion() -> MotionTable {
 /// A demonstration driving straight along +x toward a ball ahead for `count` forward
 /// segments, each ending exactly 50 mm further.
 fn straight(count: usize, name: &str, ending: Ending) -> SegmentedDemonstration {
-    let frame =
-        |x: f64| TrackedFrame { robot: Pose { x_mm: x, y_mm: 0.0, theta_rad: 0.0 }, ball_x_mm: 480.0, ball_y_mm: 0.0 };
+    let frame = |x: f64| TrackedFrame { robot: Pose::new(x, 0.0, 0.0), ball_x_mm: 480.0, ball_y_mm: 0.0 };
     let segments = (0..count)
         .map(|i| Segment {
             label: Label::Primitive(Primitive::Forward),
@@ -171,7 +171,7 @@ fn only_the_models_own_demonstrator_shapes_its_lp_by_the_task_criteria() {
 #[test]
 fn the_foremost_criterion_is_the_ball_when_it_moved() {
     let frame = |robot_x: f64, ball_x: f64| TrackedFrame {
-        robot: Pose { x_mm: robot_x, y_mm: 0.0, theta_rad: 0.0 },
+        robot: Pose::new(robot_x, 0.0, 0.0),
         ball_x_mm: ball_x,
         ball_y_mm: 0.0,
     };

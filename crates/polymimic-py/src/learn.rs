@@ -5,7 +5,8 @@ use polymimic_learn::{
     ControlMode, Ending, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, PhaseOne, Pitch,
     SegmentedDemonstration, WorldModel, run_trial,
 };
-use polymimic_perceive::{Label, MotionStats, Pose, Primitive, Segment, TrackedFrame};
+use polymimic_perceive::{Label, Segment};
+use polymimic_types::{MotionStats, Pose, Primitive, TrackedFrame};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -53,7 +54,7 @@ fn motion_table(stats: &Bound<'_, PyDict>) -> PyResult<MotionTable> {
 }
 
 fn frame(row: &[f64]) -> TrackedFrame {
-    TrackedFrame { robot: Pose { x_mm: row[0], y_mm: row[1], theta_rad: row[2] }, ball_x_mm: row[3], ball_y_mm: row[4] }
+    TrackedFrame { robot: Pose::new(row[0], row[1], row[2]), ball_x_mm: row[3], ball_y_mm: row[4] }
 }
 
 fn demonstration(index: usize, item: &Bound<'_, PyAny>) -> PyResult<SegmentedDemonstration> {

@@ -4,8 +4,11 @@
 use polymimic_types::{Primitive, capitalised};
 use serde::{Deserialize, Serialize};
 
-use crate::body::LEGO;
 use crate::error::FieldParamError;
+
+/// The Lego body's wheel base, mm: the Expert's wheel speeds are written for it, and its
+/// equivalent primitives are read through it.
+pub(crate) const LEGO_WHEEL_BASE_MM: f64 = 175.0;
 
 /// The Expert's command language: named wheel-speed pairs (left, right), mm/s, for the Lego body.
 /// The thesis's RC2004 controller used over a hundred; 35 cover straights, spins, nudges, pivots
@@ -333,7 +336,7 @@ impl From<ExpertCommand> for Command {
 /// own (Table 3.1: about 45 mm and 30° per second).
 fn primitive_of_wheels(left_mm_s: f64, right_mm_s: f64) -> Primitive {
     let v_mm_s = 0.5 * (left_mm_s + right_mm_s);
-    let omega_deg_s = (right_mm_s - left_mm_s) / LEGO.wheel_base_mm * 180.0 / std::f64::consts::PI;
+    let omega_deg_s = (right_mm_s - left_mm_s) / LEGO_WHEEL_BASE_MM * 180.0 / std::f64::consts::PI;
     let (lin, rot) = (v_mm_s.abs() / 45.0, omega_deg_s.abs() / 30.0);
     if lin < 0.1 && rot < 0.1 {
         Primitive::Stop

@@ -12,7 +12,7 @@
 use polymimic_types::Pose;
 use serde::{Deserialize, Serialize};
 
-use crate::command::Command;
+use crate::command::{Command, LEGO_WHEEL_BASE_MM};
 use crate::error::FieldParamError;
 use crate::math::{Rng, cos, exp, gaussian, sin, wrap_angle_rad};
 
@@ -58,7 +58,7 @@ pub const LEGO: WheeledParams = WheeledParams {
     name: "lego",
     length_mm: 140.0,
     width_mm: 150.0,
-    wheel_base_mm: 175.0,
+    wheel_base_mm: LEGO_WHEEL_BASE_MM,
     primitive_wheels_mm_s: [(51.55, 47.86), (-61.45, -54.21), (-43.0, 53.2), (51.08, -42.9), (0.0, 0.0)],
     traction: [
         Traction { common_sd: 0.29, differential_sd: 0.008 },

@@ -70,14 +70,14 @@ impl Laboratory {
     /// # Errors
     /// A field, recogniser or config error.
     pub fn new(per_primitive: usize, seed: u64, config: LearningConfig) -> Result<Self, LaboratoryError> {
-        config.check()?;
+        config.check().map_err(LearnError::from)?;
         let field = FieldConfig::default();
         let training: Vec<LabelledSequence> = self_observation(per_primitive, seed, &field)?
             .iter()
             .map(|s| LabelledSequence { primitive: s.primitive, poses: s.frames.iter().map(Frame::robot).collect() })
             .collect();
         let recognizer = Recognizer::train(&training, RecognizerConfig::default())?;
-        let motion = MotionTable::new(recognizer.motion_stats())?;
+        let motion = MotionTable::new(recognizer.motion_stats()).map_err(LearnError::from)?;
         Ok(Self { recognizer, motion, field, config })
     }
 

@@ -26,7 +26,7 @@ pub use ball_response::BallResponse;
 pub use behaviour::Behaviour;
 pub use config::{LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
 pub use control::{Attempt, ControlMode, ImitatorPolicy};
-pub use error::LearnError;
+pub use error::{LearnError, LearnParamsError};
 pub use laboratory::{
     Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, net_goals_of, pitch_of, summarise,
 };

@@ -9,7 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::behaviour::Behaviour;
 use crate::config::LearningConfig;
-use crate::error::LearnError;
+use crate::error::LearnParamsError;
 
 /// Mean and sd of each primitive's distance (mm) and rotation (rad), indexed by primitive.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -22,10 +22,13 @@ impl MotionTable {
     ///
     /// # Errors
     /// A primitive missing, or a statistic not finite.
-    pub fn new(stats: &[MotionStats]) -> Result<Self, LearnError> {
+    pub fn new(stats: &[MotionStats]) -> Result<Self, LearnParamsError> {
         let mut rows = Vec::with_capacity(5);
         for primitive in Primitive::ALL {
-            let s = stats.iter().find(|s| s.primitive == primitive).ok_or(LearnError::MotionStats(primitive.name()))?;
+            let s = stats
+                .iter()
+                .find(|s| s.primitive == primitive)
+                .ok_or(LearnParamsError::MotionStats(primitive.name()))?;
             let row = [
                 s.distance_mean_mm,
                 s.distance_sd_mm,
@@ -33,7 +36,7 @@ impl MotionTable {
                 s.rotation_sd_deg.to_radians(),
             ];
             if row.iter().any(|v| !v.is_finite()) {
-                return Err(LearnError::MotionStats(primitive.name()));
+                return Err(LearnParamsError::MotionStats(primitive.name()));
             }
             rows.push((primitive, row));
         }

@@ -111,12 +111,21 @@ fn bad_input_is_named() {
         let ordering: Vec<String> = ordering.iter().map(|s| (*s).to_owned()).collect();
         run_trial(demos, &ordering, &motion, config, PhaseOne::ByModel, 0)
     };
-    assert_eq!(run(&demos, &["z"], &config).unwrap_err(), LearnError::UnknownDemonstrator("z".to_owned()));
-    assert_eq!(run(&demos, &["a", "a"], &config).unwrap_err(), LearnError::DuplicateDemonstrator("a".to_owned()));
-    assert_eq!(run(&[], &["a"], &config).unwrap_err(), LearnError::NoDemonstrations);
-    assert_eq!(run(&demos, &[], &config).unwrap_err(), LearnError::EmptyOrdering);
+    assert_eq!(
+        run(&demos, &["z"], &config).unwrap_err(),
+        LearnError::Params(LearnParamsError::UnknownDemonstrator("z".to_owned()))
+    );
+    assert_eq!(
+        run(&demos, &["a", "a"], &config).unwrap_err(),
+        LearnError::Params(LearnParamsError::DuplicateDemonstrator("a".to_owned()))
+    );
+    assert_eq!(run(&[], &["a"], &config).unwrap_err(), LearnError::Params(LearnParamsError::NoDemonstrations));
+    assert_eq!(run(&demos, &[], &config).unwrap_err(), LearnError::Params(LearnParamsError::EmptyOrdering));
     let bad = LearningConfig { creation_threshold: 1.5, ..LearningConfig::default() };
-    assert!(matches!(run(&demos, &["a"], &bad).unwrap_err(), LearnError::Config { name: "creation_threshold", .. }));
+    assert!(matches!(
+        run(&demos, &["a"], &bad).unwrap_err(),
+        LearnError::Params(LearnParamsError::Config { name: "creation_threshold", .. })
+    ));
 }
 
 #[test]

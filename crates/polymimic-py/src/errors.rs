@@ -5,6 +5,7 @@
 
 use polymimic_field::FieldError;
 use polymimic_hmm::HmmError;
+use polymimic_learn::{LearnError, LearnParamsError};
 use polymimic_perceive::PerceiveError;
 use polymimic_vq::{VqError, VqParamsError};
 use pyo3::PyErr;
@@ -75,5 +76,17 @@ pub fn field_error(error: FieldError) -> PyErr {
     match error {
         FieldError::Param(e) => PyValueError::new_err(e.to_string()),
         other => FieldRunError::new_err(other.to_string()),
+    }
+}
+
+#[allow(clippy::needless_pass_by_value)] // used as `map_err(learn_params_error)`
+pub fn learn_params_error(error: LearnParamsError) -> PyErr {
+    PyValueError::new_err(error.to_string())
+}
+
+pub fn learn_error(error: LearnError) -> PyErr {
+    match error {
+        LearnError::Params(e) => learn_params_error(e),
+        LearnError::Corrupt(_) => ModelFileError::new_err(error.to_string()),
     }
 }

@@ -12,10 +12,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
 use crate::convert::{non_negative, one_of};
-
-fn value_error(e: impl std::fmt::Display) -> PyErr {
-    PyValueError::new_err(e.to_string())
-}
+use crate::errors::{learn_error, learn_params_error};
 
 /// The learning constants with their defaults, as JSON.
 #[pyfunction]
@@ -26,12 +23,15 @@ pub fn default_learning_config() -> String {
 /// Checks a learning config given as JSON; returns it with every field filled in.
 #[pyfunction]
 pub fn check_learning_config(config: &str) -> PyResult<String> {
-    Ok(LearningConfig::from_json(config).map_err(value_error)?.to_json())
+    Ok(LearningConfig::from_json(config).map_err(learn_params_error)?.to_json())
 }
 
 /// The config a call passes as JSON, or the defaults.
 fn learning_config(json: Option<&str>) -> PyResult<LearningConfig> {
-    json.map_or_else(|| Ok(LearningConfig::default()), |text| LearningConfig::from_json(text).map_err(value_error))
+    json.map_or_else(
+        || Ok(LearningConfig::default()),
+        |text| LearningConfig::from_json(text).map_err(learn_params_error),
+    )
 }
 
 fn motion_table(stats: &Bound<'_, PyDict>) -> PyResult<MotionTable> {
@@ -50,7 +50,7 @@ fn motion_table(stats: &Bound<'_, PyDict>) -> PyResult<MotionTable> {
             rotation_sd_deg: get("rotation_sd_deg")?,
         });
     }
-    MotionTable::new(&rows).map_err(value_error)
+    MotionTable::new(&rows).map_err(learn_params_error)
 }
 
 fn frame(row: &[f64]) -> TrackedFrame {
@@ -171,7 +171,7 @@ pub fn learning_trial<'py>(
         one_of("phase_one", phase_one, &[("by-model", PhaseOne::ByModel), ("interleaved", PhaseOne::Interleaved)])?;
     let motion = motion_table(motion_stats)?;
     let seed = non_negative("seed", seed)? as u64;
-    let result = py.detach(|| run_trial(&demos, &ordering, &motion, &config, phase_one, seed)).map_err(value_error)?;
+    let result = py.detach(|| run_trial(&demos, &ordering, &motion, &config, phase_one, seed)).map_err(learn_error)?;
     let out = PyDict::new(py);
     let models = PyList::empty(py);
     for model in &result.models {
@@ -211,8 +211,7 @@ impl PyImitatorPolicy {
     ) -> PyResult<Self> {
         let mode =
             one_of("control mode", control, &[("thesis", ControlMode::Thesis), ("improved", ControlMode::Improved)])?;
-        let model = ForwardModel::from_json(model)
-            .map_err(|e| crate::errors::ModelFileError::new_err(format!("imitator model: {e}")))?;
+        let model = ForwardModel::from_json(model).map_err(|e| learn_error(e.context("imitator model")))?;
         let config = learning_config(config)?;
         let motion = motion_table(motion_stats)?;
         let world = match (mode, demonstrations) {

@@ -211,13 +211,13 @@ impl Physics {
             b.set_next_kinematic_position(rpose(robot));
         }
         if let (Some((fh, fc)), Some((pose, active))) = (self.foot, foot) {
-            if let Some(c) = self.world.colliders.get_mut(fc) {
-                if c.is_enabled() != active {
-                    c.set_enabled(active);
-                    // Appear where the swing starts rather than sweeping there from anywhere.
-                    if let Some(b) = self.world.bodies.get_mut(fh) {
-                        b.set_position(rpose(pose), true);
-                    }
+            if let Some(c) = self.world.colliders.get_mut(fc)
+                && c.is_enabled() != active
+            {
+                c.set_enabled(active);
+                // Appear where the swing starts rather than sweeping there from anywhere.
+                if let Some(b) = self.world.bodies.get_mut(fh) {
+                    b.set_position(rpose(pose), true);
                 }
             }
             if let Some(b) = self.world.bodies.get_mut(fh) {

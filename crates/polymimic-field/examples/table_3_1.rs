@@ -16,20 +16,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let stats = primitive_stats(&pooled);
     println!("primitive  n       distance mm (sd)   thesis          rotation deg (sd)  thesis");
-    for (p, t) in THESIS_TABLE_3_1.iter().copied().chain([(Primitive::Stop, stats[4])]) {
+    for t in THESIS_TABLE_3_1.iter().copied().chain([stats[Primitive::Stop.index()]]) {
+        let p = t.primitive;
         let s = stats[p.index()];
         println!(
             "{:9} {:6}  {:7.2} ({:5.2})   {:7.2} ({:5.2})   {:7.2} ({:5.2})   {:7.2} ({:5.2})",
             p.name(),
-            s.n,
+            s.count,
             s.distance_mean_mm,
             s.distance_sd_mm,
             t.distance_mean_mm,
             t.distance_sd_mm,
-            s.rotation_mean_rad.to_degrees(),
-            s.rotation_sd_rad.to_degrees(),
-            t.rotation_mean_rad.to_degrees(),
-            t.rotation_sd_rad.to_degrees(),
+            s.rotation_mean_deg,
+            s.rotation_sd_deg,
+            t.rotation_mean_deg,
+            t.rotation_sd_deg,
         );
     }
     Ok(())

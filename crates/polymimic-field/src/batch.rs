@@ -6,10 +6,11 @@
 use rayon::prelude::*;
 
 use crate::body::BodyKind;
-use crate::command::{Command, Primitive};
+use crate::command::Command;
 use crate::episode::Episode;
 use crate::error::{FieldError, FieldParamError};
 use crate::setup::{Configuration, EpisodeSetup, FieldConfig};
+use polymimic_types::Primitive;
 
 /// A fixed number of episode slots, each empty or holding an episode.
 pub struct EpisodeBatch {

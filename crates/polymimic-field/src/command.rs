@@ -1,70 +1,14 @@
 //! Commands: the imitator's five primitives, the Expert's wheel-speed language and the
 //! humanoid's language (Table 4.4), each with a stable numeric id and an equivalent primitive.
 
+use polymimic_types::{Primitive, capitalised};
 use serde::{Deserialize, Serialize};
 
-use crate::body::LEGO;
 use crate::error::FieldParamError;
 
-/// The imitator's primitives (§3.1.1). The discriminant is the command id.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[repr(u8)]
-pub enum Primitive {
-    /// Both wheels forward.
-    Forward = 0,
-    /// Both wheels backward.
-    Backward = 1,
-    /// Spin counter-clockwise.
-    Left = 2,
-    /// Spin clockwise.
-    Right = 3,
-    /// Motors off.
-    Stop = 4,
-}
-
-impl Primitive {
-    /// All five, in id order.
-    pub const ALL: [Primitive; 5] =
-        [Primitive::Forward, Primitive::Backward, Primitive::Left, Primitive::Right, Primitive::Stop];
-
-    /// Position in [`Primitive::ALL`] (also the command id).
-    #[must_use]
-    pub const fn index(self) -> usize {
-        self as usize
-    }
-
-    /// One-letter name: F B L R S.
-    #[must_use]
-    pub const fn letter(self) -> char {
-        match self {
-            Primitive::Forward => 'F',
-            Primitive::Backward => 'B',
-            Primitive::Left => 'L',
-            Primitive::Right => 'R',
-            Primitive::Stop => 'S',
-        }
-    }
-
-    /// Full name.
-    #[must_use]
-    pub const fn name(self) -> &'static str {
-        match self {
-            Primitive::Forward => "forward",
-            Primitive::Backward => "backward",
-            Primitive::Left => "left",
-            Primitive::Right => "right",
-            Primitive::Stop => "stop",
-        }
-    }
-
-    /// The primitive at an index of [`Primitive::ALL`].
-    ///
-    /// # Errors
-    /// `UnknownCommand` for an index of 5 or more.
-    pub fn from_index(index: usize) -> Result<Self, FieldParamError> {
-        Primitive::ALL.get(index).copied().ok_or(FieldParamError::UnknownCommand(index.min(u16::MAX as usize) as u16))
-    }
-}
+/// The Lego body's wheel base, mm: the Expert's wheel speeds are written for it, and its
+/// equivalent primitives are read through it.
+pub(crate) const LEGO_WHEEL_BASE_MM: f64 = 175.0;
 
 /// The Expert's command language: named wheel-speed pairs (left, right), mm/s, for the Lego body.
 /// The thesis's RC2004 controller used over a hundred; 35 cover straights, spins, nudges, pivots
@@ -295,7 +239,7 @@ pub enum Language {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 pub enum Command {
     /// An imitator primitive; each wheeled body maps it to its own wheel speeds.
-    Primitive(Primitive),
+    Primitive(#[serde(with = "capitalised")] Primitive),
     /// A command of the Expert's language (Lego body only).
     Expert(ExpertCommand),
     /// A command of the humanoid's language (humanoid body only).
@@ -323,7 +267,7 @@ impl Command {
     pub fn from_id(id: u16) -> Result<Self, FieldParamError> {
         let unknown = FieldParamError::UnknownCommand(id);
         match id {
-            0..=4 => Primitive::from_index(usize::from(id)).map(Command::Primitive),
+            0..=4 => Primitive::from_index(usize::from(id)).map(Command::Primitive).ok_or(unknown),
             EXPERT_ID_BASE..HUMANOID_ID_BASE => {
                 ExpertCommand::from_index(usize::from(id - 100)).map(Command::Expert).map_err(|_| unknown)
             }
@@ -392,7 +336,7 @@ impl From<ExpertCommand> for Command {
 /// own (Table 3.1: about 45 mm and 30° per second).
 fn primitive_of_wheels(left_mm_s: f64, right_mm_s: f64) -> Primitive {
     let v_mm_s = 0.5 * (left_mm_s + right_mm_s);
-    let omega_deg_s = (right_mm_s - left_mm_s) / LEGO.wheel_base_mm * 180.0 / std::f64::consts::PI;
+    let omega_deg_s = (right_mm_s - left_mm_s) / LEGO_WHEEL_BASE_MM * 180.0 / std::f64::consts::PI;
     let (lin, rot) = (v_mm_s.abs() / 45.0, omega_deg_s.abs() / 30.0);
     if lin < 0.1 && rot < 0.1 {
         Primitive::Stop
@@ -415,6 +359,7 @@ pub struct CommandInfo {
     /// Language.
     pub language: Language,
     /// Equivalent imitator primitive.
+    #[serde(with = "capitalised")]
     pub primitive: Primitive,
 }
 
@@ -453,6 +398,15 @@ mod tests {
         let ok: Command = serde_json::from_str(r#"{"Expert":3}"#).expect("valid index");
         assert_eq!(ok.id(), 103);
         assert!(serde_json::from_str::<Command>(r#"{"Expert":200}"#).is_err());
+    }
+
+    #[test]
+    fn primitives_keep_their_capitalised_spelling_in_commands() {
+        let text = serde_json::to_string(&Command::Primitive(Primitive::Forward)).expect("unit");
+        assert_eq!(text, r#"{"Primitive":"Forward"}"#);
+        assert_eq!(serde_json::from_str::<Command>(&text).expect("valid"), Command::Primitive(Primitive::Forward));
+        let row = serde_json::to_string(&command_table()[3]).expect("plain data");
+        assert_eq!(row, r#"{"id":3,"name":"right","language":"Primitive","primitive":"Right"}"#);
     }
 
     #[test]

@@ -1,12 +1,13 @@
 //! One episode: a body (and maybe a ball) on the field, stepped one tracker frame at a time by
 //! whoever chooses the commands: a built-in controller or an external policy.
 
+use polymimic_types::{Point, Pose};
 use serde::{Deserialize, Serialize};
 
 use crate::body::{Body, BodyKind};
 use crate::command::Command;
 use crate::error::{FieldError, FieldParamError};
-use crate::geometry::{FieldGeometry, Point, Pose};
+use crate::geometry::FieldGeometry;
 use crate::math::{Rng, rng, stream};
 use crate::physics::{Physics, Scene};
 use crate::setup::{EpisodeSetup, FieldConfig};
@@ -250,11 +251,11 @@ impl Episode {
         let ball = m.ball.unwrap_or(Point::new(f64::NAN, f64::NAN));
         Frame {
             t_s: self.t_s,
-            robot_x_mm: m.robot.x_mm,
-            robot_y_mm: m.robot.y_mm,
-            robot_theta_rad: m.robot.theta_rad,
-            ball_x_mm: ball.x_mm,
-            ball_y_mm: ball.y_mm,
+            robot_x_mm: m.robot.x_mm(),
+            robot_y_mm: m.robot.y_mm(),
+            robot_theta_rad: m.robot.theta_rad(),
+            ball_x_mm: ball.x_mm(),
+            ball_y_mm: ball.y_mm(),
             command: command.id(),
         }
     }
@@ -336,33 +337,33 @@ fn check_on_field(field: &FieldGeometry, what: &'static str, p: Point, finite: b
     if finite && field.contains(p) {
         Ok(())
     } else {
-        Err(FieldParamError::OutsideField { what, x_mm: p.x_mm, y_mm: p.y_mm })
+        Err(FieldParamError::OutsideField { what, x_mm: p.x_mm(), y_mm: p.y_mm() })
     }
 }
 
 /// Did the ball leave the field between two positions, and how?
 fn ball_outcome(field: &FieldGeometry, before: Point, now: Point) -> Option<Outcome> {
     let (hl, hw) = (field.half_length_mm(), field.half_width_mm());
-    if now.x_mm.abs() > hl {
-        let line = hl.copysign(now.x_mm);
-        let dx = now.x_mm - before.x_mm;
-        let f = if dx.abs() > 0.0 { ((line - before.x_mm) / dx).clamp(0.0, 1.0) } else { 1.0 };
-        let y_cross = before.y_mm + f * (now.y_mm - before.y_mm);
+    if now.x_mm().abs() > hl {
+        let line = hl.copysign(now.x_mm());
+        let dx = now.x_mm() - before.x_mm();
+        let f = if dx.abs() > 0.0 { ((line - before.x_mm()) / dx).clamp(0.0, 1.0) } else { 1.0 };
+        let y_cross = before.y_mm() + f * (now.y_mm() - before.y_mm());
         return Some(if y_cross.abs() <= field.goal_half_mouth_mm() {
-            if now.x_mm > 0.0 { Outcome::Goal } else { Outcome::OwnGoal }
+            if now.x_mm() > 0.0 { Outcome::Goal } else { Outcome::OwnGoal }
         } else {
             Outcome::BallOut
         });
     }
-    (now.y_mm.abs() > hw).then_some(Outcome::BallOut)
+    (now.y_mm().abs() > hw).then_some(Outcome::BallOut)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::command::Primitive;
     use crate::geometry::FieldSize;
     use crate::setup::Configuration;
+    use polymimic_types::Primitive;
 
     #[test]
     fn ball_crossing_inside_the_mouth_is_a_goal() {
@@ -418,12 +419,12 @@ mod tests {
     fn bad_setups_are_parameter_errors() {
         let config = FieldConfig::default();
         let mut setup = EpisodeSetup::alone(BodyKind::Lego);
-        setup.robot.x_mm = 2000.0;
+        setup.robot = Pose::new(2000.0, setup.robot.y_mm(), setup.robot.theta_rad());
         assert!(matches!(
             Episode::new(&setup, &config, 0),
             Err(FieldError::Param(FieldParamError::OutsideField { .. }))
         ));
-        setup.robot.x_mm = f64::NAN;
+        setup.robot = Pose::new(f64::NAN, setup.robot.y_mm(), setup.robot.theta_rad());
         assert!(Episode::new(&setup, &config, 0).is_err());
         let setup = EpisodeSetup::alone(BodyKind::Humanoid);
         let mut e = Episode::new(&setup, &config, 0).expect("valid");

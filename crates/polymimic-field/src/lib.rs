@@ -56,15 +56,17 @@ mod tracker;
 
 pub use batch::EpisodeBatch;
 pub use body::BodyKind;
-pub use command::{Command, CommandInfo, ExpertCommand, HumanoidCommand, Language, Primitive, command_table};
+pub use command::{Command, CommandInfo, ExpertCommand, HumanoidCommand, Language, command_table};
 pub use controller::Controller;
 pub use demonstrate::{Demonstration, Demonstrator, demonstrate, record, record_all};
 pub use episode::{Episode, Observation, Outcome, StepResult};
 pub use error::{FieldError, FieldParamError};
-pub use geometry::{FieldGeometry, FieldSize, Point, Pose};
-pub use math::{derive_seed, wrap_angle_rad};
+pub use geometry::{FieldGeometry, FieldSize};
+pub use math::derive_seed;
 pub use physics::BallParams;
+/// The domain types the field shares with every crate, re-exported for the field's users.
+pub use polymimic_types::{MotionStats, Point, Pose, Primitive, TrackedFrame, wrap_angle_rad};
 pub use record::{PrimitiveSequence, run_controller, self_observation, self_observation_batch};
 pub use setup::{Configuration, EpisodeSetup, FieldConfig};
-pub use stats::{MotionStats, THESIS_TABLE_3_1, primitive_motion, primitive_stats};
+pub use stats::{THESIS_TABLE_3_1, primitive_motion, primitive_stats};
 pub use tracker::{FRAME_DT_S, FRAME_RATE_HZ, Frame, TrackerConfig};

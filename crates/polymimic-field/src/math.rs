@@ -1,6 +1,8 @@
 //! Portable maths: transcendental functions from `libm` (bit-identical on every platform, unlike
-//! the system libm behind `f64::sin`), angle wrapping, seed derivation and Gaussian draws.
+//! the system libm behind `f64::sin`), seed derivation and Gaussian draws. Angles wrap with
+//! `polymimic_types::wrap_angle_rad`.
 
+pub use polymimic_types::wrap_angle_rad;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -15,36 +17,13 @@ pub(crate) fn cos(x: f64) -> f64 {
     libm::cos(x)
 }
 
-pub(crate) fn atan2(y: f64, x: f64) -> f64 {
-    libm::atan2(y, x)
-}
-
 pub(crate) fn exp(x: f64) -> f64 {
     libm::exp(x)
-}
-
-pub(crate) fn hypot(x: f64, y: f64) -> f64 {
-    libm::hypot(x, y)
 }
 
 /// Degrees to radians (for constants written in the thesis's degrees).
 pub(crate) const fn deg(x: f64) -> f64 {
     x * PI / 180.0
-}
-
-/// Wrap an angle into (−π, π].
-#[must_use]
-pub fn wrap_angle_rad(a: f64) -> f64 {
-    if !a.is_finite() {
-        return a;
-    }
-    let mut w = a % TAU;
-    if w <= -PI {
-        w += TAU;
-    } else if w > PI {
-        w -= TAU;
-    }
-    w
 }
 
 /// `splitmix64`: a well-mixed 64-bit hash, used to derive independent seeds from (seed, index).
@@ -95,17 +74,6 @@ pub(crate) fn gaussian(rng: &mut Rng) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn wrap_angle_stays_in_half_open_interval() {
-        for k in -20..=20 {
-            let a = f64::from(k) * 0.7;
-            let w = wrap_angle_rad(a);
-            assert!(w > -PI && w <= PI, "{a} -> {w}");
-            assert!((sin(w) - sin(a)).abs() < 1e-12 && (cos(w) - cos(a)).abs() < 1e-12);
-        }
-        assert!((wrap_angle_rad(-PI) - PI).abs() < 1e-15);
-    }
 
     #[test]
     fn derived_seeds_differ_by_index_and_stream() {

@@ -3,6 +3,7 @@
 //! kinematic collider switched on only while it swings. Units are mm and s; rapier's tolerances
 //! are scaled to the ball through `length_unit`.
 
+use polymimic_types::{Point, Pose};
 use rapier2d::math::Pose as RPose;
 use rapier2d::prelude::{
     ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBody, RigidBodyBuilder, RigidBodyHandle, Vector,
@@ -10,7 +11,6 @@ use rapier2d::prelude::{
 use serde::{Deserialize, Serialize};
 
 use crate::error::{FieldParamError, check_range};
-use crate::geometry::{Point, Pose};
 use crate::math::{Rng, cos, gaussian, sin};
 
 /// Ball material and rolling resistance.
@@ -46,8 +46,9 @@ impl BallParams {
     }
 }
 
+/// A pose as rapier takes it (glam, f32): the one place our poses cross into the physics.
 fn rpose(p: Pose) -> RPose {
-    RPose::new(Vector::new(p.x_mm as f32, p.y_mm as f32), p.theta_rad as f32)
+    RPose::new(Vector::new(p.x_mm() as f32, p.y_mm() as f32), p.theta_rad() as f32)
 }
 
 /// What the physics world starts with.
@@ -98,7 +99,7 @@ impl Physics {
         let r = (ball_diameter_mm / 2.0) as f32;
         let (ball_h, _) = world.insert(
             RigidBodyBuilder::dynamic()
-                .translation(Vector::new(ball.x_mm as f32, ball.y_mm as f32))
+                .translation(Vector::new(ball.x_mm() as f32, ball.y_mm() as f32))
                 .linear_damping(ball_params.linear_damping_per_s as f32)
                 // A ball rolling on the floor does not spin about the vertical axis.
                 .lock_rotations(),
@@ -166,10 +167,8 @@ impl Physics {
     /// The gap between the ball's surface and the robot's footprint, mm (negative if they
     /// overlap).
     fn gap_mm(&self, robot: Pose) -> f64 {
-        let ball = self.ball();
-        let (s, c) = (sin(robot.theta_rad), cos(robot.theta_rad));
-        let (dx, dy) = (ball.x_mm - robot.x_mm, ball.y_mm - robot.y_mm);
-        let (along, across) = (c * dx + s * dy, -s * dx + c * dy);
+        let ball = robot.robot_from_field(self.ball());
+        let (along, across) = (ball.x_mm(), ball.y_mm());
         let outside_x = (along.abs() - self.robot_half_mm.0).max(0.0);
         let outside_y = (across.abs() - self.robot_half_mm.1).max(0.0);
         outside_x.hypot(outside_y) - self.ball_radius_mm
@@ -212,13 +211,13 @@ impl Physics {
             b.set_next_kinematic_position(rpose(robot));
         }
         if let (Some((fh, fc)), Some((pose, active))) = (self.foot, foot) {
-            if let Some(c) = self.world.colliders.get_mut(fc) {
-                if c.is_enabled() != active {
-                    c.set_enabled(active);
-                    // Appear where the swing starts rather than sweeping there from anywhere.
-                    if let Some(b) = self.world.bodies.get_mut(fh) {
-                        b.set_position(rpose(pose), true);
-                    }
+            if let Some(c) = self.world.colliders.get_mut(fc)
+                && c.is_enabled() != active
+            {
+                c.set_enabled(active);
+                // Appear where the swing starts rather than sweeping there from anywhere.
+                if let Some(b) = self.world.bodies.get_mut(fh) {
+                    b.set_position(rpose(pose), true);
                 }
             }
             if let Some(b) = self.world.bodies.get_mut(fh) {
@@ -287,8 +286,8 @@ mod tests {
             p.step();
         }
         let b = p.ball();
-        assert!(b.x_mm > 60.0, "{b:?}");
-        assert!(b.y_mm.abs() < 5.0, "{b:?}");
+        assert!(b.x_mm() > 60.0, "{b:?}");
+        assert!(b.y_mm().abs() < 5.0, "{b:?}");
         assert!(p.ball_speed_mm_s() > 10.0);
     }
 

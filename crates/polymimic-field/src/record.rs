@@ -1,10 +1,10 @@
 //! Recording: self-observation data (§3.1.1) and demonstrations (§3.2.1).
 
+use polymimic_types::Primitive;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::body::BodyKind;
-use crate::command::Primitive;
 use crate::controller::{Babbler, Controller};
 use crate::episode::Episode;
 use crate::error::FieldError;
@@ -16,6 +16,7 @@ use crate::tracker::Frame;
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PrimitiveSequence {
     /// The primitive commanded.
+    #[serde(with = "polymimic_types::capitalised")]
     pub primitive: Primitive,
     /// Its 30 frames, from the frame at which the command started.
     pub frames: Vec<Frame>,

@@ -1,11 +1,12 @@
 //! Episode set-ups: simulation parameters, the two field configurations (Fig 4.4) and start
 //! states.
 
+use polymimic_types::{Point, Pose};
 use serde::{Deserialize, Serialize};
 
 use crate::body::BodyKind;
 use crate::error::{FieldParamError, check_range};
-use crate::geometry::{FieldGeometry, Point, Pose};
+use crate::geometry::FieldGeometry;
 use crate::physics::BallParams;
 use crate::tracker::TrackerConfig;
 
@@ -134,14 +135,14 @@ mod tests {
     fn configurations_follow_fig_4_4() {
         let f = FieldGeometry::of(FieldSize::Large);
         let (r1, b1) = Configuration::One.start(&f);
-        assert!((r1.x_mm + 170.0).abs() < 1e-9 && (b1.x_mm - 170.0).abs() < 1e-9);
+        assert!((r1.x_mm() + 170.0).abs() < 1e-9 && (b1.x_mm() - 170.0).abs() < 1e-9);
         assert!(r1.relative_bearing_rad(b1).abs() < 1e-12);
         let (r2, b2) = Configuration::Two.start(&f);
-        assert!(b2.x_mm < 0.0 && r2.x_mm > 0.0);
+        assert!(b2.x_mm() < 0.0 && r2.x_mm() > 0.0);
         assert!(r2.relative_bearing_rad(b2).abs() < 1e-9);
         let s = FieldGeometry::of(FieldSize::Small);
         let (r, _) = Configuration::One.start(&s);
-        assert!((r.x_mm + 560.0 / 6.0).abs() < 1e-9);
+        assert!((r.x_mm() + 560.0 / 6.0).abs() < 1e-9);
     }
 
     #[test]

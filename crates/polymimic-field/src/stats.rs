@@ -1,43 +1,30 @@
 //! Motion statistics of one-second primitives (Table 3.1): distance along the initial heading
-//! and heading change, from tracker frames.
+//! and heading change, from tracker frames, with the field's maths (`libm`, the exact wrap).
 
-use serde::{Deserialize, Serialize};
+use polymimic_types::{MotionStats, Primitive, wrap_angle_rad};
 
-use crate::command::Primitive;
-use crate::math::{cos, deg, sin, wrap_angle_rad};
+use crate::math::deg;
 use crate::record::PrimitiveSequence;
 use crate::tracker::Frame;
 
-/// Mean and sd of a primitive's one-second motion.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct MotionStats {
-    /// Sequences measured.
-    pub n: usize,
-    /// Mean signed distance along the initial heading, mm.
-    pub distance_mean_mm: f64,
-    /// Sample sd of the distance, mm.
-    pub distance_sd_mm: f64,
-    /// Mean heading change, rad.
-    pub rotation_mean_rad: f64,
-    /// Sample sd of the heading change, rad.
-    pub rotation_sd_rad: f64,
-}
-
-/// Table 3.1 of the thesis for F B L R: distance mean, sd (mm); rotation mean, sd (rad).
-pub const THESIS_TABLE_3_1: [(Primitive, MotionStats); 4] = [
-    (Primitive::Forward, thesis(42.25, 12.98, -1.15, 0.57)),
-    (Primitive::Backward, thesis(-48.58, 12.33, 2.29, 12.6)),
-    (Primitive::Left, thesis(3.95, 5.16, 30.37, 18.33)),
-    (Primitive::Right, thesis(3.28, 4.46, -29.22, 8.59)),
+/// Table 3.1 of the thesis for F B L R (1000 sequences each). The rotations are the thesis's
+/// degrees read back through the radians the field always held them in (12.6° comes back as
+/// 12.599999999999998°), so that every consumer sees the bits it always did.
+pub const THESIS_TABLE_3_1: [MotionStats; 4] = [
+    thesis(Primitive::Forward, 42.25, 12.98, -1.15, 0.57),
+    thesis(Primitive::Backward, -48.58, 12.33, 2.29, 12.6),
+    thesis(Primitive::Left, 3.95, 5.16, 30.37, 18.33),
+    thesis(Primitive::Right, 3.28, 4.46, -29.22, 8.59),
 ];
 
-const fn thesis(d: f64, d_sd: f64, r_deg: f64, r_sd_deg: f64) -> MotionStats {
+const fn thesis(primitive: Primitive, d: f64, d_sd: f64, r_deg: f64, r_sd_deg: f64) -> MotionStats {
     MotionStats {
-        n: 1000,
+        primitive,
+        count: 1000,
         distance_mean_mm: d,
         distance_sd_mm: d_sd,
-        rotation_mean_rad: deg(r_deg),
-        rotation_sd_rad: deg(r_sd_deg),
+        rotation_mean_deg: deg(r_deg).to_degrees(),
+        rotation_sd_deg: deg(r_sd_deg).to_degrees(),
     }
 }
 
@@ -50,9 +37,8 @@ pub fn primitive_motion(frames: &[Frame]) -> Option<(f64, f64)> {
         return None;
     }
     let (a, b) = (first.robot(), last.robot());
-    let (dx, dy) = (b.x_mm - a.x_mm, b.y_mm - a.y_mm);
-    let distance = dx * cos(a.theta_rad) + dy * sin(a.theta_rad);
-    let rotation = wrap_angle_rad(b.theta_rad - a.theta_rad);
+    let distance = a.point().to(b.point()).dot(&a.heading());
+    let rotation = wrap_angle_rad(b.theta_rad() - a.theta_rad());
     (distance.is_finite() && rotation.is_finite()).then_some((distance, rotation))
 }
 
@@ -68,6 +54,7 @@ fn mean_sd(xs: &[f64]) -> (f64, f64) {
 }
 
 /// Table 3.1 for every primitive (indexed by [`Primitive::index`]) from labelled sequences.
+/// Rotations are averaged in radians, then given in degrees.
 #[must_use]
 pub fn primitive_stats(sequences: &[PrimitiveSequence]) -> [MotionStats; 5] {
     Primitive::ALL.map(|p| {
@@ -76,11 +63,12 @@ pub fn primitive_stats(sequences: &[PrimitiveSequence]) -> [MotionStats; 5] {
         let (dm, ds) = mean_sd(&dist);
         let (rm, rs) = mean_sd(&rot);
         MotionStats {
-            n: dist.len(),
+            primitive: p,
+            count: dist.len(),
             distance_mean_mm: dm,
             distance_sd_mm: ds,
-            rotation_mean_rad: rm,
-            rotation_sd_rad: rs,
+            rotation_mean_deg: rm.to_degrees(),
+            rotation_sd_deg: rs.to_degrees(),
         }
     })
 }
@@ -110,6 +98,23 @@ mod tests {
         let back = [frame(0.0, 0.0, 0.0), frame(-20.0, 0.0, 0.0)];
         assert!((primitive_motion(&back).expect("ok").0 + 20.0).abs() < 1e-12);
         assert!(primitive_motion(&f[..1]).is_none());
+    }
+
+    #[test]
+    fn distance_keeps_the_fields_order_of_operations() {
+        let f = [frame(1.0, 2.0, 0.7), frame(35.5, 20.25, 0.9)];
+        let (d, _) = primitive_motion(&f).expect("two frames");
+        let (dx, dy) = (35.5 - 1.0, 20.25 - 2.0);
+        assert_eq!(d.to_bits(), (dx * libm::cos(0.7) + dy * libm::sin(0.7)).to_bits());
+    }
+
+    #[test]
+    fn thesis_rotations_read_back_through_radians() {
+        let backward = THESIS_TABLE_3_1[1];
+        assert_eq!(backward.primitive, Primitive::Backward);
+        assert_eq!(backward.rotation_sd_deg, (12.6 * std::f64::consts::PI / 180.0).to_degrees());
+        assert!((backward.rotation_sd_deg - 12.6).abs() < 1e-12);
+        assert_eq!(THESIS_TABLE_3_1[0].rotation_mean_deg, -1.15);
     }
 
     #[test]

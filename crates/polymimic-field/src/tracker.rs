@@ -1,10 +1,10 @@
 //! The overhead tracker ("global vision", Ergo in the thesis): 30 frames/s of robot x, y, θ and
 //! ball x, y with jitter, rare interlacing spikes in the heading, and occasional dropouts.
 
+use polymimic_types::{Point, Pose, TrackedFrame};
 use serde::{Deserialize, Serialize};
 
 use crate::error::{FieldParamError, check_range};
-use crate::geometry::{Point, Pose};
 use crate::math::{Rng, deg, gaussian, uniform, wrap_angle_rad};
 
 /// Tracker frames per second (fixed: a one-second primitive is 30 frames).
@@ -39,6 +39,13 @@ impl Frame {
     #[must_use]
     pub fn robot(&self) -> Pose {
         Pose::new(self.robot_x_mm, self.robot_y_mm, self.robot_theta_rad)
+    }
+
+    /// The frame as the recogniser and the learner read it: the robot's pose and the ball's
+    /// position (NaN where not tracked), without the time and the command.
+    #[must_use]
+    pub fn tracked(&self) -> TrackedFrame {
+        TrackedFrame { robot: self.robot(), ball_x_mm: self.ball_x_mm, ball_y_mm: self.ball_y_mm }
     }
 
     /// The ball's tracked position, if there is one and it is tracked.
@@ -141,18 +148,18 @@ impl Tracker {
             let nan = Point::new(f64::NAN, f64::NAN);
             return Measurement { robot: Pose::new(f64::NAN, f64::NAN, f64::NAN), ball: ball.map(|_| nan), lost };
         }
-        let mut theta = robot.theta_rad + c.heading_sigma_rad * nt;
+        let mut theta = robot.theta_rad() + c.heading_sigma_rad * nt;
         if spike_u < c.spike_probability {
             let magnitude = c.spike_max_rad * (1.0 + 2.0 * spike_mag) / 3.0;
             theta += if spike_sign < 0.5 { -magnitude } else { magnitude };
         }
         Measurement {
             robot: Pose::new(
-                robot.x_mm + c.position_sigma_mm * nx,
-                robot.y_mm + c.position_sigma_mm * ny,
+                robot.x_mm() + c.position_sigma_mm * nx,
+                robot.y_mm() + c.position_sigma_mm * ny,
                 wrap_angle_rad(theta),
             ),
-            ball: ball.map(|b| Point::new(b.x_mm + c.position_sigma_mm * bx, b.y_mm + c.position_sigma_mm * by)),
+            ball: ball.map(|b| Point::new(b.x_mm() + c.position_sigma_mm * bx, b.y_mm() + c.position_sigma_mm * by)),
             lost,
         }
     }
@@ -183,8 +190,8 @@ mod tests {
         let (mut sx, mut st) = (0.0, 0.0);
         for _ in 0..n {
             let m = t.measure(Pose::default(), None);
-            sx += m.robot.x_mm * m.robot.x_mm;
-            st += m.robot.theta_rad * m.robot.theta_rad;
+            sx += m.robot.x_mm() * m.robot.x_mm();
+            st += m.robot.theta_rad() * m.robot.theta_rad();
         }
         let (sdx, sdt) = ((sx / f64::from(n)).sqrt(), (st / f64::from(n)).sqrt());
         assert!((sdx - 0.3).abs() < 0.01, "{sdx}");
@@ -196,7 +203,7 @@ mod tests {
         let cfg = TrackerConfig { loss_probability: 1.0, ..TrackerConfig::default() };
         let mut t = Tracker::new(cfg, rng(3, 0));
         let m = t.measure(Pose::default(), None);
-        assert!(m.lost && m.robot.x_mm.is_nan());
+        assert!(m.lost && m.robot.x_mm().is_nan());
         assert!(TrackerConfig { loss_probability: 2.0, ..cfg }.check().is_err());
     }
 }

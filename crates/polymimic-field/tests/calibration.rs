@@ -20,30 +20,27 @@ fn table(config: &FieldConfig, seeds: std::ops::Range<u64>) -> [MotionStats; 5] 
 
 fn report(label: &str, stats: &[MotionStats; 5]) {
     println!("{label}");
-    for (p, thesis) in THESIS_TABLE_3_1 {
+    for thesis in THESIS_TABLE_3_1 {
+        let p = thesis.primitive;
         let s = stats[p.index()];
         println!(
             "  {:9} n={:4}  dist {:7.2} ({:5.2}) mm [thesis {:7.2} ({:5.2})]  rot {:7.2} ({:5.2})° [thesis {:7.2} ({:5.2})]",
             p.name(),
-            s.n,
+            s.count,
             s.distance_mean_mm,
             s.distance_sd_mm,
             thesis.distance_mean_mm,
             thesis.distance_sd_mm,
-            s.rotation_mean_rad.to_degrees(),
-            s.rotation_sd_rad.to_degrees(),
-            thesis.rotation_mean_rad.to_degrees(),
-            thesis.rotation_sd_rad.to_degrees(),
+            s.rotation_mean_deg,
+            s.rotation_sd_deg,
+            thesis.rotation_mean_deg,
+            thesis.rotation_sd_deg,
         );
     }
     let s = stats[Primitive::Stop.index()];
     println!(
         "  stop      n={:4}  dist {:7.2} ({:5.2}) mm  rot {:7.2} ({:5.2})°",
-        s.n,
-        s.distance_mean_mm,
-        s.distance_sd_mm,
-        s.rotation_mean_rad.to_degrees(),
-        s.rotation_sd_rad.to_degrees()
+        s.count, s.distance_mean_mm, s.distance_sd_mm, s.rotation_mean_deg, s.rotation_sd_deg
     );
 }
 
@@ -60,14 +57,15 @@ fn lego_primitives_reproduce_table_3_1() {
     report("noiseless tracker, 20 sessions pooled (seeds 1-20)", &pooled);
     {
         let stats = pooled;
-        for (p, t) in THESIS_TABLE_3_1 {
+        for t in THESIS_TABLE_3_1 {
+            let p = t.primitive;
             let s = stats[p.index()];
-            assert_eq!(s.n, 20_000);
+            assert_eq!(s.count, 20_000);
             let name = p.name();
             assert!(within(s.distance_mean_mm, t.distance_mean_mm, 0.10), "{name} distance mean {s:?}");
             assert!(within(s.distance_sd_mm, t.distance_sd_mm, 0.35), "{name} distance sd {s:?}");
-            assert!(within(s.rotation_mean_rad, t.rotation_mean_rad, 0.10), "{name} rotation mean {s:?}");
-            assert!(within(s.rotation_sd_rad, t.rotation_sd_rad, 0.35), "{name} rotation sd {s:?}");
+            assert!(within(s.rotation_mean_deg, t.rotation_mean_deg, 0.10), "{name} rotation mean {s:?}");
+            assert!(within(s.rotation_sd_deg, t.rotation_sd_deg, 0.35), "{name} rotation sd {s:?}");
         }
     }
 }
@@ -76,13 +74,14 @@ fn lego_primitives_reproduce_table_3_1() {
 fn default_tracker_keeps_distances_and_adds_only_jitter_to_rotations() {
     let stats = table(&FieldConfig::default(), 100..101);
     report("default tracker, one session (seed 100)", &stats);
-    for (p, t) in THESIS_TABLE_3_1 {
+    for t in THESIS_TABLE_3_1 {
+        let p = t.primitive;
         let s = stats[p.index()];
         assert!(within(s.distance_mean_mm, t.distance_mean_mm, 0.20), "{p:?} {s:?}");
         assert!(within(s.distance_sd_mm, t.distance_sd_mm, 0.40), "{p:?} {s:?}");
         // Jitter (3°·√2) and spikes add in quadrature; the mean stays unbiased.
-        assert!((s.rotation_mean_rad - t.rotation_mean_rad).abs() < 1.0_f64.to_radians(), "{p:?} {s:?}");
-        let jitter = 3.0_f64.to_radians() * 2.0_f64.sqrt();
-        assert!(s.rotation_sd_rad > jitter * 0.9, "{p:?} {s:?}");
+        assert!((s.rotation_mean_deg - t.rotation_mean_deg).abs() < 1.0, "{p:?} {s:?}");
+        let jitter_deg = 3.0 * 2.0_f64.sqrt();
+        assert!(s.rotation_sd_deg > jitter_deg * 0.9, "{p:?} {s:?}");
     }
 }

@@ -35,9 +35,10 @@ pub use error::{HmmError, HmmParamsError};
 pub use forward_backward::MAX_STATES;
 pub use gaussian::{GaussianHmm, GaussianHmmParams, Parts};
 pub use init::segment_emissions;
-pub use model::{DiscreteHmm, Init, Sampled, check_sequences};
+pub use model::{DiscreteHmm, Init, check_sequences};
 pub use params::{HmmParams, ValidHmmParams};
 pub use probabilities::Probabilities;
+pub use sample::Sampled;
 pub use topology::Topology;
 
 #[cfg(test)]

@@ -10,10 +10,8 @@ use crate::forward_backward::{Lattice, WithLattice, symbol_table, with_lattice};
 use crate::init::segment_emissions;
 use crate::params::ValidHmmParams;
 use crate::probabilities::Probabilities;
+use crate::sample::{Sampled, sample};
 use crate::transitions::Transitions;
-
-/// Sampled sequences of symbols and the hidden states that emitted them.
-pub type Sampled = (Vec<Vec<u32>>, Vec<Vec<usize>>);
 
 /// Where training starts from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -189,7 +187,7 @@ impl DiscreteHmm {
         if length == 0 {
             return Err(HmmParamsError::ZeroLength(length).into());
         }
-        Ok(crate::sample::sample(probs, count, length, seed))
+        Ok(sample(probs, count, length, seed))
     }
 }
 

@@ -3,8 +3,10 @@
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
-use crate::model::Sampled;
 use crate::probabilities::Probabilities;
+
+/// Sampled sequences of symbols and the hidden states that emitted them.
+pub type Sampled = (Vec<Vec<u32>>, Vec<Vec<usize>>);
 
 /// `count` sequences of `length` symbols with their hidden states, reproducible from `seed`.
 pub(crate) fn sample(probs: &Probabilities, count: usize, length: usize, seed: u64) -> Sampled {

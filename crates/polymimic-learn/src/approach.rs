@@ -8,7 +8,7 @@ use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::f64::consts::TAU;
 
-use polymimic_perceive::{Pose, Primitive, TrackedFrame, wrap_angle_rad};
+use polymimic_types::{Pose, Primitive, TrackedFrame, wrap_angle_euclid_rad};
 
 use crate::prediction::MotionTable;
 use crate::push_region::{BallGoalPose, PushRegion};
@@ -57,18 +57,18 @@ fn centre(index: usize) -> BallGoalPose {
     BallGoalPose {
         along_mm: mm(index / bins / CELLS),
         across_mm: mm((index / bins) % CELLS),
-        heading_rad: wrap_angle_rad(bin / HEADING_BINS as f64 * TAU),
+        heading_rad: wrap_angle_euclid_rad(bin / HEADING_BINS as f64 * TAU),
     }
 }
 
 /// The ball–goal frame as a field of its own (the ball does not move), so the primitives'
 /// motion applies to it unchanged.
 fn as_pose(pose: &BallGoalPose) -> Pose {
-    Pose { x_mm: pose.along_mm, y_mm: pose.across_mm, theta_rad: pose.heading_rad }
+    Pose::new(pose.along_mm, pose.across_mm, pose.heading_rad)
 }
 
 fn from_pose(pose: Pose) -> BallGoalPose {
-    BallGoalPose { along_mm: pose.x_mm, across_mm: pose.y_mm, heading_rad: pose.theta_rad }
+    BallGoalPose { along_mm: pose.x_mm(), across_mm: pose.y_mm(), heading_rad: pose.theta_rad() }
 }
 
 /// What a move from `from` to `to` costs: one primitive, and [`CONTACT_COST`] more if on the
@@ -148,7 +148,7 @@ impl ApproachPlan {
             .into_iter()
             .filter(|&primitive| {
                 let robot = motion.mean_step(state.robot, primitive);
-                pitch.contains(robot.x_mm, robot.y_mm)
+                pitch.contains(robot.x_mm(), robot.y_mm())
             })
             .map(|primitive| {
                 let cost: f64 = motion
@@ -208,18 +208,15 @@ mod tests {
         let pitch = Pitch::LARGE;
         // Configuration 2: the ball before the robot's own goal, the robot facing it from the goal side.
         let ball = (-170.0, 0.0);
-        let mut state = TrackedFrame {
-            robot: Pose { x_mm: 170.0, y_mm: 0.0, theta_rad: std::f64::consts::PI },
-            ball_x_mm: ball.0,
-            ball_y_mm: ball.1,
-        };
+        let mut state =
+            TrackedFrame { robot: Pose::new(170.0, 0.0, std::f64::consts::PI), ball_x_mm: ball.0, ball_y_mm: ball.1 };
         let planned = plan.steps_from(&BallGoalPose::of(&state.robot, ball, &pitch)).expect("a route");
         let mut taken = 0;
         while let Some(primitive) = plan.next(&state, &motion, &pitch) {
             state.robot = motion.mean_step(state.robot, primitive);
             taken += 1;
             let pose = BallGoalPose::of(&state.robot, ball, &pitch);
-            assert!(pitch.contains(state.robot.x_mm, state.robot.y_mm));
+            assert!(pitch.contains(state.robot.x_mm(), state.robot.y_mm()));
             // Cells are judged by their centres, up to half a cell's diagonal away.
             assert!(
                 plan.steps_from(&pose) == Some(0) || pose.distance_mm() >= 170.0 - CELL_MM / 2.0_f64.sqrt(),

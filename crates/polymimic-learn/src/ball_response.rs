@@ -4,7 +4,8 @@
 //! sample: where the ball lay relative to the robot when the segment began, and how far it
 //! moved, in the robot's frame. A prediction averages the samples whose ball lay nearest.
 
-use polymimic_perceive::{Label, Pose, Primitive, TrackedFrame};
+use polymimic_perceive::Label;
+use polymimic_types::{Pose, Primitive, TrackedFrame};
 use serde::{Deserialize, Serialize};
 
 use crate::nearest::nearest;
@@ -19,12 +20,12 @@ const NEIGHBOURHOOD_MM: f64 = 50.0;
 
 /// A point in the robot's frame: ahead (+x) and to the left (+y) of it, mm.
 fn to_robot_frame(robot: &Pose, dx_mm: f64, dy_mm: f64) -> [f64; 2] {
-    let (sin, cos) = robot.theta_rad.sin_cos();
+    let (sin, cos) = robot.theta_rad().sin_cos();
     [cos * dx_mm + sin * dy_mm, -sin * dx_mm + cos * dy_mm]
 }
 
 fn to_field_frame(robot: &Pose, local: [f64; 2]) -> (f64, f64) {
-    let (sin, cos) = robot.theta_rad.sin_cos();
+    let (sin, cos) = robot.theta_rad().sin_cos();
     (cos * local[0] - sin * local[1], sin * local[0] + cos * local[1])
 }
 
@@ -57,8 +58,8 @@ impl BallResponse {
                 let (start, end) = (&segment.start, &segment.end);
                 let ball = to_robot_frame(
                     &start.robot,
-                    start.ball_x_mm - start.robot.x_mm,
-                    start.ball_y_mm - start.robot.y_mm,
+                    start.ball_x_mm - start.robot.x_mm(),
+                    start.ball_y_mm - start.robot.y_mm(),
                 );
                 let moved =
                     to_robot_frame(&start.robot, end.ball_x_mm - start.ball_x_mm, end.ball_y_mm - start.ball_y_mm);
@@ -82,7 +83,7 @@ impl BallResponse {
     #[must_use]
     pub fn predict(&self, state: &TrackedFrame, primitive: Primitive) -> (f64, f64) {
         let robot = &state.robot;
-        let here = to_robot_frame(robot, state.ball_x_mm - robot.x_mm, state.ball_y_mm - robot.y_mm);
+        let here = to_robot_frame(robot, state.ball_x_mm - robot.x_mm(), state.ball_y_mm - robot.y_mm());
         let Some(samples) = self.samples.get(primitive as usize).filter(|s| !s.is_empty()) else {
             return (state.ball_x_mm, state.ball_y_mm);
         };
@@ -110,13 +111,13 @@ mod tests {
 
     /// A robot facing +y pushes a ball lying 50 mm ahead of it 30 mm further along +y.
     fn pushes() -> SegmentedDemonstration {
-        let robot = Pose { x_mm: 0.0, y_mm: 0.0, theta_rad: std::f64::consts::FRAC_PI_2 };
+        let robot = Pose::new(0.0, 0.0, std::f64::consts::FRAC_PI_2);
         let segment = Segment {
             label: Label::Primitive(Primitive::Forward),
             first_frame: 0,
             last_frame: 30,
             start: frame(robot, (0.0, 50.0)),
-            end: frame(Pose { y_mm: 40.0, ..robot }, (0.0, 80.0)),
+            end: frame(Pose::new(robot.x_mm(), 40.0, robot.theta_rad()), (0.0, 80.0)),
             scores: [0.0; 4],
         };
         SegmentedDemonstration {
@@ -133,11 +134,11 @@ mod tests {
         assert_eq!(response.sample_count(Primitive::Forward), 1);
         // Facing +x with the ball 50 mm ahead: one sample of eight says the ball moves 30 mm
         // along +x, the seven missing say it stays: 30/8 mm.
-        let state = frame(Pose { x_mm: 100.0, y_mm: 0.0, theta_rad: 0.0 }, (150.0, 0.0));
+        let state = frame(Pose::new(100.0, 0.0, 0.0), (150.0, 0.0));
         let (x, y) = response.predict(&state, Primitive::Forward);
         assert!((x - (150.0 + 30.0 / 8.0)).abs() < 1e-9 && y.abs() < 1e-9, "({x}, {y})");
         // With the ball far from anything seen, nothing is known: it stays.
-        let far = frame(Pose { x_mm: 100.0, y_mm: 0.0, theta_rad: 0.0 }, (400.0, 0.0));
+        let far = frame(Pose::new(100.0, 0.0, 0.0), (400.0, 0.0));
         assert_eq!(response.predict(&far, Primitive::Forward), (400.0, 0.0));
         // No samples for a turn: the ball stays.
         assert_eq!(response.predict(&state, Primitive::Left), (150.0, 0.0));

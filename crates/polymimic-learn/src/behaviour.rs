@@ -1,6 +1,6 @@
 //! Behaviours: sequences of primitives with what they have been seen to do (thesis §3.3).
 
-use polymimic_perceive::{Primitive, TrackedFrame};
+use polymimic_types::{Primitive, TrackedFrame};
 use serde::{Deserialize, Serialize};
 
 use crate::config::LearningConfig;

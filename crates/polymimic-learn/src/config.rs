@@ -2,7 +2,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::error::LearnError;
+use crate::error::LearnParamsError;
 
 /// How the learning preference is kept within [0, 1].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -158,8 +158,8 @@ impl LearningConfig {
     ///
     /// # Errors
     /// Text that is not a config, or a value out of range.
-    pub fn from_json(text: &str) -> Result<Self, LearnError> {
-        let config: Self = serde_json::from_str(text).map_err(|e| LearnError::Parse(e.to_string()))?;
+    pub fn from_json(text: &str) -> Result<Self, LearnParamsError> {
+        let config: Self = serde_json::from_str(text).map_err(|e| LearnParamsError::Parse(e.to_string()))?;
         config.check()?;
         Ok(config)
     }
@@ -168,7 +168,7 @@ impl LearningConfig {
     ///
     /// # Errors
     /// Names the first field out of range.
-    pub fn check(&self) -> Result<(), LearnError> {
+    pub fn check(&self) -> Result<(), LearnParamsError> {
         let unit = [
             ("creation_threshold", self.creation_threshold),
             ("default_permanency", self.default_permanency),
@@ -179,7 +179,7 @@ impl LearningConfig {
         ];
         for (name, value) in unit {
             if !(0.0..=1.0).contains(&value) {
-                return Err(LearnError::Config { name, value, why: "must be in [0, 1]" });
+                return Err(LearnParamsError::Config { name, value, why: "must be in [0, 1]" });
             }
         }
         let positive = [
@@ -194,7 +194,7 @@ impl LearningConfig {
         ];
         for (name, value) in positive {
             if !(value.is_finite() && value > 0.0) {
-                return Err(LearnError::Config { name, value, why: "must be a finite number > 0" });
+                return Err(LearnParamsError::Config { name, value, why: "must be a finite number > 0" });
             }
         }
         let non_negative = [
@@ -208,11 +208,11 @@ impl LearningConfig {
         ];
         for (name, value) in non_negative {
             if !(value.is_finite() && value >= 0.0) {
-                return Err(LearnError::Config { name, value, why: "must be a finite number ≥ 0" });
+                return Err(LearnParamsError::Config { name, value, why: "must be a finite number ≥ 0" });
             }
         }
         if self.deletion_threshold >= self.default_permanency || self.default_permanency >= self.permanency_threshold {
-            return Err(LearnError::Config {
+            return Err(LearnParamsError::Config {
                 name: "default_permanency",
                 value: self.default_permanency,
                 why: "must lie strictly between deletion_threshold and permanency_threshold",

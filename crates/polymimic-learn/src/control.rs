@@ -11,7 +11,7 @@
 use polymimic_field::{
     BodyKind, Command, Configuration, Episode, EpisodeSetup, FieldConfig, FieldError, Frame, Outcome, derive_seed,
 };
-use polymimic_perceive::{Pose, Primitive, TrackedFrame};
+use polymimic_types::{Primitive, TrackedFrame};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
@@ -79,7 +79,7 @@ impl ImitatorPolicy<'_> {
         let behaviours = &self.model.behaviours;
         let mut stays = |i: &usize| {
             let first = self.motion.step(state.robot, behaviours[*i].primitives[0], f64::INFINITY, rng);
-            self.pitch.contains(first.x_mm, first.y_mm)
+            self.pitch.contains(first.x_mm(), first.y_mm())
         };
         let mut candidates: Vec<usize> = (0..behaviours.len())
             .filter(|&i| behaviours[i].applies_to(state, &self.pitch))
@@ -148,7 +148,7 @@ impl ImitatorPolicy<'_> {
         let mut now = *state;
         for (k, &primitive) in self.model.behaviours[index].primitives.iter().enumerate() {
             let robot = self.motion.step(now.robot, primitive, no_noise, &mut rng);
-            if !self.pitch.contains(robot.x_mm, robot.y_mm) {
+            if !self.pitch.contains(robot.x_mm(), robot.y_mm()) {
                 if k == 0 {
                     return None;
                 }
@@ -204,23 +204,12 @@ impl Rating {
     }
 }
 
-fn field_primitive(primitive: Primitive) -> polymimic_field::Primitive {
-    match primitive {
-        Primitive::Forward => polymimic_field::Primitive::Forward,
-        Primitive::Backward => polymimic_field::Primitive::Backward,
-        Primitive::Left => polymimic_field::Primitive::Left,
-        Primitive::Right => polymimic_field::Primitive::Right,
-        Primitive::Stop => polymimic_field::Primitive::Stop,
-    }
-}
-
 fn tracked(episode: &Episode, last_ball: &mut (f64, f64)) -> TrackedFrame {
     let seen = episode.observation();
     if let Some(ball) = seen.ball {
-        *last_ball = (ball.x_mm, ball.y_mm);
+        *last_ball = (ball.x_mm(), ball.y_mm());
     }
-    let robot = Pose { x_mm: seen.robot.x_mm, y_mm: seen.robot.y_mm, theta_rad: seen.robot.theta_rad };
-    TrackedFrame { robot, ball_x_mm: last_ball.0, ball_y_mm: last_ball.1 }
+    TrackedFrame { robot: seen.robot, ball_x_mm: last_ball.0, ball_y_mm: last_ball.1 }
 }
 
 impl ImitatorPolicy<'_> {
@@ -232,13 +221,13 @@ impl ImitatorPolicy<'_> {
         let setup = EpisodeSetup::configuration(BodyKind::Lego, configuration, field);
         let mut episode = Episode::new(&setup, field, seed)?;
         let mut rng = ChaCha8Rng::seed_from_u64(derive_seed(seed, 7, 0));
-        let mut last_ball = setup.ball.map_or((0.0, 0.0), |b| (b.x_mm, b.y_mm));
+        let mut last_ball = setup.ball.map_or((0.0, 0.0), |b| (b.x_mm(), b.y_mm()));
         let mut executed = Vec::new();
         while !episode.is_finished() {
             let state = tracked(&episode, &mut last_ball);
             if self.mode == ControlMode::Improved {
                 let primitive = self.choose_primitive(&state).unwrap_or(Primitive::Stop);
-                executed.push(primitive.letter().to_owned());
+                executed.push(primitive.letter().to_string());
                 run_primitive(&mut episode, primitive)?;
                 continue;
             }
@@ -255,7 +244,7 @@ impl ImitatorPolicy<'_> {
                 }
                 let now = tracked(&episode, &mut last_ball).robot;
                 let next = self.motion.step(now, primitive, f64::INFINITY, &mut rng);
-                if k > 0 && !self.pitch.contains(next.x_mm, next.y_mm) {
+                if k > 0 && !self.pitch.contains(next.x_mm(), next.y_mm()) {
                     break;
                 }
                 run_primitive(&mut episode, primitive)?;
@@ -301,7 +290,7 @@ fn run_primitive(episode: &mut Episode, primitive: Primitive) -> Result<(), Fiel
         if episode.is_finished() {
             break;
         }
-        episode.step(Command::Primitive(field_primitive(primitive)))?;
+        episode.step(Command::Primitive(primitive))?;
     }
     Ok(())
 }

@@ -1,9 +1,10 @@
-//! Errors of learning.
+//! Errors of learning: bad parameters apart from failures at run time.
 
 use thiserror::Error;
 
+/// A config, ordering, demonstration set or motion table that can never be valid.
 #[derive(Debug, Clone, PartialEq, Error)]
-pub enum LearnError {
+pub enum LearnParamsError {
     #[error("config: {name} = {value} {why}")]
     Config { name: &'static str, value: f64, why: &'static str },
     #[error("ordering names {0:?}, which has no demonstrations")]
@@ -18,4 +19,43 @@ pub enum LearnError {
     Parse(String),
     #[error("primitive motion statistics are missing or not finite for {0}")]
     MotionStats(&'static str),
+}
+
+/// A failure found while running: a parameter error, or a saved model that does not load.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum LearnError {
+    #[error(transparent)]
+    Params(#[from] LearnParamsError),
+    /// A saved forward model of another format or version, or of the wrong shape.
+    #[error("{0}")]
+    Corrupt(String),
+}
+
+impl LearnError {
+    /// The same error, a corrupt file's message prefixed with what was being read.
+    #[must_use]
+    pub fn context(self, what: &str) -> Self {
+        match self {
+            Self::Corrupt(why) => Self::Corrupt(format!("{what}: {why}")),
+            params @ Self::Params(_) => params,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn parameter_errors_read_the_same_through_the_run_time_error() {
+        let e = LearnError::from(LearnParamsError::UnknownDemonstrator("poor".to_owned()));
+        assert_eq!(e.to_string(), "ordering names \"poor\", which has no demonstrations");
+        assert_eq!(e.clone().context("imitator model"), e);
+    }
+
+    #[test]
+    fn context_names_what_a_corrupt_file_was() {
+        let e = LearnError::Corrupt("not a saved polymimic file".to_owned()).context("imitator model");
+        assert_eq!(e.to_string(), "imitator model: not a saved polymimic file");
+    }
 }

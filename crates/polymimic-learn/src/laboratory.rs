@@ -4,10 +4,8 @@
 //! same steps at scale; this is the quick path for studying learning itself.
 
 use polymimic_field::{Demonstrator, FieldConfig, FieldError, Frame, Outcome, record_all, self_observation};
-use polymimic_perceive::{
-    LabelledSequence, PerceiveError, Pose, Primitive, Recognizer, RecognizerConfig, SegmenterConfig, TrackedFrame,
-    segment,
-};
+use polymimic_perceive::{LabelledSequence, PerceiveError, Recognizer, RecognizerConfig, SegmenterConfig, segment};
+use polymimic_types::TrackedFrame;
 use thiserror::Error;
 
 use crate::average::AverageSearch;
@@ -35,10 +33,6 @@ pub enum LaboratoryError {
         "no imitator of {tried} trials, with tracking held in enough attempts, scored net goals (goals less own goals) between the Poor's {poor} and the Expert's {expert}"
     )]
     NoAverage { tried: usize, poor: i64, expert: i64 },
-}
-
-fn pose(f: &Frame) -> Pose {
-    Pose { x_mm: f.robot_x_mm, y_mm: f.robot_y_mm, theta_rad: f.robot_theta_rad }
 }
 
 /// The pitch a demonstrator plays on.
@@ -70,17 +64,14 @@ impl Laboratory {
     /// # Errors
     /// A field, recogniser or config error.
     pub fn new(per_primitive: usize, seed: u64, config: LearningConfig) -> Result<Self, LaboratoryError> {
-        config.check()?;
+        config.check().map_err(LearnError::from)?;
         let field = FieldConfig::default();
         let training: Vec<LabelledSequence> = self_observation(per_primitive, seed, &field)?
             .iter()
-            .filter_map(|s| {
-                let primitive = Primitive::from_name(s.primitive.name())?;
-                Some(LabelledSequence { primitive, poses: s.frames.iter().map(pose).collect() })
-            })
+            .map(|s| LabelledSequence { primitive: s.primitive, poses: s.frames.iter().map(Frame::robot).collect() })
             .collect();
         let recognizer = Recognizer::train(&training, RecognizerConfig::default())?;
-        let motion = MotionTable::new(recognizer.motion_stats())?;
+        let motion = MotionTable::new(recognizer.motion_stats()).map_err(LearnError::from)?;
         Ok(Self { recognizer, motion, field, config })
     }
 
@@ -95,10 +86,7 @@ impl Laboratory {
         outcome: Outcome,
         frames: &[Frame],
     ) -> Result<SegmentedDemonstration, LaboratoryError> {
-        let tracked: Vec<TrackedFrame> = frames
-            .iter()
-            .map(|f| TrackedFrame { robot: pose(f), ball_x_mm: f.ball_x_mm, ball_y_mm: f.ball_y_mm })
-            .collect();
+        let tracked: Vec<TrackedFrame> = frames.iter().map(Frame::tracked).collect();
         let ending = Ending::from(outcome);
         let segments = segment(&tracked, &self.recognizer, &SegmenterConfig::default())?;
         Ok(SegmentedDemonstration { demonstrator: who.to_owned(), pitch, ending, segments })

@@ -29,7 +29,7 @@ pub use ball_response::BallResponse;
 pub use behaviour::Behaviour;
 pub use config::{LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
 pub use control::{Attempt, ControlMode, ImitatorPolicy, attempt_seeds};
-pub use error::LearnError;
+pub use error::{LearnError, LearnParamsError};
 pub use laboratory::{FinalLps, Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, pitch_of, summarise};
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};

@@ -1,11 +1,12 @@
 //! A forward model: behaviours, the frequency with which one follows another, and a learning
 //! preference (thesis §3.3, §3.4).
 
-use polymimic_perceive::Primitive;
+use polymimic_types::Primitive;
 use serde::{Deserialize, Serialize};
 
 use crate::behaviour::Behaviour;
 use crate::config::{LearningConfig, LpBounds};
+use crate::error::LearnError;
 use crate::shaping::{LpCause, LpCauseCounts};
 
 const FORMAT: &str = "polymimic.ForwardModel";
@@ -201,15 +202,16 @@ impl ForwardModel {
     ///
     /// # Errors
     /// Another format or version, or a payload of the wrong shape.
-    pub fn from_json(text: &str) -> Result<Self, String> {
-        let model: Self = polymimic_persist::from_envelope(text, FORMAT, VERSION)?;
+    pub fn from_json(text: &str) -> Result<Self, LearnError> {
+        let corrupt = |why: &str| LearnError::Corrupt(why.to_owned());
+        let model: Self = polymimic_persist::from_envelope(text, FORMAT, VERSION).map_err(LearnError::Corrupt)?;
         if model.frequency.len() != model.behaviours.len()
             || model.frequency.iter().any(|r| r.len() != model.behaviours.len())
         {
-            return Err("the frequency matrix does not match the behaviours".to_owned());
+            return Err(corrupt("the frequency matrix does not match the behaviours"));
         }
         if model.behaviours.iter().any(|b| b.primitives.is_empty()) {
-            return Err("a behaviour has no primitives".to_owned());
+            return Err(corrupt("a behaviour has no primitives"));
         }
         Ok(model)
     }

@@ -2,14 +2,14 @@
 //! distance and rotation from Table 3.1 (thesis §3.3.3), and, when its ball statistics are
 //! usable, where the ball will end relative to the robot.
 
-use polymimic_perceive::{MotionStats, Pose, Primitive, wrap_angle_rad};
+use polymimic_types::{MotionStats, Pose, Primitive, wrap_angle_euclid_rad};
 use rand::RngExt;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
 use crate::behaviour::Behaviour;
 use crate::config::LearningConfig;
-use crate::error::LearnError;
+use crate::error::LearnParamsError;
 
 /// Mean and sd of each primitive's distance (mm) and rotation (rad), indexed by primitive.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -22,10 +22,13 @@ impl MotionTable {
     ///
     /// # Errors
     /// A primitive missing, or a statistic not finite.
-    pub fn new(stats: &[MotionStats]) -> Result<Self, LearnError> {
+    pub fn new(stats: &[MotionStats]) -> Result<Self, LearnParamsError> {
         let mut rows = Vec::with_capacity(5);
         for primitive in Primitive::ALL {
-            let s = stats.iter().find(|s| s.primitive == primitive).ok_or(LearnError::MotionStats(primitive.name()))?;
+            let s = stats
+                .iter()
+                .find(|s| s.primitive == primitive)
+                .ok_or(LearnParamsError::MotionStats(primitive.name()))?;
             let row = [
                 s.distance_mean_mm,
                 s.distance_sd_mm,
@@ -33,7 +36,7 @@ impl MotionTable {
                 s.rotation_sd_deg.to_radians(),
             ];
             if row.iter().any(|v| !v.is_finite()) {
-                return Err(LearnError::MotionStats(primitive.name()));
+                return Err(LearnParamsError::MotionStats(primitive.name()));
             }
             rows.push((primitive, row));
         }
@@ -94,11 +97,11 @@ impl MotionTable {
 
 /// Moves `distance_mm` along the heading, then turns by `rotation_rad`.
 fn advance(pose: Pose, distance_mm: f64, rotation_rad: f64) -> Pose {
-    Pose {
-        x_mm: pose.x_mm + distance_mm * pose.theta_rad.cos(),
-        y_mm: pose.y_mm + distance_mm * pose.theta_rad.sin(),
-        theta_rad: wrap_angle_rad(pose.theta_rad + rotation_rad),
-    }
+    Pose::new(
+        pose.x_mm() + distance_mm * pose.theta_rad().cos(),
+        pose.y_mm() + distance_mm * pose.theta_rad().sin(),
+        wrap_angle_euclid_rad(pose.theta_rad() + rotation_rad),
+    )
 }
 
 /// A standard normal draw (Box-Muller), reproducible from the seeded generator.
@@ -121,7 +124,7 @@ pub struct Prediction {
 impl Prediction {
     #[must_use]
     pub fn end(&self) -> Pose {
-        *self.poses.last().unwrap_or(&Pose { x_mm: 0.0, y_mm: 0.0, theta_rad: 0.0 })
+        self.poses.last().copied().unwrap_or_default()
     }
 
     /// Where the ball is predicted to end, in field coordinates.
@@ -129,8 +132,8 @@ impl Prediction {
     pub fn ball_position(&self) -> Option<(f64, f64)> {
         let end = self.end();
         self.ball.map(|(bearing_deg, distance_mm)| {
-            let angle = end.theta_rad + bearing_deg.to_radians();
-            (end.x_mm + distance_mm * angle.cos(), end.y_mm + distance_mm * angle.sin())
+            let angle = end.theta_rad() + bearing_deg.to_radians();
+            (end.x_mm() + distance_mm * angle.cos(), end.y_mm() + distance_mm * angle.sin())
         })
     }
 }
@@ -180,10 +183,10 @@ mod tests {
         let config = LearningConfig::default();
         let b = Behaviour::new(vec![Primitive::Forward, Primitive::Left, Primitive::Forward], 0, &config);
         let mut rng = ChaCha8Rng::seed_from_u64(1);
-        let p = predict(&b, Pose { x_mm: 0.0, y_mm: 0.0, theta_rad: 0.0 }, &table(), &config, &mut rng);
+        let p = predict(&b, Pose::new(0.0, 0.0, 0.0), &table(), &config, &mut rng);
         let end = p.end();
-        assert!((end.x_mm - 40.0).abs() < 1e-9 && (end.y_mm - 40.0).abs() < 1e-9, "{end:?}");
-        assert!((end.theta_rad - std::f64::consts::FRAC_PI_2).abs() < 1e-9);
+        assert!((end.x_mm() - 40.0).abs() < 1e-9 && (end.y_mm() - 40.0).abs() < 1e-9, "{end:?}");
+        assert!((end.theta_rad() - std::f64::consts::FRAC_PI_2).abs() < 1e-9);
         assert_eq!(p.poses.len(), 3);
         assert!(p.ball.is_none());
     }
@@ -191,9 +194,9 @@ mod tests {
     #[test]
     fn match_tolerances_are_40_mm_and_45_degrees() {
         let config = LearningConfig::default();
-        let a = Pose { x_mm: 0.0, y_mm: 0.0, theta_rad: 0.0 };
-        assert!(matches(&a, &Pose { x_mm: 39.0, y_mm: 0.0, theta_rad: 0.7 }, &config));
-        assert!(!matches(&a, &Pose { x_mm: 41.0, y_mm: 0.0, theta_rad: 0.0 }, &config));
-        assert!(!matches(&a, &Pose { x_mm: 0.0, y_mm: 0.0, theta_rad: 0.8 }, &config));
+        let a = Pose::new(0.0, 0.0, 0.0);
+        assert!(matches(&a, &Pose::new(39.0, 0.0, 0.7), &config));
+        assert!(!matches(&a, &Pose::new(41.0, 0.0, 0.0), &config));
+        assert!(!matches(&a, &Pose::new(0.0, 0.0, 0.8), &config));
     }
 }

@@ -2,7 +2,7 @@
 //! demonstrations that ended in goals. A pose is taken relative to the ball and the line from
 //! the ball to the target goal's centre, so one region serves wherever the ball lies.
 
-use polymimic_perceive::{Pose, wrap_angle_rad};
+use polymimic_types::{Pose, wrap_angle_euclid_rad};
 use serde::{Deserialize, Serialize};
 
 use crate::round::{Ending, SegmentedDemonstration};
@@ -26,11 +26,11 @@ impl BallGoalPose {
         let (gx, gy) = pitch.target_goal();
         let line_rad = (gy - ball.1).atan2(gx - ball.0);
         let (sin, cos) = line_rad.sin_cos();
-        let (dx, dy) = (robot.x_mm - ball.0, robot.y_mm - ball.1);
+        let (dx, dy) = (robot.x_mm() - ball.0, robot.y_mm() - ball.1);
         Self {
             along_mm: cos * dx + sin * dy,
             across_mm: -sin * dx + cos * dy,
-            heading_rad: wrap_angle_rad(robot.theta_rad - line_rad),
+            heading_rad: wrap_angle_euclid_rad(robot.theta_rad() - line_rad),
         }
     }
 
@@ -132,16 +132,13 @@ impl PushRegion {
 
 #[cfg(test)]
 mod tests {
-    use polymimic_perceive::{Label, Primitive, Segment, TrackedFrame};
+    use polymimic_perceive::{Label, Segment};
+    use polymimic_types::{Primitive, TrackedFrame};
 
     use super::*;
 
     fn frame(robot: (f64, f64, f64), ball: (f64, f64)) -> TrackedFrame {
-        TrackedFrame {
-            robot: Pose { x_mm: robot.0, y_mm: robot.1, theta_rad: robot.2 },
-            ball_x_mm: ball.0,
-            ball_y_mm: ball.1,
-        }
+        TrackedFrame { robot: Pose::new(robot.0, robot.1, robot.2), ball_x_mm: ball.0, ball_y_mm: ball.1 }
     }
 
     fn segment(start: TrackedFrame, end: TrackedFrame) -> Segment {
@@ -164,15 +161,11 @@ mod tests {
         // Ball at (110, 400): the goal's centre (510, 0) lies 45° to its right.
         let ball = (110.0, 400.0);
         let line = (-1.0_f64).atan2(1.0);
-        let behind = Pose { x_mm: 110.0 - 100.0 * line.cos(), y_mm: 400.0 - 100.0 * line.sin(), theta_rad: line };
+        let behind = Pose::new(110.0 - 100.0 * line.cos(), 400.0 - 100.0 * line.sin(), line);
         let pose = BallGoalPose::of(&behind, ball, &Pitch::LARGE);
         assert!((pose.along_mm + 100.0).abs() < 1e-9 && pose.across_mm.abs() < 1e-9 && pose.heading_rad.abs() < 1e-12);
         // 50 mm to the line's left (counter-clockwise from it), facing back along it.
-        let left = Pose {
-            x_mm: 110.0 - 50.0 * line.sin(),
-            y_mm: 400.0 + 50.0 * line.cos(),
-            theta_rad: line + std::f64::consts::PI,
-        };
+        let left = Pose::new(110.0 - 50.0 * line.sin(), 400.0 + 50.0 * line.cos(), line + std::f64::consts::PI);
         let pose = BallGoalPose::of(&left, ball, &Pitch::LARGE);
         assert!(pose.along_mm.abs() < 1e-9 && (pose.across_mm - 50.0).abs() < 1e-9);
         assert!((pose.heading_rad.abs() - std::f64::consts::PI).abs() < 1e-9);

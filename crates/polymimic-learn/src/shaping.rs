@@ -1,6 +1,6 @@
 //! What moves a learning preference (thesis Table 3.3, eq 3.13), and by how much.
 
-use polymimic_perceive::TrackedFrame;
+use polymimic_types::TrackedFrame;
 use serde::{Deserialize, Serialize};
 
 use crate::config::{LearningConfig, LpCriteria};

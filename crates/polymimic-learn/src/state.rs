@@ -1,6 +1,6 @@
 //! The field as learning sees it: the robot's pose and the ball, on a pitch of known size.
 
-use polymimic_perceive::{Pose, TrackedFrame, wrap_angle_rad};
+use polymimic_types::{Pose, TrackedFrame, wrap_angle_euclid_rad};
 use serde::{Deserialize, Serialize};
 
 /// The size of the field a demonstration was played on; the target goal's centre is at
@@ -47,8 +47,8 @@ impl Pitch {
 /// robot to a point.
 #[must_use]
 pub fn range_bearing(robot: &Pose, x_mm: f64, y_mm: f64) -> (f64, f64) {
-    let (dx, dy) = (x_mm - robot.x_mm, y_mm - robot.y_mm);
-    (dx.hypot(dy), wrap_angle_rad(dy.atan2(dx) - robot.theta_rad).to_degrees())
+    let (dx, dy) = (x_mm - robot.x_mm(), y_mm - robot.y_mm());
+    (dx.hypot(dy), wrap_angle_euclid_rad(dy.atan2(dx) - robot.theta_rad()).to_degrees())
 }
 
 /// The six precondition measures of a state: distance and bearing from the robot to the
@@ -74,5 +74,5 @@ pub fn ball_to_goal_mm(frame: &TrackedFrame, pitch: &Pitch) -> f64 {
 /// Distance from the robot to the ball.
 #[must_use]
 pub fn robot_to_ball_mm(frame: &TrackedFrame) -> f64 {
-    (frame.ball_x_mm - frame.robot.x_mm).hypot(frame.ball_y_mm - frame.robot.y_mm)
+    (frame.ball_x_mm - frame.robot.x_mm()).hypot(frame.ball_y_mm - frame.robot.y_mm())
 }

@@ -5,7 +5,7 @@
 //! leads to a goal later, as the skilled demonstrators showed.
 
 use polymimic_field::FRAME_DT_S;
-use polymimic_perceive::TrackedFrame;
+use polymimic_types::TrackedFrame;
 use serde::{Deserialize, Serialize};
 
 use crate::nearest::nearest;
@@ -23,10 +23,10 @@ const MM_PER_RADIAN: f64 = 100.0;
 fn features(state: &TrackedFrame) -> [f64; 6] {
     let robot = &state.robot;
     [
-        robot.x_mm,
-        robot.y_mm,
-        MM_PER_RADIAN * robot.theta_rad.cos(),
-        MM_PER_RADIAN * robot.theta_rad.sin(),
+        robot.x_mm(),
+        robot.y_mm(),
+        MM_PER_RADIAN * robot.theta_rad().cos(),
+        MM_PER_RADIAN * robot.theta_rad().sin(),
         state.ball_x_mm,
         state.ball_y_mm,
     ]
@@ -86,17 +86,14 @@ impl StateValue {
 
 #[cfg(test)]
 mod tests {
-    use polymimic_perceive::{Label, Pose, Primitive, Segment};
+    use polymimic_perceive::{Label, Segment};
+    use polymimic_types::{Pose, Primitive};
 
     use super::*;
 
     /// One forward segment of 30 frames (1 s) from x to x + 50 with the ball at 0, ending as told.
     fn demo(x_mm: f64, ending: Ending, pitch: Pitch) -> SegmentedDemonstration {
-        let frame = |x: f64| TrackedFrame {
-            robot: Pose { x_mm: x, y_mm: 0.0, theta_rad: 0.0 },
-            ball_x_mm: 0.0,
-            ball_y_mm: 0.0,
-        };
+        let frame = |x: f64| TrackedFrame { robot: Pose::new(x, 0.0, 0.0), ball_x_mm: 0.0, ball_y_mm: 0.0 };
         let segment = Segment {
             label: Label::Primitive(Primitive::Forward),
             first_frame: 0,
@@ -113,13 +110,8 @@ mod tests {
         let demos = [demo(-300.0, Ending::Goal, Pitch::LARGE), demo(300.0, Ending::OwnGoal, Pitch::LARGE)];
         let value = StateValue::learn(&demos, &Pitch::LARGE);
         assert_eq!(value.len(), 4, "each segment's start and the last end");
-        let at = |x: f64| {
-            value.estimate(&TrackedFrame {
-                robot: Pose { x_mm: x, y_mm: 0.0, theta_rad: 0.0 },
-                ball_x_mm: 0.0,
-                ball_y_mm: 0.0,
-            })
-        };
+        let at =
+            |x: f64| value.estimate(&TrackedFrame { robot: Pose::new(x, 0.0, 0.0), ball_x_mm: 0.0, ball_y_mm: 0.0 });
         // Fewer than eight states: all four are averaged, a goal 1 s ahead and at the end,
         // an own goal likewise.
         let expected = (0.95 + 1.0 - 0.95 - 1.0) / 4.0;
@@ -131,11 +123,8 @@ mod tests {
             .chain((0..4).map(|i| demo(300.0 + f64::from(i), Ending::OwnGoal, Pitch::LARGE)))
             .collect();
         let value = StateValue::learn(&many, &Pitch::LARGE);
-        let near_goals = value.estimate(&TrackedFrame {
-            robot: Pose { x_mm: -280.0, y_mm: 0.0, theta_rad: 0.0 },
-            ball_x_mm: 0.0,
-            ball_y_mm: 0.0,
-        });
+        let near_goals =
+            value.estimate(&TrackedFrame { robot: Pose::new(-280.0, 0.0, 0.0), ball_x_mm: 0.0, ball_y_mm: 0.0 });
         assert!((near_goals - (4.0 * 0.95 + 4.0 * 1.0) / 8.0).abs() < 1e-12, "{near_goals}");
         assert_eq!(StateValue::default().estimate(&demos[0].segments[0].start), 0.0);
     }

@@ -1,6 +1,7 @@
 //! Learning on synthetic demonstrations whose segments follow the primitives exactly.
 
-use polymimic_perceive::{Label, Pose, Primitive, Segment, TrackedFrame};
+use polymimic_perceive::{Label, Segment};
+use polymimic_types::{Pose, Primitive, TrackedFrame};
 
 use crate::*;
 
@@ -13,8 +14,7 @@ fn exact_motion() -> MotionTable {
 /// A demonstration driving straight along +x toward a ball ahead for `count` forward
 /// segments, each ending exactly 50 mm further.
 fn straight(count: usize, name: &str, ending: Ending) -> SegmentedDemonstration {
-    let frame =
-        |x: f64| TrackedFrame { robot: Pose { x_mm: x, y_mm: 0.0, theta_rad: 0.0 }, ball_x_mm: 480.0, ball_y_mm: 0.0 };
+    let frame = |x: f64| TrackedFrame { robot: Pose::new(x, 0.0, 0.0), ball_x_mm: 480.0, ball_y_mm: 0.0 };
     let segments = (0..count)
         .map(|i| Segment {
             label: Label::Primitive(Primitive::Forward),
@@ -111,12 +111,21 @@ fn bad_input_is_named() {
         let ordering: Vec<String> = ordering.iter().map(|s| (*s).to_owned()).collect();
         run_trial(demos, &ordering, &motion, config, PhaseOne::ByModel, 0)
     };
-    assert_eq!(run(&demos, &["z"], &config).unwrap_err(), LearnError::UnknownDemonstrator("z".to_owned()));
-    assert_eq!(run(&demos, &["a", "a"], &config).unwrap_err(), LearnError::DuplicateDemonstrator("a".to_owned()));
-    assert_eq!(run(&[], &["a"], &config).unwrap_err(), LearnError::NoDemonstrations);
-    assert_eq!(run(&demos, &[], &config).unwrap_err(), LearnError::EmptyOrdering);
+    assert_eq!(
+        run(&demos, &["z"], &config).unwrap_err(),
+        LearnError::Params(LearnParamsError::UnknownDemonstrator("z".to_owned()))
+    );
+    assert_eq!(
+        run(&demos, &["a", "a"], &config).unwrap_err(),
+        LearnError::Params(LearnParamsError::DuplicateDemonstrator("a".to_owned()))
+    );
+    assert_eq!(run(&[], &["a"], &config).unwrap_err(), LearnError::Params(LearnParamsError::NoDemonstrations));
+    assert_eq!(run(&demos, &[], &config).unwrap_err(), LearnError::Params(LearnParamsError::EmptyOrdering));
     let bad = LearningConfig { creation_threshold: 1.5, ..LearningConfig::default() };
-    assert!(matches!(run(&demos, &["a"], &bad).unwrap_err(), LearnError::Config { name: "creation_threshold", .. }));
+    assert!(matches!(
+        run(&demos, &["a"], &bad).unwrap_err(),
+        LearnError::Params(LearnParamsError::Config { name: "creation_threshold", .. })
+    ));
 }
 
 #[test]
@@ -171,7 +180,7 @@ fn only_the_models_own_demonstrator_shapes_its_lp_by_the_task_criteria() {
 #[test]
 fn the_foremost_criterion_is_the_ball_when_it_moved() {
     let frame = |robot_x: f64, ball_x: f64| TrackedFrame {
-        robot: Pose { x_mm: robot_x, y_mm: 0.0, theta_rad: 0.0 },
+        robot: Pose::new(robot_x, 0.0, 0.0),
         ball_x_mm: ball_x,
         ball_y_mm: 0.0,
     };

@@ -6,7 +6,7 @@ use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
 use crate::config::LearningConfig;
-use crate::error::LearnError;
+use crate::error::{LearnError, LearnParamsError};
 use crate::model::{Event, ForwardModel};
 use crate::prediction::MotionTable;
 use crate::round::SegmentedDemonstration;
@@ -54,17 +54,17 @@ pub fn run_trial(
 ) -> Result<TrialResult, LearnError> {
     config.check()?;
     if demonstrations.is_empty() {
-        return Err(LearnError::NoDemonstrations);
+        return Err(LearnParamsError::NoDemonstrations.into());
     }
     if ordering.is_empty() {
-        return Err(LearnError::EmptyOrdering);
+        return Err(LearnParamsError::EmptyOrdering.into());
     }
     for (i, name) in ordering.iter().enumerate() {
         if ordering[..i].contains(name) {
-            return Err(LearnError::DuplicateDemonstrator(name.clone()));
+            return Err(LearnParamsError::DuplicateDemonstrator(name.clone()).into());
         }
         if !demonstrations.iter().any(|d| &d.demonstrator == name) {
-            return Err(LearnError::UnknownDemonstrator(name.clone()));
+            return Err(LearnParamsError::UnknownDemonstrator(name.clone()).into());
         }
     }
     let mut models: Vec<ForwardModel> =

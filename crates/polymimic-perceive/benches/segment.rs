@@ -4,17 +4,10 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use polymimic_field::{Demonstrator, FieldConfig, Frame, PrimitiveSequence, record_all, self_observation};
-use polymimic_perceive::{
-    LabelledSequence, Pose, Primitive, Recognizer, RecognizerConfig, SegmenterConfig, TrackedFrame, segment_many,
-};
-
-fn pose(f: &Frame) -> Pose {
-    Pose { x_mm: f.robot_x_mm, y_mm: f.robot_y_mm, theta_rad: f.robot_theta_rad }
-}
+use polymimic_perceive::{LabelledSequence, Recognizer, RecognizerConfig, SegmenterConfig, TrackedFrame, segment_many};
 
 fn labelled(s: &PrimitiveSequence) -> LabelledSequence {
-    let primitive = Primitive::from_name(s.primitive.name()).expect("same names");
-    LabelledSequence { primitive, poses: s.frames.iter().map(pose).collect() }
+    LabelledSequence { primitive: s.primitive, poses: s.frames.iter().map(Frame::robot).collect() }
 }
 
 fn segment_300(c: &mut Criterion) {
@@ -26,15 +19,8 @@ fn segment_300(c: &mut Criterion) {
     let mut demonstrations = record_all(&everyone, 25, 1, &config).expect("records");
     demonstrations.extend(record_all(&everyone[..2], 25, 2, &config).expect("records"));
     assert_eq!(demonstrations.len(), 300);
-    let frames: Vec<Vec<TrackedFrame>> = demonstrations
-        .iter()
-        .map(|d| {
-            d.frames
-                .iter()
-                .map(|f| TrackedFrame { robot: pose(f), ball_x_mm: f.ball_x_mm, ball_y_mm: f.ball_y_mm })
-                .collect()
-        })
-        .collect();
+    let frames: Vec<Vec<TrackedFrame>> =
+        demonstrations.iter().map(|d| d.frames.iter().map(Frame::tracked).collect()).collect();
     let refs: Vec<&[TrackedFrame]> = frames.iter().map(Vec::as_slice).collect();
     let mut group = c.benchmark_group("segmentation");
     group.sample_size(20);

@@ -3,17 +3,17 @@
 //! can name.
 
 mod error;
+mod label;
 mod motion;
-mod pose;
-mod primitive;
 mod recognizer;
 mod representation;
 mod segmenter;
 
 pub use error::PerceiveError;
-pub use motion::{MotionLimits, MotionStats, motion_of, motion_stats};
-pub use pose::{Pose, TrackedFrame, wrap_angle_rad};
-pub use primitive::{Label, Primitive};
+pub use label::Label;
+pub use motion::{MotionLimits, motion_of, motion_stats};
+/// The domain types the recogniser shares with every crate, re-exported for its users.
+pub use polymimic_types::{MotionStats, Pose, Primitive, TrackedFrame};
 pub use recognizer::{
     Emissions, LabelledSequence, PrimitiveHmm, PrimitiveModel, Recognizer, RecognizerConfig, best_two,
 };

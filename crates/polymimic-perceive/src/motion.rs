@@ -1,22 +1,8 @@
 //! How far each primitive moves and turns in one second (thesis Table 3.1), and the most
 //! motion any primitive can produce, which bounds a demonstration segment.
 
+use polymimic_types::{MotionStats, Pose, Primitive};
 use serde::{Deserialize, Serialize};
-
-use crate::pose::Pose;
-use crate::primitive::Primitive;
-
-/// Mean and standard deviation of one primitive's signed displacement along its starting
-/// heading and its heading change over a sequence.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct MotionStats {
-    pub primitive: Primitive,
-    pub count: usize,
-    pub distance_mean_mm: f64,
-    pub distance_sd_mm: f64,
-    pub rotation_mean_deg: f64,
-    pub rotation_sd_deg: f64,
-}
 
 /// The displacement (mm, along the starting heading) and rotation (deg) from the first to the
 /// last pose.
@@ -80,8 +66,8 @@ mod tests {
 
     #[test]
     fn stats_of_known_motions() {
-        let a = [Pose { x_mm: 0.0, y_mm: 0.0, theta_rad: 0.0 }, Pose { x_mm: 40.0, y_mm: 3.0, theta_rad: 0.1 }];
-        let b = [Pose { x_mm: 0.0, y_mm: 0.0, theta_rad: 0.0 }, Pose { x_mm: 44.0, y_mm: -3.0, theta_rad: -0.1 }];
+        let a = [Pose::new(0.0, 0.0, 0.0), Pose::new(40.0, 3.0, 0.1)];
+        let b = [Pose::new(0.0, 0.0, 0.0), Pose::new(44.0, -3.0, -0.1)];
         let s = motion_stats(Primitive::Forward, [&a[..], &b[..]]);
         assert!((s.distance_mean_mm - 42.0).abs() < 1e-12);
         assert!((s.distance_sd_mm - 8.0_f64.sqrt()).abs() < 1e-12);

@@ -4,14 +4,13 @@
 use std::collections::BTreeMap;
 
 use polymimic_hmm::{DiscreteHmm, GaussianHmm, GaussianHmmParams, HmmParams, Init, Topology};
+use polymimic_types::{MotionStats, Pose, Primitive};
 use polymimic_vq::{Codebook, LbgParams};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::error::PerceiveError;
-use crate::motion::{MotionStats, motion_stats};
-use crate::pose::Pose;
-use crate::primitive::Primitive;
+use crate::motion::motion_stats;
 use crate::representation::Representation;
 
 const FORMAT: &str = "polymimic.PrimitiveRecognizer";

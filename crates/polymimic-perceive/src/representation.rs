@@ -2,9 +2,8 @@
 //! relative to the sequence's first frame; the heading is scaled by 16 so that radians weigh
 //! about as much as millimetres when clustering (§3.1.4).
 
+use polymimic_types::{Pose, wrap_angle_euclid_rad};
 use serde::{Deserialize, Serialize};
-
-use crate::pose::{Pose, wrap_angle_rad};
 
 /// Radians to the scale of millimetres.
 pub const THETA_SCALE: f64 = 16.0;
@@ -29,13 +28,13 @@ impl Representation {
     #[must_use]
     pub fn points(self, poses: &[Pose]) -> Vec<f64> {
         let Some(origin) = poses.first() else { return Vec::new() };
-        let (sin0, cos0) = origin.theta_rad.sin_cos();
+        let (sin0, cos0) = origin.theta_rad().sin_cos();
         let mut points = Vec::with_capacity(poses.len() * 3);
         for pose in poses {
-            let (dx, dy) = (pose.x_mm - origin.x_mm, pose.y_mm - origin.y_mm);
-            let turn = wrap_angle_rad(pose.theta_rad - origin.theta_rad);
+            let (dx, dy) = (pose.x_mm() - origin.x_mm(), pose.y_mm() - origin.y_mm());
+            let turn = wrap_angle_euclid_rad(pose.theta_rad() - origin.theta_rad());
             match self {
-                Self::Positional => points.extend([dx, dy, THETA_SCALE * pose.theta_rad]),
+                Self::Positional => points.extend([dx, dy, THETA_SCALE * pose.theta_rad()]),
                 Self::Rotational => points.extend([dx, dy, THETA_SCALE * turn]),
                 Self::Egocentric => {
                     points.extend([dx * cos0 + dy * sin0, -dx * sin0 + dy * cos0, THETA_SCALE * turn]);
@@ -51,7 +50,7 @@ mod tests {
     use super::*;
 
     fn pose(x_mm: f64, y_mm: f64, theta_rad: f64) -> Pose {
-        Pose { x_mm, y_mm, theta_rad }
+        Pose::new(x_mm, y_mm, theta_rad)
     }
 
     #[test]

@@ -7,12 +7,12 @@
 //! score within `gap_margin` of each other. Consecutive segments share their boundary frame,
 //! so each starts where the last one ended.
 
+use polymimic_types::{Pose, Primitive, TrackedFrame};
 use serde::{Deserialize, Serialize};
 
 use crate::error::PerceiveError;
+use crate::label::Label;
 use crate::motion::MotionLimits;
-use crate::pose::{Pose, TrackedFrame};
-use crate::primitive::{Label, Primitive};
 use crate::recognizer::{Recognizer, best_two, check_poses};
 
 /// The segmenter's thresholds; the defaults are the thesis's.

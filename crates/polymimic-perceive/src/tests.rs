@@ -1,5 +1,6 @@
 //! Recognition and segmentation of synthetic unicycle motion whose truth is known.
 
+use polymimic_types::wrap_angle_euclid_rad;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 
@@ -27,9 +28,11 @@ fn run(primitive: Primitive, start: Pose, frames: usize, rng: &mut ChaCha8Rng) -
     let mut poses = Vec::with_capacity(frames);
     for _ in 0..frames {
         poses.push(pose);
-        pose.x_mm += speed / 30.0 * pose.theta_rad.cos();
-        pose.y_mm += speed / 30.0 * pose.theta_rad.sin();
-        pose.theta_rad = wrap_angle_rad(pose.theta_rad + turn.to_radians() / 30.0);
+        pose = Pose::new(
+            pose.x_mm() + speed / 30.0 * pose.theta_rad().cos(),
+            pose.y_mm() + speed / 30.0 * pose.theta_rad().sin(),
+            wrap_angle_euclid_rad(pose.theta_rad() + turn.to_radians() / 30.0),
+        );
     }
     poses
 }
@@ -39,11 +42,9 @@ fn self_observation(per_primitive: usize, seed: u64) -> Vec<LabelledSequence> {
     let mut sequences = Vec::new();
     for primitive in Primitive::ALL {
         for _ in 0..per_primitive {
-            let start = Pose {
-                x_mm: rng.random_range(-300.0..300.0),
-                y_mm: rng.random_range(-200.0..200.0),
-                theta_rad: rng.random_range(-3.1..3.1),
-            };
+            let x_mm = rng.random_range(-300.0..300.0);
+            let y_mm = rng.random_range(-200.0..200.0);
+            let start = Pose::new(x_mm, y_mm, rng.random_range(-3.1..3.1));
             sequences.push(LabelledSequence { primitive, poses: run(primitive, start, FRAMES, &mut rng) });
         }
     }
@@ -85,7 +86,7 @@ fn measures_table_3_1_from_the_training_set() {
 
 fn demonstration(plan: &[(Primitive, usize)], seed: u64) -> Vec<TrackedFrame> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
-    let mut pose = Pose { x_mm: -200.0, y_mm: 0.0, theta_rad: 0.3 };
+    let mut pose = Pose::new(-200.0, 0.0, 0.3);
     let mut frames = Vec::new();
     for &(primitive, count) in plan {
         let poses = run(primitive, pose, count + 1, &mut rng);
@@ -149,7 +150,7 @@ fn bad_input_is_named() {
         segment(&frames[..5], &recognizer, &SegmenterConfig::default()),
         Err(PerceiveError::TooFewFrames { frames: 5, needed: 10, .. })
     ));
-    frames[7].robot.theta_rad = f64::NAN;
+    frames[7].robot = Pose::new(frames[7].robot.x_mm(), frames[7].robot.y_mm(), f64::NAN);
     assert!(matches!(
         segment(&frames, &recognizer, &SegmenterConfig::default()),
         Err(PerceiveError::NotFinite { frame: 7, .. })

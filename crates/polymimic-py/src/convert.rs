@@ -37,10 +37,10 @@ fn shape_text(array: &Bound<'_, PyAny>) -> PyResult<String> {
 /// errors ("sequence 3").
 pub fn symbols(value: &Bound<'_, PyAny>, what: &str, n_symbols: usize) -> PyResult<Vec<u32>> {
     // Fast path: the int64 arrays numpy makes by default need no conversion at all.
-    if let Ok(array) = value.cast::<PyArray1<i64>>() {
-        if let Ok(values) = array.to_vec() {
-            return checked_symbols(values.into_iter(), what, n_symbols);
-        }
+    if let Ok(array) = value.cast::<PyArray1<i64>>()
+        && let Ok(values) = array.to_vec()
+    {
+        return checked_symbols(values.into_iter(), what, n_symbols);
     }
     let array = asarray(value, None)?;
     let ndim: usize = array.getattr("ndim")?.extract()?;

@@ -5,7 +5,7 @@
 
 use polymimic_field::FieldError;
 use polymimic_hmm::HmmError;
-use polymimic_learn::LaboratoryError;
+use polymimic_learn::{LaboratoryError, LearnError, LearnParamsError};
 use polymimic_perceive::PerceiveError;
 use polymimic_vq::{VqError, VqParamsError};
 use pyo3::PyErr;
@@ -79,12 +79,24 @@ pub fn field_error(error: FieldError) -> PyErr {
     }
 }
 
+#[allow(clippy::needless_pass_by_value)] // used as `map_err(learn_params_error)`
+pub fn learn_params_error(error: LearnParamsError) -> PyErr {
+    PyValueError::new_err(error.to_string())
+}
+
+pub fn learn_error(error: LearnError) -> PyErr {
+    match error {
+        LearnError::Params(e) => learn_params_error(e),
+        LearnError::Corrupt(_) => ModelFileError::new_err(error.to_string()),
+    }
+}
+
 #[allow(clippy::needless_pass_by_value)] // used as `map_err(laboratory_error)`
 pub fn laboratory_error(error: LaboratoryError) -> PyErr {
     match error {
         LaboratoryError::Field(e) => field_error(e),
         LaboratoryError::Perceive(e) => perceive_error(e),
-        LaboratoryError::Learn(e) => PyValueError::new_err(e.to_string()),
+        LaboratoryError::Learn(e) => learn_error(e),
         LaboratoryError::NoAverage { .. } => PolymimicError::new_err(error.to_string()),
     }
 }

@@ -3,9 +3,10 @@
 
 use numpy::{PyArray1, PyArray2};
 use polymimic_field::{
-    BodyKind, Command, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, Pose, THESIS_TABLE_3_1,
+    BodyKind, Command, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, THESIS_TABLE_3_1,
     command_table, record, self_observation,
 };
+use polymimic_types::{Pose, Primitive};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -132,13 +133,13 @@ pub fn commands(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
 #[pyfunction]
 pub fn thesis_table_3_1(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
     let out = PyDict::new(py);
-    for (primitive, s) in THESIS_TABLE_3_1 {
+    for s in THESIS_TABLE_3_1 {
         let row = PyDict::new(py);
         row.set_item("distance_mean_mm", s.distance_mean_mm)?;
         row.set_item("distance_sd_mm", s.distance_sd_mm)?;
-        row.set_item("rotation_mean_deg", s.rotation_mean_rad.to_degrees())?;
-        row.set_item("rotation_sd_deg", s.rotation_sd_rad.to_degrees())?;
-        out.set_item(primitive.name(), row)?;
+        row.set_item("rotation_mean_deg", s.rotation_mean_deg)?;
+        row.set_item("rotation_sd_deg", s.rotation_sd_deg)?;
+        out.set_item(s.primitive.name(), row)?;
     }
     Ok(out)
 }
@@ -158,7 +159,7 @@ pub fn check_field_config(config: &str) -> PyResult<String> {
 /// A primitive name or a command id (see `commands()`).
 fn parse_command(command: &Bound<'_, PyAny>) -> PyResult<Command> {
     if let Ok(name) = command.extract::<String>() {
-        return polymimic_field::Primitive::ALL.into_iter().find(|p| p.name() == name).map(Command::Primitive).ok_or_else(
+        return Primitive::from_name(&name).map(Command::Primitive).ok_or_else(
             || {
                 PyValueError::new_err(format!(
                     "unknown command {name:?}; expected a primitive name (forward, backward, left, right, stop) or a command id"
@@ -211,9 +212,7 @@ impl PyEpisode {
         command: &Bound<'py, PyAny>,
     ) -> PyResult<(Bound<'py, PyArray1<f64>>, Option<&'static str>)> {
         let command = if let Ok(name) = command.extract::<String>() {
-            polymimic_field::Primitive::ALL
-                .into_iter()
-                .find(|p| p.name() == name)
+            Primitive::from_name(&name)
                 .map(Command::Primitive)
                 .ok_or_else(|| PyValueError::new_err(format!("unknown command {name:?}; expected a primitive name (forward, backward, left, right, stop) or a command id")))?
         } else {
@@ -260,7 +259,7 @@ impl PyEpisode {
 
     /// Puts the robot at a pose (the experimenter's hand).
     fn place_robot(&self, x_mm: f64, y_mm: f64, theta_rad: f64) -> PyResult<()> {
-        self.with(|e| e.place_robot(Pose { x_mm, y_mm, theta_rad })).map_err(field_error)
+        self.with(|e| e.place_robot(Pose::new(x_mm, y_mm, theta_rad))).map_err(field_error)
     }
 
     /// Every frame so far, `(k, 7)`.
@@ -275,8 +274,8 @@ impl PyEpisode {
         let seen = self.with(|e| e.observation());
         let out = PyDict::new(py);
         out.set_item("t_s", seen.t_s)?;
-        out.set_item("robot", (seen.robot.x_mm, seen.robot.y_mm, seen.robot.theta_rad))?;
-        out.set_item("ball", seen.ball.map(|b| (b.x_mm, b.y_mm)))?;
+        out.set_item("robot", (seen.robot.x_mm(), seen.robot.y_mm(), seen.robot.theta_rad()))?;
+        out.set_item("ball", seen.ball.map(|b| (b.x_mm(), b.y_mm())))?;
         out.set_item("field", (seen.field.length_mm, seen.field.width_mm))?;
         Ok(out)
     }

@@ -97,10 +97,11 @@ impl PyEpisodeBatch {
                     continue;
                 };
                 let seen = episode.observation();
-                let (ball_x, ball_y) = seen.ball.map_or((f64::NAN, f64::NAN), |p| (p.x_mm, p.y_mm));
+                let (ball_x, ball_y) = seen.ball.map_or((f64::NAN, f64::NAN), |p| (p.x_mm(), p.y_mm()));
                 // As the single environment casts its float64 reading to float32.
-                observations
-                    .extend([seen.robot.x_mm, seen.robot.y_mm, seen.robot.theta_rad, ball_x, ball_y].map(|v| v as f32));
+                observations.extend(
+                    [seen.robot.x_mm(), seen.robot.y_mm(), seen.robot.theta_rad(), ball_x, ball_y].map(|v| v as f32),
+                );
                 t_s.push(seen.t_s);
                 outcomes.push(episode.outcome().map_or(-1, outcome_code));
                 valid.push(episode.is_valid());

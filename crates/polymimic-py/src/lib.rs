@@ -28,8 +28,8 @@ mod _native {
     use super::hmm::PyDiscreteHmm;
     #[pymodule_export]
     use super::learn::{
-        PyImitatorPolicy, PyLearningConfig, PyModelResult, PySegmentedDemonstrations, PyTrialResult,
-        attempt_seeds, average_demonstrator, learning_trial, lp_order_hits, net_goals, spare_attempts,
+        PyImitatorPolicy, PyLearningConfig, PyModelResult, PySegmentedDemonstrations, PyTrialResult, attempt_seeds,
+        average_demonstrator, learning_trial, lp_order_hits, net_goals, spare_attempts,
     };
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;

@@ -4,9 +4,10 @@ use std::path::PathBuf;
 
 use numpy::{PyArray1, PyArray2};
 use polymimic_perceive::{
-    Emissions, LabelledSequence, Pose, Primitive, PrimitiveHmm, Recognizer, RecognizerConfig, Representation, Segment,
-    SegmenterConfig, TrackedFrame, segment, segment_many,
+    Emissions, LabelledSequence, PrimitiveHmm, Recognizer, RecognizerConfig, Representation, Segment, SegmenterConfig,
+    segment, segment_many,
 };
+use polymimic_types::{Pose, Primitive, TrackedFrame};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple, PyType};
@@ -26,20 +27,13 @@ pub struct PyPrimitiveRecognizer {
 }
 
 fn poses(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Pose>> {
-    Ok(frame_columns(value, what, &POSE_COLUMNS)?
-        .into_iter()
-        .map(|r| Pose { x_mm: r[0], y_mm: r[1], theta_rad: r[2] })
-        .collect())
+    Ok(frame_columns(value, what, &POSE_COLUMNS)?.into_iter().map(|r| Pose::new(r[0], r[1], r[2])).collect())
 }
 
 fn tracked_frames(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<TrackedFrame>> {
     Ok(frame_columns(value, what, &FRAME_COLUMNS)?
         .into_iter()
-        .map(|r| TrackedFrame {
-            robot: Pose { x_mm: r[0], y_mm: r[1], theta_rad: r[2] },
-            ball_x_mm: r[3],
-            ball_y_mm: r[4],
-        })
+        .map(|r| TrackedFrame { robot: Pose::new(r[0], r[1], r[2]), ball_x_mm: r[3], ball_y_mm: r[4] })
         .collect())
 }
 
@@ -90,7 +84,7 @@ pub(crate) fn segment_columns<'py>(py: Python<'py>, segments: &[Segment]) -> PyR
 }
 
 pub(crate) fn frame_row(frame: &TrackedFrame) -> [f64; 5] {
-    [frame.robot.x_mm, frame.robot.y_mm, frame.robot.theta_rad, frame.ball_x_mm, frame.ball_y_mm]
+    [frame.robot.x_mm(), frame.robot.y_mm(), frame.robot.theta_rad(), frame.ball_x_mm, frame.ball_y_mm]
 }
 
 #[pymethods]

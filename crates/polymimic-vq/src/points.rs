@@ -19,7 +19,7 @@ impl<'a> Points<'a> {
         if data.is_empty() {
             return Err(VqParamsError::NoPoints);
         }
-        if data.len() % dim != 0 {
+        if !data.len().is_multiple_of(dim) {
             return Err(VqParamsError::RaggedPoints { len: data.len(), dim });
         }
         if let Some(flat) = data.iter().position(|x| !x.is_finite()) {

@@ -4,11 +4,12 @@
 //! (the foot is a short-lived kinematic collider, so its contact with the ball is physical).
 //! It sees through a head camera: a forward cone that the head can pan left, right or down.
 
+use nalgebra::Vector2;
+use polymimic_types::{Point, Pose, rotation_by_rad};
 use serde::{Deserialize, Serialize};
 
 use crate::command::{Command, HumanoidCommand};
 use crate::error::FieldParamError;
-use crate::geometry::{Point, Pose};
 use crate::math::{PI, Rng, cos, deg, exp, gaussian, sin, wrap_angle_rad};
 
 /// Constants of the humanoid body.
@@ -152,7 +153,7 @@ impl HumanoidBody {
     /// The pose the tracker sees: the base pose plus the gait's heading sway.
     pub(crate) fn pose(&self) -> Pose {
         let sway = self.params.sway_rad * self.stance * sin(PI * self.step_phase);
-        Pose::new(self.base.x_mm, self.base.y_mm, wrap_angle_rad(self.base.theta_rad + sway))
+        Pose::new(self.base.x_mm(), self.base.y_mm(), wrap_angle_rad(self.base.theta_rad() + sway))
     }
 
     pub(crate) fn place(&mut self, pose: Pose) {
@@ -248,18 +249,22 @@ impl HumanoidBody {
             if self.step_phase.floor() > before.floor() {
                 // Footfall: a fresh step length and a small random yaw.
                 self.step_gain = (1.0 + p.step_length_sd * gaussian(rng)).max(0.2);
-                self.base.theta_rad += p.step_yaw_sd_rad * gaussian(rng);
+                let yaw = self.base.theta_rad() + p.step_yaw_sd_rad * gaussian(rng);
+                self.base = Pose::at(self.base.point(), yaw);
             }
             self.step_gain * (1.0 - cos(2.0 * PI * self.step_phase))
         } else {
             1.0
         };
         let (fwd, left, turn) = (self.vel.0 * burst, self.vel.1 * burst, self.vel.2);
-        let theta_mid = self.base.theta_rad + 0.5 * turn * dt_s;
-        let (s, c) = (sin(theta_mid), cos(theta_mid));
-        self.base.x_mm += (c * fwd - s * left) * dt_s;
-        self.base.y_mm += (s * fwd + c * left) * dt_s;
-        self.base.theta_rad = wrap_angle_rad(self.base.theta_rad + turn * dt_s);
+        let theta_mid = self.base.theta_rad() + 0.5 * turn * dt_s;
+        // The body's velocity turned into field axes at mid-step.
+        let velocity = rotation_by_rad(theta_mid) * Vector2::new(fwd, left);
+        self.base = Pose::new(
+            self.base.x_mm() + velocity.x * dt_s,
+            self.base.y_mm() + velocity.y * dt_s,
+            wrap_angle_rad(self.base.theta_rad() + turn * dt_s),
+        );
     }
 
     /// The kicking foot (inactive outside the swing window).
@@ -271,9 +276,9 @@ impl HumanoidBody {
                 let f = (k.t_s - p.foot_window_s.0) / (p.foot_window_s.1 - p.foot_window_s.0);
                 let x = p.foot_reach_mm.0 + f * (p.foot_reach_mm.1 - p.foot_reach_mm.0);
                 let at = pose.field_from_robot(Point::new(x, k.side * p.foot_side_mm));
-                Foot { pose: Pose::new(at.x_mm, at.y_mm, pose.theta_rad), active: true }
+                Foot { pose: Pose::new(at.x_mm(), at.y_mm(), pose.theta_rad()), active: true }
             }
-            _ => Foot { pose: Pose::new(pose.x_mm, pose.y_mm, pose.theta_rad), active: false },
+            _ => Foot { pose: Pose::new(pose.x_mm(), pose.y_mm(), pose.theta_rad()), active: false },
         }
     }
 
@@ -312,9 +317,9 @@ mod tests {
         let mut max_sway: f64 = 0.0;
         for _ in 0..60 {
             run(&mut b, HumanoidCommand::WalkForward, 1, &mut r);
-            max_sway = max_sway.max(b.pose().theta_rad.abs());
+            max_sway = max_sway.max(b.pose().theta_rad().abs());
         }
-        assert!(b.pose().x_mm > 80.0, "{:?}", b.pose());
+        assert!(b.pose().x_mm() > 80.0, "{:?}", b.pose());
         assert!(max_sway > deg(2.0), "sway {max_sway}");
     }
 
@@ -323,7 +328,7 @@ mod tests {
         let mut r = rng(2, 0);
         let mut b = HumanoidBody::new(HUMANOID, Pose::default());
         run(&mut b, HumanoidCommand::ShuffleLeft, 60, &mut r);
-        assert!(b.pose().y_mm > 30.0 && b.pose().x_mm.abs() < 15.0, "{:?}", b.pose());
+        assert!(b.pose().y_mm() > 30.0 && b.pose().x_mm().abs() < 15.0, "{:?}", b.pose());
     }
 
     #[test]
@@ -336,12 +341,12 @@ mod tests {
             let f = b.foot();
             if f.active {
                 foot_seen = true;
-                assert!(f.pose.y_mm > 0.0);
+                assert!(f.pose.y_mm() > 0.0);
             }
         }
         assert!(foot_seen);
         assert!(!b.is_kicking());
-        assert!(b.pose().x_mm < -5.0, "{:?}", b.pose());
+        assert!(b.pose().x_mm() < -5.0, "{:?}", b.pose());
     }
 
     #[test]

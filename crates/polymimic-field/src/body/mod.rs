@@ -3,6 +3,7 @@
 mod humanoid;
 mod wheeled;
 
+use polymimic_types::{Point, Pose};
 use serde::{Deserialize, Serialize};
 
 pub use humanoid::{HUMANOID, HumanoidParams};
@@ -13,7 +14,7 @@ pub(crate) use wheeled::WheeledBody;
 
 use crate::command::Command;
 use crate::error::FieldParamError;
-use crate::geometry::{FieldSize, Point, Pose};
+use crate::geometry::FieldSize;
 use crate::math::Rng;
 
 /// The robots of the thesis.

@@ -9,11 +9,11 @@
 //! mass makes translation lag noticeably (residual motion carries into the next primitive),
 //! while its small yaw inertia and the skid's scrubbing make rotation settle quickly.
 
+use polymimic_types::Pose;
 use serde::{Deserialize, Serialize};
 
-use crate::command::Command;
+use crate::command::{Command, LEGO_WHEEL_BASE_MM};
 use crate::error::FieldParamError;
-use crate::geometry::Pose;
 use crate::math::{Rng, cos, exp, gaussian, sin, wrap_angle_rad};
 
 /// Random traction of one manoeuvre class, drawn on every command onset.
@@ -58,7 +58,7 @@ pub const LEGO: WheeledParams = WheeledParams {
     name: "lego",
     length_mm: 140.0,
     width_mm: 150.0,
-    wheel_base_mm: 175.0,
+    wheel_base_mm: LEGO_WHEEL_BASE_MM,
     primitive_wheels_mm_s: [(51.55, 47.86), (-61.45, -54.21), (-43.0, 53.2), (51.08, -42.9), (0.0, 0.0)],
     traction: [
         Traction { common_sd: 0.29, differential_sd: 0.008 },
@@ -161,10 +161,12 @@ impl WheeledBody {
         let a_w = 1.0 - exp(-dt_s / self.params.tau_angular_s);
         self.v_mm_s += a_v * (self.target_v_mm_s - self.v_mm_s);
         self.omega_rad_s += a_w * (self.target_omega_rad_s - self.omega_rad_s);
-        let theta_mid = self.pose.theta_rad + 0.5 * self.omega_rad_s * dt_s;
-        self.pose.x_mm += self.v_mm_s * cos(theta_mid) * dt_s;
-        self.pose.y_mm += self.v_mm_s * sin(theta_mid) * dt_s;
-        self.pose.theta_rad = wrap_angle_rad(self.pose.theta_rad + self.omega_rad_s * dt_s);
+        let theta_mid = self.pose.theta_rad() + 0.5 * self.omega_rad_s * dt_s;
+        self.pose = Pose::new(
+            self.pose.x_mm() + self.v_mm_s * cos(theta_mid) * dt_s,
+            self.pose.y_mm() + self.v_mm_s * sin(theta_mid) * dt_s,
+            wrap_angle_rad(self.pose.theta_rad() + self.omega_rad_s * dt_s),
+        );
     }
 }
 
@@ -177,7 +179,9 @@ fn log_normal_factor(sd: f64, z: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::command::{ExpertCommand, HumanoidCommand, Primitive};
+    use polymimic_types::Primitive;
+
+    use crate::command::{ExpertCommand, HumanoidCommand};
     use crate::math::rng;
 
     fn run(body: &mut WheeledBody, command: Command, frames: u32, r: &mut Rng) {
@@ -194,10 +198,10 @@ mod tests {
         let mut r = rng(1, 0);
         let mut b = WheeledBody::new(LEGO, Pose::default());
         run(&mut b, Command::Primitive(Primitive::Forward), 30, &mut r);
-        assert!(b.pose().x_mm > 10.0 && b.pose().y_mm.abs() < 5.0);
-        let theta0 = b.pose().theta_rad;
+        assert!(b.pose().x_mm() > 10.0 && b.pose().y_mm().abs() < 5.0);
+        let theta0 = b.pose().theta_rad();
         run(&mut b, Command::Primitive(Primitive::Left), 30, &mut r);
-        assert!(wrap_angle_rad(b.pose().theta_rad - theta0) > 0.0);
+        assert!(wrap_angle_rad(b.pose().theta_rad() - theta0) > 0.0);
     }
 
     #[test]
@@ -205,9 +209,9 @@ mod tests {
         let mut r = rng(2, 0);
         let mut b = WheeledBody::new(LEGO, Pose::default());
         run(&mut b, Command::Primitive(Primitive::Forward), 30, &mut r);
-        let x0 = b.pose().x_mm;
+        let x0 = b.pose().x_mm();
         run(&mut b, Command::Primitive(Primitive::Stop), 30, &mut r);
-        let coast = b.pose().x_mm - x0;
+        let coast = b.pose().x_mm() - x0;
         assert!(coast > 1.0 && coast < 15.0, "coast {coast}");
     }
 

@@ -1,10 +1,11 @@
 //! The self-observation babbler (§3.1.1): one primitive per second chosen uniformly from
 //! F B L R S; near an edge the robot is put back at the centre with a random heading.
 
+use polymimic_types::{Pose, Primitive};
+
 use crate::body::BodyKind;
-use crate::command::{Command, Primitive};
+use crate::command::Command;
 use crate::episode::Observation;
-use crate::geometry::Pose;
 use crate::math::{Rng, TAU, rng, stream, uniform, wrap_angle_rad};
 
 use super::Controller;
@@ -60,7 +61,8 @@ impl Controller for Babbler {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::geometry::{FieldGeometry, FieldSize, Point};
+    use crate::geometry::{FieldGeometry, FieldSize};
+    use polymimic_types::Point;
 
     fn obs(robot: Pose) -> Observation {
         Observation {

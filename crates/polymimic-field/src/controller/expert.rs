@@ -2,10 +2,11 @@
 //! the ball–goal line and pushes it in, speaking its own language of named wheel-speed pairs.
 //! It plans a continuous (speed, turn rate) and sends the nearest command of its language.
 
+use polymimic_types::{Point, Pose};
+
 use crate::body::LEGO;
 use crate::command::{Command, ExpertCommand};
 use crate::episode::Observation;
-use crate::geometry::{Point, Pose};
 use crate::math::{PI, deg, wrap_angle_rad};
 
 use super::Controller;
@@ -94,7 +95,7 @@ impl Controller for Expert {
         let (v, w) = match p {
             Plan::GoTo(t) => drive_to(robot, t, 100.0, &mut self.spin),
             Plan::Face(h) => {
-                let e = wrap_angle_rad(h - robot.theta_rad);
+                let e = wrap_angle_rad(h - robot.theta_rad());
                 (0.0, (2.0 * e).clamp(-0.9, 0.9))
             }
             Plan::Push(t) => {

@@ -5,10 +5,11 @@
 
 use std::collections::VecDeque;
 
+use polymimic_types::{Point, Pose};
+
 use crate::body::HUMANOID;
 use crate::command::{Command, HumanoidCommand as H};
 use crate::episode::Observation;
-use crate::geometry::{Point, Pose};
 use crate::math::{deg, wrap_angle_rad};
 
 use super::Controller;
@@ -105,23 +106,23 @@ impl HumanoidController {
         let robot = obs.robot;
         let aim = aim_point(&obs.field);
         let goal_heading = ball.bearing_rad(aim);
-        let heading_err = wrap_angle_rad(goal_heading - robot.theta_rad);
+        let heading_err = wrap_angle_rad(goal_heading - robot.theta_rad());
         let b = robot.robot_from_field(ball);
         let behind = robot.point().dist_mm(aim) > ball.dist_mm(aim);
         // Close behind the ball and roughly facing the goal: line up a foot and kick.
-        if behind && b.x_mm > 40.0 && b.x_mm < 260.0 && b.y_mm.abs() < 90.0 && heading_err.abs() < deg(30.0) {
+        if behind && b.x_mm() > 40.0 && b.x_mm() < 260.0 && b.y_mm().abs() < 90.0 && heading_err.abs() < deg(30.0) {
             if heading_err.abs() > deg(10.0) {
                 return if heading_err > 0.0 { H::TurnLeft } else { H::TurnRight };
             }
-            let side = if b.y_mm >= 0.0 { 1.0 } else { -1.0 };
-            let lateral_err = b.y_mm - side * HUMANOID.foot_side_mm;
+            let side = if b.y_mm() >= 0.0 { 1.0 } else { -1.0 };
+            let lateral_err = b.y_mm() - side * HUMANOID.foot_side_mm;
             if lateral_err.abs() > 10.0 {
                 return if lateral_err > 0.0 { H::ShuffleLeft } else { H::ShuffleRight };
             }
-            if b.x_mm > KICK_RANGE_MM.1 {
+            if b.x_mm() > KICK_RANGE_MM.1 {
                 return H::WalkForward;
             }
-            if b.x_mm < KICK_RANGE_MM.0 {
+            if b.x_mm() < KICK_RANGE_MM.0 {
                 return H::WalkBackward;
             }
             return if side > 0.0 { H::KickLeft } else { H::KickRight };
@@ -130,7 +131,7 @@ impl HumanoidController {
             Plan::GoTo(t) => self.walk_to(robot, t),
             Plan::Push(_) => self.walk_to(robot, ball),
             Plan::Face(h) => {
-                if wrap_angle_rad(h - robot.theta_rad) > 0.0 {
+                if wrap_angle_rad(h - robot.theta_rad()) > 0.0 {
                     H::TurnLeft
                 } else {
                     H::TurnRight

@@ -13,9 +13,10 @@ pub use humanoid::HumanoidController;
 pub use poor::Poor;
 pub use tiny::TinyController;
 
+use polymimic_types::Pose;
+
 use crate::command::Command;
 use crate::episode::Observation;
-use crate::geometry::Pose;
 
 /// Chooses a command every tracker frame.
 pub trait Controller: Send {

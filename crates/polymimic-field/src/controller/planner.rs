@@ -1,7 +1,9 @@
 //! Shared geometry of a competition-style attacker: get behind the ball on the ball–goal line
 //! without touching it on the way, then push (or kick) it along that line.
 
-use crate::geometry::{FieldGeometry, Point, Pose};
+use polymimic_types::{Point, Pose};
+
+use crate::geometry::FieldGeometry;
 use crate::math::{PI, cos, sin, wrap_angle_rad};
 
 /// What the attacker should do next.
@@ -48,25 +50,25 @@ fn line(ball: Point, aim: Point) -> ((f64, f64), (f64, f64)) {
 pub(crate) fn behind_spot(ball: Point, aim: Point, s: &Sizes, extra: f64) -> Point {
     let (g, _) = line(ball, aim);
     let back = s.ball_r + s.front + s.gap + extra;
-    Point::new(ball.x_mm - g.0 * back, ball.y_mm - g.1 * back)
+    Point::new(ball.x_mm() - g.0 * back, ball.y_mm() - g.1 * back)
 }
 
 /// Is the way from `a` to `b` blocked by a disc of radius `r` at `c`? Only the interior of the
 /// segment counts: ending next to the ball (the spot behind it) is the point.
 fn blocked(a: Point, b: Point, c: Point, r: f64) -> bool {
-    let (dx, dy) = (b.x_mm - a.x_mm, b.y_mm - a.y_mm);
+    let (dx, dy) = (b.x_mm() - a.x_mm(), b.y_mm() - a.y_mm());
     let len2 = dx * dx + dy * dy;
     if len2 <= 0.0 {
         return false;
     }
-    let t = ((c.x_mm - a.x_mm) * dx + (c.y_mm - a.y_mm) * dy) / len2;
-    t > 0.0 && t < 1.0 && c.dist_mm(Point::new(a.x_mm + t * dx, a.y_mm + t * dy)) < r
+    let t = ((c.x_mm() - a.x_mm()) * dx + (c.y_mm() - a.y_mm()) * dy) / len2;
+    t > 0.0 && t < 1.0 && c.dist_mm(Point::new(a.x_mm() + t * dx, a.y_mm() + t * dy)) < r
 }
 
 /// Keep a target where the robot can stand without leaving the field.
 fn clamp_to_field(p: Point, field: &FieldGeometry, reach: f64) -> Point {
     let (mx, my) = ((field.half_length_mm() - reach - 5.0).max(0.0), (field.half_width_mm() - reach - 5.0).max(0.0));
-    Point::new(p.x_mm.clamp(-mx, mx), p.y_mm.clamp(-my, my))
+    Point::new(p.x_mm().clamp(-mx, mx), p.y_mm().clamp(-my, my))
 }
 
 /// Which way round the ball (+1: through the line's left-normal side, counter-clockwise). The robot's own side of the
@@ -74,8 +76,8 @@ fn clamp_to_field(p: Point, field: &FieldGeometry, reach: f64) -> Point {
 fn detour_side(lateral: f64, ball: Point, n: (f64, f64), s: &Sizes) -> f64 {
     if lateral.abs() > 0.3 * s.ball_r {
         lateral.signum()
-    } else if ball.y_mm.abs() > 0.3 * s.ball_r && n.1.abs() > 1e-6 {
-        -ball.y_mm.signum() * n.1.signum()
+    } else if ball.y_mm().abs() > 0.3 * s.ball_r && n.1.abs() > 1e-6 {
+        -ball.y_mm().signum() * n.1.signum()
     } else {
         1.0
     }
@@ -86,11 +88,11 @@ fn detour_side(lateral: f64, ball: Point, n: (f64, f64), s: &Sizes) -> f64 {
 pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, pushing: bool) -> Plan {
     let aim = aim_point(field);
     let (g, n) = line(ball, aim);
-    let rel = (robot.x_mm - ball.x_mm, robot.y_mm - ball.y_mm);
+    let rel = (robot.x_mm() - ball.x_mm(), robot.y_mm() - ball.y_mm());
     let along = rel.0 * g.0 + rel.1 * g.1;
     let lateral = rel.0 * n.0 + rel.1 * n.1;
     let goal_heading = ball.bearing_rad(aim);
-    let heading_err = wrap_angle_rad(goal_heading - robot.theta_rad);
+    let heading_err = wrap_angle_rad(goal_heading - robot.theta_rad());
     let contact = s.ball_r + s.front;
     // Behind the ball, on the line, facing the goal: push; looser once already pushing.
     let k = if pushing { 1.6 } else { 1.0 };
@@ -98,7 +100,7 @@ pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, p
     let on_line = lateral.abs() < k * 0.45 * s.ball_r.max(s.spot_tol);
     let facing = heading_err.abs() < k * s.face_tol_rad && robot.relative_bearing_rad(ball).abs() < k * s.face_tol_rad;
     if behind && on_line && facing {
-        return Plan::Push(Point::new(ball.x_mm + g.0 * 2.0 * contact, ball.y_mm + g.1 * 2.0 * contact));
+        return Plan::Push(Point::new(ball.x_mm() + g.0 * 2.0 * contact, ball.y_mm() + g.1 * 2.0 * contact));
     }
     let spot = clamp_to_field(behind_spot(ball, aim, s, 0.0), field, s.reach);
     if robot.point().dist_mm(spot) < s.spot_tol {
@@ -116,7 +118,7 @@ pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, p
         // Too close: back off round the ball, a quarter turn ahead on the chosen side.
         // Counter-clockwise round the ball passes the left-normal side (+1).
         let a = away + side * 0.6;
-        Point::new(ball.x_mm + 1.4 * clearance * cos(a), ball.y_mm + 1.4 * clearance * sin(a))
+        Point::new(ball.x_mm() + 1.4 * clearance * cos(a), ball.y_mm() + 1.4 * clearance * sin(a))
     } else {
         // Aim just outside the tangent to the clearance circle on the chosen side; as the
         // robot moves the tangent point slides round the ball until the spot is in view.
@@ -124,7 +126,7 @@ pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, p
         let alpha = (r / d).min(1.0).asin();
         let dir = robot.point().bearing_rad(ball) - side * alpha;
         let reach = (d * d - r * r).max(0.0).sqrt() + 0.5 * r;
-        Point::new(robot.x_mm + reach * cos(dir), robot.y_mm + reach * sin(dir))
+        Point::new(robot.x_mm() + reach * cos(dir), robot.y_mm() + reach * sin(dir))
     };
     Plan::GoTo(clamp_to_field(target, field, s.reach))
 }
@@ -151,7 +153,7 @@ mod tests {
         let robot = Pose::new(170.0, 0.0, std::f64::consts::PI);
         match plan(robot, ball, &f, &S, false) {
             Plan::GoTo(w) => {
-                assert!(w.y_mm.abs() > 100.0, "{w:?}");
+                assert!(w.y_mm().abs() > 100.0, "{w:?}");
             }
             other => panic!("{other:?}"),
         }
@@ -164,7 +166,7 @@ mod tests {
         let robot = Pose::new(-170.0, 0.0, 0.0);
         let spot = behind_spot(ball, aim_point(&f), &S, 0.0);
         assert_eq!(plan(robot, ball, &f, &S, false), Plan::GoTo(spot));
-        let at_spot = Pose::new(spot.x_mm, spot.y_mm, 1.0);
+        let at_spot = Pose::new(spot.x_mm(), spot.y_mm(), 1.0);
         assert!(matches!(plan(at_spot, ball, &f, &S, false), Plan::Face(_)));
     }
 }

@@ -1,7 +1,9 @@
 //! Poor: drives straight at the ball with primitives (§3.2.1), with no thought for where the
 //! ball will go, so in configuration 2 it pushes the ball toward its own goal.
 
-use crate::command::{Command, Primitive};
+use polymimic_types::Primitive;
+
+use crate::command::Command;
 use crate::episode::Observation;
 use crate::math::deg;
 

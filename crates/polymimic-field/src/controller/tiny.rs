@@ -1,8 +1,11 @@
 //! The tiny robot's skilled controller: the same attacker plan as the Expert, but only the
 //! primitive commands F B L R S (the tiny robot's command set).
 
+use polymimic_types::Primitive;
+
 use crate::body::TINY;
-use crate::command::{Command, Primitive};
+
+use crate::command::Command;
 use crate::episode::Observation;
 use crate::geometry::FieldGeometry;
 use crate::math::{deg, wrap_angle_rad};
@@ -69,7 +72,7 @@ impl Controller for TinyController {
         match p {
             Plan::GoTo(t) | Plan::Push(t) => self.turn_or(robot.relative_bearing_rad(t), deg(20.0), Primitive::Forward),
             Plan::Face(h) => {
-                let e = wrap_angle_rad(h - robot.theta_rad);
+                let e = wrap_angle_rad(h - robot.theta_rad());
                 self.turn_or(e, deg(10.0), Primitive::Forward)
             }
         }

@@ -135,7 +135,7 @@ fn behaviour(value: &Json, key: &str) -> Result<BehaviourRecord, RecordError> {
     let f = Fields::of(value, key, &BEHAVIOUR_KEYS)?;
     let primitives = f.string("primitives")?;
     let letters_ok =
-        !primitives.is_empty() && primitives.chars().all(|c| Primitive::ALL.iter().any(|p| p.letter().starts_with(c)));
+        !primitives.is_empty() && primitives.chars().all(|c| Primitive::ALL.iter().any(|p| p.letter() == c));
     if !letters_ok {
         return Err(bad(
             &f.path("primitives"),
@@ -219,7 +219,7 @@ pub(super) fn trial(value: &Json) -> Result<TrialRecord, RecordError> {
     let imitator_model = if imitator_model_json.is_empty() {
         None
     } else {
-        Some(Arc::new(ForwardModel::from_json(&imitator_model_json).map_err(|e| bad("imitator_model", e))?))
+        Some(Arc::new(ForwardModel::from_json(&imitator_model_json).map_err(|e| bad("imitator_model", e.to_string()))?))
     };
     Ok(TrialRecord { models, imitator, seed: f.count("seed")?, imitator_model_json, imitator_model })
 }

@@ -122,11 +122,7 @@ fn states(value: &Bound<'_, PyAny>, what: &str, key: &str, k: usize) -> PyResult
                     STATE_COLUMNS[c], r[c]
                 )));
             }
-            Ok(TrackedFrame {
-                robot: Pose { x_mm: r[0], y_mm: r[1], theta_rad: r[2] },
-                ball_x_mm: r[3],
-                ball_y_mm: r[4],
-            })
+            Ok(TrackedFrame { robot: Pose::new(r[0], r[1], r[2]), ball_x_mm: r[3], ball_y_mm: r[4] })
         })
         .collect()
 }

@@ -1,88 +1,21 @@
-//! A continuous-emission HMM: each state emits a Gaussian with a diagonal covariance. The
-//! thesis left continuous HMMs as future work (§2.6); they skip quantisation altogether.
-//!
-//! The recursions are the discrete model's: per frame, the densities b_j(o_t) are computed in
-//! log space, shifted by their largest value m_t so that none underflows, and handed to the
-//! same scaled forward-backward; log P(O|λ) is then Σ_t log c_t + Σ_t m_t.
+//! Training and scoring: Baum-Welch over diagonal Gaussians, on the discrete model's scaled
+//! forward-backward with per-frame log densities shifted by their maximum.
 
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
-use serde::{Deserialize, Serialize};
 
 use crate::baum_welch::SEQUENCES_PER_CHUNK;
-use crate::error::{HmmError, HmmParamsError};
+use crate::error::HmmError;
 use crate::forward_backward::{Counts, Lattice, Scratch, WithLattice, with_lattice};
-use crate::topology::Topology;
 use crate::transitions::{Transitions, add_rows};
 
-const FORMAT: &str = "polymimic.GaussianHMM";
-const VERSION: u32 = 1;
+use super::GaussianHmm;
+
 const LN_2PI: f64 = 1.837_877_066_409_345_5;
-
-/// What a Gaussian model is and how it is trained.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct GaussianHmmParams {
-    pub n_states: usize,
-    /// Dimensions of an observation.
-    pub dim: usize,
-    pub topology: Topology,
-    pub max_iter: usize,
-    #[serde(with = "crate::params::tolerance_text")]
-    pub tol: f64,
-    /// Lower bound on every variance, so a state never collapses onto a single point.
-    pub min_variance: f64,
-    pub seed: u64,
-}
-
-impl GaussianHmmParams {
-    #[must_use]
-    pub fn new(n_states: usize, dim: usize) -> Self {
-        Self { n_states, dim, topology: Topology::default(), max_iter: 100, tol: 1e-4, min_variance: 1e-3, seed: 0 }
-    }
-
-    /// # Errors
-    /// Names the field out of range.
-    pub fn check(&self) -> Result<(), HmmParamsError> {
-        if self.n_states == 0 {
-            return Err(HmmParamsError::NoStates(0));
-        }
-        if self.n_states > crate::MAX_STATES {
-            return Err(HmmParamsError::TooManyStates { n_states: self.n_states, max: crate::MAX_STATES });
-        }
-        if self.dim == 0 {
-            return Err(HmmParamsError::NoDimensions);
-        }
-        if self.tol.is_nan() {
-            return Err(HmmParamsError::TolIsNan);
-        }
-        if !(self.min_variance.is_finite() && self.min_variance > 0.0) {
-            return Err(HmmParamsError::MinVariance(self.min_variance));
-        }
-        Ok(())
-    }
-}
-
-/// π, A, means and variances of a fitted model, row-major.
-pub type Parts<'a> = (&'a [f64], &'a [f64], &'a [f64], &'a [f64]);
 
 /// Expected counts of one E-step: log-likelihood, Σ γ_0, Σ ξ (row-major), and moment sums.
 type ExpectedCounts = ((f64, Vec<f64>, Vec<f64>), MomentSums);
-
-/// A left-right or ergodic HMM with diagonal-Gaussian emissions.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct GaussianHmm {
-    params: GaussianHmmParams,
-    startprob: Vec<f64>,
-    transmat: Vec<f64>,
-    /// Row-major `n_states × dim`.
-    means: Vec<f64>,
-    /// Row-major `n_states × dim`.
-    variances: Vec<f64>,
-    history: Vec<f64>,
-    converged: bool,
-    fitted: bool,
-}
 
 /// Sums of γ-weighted observations per state.
 struct MomentSums {
@@ -106,104 +39,6 @@ impl MomentSums {
 }
 
 impl GaussianHmm {
-    /// An untrained model.
-    ///
-    /// # Errors
-    /// Parameters out of range.
-    pub fn new(params: GaussianHmmParams) -> Result<Self, HmmParamsError> {
-        params.check()?;
-        Ok(Self {
-            params,
-            startprob: Vec::new(),
-            transmat: Vec::new(),
-            means: Vec::new(),
-            variances: Vec::new(),
-            history: Vec::new(),
-            converged: false,
-            fitted: false,
-        })
-    }
-
-    /// A model with the given parameters (row-major tables).
-    ///
-    /// # Errors
-    /// Shapes, probabilities or variances that are not valid.
-    pub fn from_parts(
-        params: GaussianHmmParams,
-        startprob: Vec<f64>,
-        transmat: Vec<f64>,
-        means: Vec<f64>,
-        variances: Vec<f64>,
-    ) -> Result<Self, HmmParamsError> {
-        params.check()?;
-        let (n, d) = (params.n_states, params.dim);
-        // Reuse the discrete checks for π and A with a one-symbol emission table.
-        crate::Probabilities::new(n, 1, startprob.clone(), transmat.clone(), vec![1.0; n], params.topology)?;
-        // Saturating: a product that overflows (a damaged file's dimension) matches no table.
-        if means.len() != n.saturating_mul(d) || variances.len() != n.saturating_mul(d) {
-            return Err(HmmParamsError::Shape {
-                name: "means/variances",
-                actual: format!("{} and {} entries", means.len(), variances.len()),
-                expected: format!("({n}, {d}) each"),
-            });
-        }
-        if means.iter().any(|m| !m.is_finite()) || variances.iter().any(|v| !(v.is_finite() && *v > 0.0)) {
-            return Err(HmmParamsError::MinVariance(variances.iter().copied().fold(f64::INFINITY, f64::min)));
-        }
-        Ok(Self { params, startprob, transmat, means, variances, history: Vec::new(), converged: false, fitted: true })
-    }
-
-    #[must_use]
-    pub fn params(&self) -> &GaussianHmmParams {
-        &self.params
-    }
-
-    fn fitted(&self) -> Result<(), HmmError> {
-        if self.fitted { Ok(()) } else { Err(HmmError::NotFitted) }
-    }
-
-    /// π, A, means and variances (row-major), once fitted.
-    ///
-    /// # Errors
-    /// [`HmmError::NotFitted`].
-    pub fn parts(&self) -> Result<Parts<'_>, HmmError> {
-        self.fitted()?;
-        Ok((&self.startprob, &self.transmat, &self.means, &self.variances))
-    }
-
-    #[must_use]
-    pub fn history(&self) -> &[f64] {
-        &self.history
-    }
-
-    #[must_use]
-    pub fn converged(&self) -> bool {
-        self.converged
-    }
-
-    fn check_sequences(&self, sequences: &[&[f64]]) -> Result<(), HmmParamsError> {
-        if sequences.is_empty() {
-            return Err(HmmParamsError::NoSequences);
-        }
-        let d = self.params.dim;
-        for (index, seq) in sequences.iter().enumerate() {
-            if seq.is_empty() {
-                return Err(HmmParamsError::EmptySequence { index });
-            }
-            if seq.len() % d != 0 {
-                return Err(HmmParamsError::Shape {
-                    name: "sequence",
-                    actual: format!("{} numbers", seq.len()),
-                    expected: format!("rows of {d}"),
-                });
-            }
-            if let Some(flat) = seq.iter().position(|x| !x.is_finite()) {
-                return Err(HmmParamsError::NotFinite { index, position: flat / d });
-            }
-        }
-        Ok(())
-    }
-
     /// Baum-Welch from the temporal split of every sequence into `n_states` pieces (each
     /// state starts with the mean and variance of its pieces) and random transitions that
     /// respect the topology. On failure the model is left as it was.
@@ -326,50 +161,6 @@ impl GaussianHmm {
         }
         shift
     }
-
-    /// log p(O|λ) of one sequence (row-major frames).
-    ///
-    /// # Errors
-    /// An unfitted model or a bad sequence.
-    pub fn score(&self, seq: &[f64]) -> Result<f64, HmmError> {
-        self.fitted()?;
-        self.check_sequences(&[seq])?;
-        Ok(with_lattice(&self.startprob, &self.transmat, Score { model: self, sequences: &[seq] })[0])
-    }
-
-    /// log p(O|λ) of many sequences, in parallel.
-    ///
-    /// # Errors
-    /// An unfitted model or a bad sequence.
-    pub fn score_many(&self, sequences: &[&[f64]]) -> Result<Vec<f64>, HmmError> {
-        self.fitted()?;
-        self.check_sequences(sequences)?;
-        Ok(with_lattice(&self.startprob, &self.transmat, Score { model: self, sequences }))
-    }
-
-    /// The model as versioned JSON.
-    ///
-    /// # Errors
-    /// Never in practice.
-    pub fn to_json(&self) -> Result<String, HmmError> {
-        polymimic_persist::to_envelope(FORMAT, VERSION, self).map_err(HmmError::Corrupt)
-    }
-
-    /// A model from [`Self::to_json`] text, re-validated.
-    ///
-    /// # Errors
-    /// Another format or version, or parts that do not validate.
-    pub fn from_json(text: &str) -> Result<Self, HmmError> {
-        let saved: Self = polymimic_persist::from_envelope(text, FORMAT, VERSION).map_err(HmmError::Corrupt)?;
-        if !saved.fitted {
-            return Self::new(saved.params).map_err(|e| HmmError::Corrupt(e.to_string()));
-        }
-        let mut model = Self::from_parts(saved.params, saved.startprob, saved.transmat, saved.means, saved.variances)
-            .map_err(|e| HmmError::Corrupt(e.to_string()))?;
-        model.history = saved.history;
-        model.converged = saved.converged;
-        Ok(model)
-    }
 }
 
 fn normalise_into(into: &mut [f64], counts: &[f64]) {
@@ -381,9 +172,9 @@ fn normalise_into(into: &mut [f64], counts: &[f64]) {
     }
 }
 
-struct Score<'a> {
-    model: &'a GaussianHmm,
-    sequences: &'a [&'a [f64]],
+pub(super) struct Score<'a> {
+    pub(super) model: &'a GaussianHmm,
+    pub(super) sequences: &'a [&'a [f64]],
 }
 
 impl WithLattice for Score<'_> {
@@ -460,7 +251,9 @@ impl WithLattice for EStep<'_> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::GaussianHmmParams;
     use super::*;
+    use crate::topology::Topology;
     use rand::RngExt;
 
     fn density(x: &[f64], mean: &[f64], variance: &[f64]) -> f64 {
@@ -586,18 +379,5 @@ mod tests {
         for pair in m.history().windows(2) {
             assert!(pair[1] >= pair[0] - 1e-9 * (pair[0].abs() + 1.0));
         }
-        let text = m.to_json().unwrap();
-        assert_eq!(GaussianHmm::from_json(&text).unwrap(), m);
-    }
-
-    #[test]
-    fn bad_sequences_are_named() {
-        let mut m = GaussianHmm::new(GaussianHmmParams::new(2, 2)).unwrap();
-        assert_eq!(m.score(&[0.0, 0.0]).unwrap_err(), HmmError::NotFitted);
-        assert!(matches!(m.fit(&[&[0.0, 1.0, 2.0]]), Err(HmmError::Params(HmmParamsError::Shape { .. }))));
-        assert!(matches!(
-            m.fit(&[&[0.0, 1.0], &[0.0, f64::NAN]]),
-            Err(HmmError::Params(HmmParamsError::NotFinite { index: 1, position: 0 }))
-        ));
     }
 }

@@ -1,7 +1,9 @@
-//! Lloyd's k-means refinement with parallel assignment and a fixed reduction order.
+//! Lloyd's k-means refinement: parallel assignment that skips points Hamerly's bounds keep in
+//! their cells, and sums reduced in a fixed order.
 
 use rayon::prelude::*;
 
+use crate::bounds::Bounds;
 use crate::kdtree::KdTree;
 use crate::points::{Points, distance2};
 
@@ -50,18 +52,30 @@ impl CellSums {
 
 /// Assigns every point to its nearest codeword (updating `labels`, which also serve as search
 /// hints) and sums the cells.
-fn assign(points: Points, codewords: &[f64], labels: &mut [usize]) -> CellSums {
+fn assign(points: Points, codewords: &[f64], labels: &mut [usize], bounds: &mut Bounds) -> CellSums {
     let dim = points.dim();
     let k = codewords.len() / dim;
+    bounds.advance(codewords);
+    let moves = &bounds.moves;
     let tree = KdTree::new(codewords, dim);
     let partial: Vec<CellSums> = labels
         .par_chunks_mut(POINTS_PER_CHUNK)
+        .zip(bounds.lower.par_chunks_mut(POINTS_PER_CHUNK))
         .enumerate()
-        .map(|(chunk, chunk_labels)| {
+        .map(|(chunk, (chunk_labels, chunk_lower))| {
             let mut cells = CellSums::zeros(k, dim);
-            for (offset, label) in chunk_labels.iter_mut().enumerate() {
+            for (offset, (label, lower)) in chunk_labels.iter_mut().zip(chunk_lower).enumerate() {
                 let point = points.get(chunk * POINTS_PER_CHUNK + offset);
-                let (nearest, d2) = tree.nearest(point, *label);
+                let own = (*label).min(k - 1);
+                let own_d2 = distance2(point, &codewords[own * dim..(own + 1) * dim]);
+                let (nearest, d2) = if let Some(bound) = moves.still_nearest(point, own, own_d2, *lower) {
+                    *lower = bound;
+                    (own, own_d2)
+                } else {
+                    let (nearest, d2, second_d2) = tree.nearest_two(point, own);
+                    *lower = second_d2.sqrt();
+                    (nearest, d2)
+                };
                 cells.changed += usize::from(nearest != *label);
                 *label = nearest;
                 cells.squared_error += d2;
@@ -88,8 +102,9 @@ pub fn refine(points: Points, codewords: &mut [f64], labels: &mut [usize], stopp
     let mut iterations = 0;
     let mut reseeded = 0;
     let mut reseeded_last_time = 0;
+    let mut bounds = Bounds::new(points.len(), dim);
     while iterations < stopping.max_iter {
-        let cells = assign(points, codewords, labels);
+        let cells = assign(points, codewords, labels, &mut bounds);
         let distortion = cells.squared_error / n;
         if iterations > 0 && cells.changed == 0 && reseeded_last_time == 0 {
             // Same cells as last time: the codewords are already their means.
@@ -104,13 +119,16 @@ pub fn refine(points: Points, codewords: &mut [f64], labels: &mut [usize], stopp
         }
         reseeded_last_time = reseed_empty_cells(points, codewords, labels, &cells.counts);
         reseeded += reseeded_last_time;
+        if reseeded_last_time > 0 {
+            bounds.forget();
+        }
         let drop = (previous_distortion - distortion) / distortion;
         if reseeded_last_time == 0 && (distortion == 0.0 || drop <= stopping.tol) {
             break;
         }
         previous_distortion = distortion;
     }
-    let distortion = distortion(points, codewords, labels);
+    let distortion = assign(points, codewords, labels, &mut bounds).squared_error / n;
     Refinement { distortion, iterations, reseeded }
 }
 

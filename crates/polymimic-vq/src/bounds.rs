@@ -37,8 +37,9 @@ pub struct Moves {
 impl Moves {
     /// The new lower bound when the point's own codeword (at `own_d2`) is still strictly
     /// the nearest; `None` when the point must be searched.
+    /// `dim` is the points' dimension (a constant where the caller is compiled for one).
     #[inline]
-    pub fn still_nearest(&self, point: &[f64], own: usize, own_d2: f64, lower: f64) -> Option<f64> {
+    pub fn still_nearest(&self, dim: usize, point: &[f64], own: usize, own_d2: f64, lower: f64) -> Option<f64> {
         let own_d = own_d2.sqrt() * (1.0 + SLACK);
         let mut bound = (lower - self.slow_drift) - (lower.abs() + self.slow_drift) * self.rounding;
         // NaN (never searched) and +∞ − ∞ fail the comparison, as they should.
@@ -47,7 +48,7 @@ impl Moves {
             return None;
         }
         let mut nearest_fast_d2 = f64::INFINITY;
-        for (codeword, &index) in self.fast_codewords.chunks_exact(self.dim).zip(&self.fast) {
+        for (codeword, &index) in self.fast_codewords.chunks_exact(dim).zip(&self.fast) {
             if index != own {
                 nearest_fast_d2 = nearest_fast_d2.min(distance2(point, codeword));
             }
@@ -124,7 +125,7 @@ mod tests {
     fn an_unsearched_point_is_searched() {
         let mut bounds = Bounds::new(1, 1);
         bounds.advance(&[0.0, 10.0]);
-        assert_eq!(bounds.moves.still_nearest(&[1.0], 0, 1.0, bounds.lower[0]), None);
+        assert_eq!(bounds.moves.still_nearest(1, &[1.0], 0, 1.0, bounds.lower[0]), None);
     }
 
     #[test]
@@ -133,9 +134,9 @@ mod tests {
         bounds.advance(&[0.0, 10.0]);
         // Searched: own codeword at distance 1, the other at 9.
         bounds.advance(&[0.0, 8.0]);
-        assert!(bounds.moves.still_nearest(&[1.0], 0, 1.0, 9.0).is_some_and(|b| b < 7.0 && b > 6.99));
+        assert!(bounds.moves.still_nearest(1, &[1.0], 0, 1.0, 9.0).is_some_and(|b| b < 7.0 && b > 6.99));
         bounds.advance(&[0.0, 1.0]);
         // The fast codeword is measured directly: now a tie, which a search must settle.
-        assert_eq!(bounds.moves.still_nearest(&[1.0], 0, 1.0, 7.0), None);
+        assert_eq!(bounds.moves.still_nearest(1, &[1.0], 0, 1.0, 7.0), None);
     }
 }

@@ -3,7 +3,7 @@
 
 use rayon::prelude::*;
 
-use crate::bounds::Bounds;
+use crate::bounds::{Bounds, Moves};
 use crate::kdtree::KdTree;
 use crate::points::{Points, distance2};
 
@@ -63,26 +63,13 @@ fn assign(points: Points, codewords: &[f64], labels: &mut [usize], bounds: &mut 
         .zip(bounds.lower.par_chunks_mut(POINTS_PER_CHUNK))
         .enumerate()
         .map(|(chunk, (chunk_labels, chunk_lower))| {
-            let mut cells = CellSums::zeros(k, dim);
-            for (offset, (label, lower)) in chunk_labels.iter_mut().zip(chunk_lower).enumerate() {
-                let point = points.get(chunk * POINTS_PER_CHUNK + offset);
-                let own = (*label).min(k - 1);
-                let own_d2 = distance2(point, &codewords[own * dim..(own + 1) * dim]);
-                let (nearest, d2) = if let Some(bound) = moves.still_nearest(point, own, own_d2, *lower) {
-                    *lower = bound;
-                    (own, own_d2)
-                } else {
-                    let (nearest, d2, second_d2) = tree.nearest_two(point, own);
-                    *lower = second_d2.sqrt();
-                    (nearest, d2)
-                };
-                cells.changed += usize::from(nearest != *label);
-                *label = nearest;
-                cells.squared_error += d2;
-                cells.counts[nearest] += 1;
-                cells.sums[nearest * dim..(nearest + 1) * dim].iter_mut().zip(point).for_each(|(s, x)| *s += x);
+            let first = chunk * POINTS_PER_CHUNK;
+            // The tracker's dimensions compiled apart, so their loops unroll; same arithmetic.
+            match dim {
+                2 => assign_chunk::<2>(points, first, codewords, chunk_labels, chunk_lower, &tree, moves),
+                3 => assign_chunk::<3>(points, first, codewords, chunk_labels, chunk_lower, &tree, moves),
+                _ => assign_chunk::<0>(points, first, codewords, chunk_labels, chunk_lower, &tree, moves),
             }
-            cells
         })
         .collect();
     let mut total = CellSums::zeros(k, dim);
@@ -90,6 +77,41 @@ fn assign(points: Points, codewords: &[f64], labels: &mut [usize], bounds: &mut 
         total.add(cells);
     }
     total
+}
+
+/// Assigns the points from `first` on (one per label) and sums their cells. `DIM` is the
+/// dimension when known at compile time, 0 otherwise.
+fn assign_chunk<const DIM: usize>(
+    points: Points,
+    first: usize,
+    codewords: &[f64],
+    labels: &mut [usize],
+    lower: &mut [f64],
+    tree: &KdTree,
+    moves: &Moves,
+) -> CellSums {
+    let dim = if DIM == 0 { points.dim() } else { DIM };
+    let k = codewords.len() / dim;
+    let mut cells = CellSums::zeros(k, dim);
+    for (offset, (label, lower)) in labels.iter_mut().zip(lower).enumerate() {
+        let point = &points.raw()[(first + offset) * dim..(first + offset + 1) * dim];
+        let own = (*label).min(k - 1);
+        let own_d2 = distance2(point, &codewords[own * dim..(own + 1) * dim]);
+        let (nearest, d2) = if let Some(bound) = moves.still_nearest(dim, point, own, own_d2, *lower) {
+            *lower = bound;
+            (own, own_d2)
+        } else {
+            let (nearest, d2, second_d2) = tree.nearest_two(point, own);
+            *lower = second_d2.sqrt();
+            (nearest, d2)
+        };
+        cells.changed += usize::from(nearest != *label);
+        *label = nearest;
+        cells.squared_error += d2;
+        cells.counts[nearest] += 1;
+        cells.sums[nearest * dim..(nearest + 1) * dim].iter_mut().zip(point).for_each(|(s, x)| *s += x);
+    }
+    cells
 }
 
 /// Refines `codewords` in place on `points` by Lloyd iterations, starting from the given

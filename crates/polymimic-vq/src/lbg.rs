@@ -239,6 +239,7 @@ mod tests {
     /// Guards every speed-up of the search and the update: the codebooks grown by the
     /// original implementation, bit for bit, whatever the number of threads.
     #[test]
+    #[cfg_attr(debug_assertions, ignore = "minutes unoptimised: cargo test -p polymimic-vq --release")]
     fn codebooks_are_bit_identical_to_the_reference_implementations() {
         let data = tracker_like(20_000);
         let coarse: Vec<f64> = data.iter().map(|x| (x / 4.0).round()).collect();

@@ -13,6 +13,13 @@ enum Node {
     Split { dimension: usize, value: f64, below: usize, above: usize },
 }
 
+/// The nearest codeword so far and the squared distance to the nearest of the others.
+struct Two {
+    index: usize,
+    d2: f64,
+    second_d2: f64,
+}
+
 /// A k-d tree over a fixed set of codewords (it keeps its own copy of them).
 #[derive(Debug, Clone)]
 pub struct KdTree {
@@ -76,6 +83,47 @@ impl KdTree {
         best
     }
 
+    /// As [`Self::nearest`], and the squared distance to the nearest of all the other
+    /// codewords (infinite when there is only one): a lower bound that lets later Lloyd
+    /// iterations skip the search while the codewords move less than the gap.
+    #[must_use]
+    pub fn nearest_two(&self, point: &[f64], hint: usize) -> (usize, f64, f64) {
+        let hint = hint.min(self.order.len() - 1);
+        let mut best = Two { index: hint, d2: distance2(point, self.codeword(hint)), second_d2: f64::INFINITY };
+        self.search_two(0, point, &mut best);
+        (best.index, best.d2, best.second_d2)
+    }
+
+    fn search_two(&self, node: usize, point: &[f64], best: &mut Two) {
+        match self.nodes[node] {
+            Node::Leaf { start, end } => {
+                for &index in &self.order[start..end] {
+                    if index == best.index {
+                        continue;
+                    }
+                    let d = distance2(point, self.codeword(index));
+                    if d < best.d2 || (d == best.d2 && index < best.index) {
+                        best.second_d2 = best.d2;
+                        best.index = index;
+                        best.d2 = d;
+                    } else if d < best.second_d2 {
+                        best.second_d2 = d;
+                    }
+                }
+            }
+            Node::Split { dimension, value, below, above } => {
+                let offset = point[dimension] - value;
+                let (near, far) = if offset < 0.0 { (below, above) } else { (above, below) };
+                self.search_two(near, point, best);
+                // Every codeword beyond the plane is at least offset² away (in floating point
+                // too: rounding is monotonic); equal still visits, for the ties.
+                if offset * offset <= best.second_d2 {
+                    self.search_two(far, point, best);
+                }
+            }
+        }
+    }
+
     fn search(&self, node: usize, point: &[f64], best: &mut (usize, f64)) {
         match self.nodes[node] {
             Node::Leaf { start, end } => {
@@ -122,6 +170,27 @@ mod tests {
                 assert_eq!(tree.nearest(&point, hint), brute_force(&codewords, dim, &point));
             }
         }
+    }
+
+    #[test]
+    fn nearest_two_agrees_with_brute_force_on_the_nearest_and_the_runner_up() {
+        let mut rng = ChaCha8Rng::seed_from_u64(5);
+        for dim in [1, 2, 3, 5] {
+            // Coarse coordinates, so that ties between codewords are common.
+            let codewords: Vec<f64> = (0..150 * dim).map(|_| f64::from(rng.random_range(0..8u8))).collect();
+            let tree = KdTree::new(&codewords, dim);
+            for hint in [0, 31, 149] {
+                let point: Vec<f64> = (0..dim).map(|_| f64::from(rng.random_range(0..16u8)) * 0.5).collect();
+                let (index, d2, second_d2) = tree.nearest_two(&point, hint);
+                assert_eq!((index, d2), brute_force(&codewords, dim, &point));
+                let runner_up = (0..150)
+                    .filter(|&i| i != index)
+                    .map(|i| distance2(&point, &codewords[i * dim..(i + 1) * dim]))
+                    .fold(f64::INFINITY, f64::min);
+                assert_eq!(second_d2, runner_up);
+            }
+        }
+        assert_eq!(KdTree::new(&[2.0], 1).nearest_two(&[0.0], 0), (0, 4.0, f64::INFINITY));
     }
 
     #[test]

@@ -201,4 +201,65 @@ mod tests {
             VqParamsError::TooFewPoints { size: 3, n_points: 2 }
         );
     }
+
+    /// Points along short random arcs, like tracker frames relative to a sequence's start.
+    fn tracker_like(n_points: usize) -> Vec<f64> {
+        let mut rng = ChaCha8Rng::seed_from_u64(2);
+        let mut data = Vec::with_capacity(n_points * 3);
+        while data.len() < n_points * 3 {
+            let speed_mm = rng.random_range(-50.0..50.0);
+            let turn_rad: f64 = rng.random_range(-0.6..0.6);
+            for t in 0..25 {
+                let s = f64::from(t) / 25.0;
+                let heading = turn_rad * s;
+                data.push(speed_mm * s * heading.cos() + rng.random_range(-1.0..1.0));
+                data.push(speed_mm * s * heading.sin() + rng.random_range(-1.0..1.0));
+                data.push(16.0 * heading + rng.random_range(-0.8..0.8));
+            }
+        }
+        data.truncate(n_points * 3);
+        data
+    }
+
+    /// FNV-1a over the bits of every codeword, the iteration count and the distortion.
+    fn fingerprint(data: &[f64], dim: usize, size: usize, seed: u64) -> u64 {
+        let mut params = LbgParams::new(size);
+        params.seed = seed;
+        let (codewords, report) = grow(Points::new(data, dim).unwrap(), params).unwrap();
+        let words = codewords.iter().map(|x| x.to_bits()).chain([
+            report.lloyd_iterations as u64,
+            report.reseeded_cells as u64,
+            report.distortion.to_bits(),
+        ]);
+        words.fold(0xcbf2_9ce4_8422_2325, |hash, word| {
+            word.to_le_bytes().iter().fold(hash, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3))
+        })
+    }
+
+    /// Guards every speed-up of the search and the update: the codebooks grown by the
+    /// original implementation, bit for bit, whatever the number of threads.
+    #[test]
+    #[cfg_attr(debug_assertions, ignore = "minutes unoptimised: cargo test -p polymimic-vq --release")]
+    fn codebooks_are_bit_identical_to_the_reference_implementations() {
+        let data = tracker_like(20_000);
+        let coarse: Vec<f64> = data.iter().map(|x| (x / 4.0).round()).collect();
+        let flat: Vec<f64> = data.chunks_exact(3).flat_map(|p| [p[0], p[1]]).collect();
+        let wide: Vec<f64> =
+            data[..15_000].chunks_exact(3).flat_map(|p| [p[0], p[1], p[2], p[0] - p[1], p[2] * 0.5]).collect();
+        let line: Vec<f64> = data.iter().step_by(3).copied().collect();
+        let cases: [(&[f64], usize, usize, u64, u64); 5] = [
+            (&data, 3, 512, 0, 0x2524_87de_90c5_0743),
+            (&coarse, 3, 512, 0, 0x5452_e1ae_7e46_4b80),
+            (&flat, 2, 100, 1, 0x29b2_d2fc_7c3b_0a5f),
+            (&wide, 5, 64, 3, 0x8124_ec9b_3e93_b8c8),
+            (&line, 1, 16, 0, 0xb9f5_b6fa_16ba_217e),
+        ];
+        for threads in [1, 3] {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+            for &(points, dim, size, seed, expected) in &cases {
+                let found = pool.install(|| fingerprint(points, dim, size, seed));
+                assert_eq!(found, expected, "{dim}-D to {size} on {threads} threads");
+            }
+        }
+    }
 }

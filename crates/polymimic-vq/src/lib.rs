@@ -15,6 +15,7 @@
 //! # Ok::<(), polymimic_vq::VqParamsError>(())
 //! ```
 
+mod bounds;
 mod codebook;
 mod error;
 mod kdtree;

@@ -1,7 +1,9 @@
-//! Lloyd's k-means refinement with parallel assignment and a fixed reduction order.
+//! Lloyd's k-means refinement: parallel assignment that skips points Hamerly's bounds keep in
+//! their cells, and sums reduced in a fixed order.
 
 use rayon::prelude::*;
 
+use crate::bounds::{Bounds, Moves};
 use crate::kdtree::KdTree;
 use crate::points::{Points, distance2};
 
@@ -50,25 +52,24 @@ impl CellSums {
 
 /// Assigns every point to its nearest codeword (updating `labels`, which also serve as search
 /// hints) and sums the cells.
-fn assign(points: Points, codewords: &[f64], labels: &mut [usize]) -> CellSums {
+fn assign(points: Points, codewords: &[f64], labels: &mut [usize], bounds: &mut Bounds) -> CellSums {
     let dim = points.dim();
     let k = codewords.len() / dim;
+    bounds.advance(codewords);
+    let moves = &bounds.moves;
     let tree = KdTree::new(codewords, dim);
     let partial: Vec<CellSums> = labels
         .par_chunks_mut(POINTS_PER_CHUNK)
+        .zip(bounds.lower.par_chunks_mut(POINTS_PER_CHUNK))
         .enumerate()
-        .map(|(chunk, chunk_labels)| {
-            let mut cells = CellSums::zeros(k, dim);
-            for (offset, label) in chunk_labels.iter_mut().enumerate() {
-                let point = points.get(chunk * POINTS_PER_CHUNK + offset);
-                let (nearest, d2) = tree.nearest(point, *label);
-                cells.changed += usize::from(nearest != *label);
-                *label = nearest;
-                cells.squared_error += d2;
-                cells.counts[nearest] += 1;
-                cells.sums[nearest * dim..(nearest + 1) * dim].iter_mut().zip(point).for_each(|(s, x)| *s += x);
+        .map(|(chunk, (chunk_labels, chunk_lower))| {
+            let first = chunk * POINTS_PER_CHUNK;
+            // The tracker's dimensions compiled apart, so their loops unroll; same arithmetic.
+            match dim {
+                2 => assign_chunk::<2>(points, first, codewords, chunk_labels, chunk_lower, &tree, moves),
+                3 => assign_chunk::<3>(points, first, codewords, chunk_labels, chunk_lower, &tree, moves),
+                _ => assign_chunk::<0>(points, first, codewords, chunk_labels, chunk_lower, &tree, moves),
             }
-            cells
         })
         .collect();
     let mut total = CellSums::zeros(k, dim);
@@ -76,6 +77,41 @@ fn assign(points: Points, codewords: &[f64], labels: &mut [usize]) -> CellSums {
         total.add(cells);
     }
     total
+}
+
+/// Assigns the points from `first` on (one per label) and sums their cells. `DIM` is the
+/// dimension when known at compile time, 0 otherwise.
+fn assign_chunk<const DIM: usize>(
+    points: Points,
+    first: usize,
+    codewords: &[f64],
+    labels: &mut [usize],
+    lower: &mut [f64],
+    tree: &KdTree,
+    moves: &Moves,
+) -> CellSums {
+    let dim = if DIM == 0 { points.dim() } else { DIM };
+    let k = codewords.len() / dim;
+    let mut cells = CellSums::zeros(k, dim);
+    for (offset, (label, lower)) in labels.iter_mut().zip(lower).enumerate() {
+        let point = &points.raw()[(first + offset) * dim..(first + offset + 1) * dim];
+        let own = (*label).min(k - 1);
+        let own_d2 = distance2(point, &codewords[own * dim..(own + 1) * dim]);
+        let (nearest, d2) = if let Some(bound) = moves.still_nearest(dim, point, own, own_d2, *lower) {
+            *lower = bound;
+            (own, own_d2)
+        } else {
+            let (nearest, d2, second_d2) = tree.nearest_two(point, own);
+            *lower = second_d2.sqrt();
+            (nearest, d2)
+        };
+        cells.changed += usize::from(nearest != *label);
+        *label = nearest;
+        cells.squared_error += d2;
+        cells.counts[nearest] += 1;
+        cells.sums[nearest * dim..(nearest + 1) * dim].iter_mut().zip(point).for_each(|(s, x)| *s += x);
+    }
+    cells
 }
 
 /// Refines `codewords` in place on `points` by Lloyd iterations, starting from the given
@@ -88,8 +124,9 @@ pub fn refine(points: Points, codewords: &mut [f64], labels: &mut [usize], stopp
     let mut iterations = 0;
     let mut reseeded = 0;
     let mut reseeded_last_time = 0;
+    let mut bounds = Bounds::new(points.len(), dim);
     while iterations < stopping.max_iter {
-        let cells = assign(points, codewords, labels);
+        let cells = assign(points, codewords, labels, &mut bounds);
         let distortion = cells.squared_error / n;
         if iterations > 0 && cells.changed == 0 && reseeded_last_time == 0 {
             // Same cells as last time: the codewords are already their means.
@@ -104,13 +141,16 @@ pub fn refine(points: Points, codewords: &mut [f64], labels: &mut [usize], stopp
         }
         reseeded_last_time = reseed_empty_cells(points, codewords, labels, &cells.counts);
         reseeded += reseeded_last_time;
+        if reseeded_last_time > 0 {
+            bounds.forget();
+        }
         let drop = (previous_distortion - distortion) / distortion;
         if reseeded_last_time == 0 && (distortion == 0.0 || drop <= stopping.tol) {
             break;
         }
         previous_distortion = distortion;
     }
-    let distortion = distortion(points, codewords, labels);
+    let distortion = assign(points, codewords, labels, &mut bounds).squared_error / n;
     Refinement { distortion, iterations, reseeded }
 }
 

@@ -67,7 +67,7 @@ def main():
         line = f"round {round_ + 1}: polymimic {wall:6.2f} s (cpu {cpu:6.2f} s)"
         if faiss is not None:
             kmeans = faiss.Kmeans(3, args.size, niter=ours.n_iter_, seed=0, max_points_per_centroid=10**9)
-            _, wall, cpu = timed(lambda: kmeans.train(as_float32))
+            _, wall, cpu = timed(lambda kmeans=kmeans: kmeans.train(as_float32))
             faiss_wall.append(wall)
             faiss_cpu.append(cpu)
             line += f"  faiss {wall:6.2f} s (cpu {cpu:6.2f} s)  ratio {ours_wall[-1] / wall:.3f}"
@@ -77,11 +77,13 @@ def main():
     if any(not np.array_equal(fit.centroids, ours.centroids) for fit in fits):
         raise SystemExit("polymimic's codebook differed between rounds")
     ours_distortion = ours.distortion(points)
-    print(f"\npolymimic LBG       median {statistics.median(ours_wall):6.2f} s (cpu {statistics.median(ours_cpu):6.2f} s)"
+    print(f"\npolymimic LBG       median {statistics.median(ours_wall):6.2f} s "
+          f"(cpu {statistics.median(ours_cpu):6.2f} s)"
           f"  distortion {ours_distortion:.4f}  ({ours.n_iter_} Lloyd iterations)")
     if faiss is not None:
         faiss_distortion = float(kmeans.index.search(as_float32, 1)[0].mean())
-        print(f"faiss Kmeans        median {statistics.median(faiss_wall):6.2f} s (cpu {statistics.median(faiss_cpu):6.2f} s)"
+        print(f"faiss Kmeans        median {statistics.median(faiss_wall):6.2f} s "
+              f"(cpu {statistics.median(faiss_cpu):6.2f} s)"
               f"  distortion {faiss_distortion:.4f}  ({ours.n_iter_} Lloyd iterations, float32)")
 
     if not args.no_sklearn:

@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from polymimic import _native
+from polymimic._arguments import integer
 
 FRAME_DTYPE = np.dtype([
     ("t_s", "f8"),
@@ -163,8 +164,9 @@ def record(demonstrator: str, *, configuration: int, n: int, seed: int = 0,
     """
     if demonstrator not in DEMONSTRATORS:
         raise ValueError(f"unknown demonstrator {demonstrator!r}; expected one of {', '.join(DEMONSTRATORS)}")
-    raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n, seed=seed,
-                                        config=_field_config(config))
+    configuration, n = integer("configuration", configuration, 1, 2), integer("n", n, 1)
+    raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n,
+                                        seed=integer("seed", seed, 0, 2**63 - 1), config=_field_config(config))
     return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=d["demonstrator"],
                           configuration=d["configuration"], seed=d["seed"]) for d in raw]
 
@@ -173,7 +175,9 @@ def self_observation(n_per_primitive: int, *, seed: int = 0,
                      config: dict[str, Any] | str | None = None) -> list[PrimitiveSequence]:
     """The imitator alone on the field executing random one-second primitives: exactly
     ``n_per_primitive`` valid sequences of each of forward, backward, left, right and stop."""
-    frames, primitives = _native.record_self_observation(n_per_primitive, seed=seed, config=_field_config(config))
+    frames, primitives = _native.record_self_observation(integer("n_per_primitive", n_per_primitive, 1),
+                                                         seed=integer("seed", seed, 0, 2**63 - 1),
+                                                         config=_field_config(config))
     return [PrimitiveSequence(primitive=p, frames=as_frames(f)) for f, p in zip(frames, primitives)]
 
 

@@ -20,6 +20,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any, Union
 
 from polymimic import _native
+from polymimic._arguments import integer
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelResult, SegmentedDemonstrations, TrialResult
 from polymimic._toml import loads, write_value
@@ -198,6 +199,8 @@ def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int 
              field_config: dict[str, Any] | str | None = None) -> Evaluation:
     """``attempts_per_configuration`` attempts from each field configuration, in parallel, on the
     field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's)."""
+    attempts_per_configuration = integer("attempts_per_configuration", attempts_per_configuration, 1)
+    seed = integer("seed", seed, 0, 2**64 - 1)
     raw = policy.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
     attempts = _attempts(raw, "imitator")
     return Evaluation(goals=sum(a.outcome == "goal" for a in attempts),

@@ -1,7 +1,9 @@
 //! Print Table 3.1 as the simulated imitator reproduces it: `cargo run --release --example
 //! table_3_1 -- [sessions] [noiseless]` (each session: 1000 primitives of each type).
 
-use polymimic_field::{FieldConfig, Primitive, THESIS_TABLE_3_1, TrackerConfig, primitive_stats, self_observation};
+use polymimic_field::{
+    FieldConfig, Primitive, THESIS_TABLE_3_1, TrackerConfig, primitive_stats, self_observation, table_3_1_row,
+};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
@@ -15,23 +17,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         pooled.extend(self_observation(1000, seed, &config)?);
     }
     let stats = primitive_stats(&pooled);
-    println!("primitive  n       distance mm (sd)   thesis          rotation deg (sd)  thesis");
-    for t in THESIS_TABLE_3_1.iter().copied().chain([stats[Primitive::Stop.index()]]) {
-        let p = t.primitive;
-        let s = stats[p.index()];
-        println!(
-            "{:9} {:6}  {:7.2} ({:5.2})   {:7.2} ({:5.2})   {:7.2} ({:5.2})   {:7.2} ({:5.2})",
-            p.name(),
-            s.count,
-            s.distance_mean_mm,
-            s.distance_sd_mm,
-            t.distance_mean_mm,
-            t.distance_sd_mm,
-            s.rotation_mean_deg,
-            s.rotation_sd_deg,
-            t.rotation_mean_deg,
-            t.rotation_sd_deg,
-        );
+    for thesis in &THESIS_TABLE_3_1 {
+        println!("{}", table_3_1_row(&stats[thesis.primitive.index()], Some(thesis)));
     }
+    println!("{}", table_3_1_row(&stats[Primitive::Stop.index()], None));
     Ok(())
 }

@@ -68,5 +68,5 @@ pub use physics::BallParams;
 pub use polymimic_types::{MotionStats, Point, Pose, Primitive, TrackedFrame, wrap_angle_rad};
 pub use record::{PrimitiveSequence, run_controller, self_observation, self_observation_batch};
 pub use setup::{Configuration, EpisodeSetup, FieldConfig};
-pub use stats::{THESIS_TABLE_3_1, primitive_motion, primitive_stats};
+pub use stats::{THESIS_TABLE_3_1, primitive_motion, primitive_stats, table_3_1_row};
 pub use tracker::{FRAME_DT_S, FRAME_RATE_HZ, Frame, TrackerConfig};

@@ -73,6 +73,28 @@ pub fn primitive_stats(sequences: &[PrimitiveSequence]) -> [MotionStats; 5] {
     })
 }
 
+/// One primitive's row of Table 3.1 as text: ours (count, distance and rotation with their sds)
+/// and, where given, the thesis's beside it.
+#[must_use]
+pub fn table_3_1_row(ours: &MotionStats, thesis: Option<&MotionStats>) -> String {
+    let row = format!(
+        "{:9} n={:5}  dist {:7.2} ({:5.2}) mm  rot {:7.2} ({:5.2})°",
+        ours.primitive.name(),
+        ours.count,
+        ours.distance_mean_mm,
+        ours.distance_sd_mm,
+        ours.rotation_mean_deg,
+        ours.rotation_sd_deg
+    );
+    match thesis {
+        None => row,
+        Some(t) => format!(
+            "{row}  [thesis dist {:7.2} ({:5.2}) mm, rot {:7.2} ({:5.2})°]",
+            t.distance_mean_mm, t.distance_sd_mm, t.rotation_mean_deg, t.rotation_sd_deg
+        ),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -9,6 +9,7 @@
 
 use polymimic_field::{
     FieldConfig, MotionStats, Primitive, THESIS_TABLE_3_1, TrackerConfig, primitive_stats, self_observation_batch,
+    table_3_1_row,
 };
 
 fn table(config: &FieldConfig, seeds: std::ops::Range<u64>) -> [MotionStats; 5] {
@@ -20,28 +21,10 @@ fn table(config: &FieldConfig, seeds: std::ops::Range<u64>) -> [MotionStats; 5] 
 
 fn report(label: &str, stats: &[MotionStats; 5]) {
     println!("{label}");
-    for thesis in THESIS_TABLE_3_1 {
-        let p = thesis.primitive;
-        let s = stats[p.index()];
-        println!(
-            "  {:9} n={:4}  dist {:7.2} ({:5.2}) mm [thesis {:7.2} ({:5.2})]  rot {:7.2} ({:5.2})° [thesis {:7.2} ({:5.2})]",
-            p.name(),
-            s.count,
-            s.distance_mean_mm,
-            s.distance_sd_mm,
-            thesis.distance_mean_mm,
-            thesis.distance_sd_mm,
-            s.rotation_mean_deg,
-            s.rotation_sd_deg,
-            thesis.rotation_mean_deg,
-            thesis.rotation_sd_deg,
-        );
+    for thesis in &THESIS_TABLE_3_1 {
+        println!("  {}", table_3_1_row(&stats[thesis.primitive.index()], Some(thesis)));
     }
-    let s = stats[Primitive::Stop.index()];
-    println!(
-        "  stop      n={:4}  dist {:7.2} ({:5.2}) mm  rot {:7.2} ({:5.2})°",
-        s.count, s.distance_mean_mm, s.distance_sd_mm, s.rotation_mean_deg, s.rotation_sd_deg
-    );
+    println!("  {}", table_3_1_row(&stats[Primitive::Stop.index()], None));
 }
 
 fn within(measured: f64, thesis: f64, tolerance: f64) -> bool {

@@ -11,6 +11,10 @@ pub enum LearnParamsError {
     UnknownDemonstrator(String),
     #[error("ordering names {0:?} twice")]
     DuplicateDemonstrator(String),
+    #[error(
+        "demonstration {index} is {demonstrator:?}'s, whom the ordering leaves out: name every demonstrator whose demonstrations are given"
+    )]
+    OutsideOrdering { index: usize, demonstrator: String },
     #[error("no demonstrations: a trial needs at least one")]
     NoDemonstrations,
     #[error("the ordering is empty: name at least one demonstrator")]

@@ -120,6 +120,11 @@ fn bad_input_is_named() {
         LearnError::Params(LearnParamsError::DuplicateDemonstrator("a".to_owned()))
     );
     assert_eq!(run(&[], &["a"], &config).unwrap_err(), LearnError::Params(LearnParamsError::NoDemonstrations));
+    let two = vec![straight(3, "a", Ending::Other), straight(3, "b", Ending::Goal)];
+    assert_eq!(
+        run(&two, &["a"], &config).unwrap_err(),
+        LearnError::Params(LearnParamsError::OutsideOrdering { index: 1, demonstrator: "b".to_owned() })
+    );
     assert_eq!(run(&demos, &[], &config).unwrap_err(), LearnError::Params(LearnParamsError::EmptyOrdering));
     let bad = LearningConfig { creation_threshold: 1.5, ..LearningConfig::default() };
     assert!(matches!(

@@ -67,6 +67,9 @@ pub fn run_trial(
             return Err(LearnParamsError::UnknownDemonstrator(name.clone()).into());
         }
     }
+    if let Some((index, d)) = demonstrations.iter().enumerate().find(|(_, d)| !ordering.contains(&d.demonstrator)) {
+        return Err(LearnParamsError::OutsideOrdering { index, demonstrator: d.demonstrator.clone() }.into());
+    }
     let mut models: Vec<ForwardModel> =
         ordering.iter().map(|name| ForwardModel::new(name, config.initial_lp, false, config)).collect();
     let mut imitator = ForwardModel::new("imitator", config.imitator_lp, true, config);

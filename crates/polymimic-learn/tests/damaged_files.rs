@@ -8,7 +8,7 @@ use polymimic_field::{Configuration, FieldConfig};
 use polymimic_learn::{
     ControlMode, ForwardModel, ImitatorPolicy, LearningConfig, LpBounds, LpCause, MotionTable, Pitch,
 };
-use polymimic_perceive::{MotionStats, Pose, Primitive, TrackedFrame};
+use polymimic_types::{MotionStats, Pose, Primitive, TrackedFrame};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use rand::SeedableRng;
@@ -30,7 +30,7 @@ fn config_file() -> String {
 }
 
 fn frame(x_mm: f64, theta_rad: f64, ball_x_mm: f64) -> TrackedFrame {
-    TrackedFrame { robot: Pose { x_mm, y_mm: 20.0, theta_rad }, ball_x_mm, ball_y_mm: -10.0 }
+    TrackedFrame { robot: Pose::new(x_mm, 20.0, theta_rad), ball_x_mm, ball_y_mm: -10.0 }
 }
 
 fn model_file() -> String {
@@ -97,7 +97,7 @@ fn config_is_refused_or_valid(text: &str) -> Result<(), TestCaseError> {
     prop_assert!(config.check().is_ok());
     let again = LearningConfig::from_json(&config.to_json());
     prop_assert_eq!(again.as_ref(), Ok(&config));
-    let model = ForwardModel::from_json(&model_file()).map_err(TestCaseError::fail)?;
+    let model = ForwardModel::from_json(&model_file()).map_err(|e| TestCaseError::fail(e.to_string()))?;
     drive(&model, &config)
 }
 

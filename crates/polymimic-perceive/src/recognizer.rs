@@ -312,6 +312,19 @@ impl Recognizer {
         if models.iter().map(|m| m.primitive).ne(Primitive::MOVING) {
             return Err(corrupt(&"expected models for forward, backward, left and right"));
         }
+        // Table 3.1 of its own training set bounds every segment: a file without it is damaged.
+        if saved.motion.iter().map(|m| m.primitive).ne(Primitive::ALL) {
+            return Err(corrupt(&"expected the motion statistics of forward, backward, left, right and stop"));
+        }
+        if saved.motion.iter().any(|m| {
+            ![m.distance_mean_mm, m.distance_sd_mm, m.rotation_mean_deg, m.rotation_sd_deg]
+                .iter()
+                .all(|v| v.is_finite())
+                || m.distance_sd_mm < 0.0
+                || m.rotation_sd_deg < 0.0
+        }) {
+            return Err(corrupt(&"motion statistics must be finite numbers with sds ≥ 0"));
+        }
         Ok(Self { config: saved.config, codebooks, models, motion: saved.motion })
     }
 }

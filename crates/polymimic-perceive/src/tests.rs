@@ -174,6 +174,18 @@ fn saved_recognisers_round_trip_and_foreign_files_are_refused() {
     assert!(matches!(Recognizer::from_json(&other_version), Err(PerceiveError::Corrupt(m)) if m.contains("version 3")));
 }
 
+#[test]
+fn a_saved_recogniser_without_its_motion_statistics_is_damaged() {
+    let text = trained().to_json().unwrap();
+    let start = text.find("\"motion\":[").unwrap() + "\"motion\":[".len();
+    let end = start + text[start..].find(']').unwrap();
+    let emptied = format!("{}{}", &text[..start], &text[end..]);
+    assert!(
+        matches!(Recognizer::from_json(&emptied), Err(PerceiveError::Corrupt(m)) if m.contains("motion statistics")),
+        "an empty Table 3.1 is refused"
+    );
+}
+
 /// How many moving primitives of `test` the recogniser names correctly.
 fn moving_correct(recognizer: &Recognizer, test: &[LabelledSequence]) -> usize {
     test.iter()

@@ -4,10 +4,8 @@
 //! HMMs it embeds as JSON strings too).
 
 use polymimic_damage::{arbitrary, config, flipped, reshaped, truncated};
-use polymimic_perceive::{
-    Emissions, LabelledSequence, Pose, Primitive, Recognizer, RecognizerConfig, SegmenterConfig, TrackedFrame, segment,
-    wrap_angle_rad,
-};
+use polymimic_perceive::{Emissions, LabelledSequence, Recognizer, RecognizerConfig, SegmenterConfig, segment};
+use polymimic_types::{Pose, Primitive, TrackedFrame, wrap_angle_euclid_rad};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
@@ -25,13 +23,13 @@ fn motion(primitive: Primitive) -> (f64, f64) {
 /// `frames` poses of `primitive` from `start`, its speed and turn scaled by `scale`.
 fn run(primitive: Primitive, start: Pose, frames: usize, scale: f64) -> Vec<Pose> {
     let (speed, turn) = motion(primitive);
-    let mut pose = start;
+    let (mut x_mm, mut y_mm, mut theta_rad) = (start.x_mm(), start.y_mm(), start.theta_rad());
     let mut poses = Vec::with_capacity(frames);
     for _ in 0..frames {
-        poses.push(pose);
-        pose.x_mm += speed * scale / 30.0 * pose.theta_rad.cos();
-        pose.y_mm += speed * scale / 30.0 * pose.theta_rad.sin();
-        pose.theta_rad = wrap_angle_rad(pose.theta_rad + (turn * scale).to_radians() / 30.0);
+        poses.push(Pose::new(x_mm, y_mm, theta_rad));
+        x_mm += speed * scale / 30.0 * theta_rad.cos();
+        y_mm += speed * scale / 30.0 * theta_rad.sin();
+        theta_rad = wrap_angle_euclid_rad(theta_rad + (turn * scale).to_radians() / 30.0);
     }
     poses
 }
@@ -41,7 +39,7 @@ fn self_observation() -> Vec<LabelledSequence> {
     for primitive in Primitive::ALL {
         for i in 0..8 {
             let k = f64::from(i);
-            let start = Pose { x_mm: 40.0 * k - 150.0, y_mm: 25.0 * k - 100.0, theta_rad: 0.7 * k - 2.8 };
+            let start = Pose::new(40.0 * k - 150.0, 25.0 * k - 100.0, 0.7 * k - 2.8);
             sequences.push(LabelledSequence { primitive, poses: run(primitive, start, 30, 0.9 + 0.03 * k) });
         }
     }
@@ -63,7 +61,7 @@ fn gaussian_file() -> String {
 
 /// A demonstration of a few primitives in a row, with a ball.
 fn demonstration() -> Vec<TrackedFrame> {
-    let mut poses = run(Primitive::Forward, Pose { x_mm: 0.0, y_mm: 0.0, theta_rad: 0.0 }, 30, 1.0);
+    let mut poses = run(Primitive::Forward, Pose::new(0.0, 0.0, 0.0), 30, 1.0);
     let last = *poses.last().unwrap();
     poses.extend(run(Primitive::Left, last, 30, 1.0));
     let last = *poses.last().unwrap();

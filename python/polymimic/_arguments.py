@@ -1,0 +1,29 @@
+"""Arguments checked where they cross into the library: the errors name the argument, the value
+and what is allowed (Python's own say only that an int was expected, and take True as 1)."""
+
+from __future__ import annotations
+
+import numbers
+from typing import Any
+
+__all__ = ["integer"]
+
+
+def integer(name: str, value: Any, low: int, high: int | None = None) -> int:
+    """``value`` as an int in ``low..high`` (inclusive); a ``TypeError`` for a bool or a
+    non-integer, a ``ValueError`` naming ``name`` for one out of range.
+
+    >>> integer("n", 3, 1)
+    3
+    >>> integer("n", True, 1)
+    Traceback (most recent call last):
+    ...
+    TypeError: n must be an integer, got True
+    """
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be an integer, got {value!r}")
+    number = int(value)
+    if number < low or (high is not None and number > high):
+        allowed = f"at least {low}" if high is None else f"in {low}..{high}"
+        raise ValueError(f"{name} must be {allowed}, got {number}")
+    return number

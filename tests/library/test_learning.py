@@ -18,6 +18,11 @@ def heterogeneous(recognizer):
     return learning.segmented(demos, recognizer)
 
 
+def _of(batch, *names):
+    """The demonstrations of ``names`` only: a trial's ordering names every demonstrator it is given."""
+    return [d for d in batch if d["demonstrator"] in names]
+
+
 def test_python_defaults_are_the_cores():
     assert polymimic.LearningConfig().to_dict() == _native.LearningConfig().to_dict()
 
@@ -57,14 +62,15 @@ def test_heterogeneous_trial_grows_behaviours_and_raises_lps(recognizer, heterog
 
 def test_same_seed_same_trial_other_seed_other_trial(recognizer, heterogeneous):
     def run(seed):
-        return polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert", "tiny"], seed=seed)
+        return polymimic.run_trial(_of(heterogeneous, "expert", "tiny"), recognizer=recognizer,
+                                   ordering=["expert", "tiny"], seed=seed)
 
     assert run(4) == run(4)
     assert run(4).models["expert"].lp_history != run(5).models["expert"].lp_history
 
 
 def test_trial_results_save_and_load(tmp_path, recognizer, heterogeneous):
-    result = polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["tiny"], seed=0)
+    result = polymimic.run_trial(_of(heterogeneous, "tiny"), recognizer=recognizer, ordering=["tiny"], seed=0)
     result.save(tmp_path / "trial.json")
     assert polymimic.TrialResult.load(tmp_path / "trial.json") == result
     (tmp_path / "bad.json").write_text("{}")
@@ -78,7 +84,10 @@ def test_bad_trials_are_named(recognizer, heterogeneous):
     with pytest.raises(ValueError, match="no demonstrations"):
         polymimic.run_trial([], recognizer=recognizer, ordering=["expert"])
     with pytest.raises(ValueError, match="phase_one"):
-        polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert"], phase_one="random")
+        polymimic.run_trial(_of(heterogeneous, "expert"), recognizer=recognizer, ordering=["expert"],
+                            phase_one="random")
+    with pytest.raises(ValueError, match="is \"humanoid\"'s, whom the ordering leaves out"):
+        polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["expert", "tiny"])
 
 
 def test_the_imitator_drives_the_robot_and_scores(recognizer):
@@ -99,7 +108,7 @@ def test_the_imitator_drives_the_robot_and_scores(recognizer):
 
 
 def test_a_corrupt_imitator_model_is_refused(recognizer, heterogeneous):
-    result = polymimic.run_trial(heterogeneous, recognizer=recognizer, ordering=["tiny"], seed=0)
+    result = polymimic.run_trial(_of(heterogeneous, "tiny"), recognizer=recognizer, ordering=["tiny"], seed=0)
     text = result.to_json().replace('\\"format\\":\\"polymimic.ForwardModel\\"', '\\"format\\":\\"other\\"')
     with pytest.raises(polymimic.ModelFileError, match="imitator_model: "):
         polymimic.TrialResult.from_json(text)

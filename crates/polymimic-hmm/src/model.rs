@@ -91,7 +91,8 @@ impl DiscreteHmm {
             Init::Given => self.probabilities()?.clone(),
             Init::Segments => self.segment_start(sequences),
         };
-        let mut history = Vec::with_capacity(self.params.max_iter);
+        // Bounded: max_iter is a limit, not a promise, and a huge one must not abort on allocation.
+        let mut history = Vec::with_capacity(self.params.max_iter.min(1024));
         let mut converged = false;
         for _ in 0..self.params.max_iter {
             let counts = expected_counts(&probs, sequences)?;

@@ -245,3 +245,13 @@ fn samples_follow_the_model() {
     assert!((walks_when_sunny / sunny - 0.6).abs() < 0.04);
     assert_eq!(m.sample(2, 3, 9).unwrap(), m.sample(2, 3, 9).unwrap());
 }
+
+#[test]
+fn a_huge_iteration_limit_trains_without_reserving_it() {
+    let mut params = HmmParams::new(1, 2);
+    params.topology = Topology::Ergodic;
+    params.max_iter = 1 << 62;
+    let mut model = DiscreteHmm::new(params.check().unwrap());
+    model.fit(&[&[0, 1, 0, 1]], Init::Segments).unwrap();
+    assert!(model.converged() && model.history().len() < 10, "{:?}", model.history());
+}

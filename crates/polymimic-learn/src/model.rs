@@ -213,6 +213,9 @@ impl ForwardModel {
         if model.behaviours.iter().any(|b| b.primitives.is_empty()) {
             return Err(corrupt("a behaviour has no primitives"));
         }
+        if !(0.0..=1.0).contains(&model.lp) {
+            return Err(corrupt("lp must be in [0, 1]"));
+        }
         Ok(model)
     }
 

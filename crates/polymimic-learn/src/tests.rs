@@ -226,3 +226,15 @@ fn per_demonstration_weighting_shares_one_step_among_a_demonstrations_spans() {
     }
     assert!((run(&per_span) - whole).abs() < 1e-12);
 }
+
+#[test]
+fn a_saved_model_with_an_lp_outside_zero_to_one_is_damaged() {
+    let model = ForwardModel::new("a", 0.5, false, &LearningConfig::default());
+    let text = model.to_json();
+    assert!(ForwardModel::from_json(&text).is_ok());
+    let damaged = text.replace("\"lp\":0.5", "\"lp\":1.5");
+    assert_ne!(damaged, text);
+    assert!(
+        matches!(ForwardModel::from_json(&damaged), Err(LearnError::Corrupt(m)) if m.contains("lp must be in [0, 1]"))
+    );
+}

@@ -24,13 +24,14 @@ from polymimic._arguments import integer
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelResult, SegmentedDemonstrations, TrialResult
 from polymimic._toml import loads, write_value
-from polymimic.field import Demonstration, _field_config, as_frames, record
+from polymimic.field import BODIES, Demonstration, _field_config, as_frames, record
 
 __all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
            "SegmentedDemonstrations", "TrialResult", "as_segmented", "average_demonstrator", "evaluate",
            "net_goals", "run_trial", "segmented", "spare_attempts"]
 
-SMALL_FIELD_BODIES = frozenset({"tiny"})
+SMALL_FIELD_BODIES = frozenset(name for name, body in BODIES.items() if body == "tiny")
+"""The demonstrators that play on the small field: those of the tiny body (:data:`polymimic.field.BODIES`)."""
 
 
 class LearningConfig(_native.LearningConfig):

@@ -31,7 +31,7 @@ def _imports():
 
 
 GRAPH = _imports()
-APPLICATION = ("polymimic.reproduce", "polymimic.cli", "polymimic.__main__")
+APPLICATION = ("polymimic.reproduce", "polymimic.benchmark", "polymimic.cli", "polymimic.__main__")
 
 
 def _is_application(name):

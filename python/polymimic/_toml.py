@@ -60,4 +60,6 @@ def write_value(value: Any) -> str:
         return repr(value)
     if isinstance(value, str):
         return json.dumps(value)
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(write_value(v) for v in value) + "]"
     raise TypeError(f"cannot write {value!r} as TOML")

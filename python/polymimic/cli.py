@@ -2,11 +2,14 @@
 
 `polymimic reproduce` runs every stage into a run directory (runs/<timestamp> unless --run-dir
 is given) and writes report.html beside results.json; `polymimic config` prints every parameter.
+`polymimic benchmark` compares polymimic with the baselines on crowds of demonstrators and
+writes benchmark.html beside benchmark.json (runs/benchmark/<timestamp> unless --run-dir).
 """
 
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import pathlib
 import sys
 import time
@@ -14,6 +17,9 @@ from typing import Any
 
 from polymimic import __version__, demo
 from polymimic._native import PolymimicError
+from polymimic.benchmark.config import METHODS, BenchmarkConfig
+from polymimic.benchmark.driver import Benchmark
+from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.datasets import load_demonstrations
 from polymimic.export import ACTIONS
 from polymimic.plots import animate_demonstration
@@ -122,6 +128,16 @@ def build_parser() -> argparse.ArgumentParser:
     exporting.add_argument("--author-email")
     exporting.add_argument("--code-permalink")
     exporting.set_defaults(handler=_export)
+
+    text = ("polymimic against behavioural cloning, cloning from observation and the rest on crowds of "
+            "demonstrators of graded skill and mixed bodies; resumable (starts a run)")
+    benchmark = commands.add_parser("benchmark", parents=[_run_options(tasks=True)], help=text, description=text)
+    benchmark.add_argument("--profiles", nargs="+", metavar="PROFILE",
+                           help="only these crowds (built in: one_good half equal linear mixed_bodies; more in "
+                                "--config's [profiles.<name>])")
+    benchmark.add_argument("--methods", nargs="+", metavar="METHOD",
+                           help=f"only these methods (of {' '.join(METHODS)})")
+    benchmark.set_defaults(handler=_benchmark)
     return parser
 
 
@@ -218,6 +234,33 @@ def _export(args: argparse.Namespace) -> int:
     except ValueError as error:  # an existing dataset id, or a bad prefix: bad input, named
         raise RunError(str(error)) from error
     print("\n".join(written))
+    return 0
+
+
+def _requested_benchmark(args: argparse.Namespace) -> BenchmarkConfig | None:
+    """The benchmark config asked for on the command line, or None when none was."""
+    if args.config is None and not args.quick and args.profiles is None and args.methods is None:
+        return None
+    base = BenchmarkConfig.quick() if args.quick else BenchmarkConfig()
+    config = BenchmarkConfig.load(args.config, base=base) if args.config is not None else base
+    settings = config.benchmark
+    if args.profiles is not None:
+        settings = dataclasses.replace(settings, profiles=tuple(args.profiles))
+    if args.methods is not None:
+        settings = dataclasses.replace(settings, methods=tuple(args.methods))
+    return dataclasses.replace(config, benchmark=settings)
+
+
+def _benchmark(args: argparse.Namespace) -> int:
+    run = BenchmarkDir(args.run_dir if args.run_dir is not None else new_run_path(pathlib.Path("runs") / "benchmark"))
+    requested = _requested_benchmark(args)  # read before the run directory is touched
+    with run.lock("polymimic benchmark"), TaskRunner(backend=args.backend, workers=args.workers,
+                                                     address=args.address) as runner:
+        bench = Benchmark(run=run, config=run.open(requested), runner=runner, quiet=args.quiet)
+        bench.say(f"run directory: {run.path}")
+        seconds = bench.run_all()
+        bench.say(f"benchmarked in {seconds:.1f} s")
+    print(run.report_html_path)
     return 0
 
 

@@ -4,7 +4,7 @@ One row per tracker frame: the :data:`~polymimic.field.FRAME_DTYPE` columns (``t
 ``robot_x_mm``, ``robot_y_mm``, ``robot_theta_rad``, ``ball_x_mm``, ``ball_y_mm``,
 ``command``), the index of the frame's demonstration (``episode``) or sequence (``sequence``),
 counted from 0 in file order, and that demonstration's ``demonstrator``, ``configuration``,
-``seed`` and ``outcome`` (or the sequence's ``primitive``) repeated on each of its rows. The
+``seed``, ``outcome`` and ``body`` (or the sequence's ``primitive``) repeated on each of its rows. The
 schema metadata key ``polymimic`` holds JSON ``{"format": "polymimic.demonstrations"`` (or
 ``"polymimic.self_observation"``) ``, "version": 1, "writer": ...}``, checked on load. The
 files are plain Parquet: ``pandas.read_parquet(path)`` or ``polars.read_parquet(path)`` reads
@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -39,12 +39,13 @@ import numpy as np
 from polymimic import _native
 from polymimic._atomic import atomic_path
 from polymimic._native import ModelFileError
-from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, PrimitiveSequence
+from polymimic.field import BODY_NAMES, FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, PrimitiveSequence
 
 __all__ = ["load_demonstrations", "load_self_observation", "save_demonstrations", "save_self_observation"]
 
-FORMAT_VERSION = 1
-"""The version written; files of a later version are refused."""
+FORMAT_VERSION = 2
+"""The version written; files of a later version are refused. Version 2 added the demonstrations'
+``body`` column; a version-1 file (without it) is read with each demonstrator's known body."""
 
 DEMONSTRATIONS = "polymimic.demonstrations"
 SELF_OBSERVATION = "polymimic.self_observation"
@@ -53,7 +54,8 @@ _METADATA_KEY = b"polymimic"
 _FRAME_COLUMNS: tuple[str, ...] = FRAME_DTYPE.names or ()
 _FRAME_TYPES = {name: ("uint16" if name == "command" else "double") for name in _FRAME_COLUMNS}
 _DEMONSTRATION_TYPES = {"episode": "int32", **_FRAME_TYPES, "demonstrator": "string", "configuration": "int8",
-                        "seed": "uint64", "outcome": "string"}
+                        "seed": "uint64", "outcome": "string", "body": "string"}
+_DEMONSTRATION_TYPES_V1 = {k: v for k, v in _DEMONSTRATION_TYPES.items() if k != "body"}
 _SELF_OBSERVATION_TYPES = {"sequence": "int32", **_FRAME_TYPES, "primitive": "string"}
 
 
@@ -101,6 +103,7 @@ def save_demonstrations(demos: Sequence[Demonstration], path: str | os.PathLike[
         "configuration": _repeat([d.configuration for d in items], lengths, "int8"),
         "seed": _repeat([d.seed for d in items], lengths, "uint64"),
         "outcome": _repeat([d.outcome for d in items], lengths, object),
+        "body": _repeat([d.body for d in items], lengths, object),
     }
     _write(columns, _DEMONSTRATION_TYPES, DEMONSTRATIONS, path)
 
@@ -125,16 +128,22 @@ def load_demonstrations(path: str | os.PathLike[str]) -> list[Demonstration]:
     >>> [(d.demonstrator, d.configuration, d.seed) for d in load_demonstrations(path)][0][:2]
     ('tiny', 2)
     """
-    columns, starts, stops = _read(path, DEMONSTRATIONS, _DEMONSTRATION_TYPES, "episode")
-    meta = {name: _per_group(columns, name, starts, stops, path, "episode")
-            for name in ("demonstrator", "configuration", "seed", "outcome")}
+    columns, starts, stops = _read(path, DEMONSTRATIONS, {2: _DEMONSTRATION_TYPES, 1: _DEMONSTRATION_TYPES_V1},
+                                   "episode")
+    names = ("demonstrator", "configuration", "seed", "outcome") + (("body",) if "body" in columns else ())
+    meta = {name: _per_group(columns, name, starts, stops, path, "episode") for name in names}
     _check_values(meta["outcome"], OUTCOMES, "outcome", path)
     _check_values(meta["configuration"], (1, 2), "configuration", path)
+    if "body" in meta:
+        _check_values(meta["body"], BODY_NAMES, "body", path)
     frames = _frames(columns)
-    return [Demonstration(frames=frames[a:b].copy(), outcome=str(meta["outcome"][i]),
-                          demonstrator=str(meta["demonstrator"][i]), configuration=int(meta["configuration"][i]),
-                          seed=int(meta["seed"][i]))
-            for i, (a, b) in enumerate(zip(starts, stops))]
+    try:
+        return [Demonstration(frames=frames[a:b].copy(), outcome=str(meta["outcome"][i]),
+                              demonstrator=str(meta["demonstrator"][i]), configuration=int(meta["configuration"][i]),
+                              seed=int(meta["seed"][i]), body=str(meta["body"][i]) if "body" in meta else "")
+                for i, (a, b) in enumerate(zip(starts, stops))]
+    except ValueError as error:
+        raise ModelFileError(f"{os.fspath(path)}: {error}") from None
 
 
 def save_self_observation(seqs: Sequence[PrimitiveSequence], path: str | os.PathLike[str]) -> None:
@@ -178,7 +187,8 @@ def load_self_observation(path: str | os.PathLike[str]) -> list[PrimitiveSequenc
     >>> [len(s.frames) for s in load_self_observation(path)]
     [30, 30, 30, 30, 30]
     """
-    columns, starts, stops = _read(path, SELF_OBSERVATION, _SELF_OBSERVATION_TYPES, "sequence")
+    columns, starts, stops = _read(path, SELF_OBSERVATION, {1: _SELF_OBSERVATION_TYPES, 2: _SELF_OBSERVATION_TYPES},
+                                   "sequence")
     primitives = _per_group(columns, "primitive", starts, stops, path, "sequence")
     _check_values(primitives, PRIMITIVES, "primitive", path)
     frames = _frames(columns)
@@ -240,9 +250,10 @@ def _write(columns: dict[str, np.ndarray], types: dict[str, str], kind: str, pat
 
 # Loading.
 
-def _read(path: str | os.PathLike[str], kind: str, types: dict[str, str],
+def _read(path: str | os.PathLike[str], kind: str, columns_of: Mapping[int, dict[str, str]],
           group: str) -> tuple[dict[str, np.ndarray], np.ndarray, np.ndarray]:
-    """The checked columns of a file of ``kind``, and where each group starts and stops."""
+    """The checked columns of a file of ``kind``, and where each group starts and stops;
+    ``columns_of`` gives the columns of each format version."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
@@ -256,7 +267,7 @@ def _read(path: str | os.PathLike[str], kind: str, types: dict[str, str],
         schema = parquet.schema_arrow
     except (pa.ArrowException, OSError) as e:
         raise ModelFileError(f"{where} is not a readable Parquet file ({e})") from e
-    _check_header(schema.metadata or {}, kind, where)
+    types = columns_of[_check_header(schema.metadata or {}, kind, where)]
     _check_schema(schema, types, where)
     try:
         table = parquet.read()
@@ -275,7 +286,8 @@ def _read(path: str | os.PathLike[str], kind: str, types: dict[str, str],
     return columns, starts, stops
 
 
-def _check_header(metadata: dict[bytes, bytes], kind: str, where: str) -> None:
+def _check_header(metadata: dict[bytes, bytes], kind: str, where: str) -> int:
+    """The file's format version, once its header is checked."""
     raw = metadata.get(_METADATA_KEY)
     if raw is None:
         raise ModelFileError(f"{where} is not a polymimic dataset: its schema has no 'polymimic' metadata")
@@ -292,6 +304,7 @@ def _check_header(metadata: dict[bytes, bytes], kind: str, where: str) -> None:
     if version > FORMAT_VERSION:
         raise ModelFileError(f"{where} is format version {version}, written by a newer polymimic; "
                              f"this one reads versions up to {FORMAT_VERSION} (upgrade polymimic)")
+    return int(version)
 
 
 def _check_schema(schema: Any, types: dict[str, str], where: str) -> None:

@@ -34,7 +34,7 @@ import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.env import ENV_ID
-from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, body_of, command_primitives
+from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, command_primitives
 
 __all__ = ["ACTIONS", "OBSERVED", "from_minari", "steps_of", "to_minari"]
 
@@ -143,8 +143,8 @@ def to_minari(demonstrations: Sequence[Demonstration], dataset_id: str, *, actio
     for i, demo in enumerate(demonstrations):
         if not isinstance(demo, Demonstration):
             raise TypeError(f"demonstration {i} is a {type(demo).__name__}, not a polymimic.Demonstration")
-        if body_of(demo.demonstrator) not in _SIMULATED_BODIES:
-            raise ValueError(f"demonstration {i} ({demo.demonstrator}) is of the {body_of(demo.demonstrator)} body; "
+        if demo.body not in _SIMULATED_BODIES:
+            raise ValueError(f"demonstration {i} ({demo.demonstrator}) is of the {demo.body} body; "
                              f"{ENV_ID} simulates the Lego robot only")
     if dataset_id in minari.list_local_datasets():
         if not overwrite:
@@ -164,7 +164,7 @@ def to_minari(demonstrations: Sequence[Demonstration], dataset_id: str, *, actio
     dataset.storage.update_metadata({"polymimic_actions": actions, "learned_from_observation": actions == "recognizer",
                                      "step_frames": step_frames})
     dataset.storage.update_episode_metadata(
-        [{"demonstrator": d.demonstrator, "body": body_of(d.demonstrator), "configuration": d.configuration,
+        [{"demonstrator": d.demonstrator, "body": d.body, "configuration": d.configuration,
           "episode_seed": str(d.seed), "outcome": d.outcome} for d in demonstrations],
         range(len(demonstrations)))
     return minari.load_dataset(dataset_id)
@@ -203,7 +203,8 @@ def from_minari(dataset: Any) -> list[Demonstration]:
             raise ValueError(f"episode {episode.id} has outcome {meta['outcome']!r}; expected one of "
                              f"{', '.join(OUTCOMES)}")
         demonstrations.append(Demonstration(frames=frames, outcome=meta["outcome"], demonstrator=meta["demonstrator"],
-                                            configuration=int(meta["configuration"]), seed=int(meta["episode_seed"])))
+                                            configuration=int(meta["configuration"]), seed=int(meta["episode_seed"]),
+                                            body=str(meta.get("body", ""))))
     return demonstrations
 
 

@@ -58,15 +58,46 @@ def as_frames(array: np.ndarray) -> np.ndarray:
     return frames
 
 
+BODY_NAMES = ("lego", "tiny", "humanoid")
+"""The bodies of the simulated field; the small field is the ``tiny`` body's."""
+
+
 @dataclasses.dataclass(frozen=True, eq=False)
 class Demonstration:
-    """One recorded attempt at a penalty kick."""
+    """One recorded attempt at a penalty kick.
+
+    ``body`` is the demonstrator's body (one of :data:`BODY_NAMES`); left empty, it is the body
+    :func:`body_of` knows for ``demonstrator``, so a demonstrator of another name (a crowd's
+    member, your own) names its body.
+
+    >>> import numpy as np
+    >>> frames = np.zeros(2, dtype=FRAME_DTYPE)
+    >>> Demonstration(frames, "goal", "tiny", 1, 0).body
+    'tiny'
+    >>> Demonstration(frames, "goal", "tiny_03", 1, 0, body="tiny").demonstrator
+    'tiny_03'
+    >>> Demonstration(frames, "goal", "alice", 1, 0)
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown demonstrator 'alice': give its body (one of lego, tiny, humanoid) with body=
+    """
 
     frames: np.ndarray
     outcome: str
     demonstrator: str
     configuration: int
     seed: int
+    body: str = ""
+
+    def __post_init__(self) -> None:
+        if self.body == "":
+            if self.demonstrator not in BODIES:
+                raise ValueError(f"unknown demonstrator {self.demonstrator!r}: give its body (one of "
+                                 f"{', '.join(BODY_NAMES)}) with body=")
+            object.__setattr__(self, "body", BODIES[self.demonstrator])
+        elif self.body not in BODY_NAMES:
+            raise ValueError(f"demonstration of {self.demonstrator!r} has body {self.body!r}; expected one of "
+                             f"{', '.join(BODY_NAMES)}")
 
     def __repr__(self) -> str:
         return (f"Demonstration({self.demonstrator}, configuration={self.configuration}, "

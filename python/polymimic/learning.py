@@ -24,14 +24,12 @@ from polymimic._arguments import integer
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelResult, SegmentedDemonstrations, TrialResult
 from polymimic._toml import loads, write_value
-from polymimic.field import BODIES, Demonstration, _field_config, as_frames, record
+from polymimic.field import Demonstration, _field_config, as_frames, record
 
 __all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
            "SegmentedDemonstrations", "TrialResult", "as_segmented", "average_demonstrator", "evaluate",
            "net_goals", "run_trial", "segmented", "spare_attempts"]
 
-SMALL_FIELD_BODIES = frozenset(name for name, body in BODIES.items() if body == "tiny")
-"""The demonstrators that play on the small field: those of the tiny body (:data:`polymimic.field.BODIES`)."""
 
 
 class LearningConfig(_native.LearningConfig):
@@ -116,7 +114,7 @@ def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.Primi
     segments = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
     return SegmentedDemonstrations(
         [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
-          "pitch": "small" if d.demonstrator in SMALL_FIELD_BODIES else "large"}
+          "pitch": "small" if d.body == "tiny" else "large"}
          for d, s in zip(demonstrations, segments)],
         frame_counts=[len(d.frames) for d in demonstrations])
 
@@ -211,7 +209,7 @@ def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int 
 
 def _attempts(raw: list[dict[str, Any]], demonstrator: str) -> list[Demonstration]:
     return [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator=demonstrator,
-                          configuration=a["configuration"], seed=a["seed"]) for a in raw]
+                          configuration=a["configuration"], seed=a["seed"], body="lego") for a in raw]
 
 
 def spare_attempts(n: int) -> int:

@@ -127,7 +127,7 @@ def plot_demonstration(demo: Demonstration, *, ax: Axes | None = None,
     ax.legend(loc="lower left", fontsize="small", framealpha=0.9)
     ax.set_title(f"{demo.demonstrator}, configuration {demo.configuration}: {demo.outcome.replace('_', ' ')}\n"
                  f"{len(frames)} frames, {t_s[-1]:.1f} s, seed {demo.seed}", fontsize="medium")
-    _save(figure, path, dpi=120)
+    save_figure(figure, path, dpi=120)
     return figure
 
 
@@ -330,7 +330,7 @@ def plot_log_likelihoods(table: Mapping[str, Mapping[str, float | None]], *, ax:
     ax.axhline(0.0, color="0.3", linewidth=0.8)
     ax.legend(fontsize="small")
     ax.set_title("Each HMM on each primitive's held-out sequences (thesis Fig 4.5)", fontsize="medium")
-    _save(figure, path, dpi=120)
+    save_figure(figure, path, dpi=120)
     return figure
 
 
@@ -380,7 +380,7 @@ def plot_metric_bars(table: Mapping[str, Mapping[str, MeanSd]], *, ylabel: str, 
     if len(groups) > 1:
         ax.legend(fontsize="small")
     ax.set_title(title, fontsize="medium")
-    _save(figure, path)
+    save_figure(figure, path)
     return figure
 
 
@@ -415,7 +415,7 @@ def plot_lp_over_time(histories: list[list[float]], *, stride: int, title: str, 
     ax.set_xlabel(f"LP changes (a point every {stride})")
     ax.set_ylabel("learning preference")
     ax.set_title(f"{title} ({len(histories)} trials)", fontsize="medium")
-    _save(figure, path)
+    save_figure(figure, path)
     return figure
 
 
@@ -428,7 +428,7 @@ def _figure_and_axes(ax: Axes | None, size_in: tuple[float, float]) -> tuple[Fig
     return cast("Figure", ax.figure), ax
 
 
-def _save(figure: Figure, path: str | os.PathLike[str] | None, *, dpi: int = 100) -> None:
+def save_figure(figure: Figure, path: str | os.PathLike[str] | None, *, dpi: int = 100) -> None:
     """Write the figure to ``path`` atomically, if a path is given."""
     if path is not None:
         with atomic_path(path) as temporary:

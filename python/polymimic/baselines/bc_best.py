@@ -1,5 +1,6 @@
 """``bc_best``: :mod:`~polymimic.baselines.bc` on one named member's demonstrations only (an
-oracle of who is best: SPEC §6.2 names the member of lowest lapse ε).
+oracle of who is best: SPEC §6.2 names the member of lowest lapse ε), or on those of several
+named members where several share the lowest ε.
 
 >>> import polymimic
 >>> from polymimic.baselines import bc_best
@@ -21,23 +22,26 @@ from polymimic.field import Demonstration
 __all__ = ["fit", "labelled", "member_demonstrations"]
 
 
-def member_demonstrations(demonstrations: Sequence[Demonstration], member: str) -> list[Demonstration]:
-    """``member``'s demonstrations, or a ValueError naming the members there are."""
+def member_demonstrations(demonstrations: Sequence[Demonstration], member: str | Sequence[str]) -> list[Demonstration]:
+    """The demonstrations of ``member`` (a name, or several), or a ValueError naming the members
+    there are."""
     demos = check_demonstrations(demonstrations)
-    chosen = [d for d in demos if d.demonstrator == member]
-    if not chosen:
-        members = sorted({d.demonstrator for d in demos})
-        raise ValueError(f"unknown member {member!r}: the demonstrations are by {', '.join(map(repr, members))}")
-    return chosen
+    names = (member,) if isinstance(member, str) else tuple(member)
+    present = {d.demonstrator for d in demos}
+    missing = [n for n in names if n not in present]
+    if missing or not names:
+        raise ValueError(f"unknown member {missing[0] if missing else member!r}: the demonstrations are by "
+                         f"{', '.join(map(repr, sorted(present)))}")
+    return [d for d in demos if d.demonstrator in names]
 
 
-def labelled(demonstrations: Sequence[Demonstration], *, member: str) -> list[Labelled]:
+def labelled(demonstrations: Sequence[Demonstration], *, member: str | Sequence[str]) -> list[Labelled]:
     """``member``'s demonstrations with every frame labelled by its command's primitive."""
     return command_labels(member_demonstrations(demonstrations, member))
 
 
-def fit(demonstrations: Sequence[Demonstration], *, member: str, hyperparameters: Hyperparameters = DEFAULT,
-        seed: int = 0) -> ClonedPolicy:
+def fit(demonstrations: Sequence[Demonstration], *, member: str | Sequence[str],
+        hyperparameters: Hyperparameters = DEFAULT, seed: int = 0) -> ClonedPolicy:
     """:func:`polymimic.baselines.bc.fit` on ``member``'s demonstrations alone.
 
     Raises

@@ -72,7 +72,7 @@ def play(policy: Policy, attempts: list[tuple[int, int]], *,
     with threadpool_limits(limits=1):  # a batch of ≤ 50 rows gains nothing from threads, and loses on a busy node
         executed = _step_together(policy, episodes)
     demos = [Demonstration(frames=as_frames(e.frames), outcome=str(e.outcome), demonstrator=_name(policy),
-                           configuration=c, seed=s) for e, (c, s) in zip(episodes, attempts)]
+                           configuration=c, seed=s, body="lego") for e, (c, s) in zip(episodes, attempts)]
     return Evaluation(goals=sum(d.outcome == "goal" for d in demos),
                       own_goals=sum(d.outcome == "own_goal" for d in demos), attempts=demos, behaviours=executed)
 

@@ -10,7 +10,7 @@ Two ways to label, the difference between ``bc`` and ``bco`` (SPEC §6.2):
   none, carry no label (a gap is no primitive) and give no training sample.
 
 Observations are the frames' tracker readings (a dropout repeats the last good reading, as the
-environment does). Demonstrators of the small field (:data:`polymimic.learning.SMALL_FIELD_BODIES`)
+environment does). Demonstrations of the small field (those of the ``tiny`` body)
 are scaled onto the imitator's field, x by 1020/560 and y by 810/345 (a choice: the task, not
 the millimetres, is what carries over).
 
@@ -31,7 +31,6 @@ import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.field import PRIMITIVES, Demonstration, command_primitives
-from polymimic.learning import SMALL_FIELD_BODIES
 
 __all__ = ["NO_LABEL", "Labelled", "check_demonstrations", "check_weights", "command_labels", "segment_labels"]
 
@@ -98,7 +97,7 @@ def observations_of(demo: Demonstration) -> np.ndarray:
                                                 "ball_x_mm", "ball_y_mm")]).astype(np.float64)
     for column in range(obs.shape[1]):
         obs[:, column] = _repeat_last_good(obs[:, column])
-    if demo.demonstrator in SMALL_FIELD_BODIES:
+    if demo.body == "tiny":
         obs[:, [0, 1]] *= _SMALL_TO_LARGE
         obs[:, [3, 4]] *= _SMALL_TO_LARGE
     return obs

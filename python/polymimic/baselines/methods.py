@@ -51,7 +51,7 @@ class Prepared:
 
 def prepare(method: str, demonstrations: Sequence[Demonstration], *,
             recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
-            member: str | None = None, segmenter: Mapping[str, Any] | None = None) -> Prepared:
+            member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None) -> Prepared:
     """Label the demonstrations as ``method`` does (segmenting them once, for ``bco``).
 
     ``recognizer`` is needed by ``bco`` and ``bco_lp``, ``weights`` by ``bco_lp``, ``member``
@@ -91,7 +91,8 @@ def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None 
 
 def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters: Hyperparameters | None = None,
         seed: int = 0, recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
-        member: str | None = None, segmenter: Mapping[str, Any] | None = None) -> ClonedPolicy | RandomPolicy:
+        member: str | Sequence[str] | None = None,
+        segmenter: Mapping[str, Any] | None = None) -> ClonedPolicy | RandomPolicy:
     """Fit baseline ``method`` (one of :data:`METHODS`) on ``demonstrations``.
 
     The same as the method's own ``fit`` (:func:`polymimic.baselines.bc.fit`, …), by name.

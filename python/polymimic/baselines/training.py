@@ -2,7 +2,9 @@
 
 A decision sample is one frame's observation and its label, taken every
 :data:`SAMPLE_STRIDE_FRAMES` frames (any frame is a moment the policy may decide at); frames
-without a label give none. Each sample weighs its demonstrator's weight (1 unless a method
+without a label give none. Where that would give more than :data:`MAX_DECISION_SAMPLES` (a
+crowd of ten members gives about 100 000), the stride widens evenly for every demonstration
+until it does not, so that a fit costs the same whatever the crowd's size. Each sample weighs its demonstrator's weight (1 unless a method
 says otherwise: ``bco_lp`` uses the LP), and, when the hyperparameters ask for balance, its
 primitive's balancing weight too (every primitive's samples then weigh the same in total,
 scikit-learn's ``"balanced"`` rule on the weighted counts). Samples of weight 0 are dropped
@@ -28,19 +30,36 @@ from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import NO_LABEL, Labelled
 from polymimic.baselines.policy import ClonedPolicy
 
-__all__ = ["DEFAULT", "SAMPLE_STRIDE_FRAMES", "decision_samples", "train"]
+__all__ = ["DEFAULT", "MAX_DECISION_SAMPLES", "SAMPLE_STRIDE_FRAMES", "decision_samples", "train"]
 
 SAMPLE_STRIDE_FRAMES = 3
 """Frames between decision samples (every 0.1 s): consecutive frames differ by tracker noise
 only, so denser sampling adds time, not information."""
+
+MAX_DECISION_SAMPLES = 30_000
+"""The most decision samples one fit takes (before dropping unlabelled frames)."""
+
+
+def sample_stride(labelled: Sequence[Labelled], *, max_samples: int = MAX_DECISION_SAMPLES) -> int:
+    """:data:`SAMPLE_STRIDE_FRAMES`, widened so that ``labelled`` gives at most ``max_samples``.
+
+    >>> import numpy as np
+    >>> from polymimic.baselines.labels import Labelled
+    >>> item = Labelled("d", np.zeros((900, 5)), np.zeros(900, dtype=np.int64))
+    >>> sample_stride([item] * 10), sample_stride([item] * 200)
+    (3, 6)
+    """
+    frames = sum(len(item.labels) for item in labelled)
+    return max(SAMPLE_STRIDE_FRAMES, -(-frames // max_samples))
 
 
 def decision_samples(labelled: Sequence[Labelled], *, weights: Mapping[str, float] | None = None,
                      balanced: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Observations ``(n, 5)``, labels ``(n,)`` and weights ``(n,)`` of every decision sample."""
     observations, labels, sample_weight = [], [], []
+    stride = sample_stride(labelled)
     for item in labelled:
-        rows = np.arange(0, len(item.labels), SAMPLE_STRIDE_FRAMES)
+        rows = np.arange(0, len(item.labels), stride)
         rows = rows[item.labels[rows] != NO_LABEL]
         observations.append(item.observations[rows])
         labels.append(item.labels[rows])

@@ -77,7 +77,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
          budget: int = 12, candidate_seed: int = 0, validation_seed: int = 0, attempts_per_configuration: int = 10,
          evaluation_seed: int = 0, evaluation_attempts_per_configuration: int = 25, seed: int = 0,
          recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
-         member: str | None = None, segmenter: Mapping[str, Any] | None = None,
+         member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
          field_config: dict[str, Any] | str | None = None) -> Tuning:
     """Choose ``method``'s hyperparameters on validation attempts.
 

@@ -31,7 +31,7 @@ import re
 import socket
 import sys
 from collections.abc import Callable, Iterator
-from typing import Any, TypeVar
+from typing import Any, Generic, Protocol, TypeVar
 
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelFileError, PolymimicError, __version__
@@ -40,7 +40,7 @@ from polymimic.reproduce.config import ConfigError, RunConfig
 if sys.platform != "win32":
     import fcntl
 
-__all__ = ["MissingInputError", "RunDir", "RunError", "new_run_path"]
+__all__ = ["MissingInputError", "RunDir", "RunError", "RunHouse", "new_run_path"]
 
 MANIFEST_FORMAT = "polymimic.run"
 MANIFEST_VERSION = 1
@@ -88,8 +88,28 @@ def _now() -> str:
     return datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="milliseconds")
 
 
-class RunDir:
-    """Paths of a run directory, and its manifest."""
+_Stored = TypeVar("_Stored")
+
+
+class StoredConfig(Protocol):
+    """What a run keeps in its manifest: a config that is plain data and back."""
+
+    def to_dict(self) -> dict[str, Any]: ...
+
+    @classmethod
+    def from_dict(cls: type[_Stored], data: dict[str, Any]) -> _Stored: ...
+
+
+ConfigT = TypeVar("ConfigT", bound=StoredConfig)
+
+
+class RunHouse(Generic[ConfigT]):
+    """A directory of one run: its manifest (of ``manifest_format``, holding a config of
+    ``config_type``), a lock, its datasets, models and plots, and the self-observation and
+    recogniser every kind of run starts from."""
+
+    manifest_format: str
+    config_type: type[ConfigT]
 
     def __init__(self, path: str | os.PathLike[str]) -> None:
         self.path = pathlib.Path(path)
@@ -101,38 +121,13 @@ class RunDir:
         self.plots = self.path / "plots"
         self.manifest_path = self.path / "manifest.json"
         self.recognizer_path = self.models / "recognizer.json"
-        self.average_trial_path = self.models / "average_trial.json"
-        self.results_path = self.path / "results.json"
-        self.report_md_path = self.path / "report.md"
-        self.report_html_path = self.path / "report.html"
 
     def __repr__(self) -> str:
-        return f"RunDir({str(self.path)!r})"
-
-    # Paths of the stages' files.
+        return f"{type(self).__name__}({str(self.path)!r})"
 
     def self_observation_path(self, split: str) -> pathlib.Path:
         """``split`` is ``"train"`` or ``"test"``."""
         return self.datasets / f"self_observation_{split}.parquet"
-
-    def demonstrations_path(self, demonstrator: str) -> pathlib.Path:
-        return self.datasets / f"demonstrations_{demonstrator}.parquet"
-
-    def segments_path(self, demonstrator: str) -> pathlib.Path:
-        return self.datasets / f"segments_{demonstrator}.parquet"
-
-    def attempts_path(self, experiment: str, control: str) -> pathlib.Path:
-        """The attempts of an experiment's first evaluated imitator, driven by ``control``."""
-        return self.datasets / f"attempts_{experiment}_{control}.parquet"
-
-    def experiment_dir(self, experiment: str) -> pathlib.Path:
-        return self.models / "experiments" / experiment
-
-    def trial_path(self, experiment: str, seed: int) -> pathlib.Path:
-        return self.experiment_dir(experiment) / f"trial_{seed}.json"
-
-    def evaluation_path(self, experiment: str, seed: int, control: str) -> pathlib.Path:
-        return self.experiment_dir(experiment) / f"evaluation_{seed}_{control}.json"
 
     def require(self, path: pathlib.Path, stage: str) -> pathlib.Path:
         """``path`` if it exists; else a :class:`MissingInputError` naming the stage that makes it."""
@@ -196,14 +191,14 @@ class RunDir:
 
     # The manifest.
 
-    def open(self, config: RunConfig | None) -> RunConfig:
+    def open(self, config: ConfigT | None) -> ConfigT:
         """Create the directory (with its manifest) or open it, and return the run's config.
 
         An existing run keeps the config it was made with: ``config`` may be None (use it) or
         equal to it; a different one is refused, since finished stages would not match it.
         """
         if self.manifest_path.exists():
-            stored = RunConfig.from_dict(self.manifest()["config"])
+            stored = self.config_type.from_dict(self.manifest()["config"])
             if config is not None and config != stored:
                 raise RunError(f"{self.path} was made with a different config; start a new --run-dir, or leave "
                                f"out --config/--quick to go on with its own (`polymimic config --run-dir "
@@ -211,11 +206,11 @@ class RunDir:
             return stored
         if self.path.exists() and any(p.name != _LOCK_NAME for p in self.path.iterdir()):
             raise RunError(f"{self.path} exists, is not empty and holds no manifest.json: not a run directory")
-        config = config or RunConfig()
+        config = config or self.config_type()
         for folder in (self.datasets, self.models, self.plots):
             folder.mkdir(parents=True, exist_ok=True)
 
-        self._write({"format": MANIFEST_FORMAT, "version": MANIFEST_VERSION, "polymimic_version": __version__,
+        self._write({"format": self.manifest_format, "version": MANIFEST_VERSION, "polymimic_version": __version__,
                      "created": _now(), "config": config.to_dict(), "seeds": config.to_dict()["seeds"],
                      "stages": {}})
         return config
@@ -231,7 +226,8 @@ class RunDir:
             raise RunError(f"{self.manifest_path}: not a polymimic run manifest (a JSON object is expected, got "
                            f"{type(data).__name__})")
         version = data.get("version")
-        if data.get("format") != MANIFEST_FORMAT or type(version) is not int or not 1 <= version <= MANIFEST_VERSION:
+        known = data.get("format") == self.manifest_format
+        if not known or type(version) is not int or not 1 <= version <= MANIFEST_VERSION:
             raise RunError(f"{self.manifest_path}: not a polymimic run manifest of version ≤ {MANIFEST_VERSION} "
                            f"(format {data.get('format')!r}, version {version!r})")
         if not isinstance(data.get("stages"), dict):
@@ -239,7 +235,7 @@ class RunDir:
         if not isinstance(data.get("config"), dict):
             raise RunError(f"{self.manifest_path}: key 'config' must be an object, got {data.get('config')!r}")
         try:
-            RunConfig.from_dict(data["config"])
+            self.config_type.from_dict(data["config"])
         except ConfigError as error:
             raise RunError(f"{self.manifest_path}: its config cannot be read ({error})") from error
         manifest: dict[str, Any] = data
@@ -265,6 +261,39 @@ class RunDir:
     def _write(self, manifest: dict[str, Any]) -> None:
         atomic_write_text(self.manifest_path, json.dumps(manifest, indent=1) + "\n")
 
+
+
+class RunDir(RunHouse[RunConfig]):
+    """A reproduction's run directory: the thesis's datasets, trials, evaluations and report."""
+
+    manifest_format = MANIFEST_FORMAT
+    config_type = RunConfig
+
+    def __init__(self, path: str | os.PathLike[str]) -> None:
+        super().__init__(path)
+        self.average_trial_path = self.models / "average_trial.json"
+        self.results_path = self.path / "results.json"
+        self.report_md_path = self.path / "report.md"
+        self.report_html_path = self.path / "report.html"
+
+    def demonstrations_path(self, demonstrator: str) -> pathlib.Path:
+        return self.datasets / f"demonstrations_{demonstrator}.parquet"
+
+    def segments_path(self, demonstrator: str) -> pathlib.Path:
+        return self.datasets / f"segments_{demonstrator}.parquet"
+
+    def attempts_path(self, experiment: str, control: str) -> pathlib.Path:
+        """The attempts of an experiment's first evaluated imitator, driven by ``control``."""
+        return self.datasets / f"attempts_{experiment}_{control}.parquet"
+
+    def experiment_dir(self, experiment: str) -> pathlib.Path:
+        return self.models / "experiments" / experiment
+
+    def trial_path(self, experiment: str, seed: int) -> pathlib.Path:
+        return self.experiment_dir(experiment) / f"trial_{seed}.json"
+
+    def evaluation_path(self, experiment: str, seed: int, control: str) -> pathlib.Path:
+        return self.experiment_dir(experiment) / f"evaluation_{seed}_{control}.json"
 
 def _acquire(handle: Any, path: pathlib.Path) -> None:
     """Lock ``handle``'s file without waiting; a :class:`RunError` naming the holder if taken."""

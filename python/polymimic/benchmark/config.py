@@ -1,0 +1,204 @@
+"""Every parameter of a benchmark run; TOML in and out.
+
+The sections a reproduction has (``[seeds]``, ``[field]``, ``[recognizer]``, ``[segmenter]``,
+``[learning]``, read by :class:`~polymimic.reproduce.config.RunConfig`), then ``[benchmark]``
+(sizes, methods, tuning effort) and one ``[profiles.<name>]`` table per crowd, whose
+``members`` list tables of ``controller`` and ``lapse`` (and optionally ``name`` and
+``count``). The five built-in profiles are there unless a file redefines one; a file may add
+its own and run it with ``profiles = [...]``.
+
+>>> config = BenchmarkConfig()
+>>> config.benchmark.trials, config.benchmark.profiles[:2], config.learning.imitator_weighting
+(20, ('one_good', 'half'), 'lp')
+>>> text = '[benchmark]\\nprofiles = ["pair"]\\n[profiles.pair]\\nmembers = [{controller = "expert", lapse = 0.1}, ' \\
+...        '{controller = "poor", lapse = 0.0}]\\n'
+>>> BenchmarkConfig.from_toml(text).crowds()[0].names
+('expert_00', 'poor_01')
+>>> BenchmarkConfig.from_toml('[benchmark]\\nprofiles = ["one_goood"]\\n')
+Traceback (most recent call last):
+...
+polymimic.reproduce.config.ConfigError: [benchmark] profiles: unknown profile 'one_goood'; expected one of one_good, ...
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from typing import Any
+
+from polymimic._toml import loads, write_table, write_value
+from polymimic.crowds import PROFILES, Crowd
+from polymimic.reproduce.config import ConfigError, RunConfig, _checked, _in_range, _table
+
+__all__ = ["METHODS", "BenchmarkConfig", "BenchmarkSettings"]
+
+METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "bco", "bco_lp", "bc", "bc_best",
+           "random", "ppo")
+"""Every method a benchmark can compare (SPEC §6.2); ``ppo`` needs the ``rl`` extra."""
+
+DEFAULT_METHODS = METHODS[:-1]
+
+
+def _doc(text: str, default: Any) -> Any:
+    return dataclasses.field(default=default, metadata={"doc": text})
+
+
+@dataclasses.dataclass(frozen=True)
+class BenchmarkSettings:
+    """How big a benchmark is, what it compares, and how hard every baseline is tuned."""
+
+    profiles: tuple[str, ...] = _doc("the crowds to run, by name", tuple(PROFILES))
+    methods: tuple[str, ...] = _doc("the methods to compare", DEFAULT_METHODS)
+    trials: int = _doc("learning trials per profile (seeds first_trial, first_trial + 1, …)", 20)
+    demonstrations_per_configuration: int = _doc("valid demonstrations per member and field configuration", 25)
+    attempts_per_configuration: int = _doc("evaluation attempts per method, trial and field configuration", 25)
+    validation_attempts_per_configuration: int = _doc("tuning attempts per configuration (never evaluated)", 10)
+    tuning_budget: int = _doc("hyperparameter candidates tried per method and profile", 12)
+    validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
+    ppo_steps: tuple[int, ...] = _doc("environment-step budgets at which ppo is evaluated", (100_000, 1_000_000))
+
+    def __post_init__(self) -> None:
+        for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
+                     "validation_attempts_per_configuration", "tuning_budget"):
+            _in_range("benchmark", name, getattr(self, name), 1)
+        _in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
+        for name in ("profiles", "methods", "ppo_steps"):
+            value = getattr(self, name)
+            if not isinstance(value, (list, tuple)) or not value:
+                raise ConfigError(f"[benchmark] {name} must be a non-empty list, got {value!r}")
+            if len(set(value)) != len(value):
+                raise ConfigError(f"[benchmark] {name} names {next(v for v in value if value.count(v) > 1)!r} twice")
+            object.__setattr__(self, name, tuple(value))
+        for method in self.methods:
+            if method not in METHODS:
+                raise ConfigError(f"[benchmark] methods: unknown method {method!r}; expected one of "
+                                  f"{', '.join(METHODS)}")
+        for steps in self.ppo_steps:
+            if isinstance(steps, bool) or not isinstance(steps, int) or steps < 1:
+                raise ConfigError(f"[benchmark] ppo_steps must list positive integers, got {steps!r}")
+
+
+@dataclasses.dataclass(frozen=True)
+class BenchmarkConfig:
+    """The whole benchmark. ``BenchmarkConfig()`` is the full one; :meth:`quick` is small."""
+
+    run: RunConfig = dataclasses.field(default_factory=lambda: _with_lp_weighting(RunConfig()))
+    benchmark: BenchmarkSettings = dataclasses.field(default_factory=BenchmarkSettings)
+    profiles: dict[str, Crowd] = dataclasses.field(default_factory=lambda: dict(PROFILES))
+
+    def __post_init__(self) -> None:
+        for name in self.benchmark.profiles:
+            if name not in self.profiles:
+                raise ConfigError(f"[benchmark] profiles: unknown profile {name!r}; expected one of "
+                                  f"{', '.join(self.profiles)}")
+
+    # The run's sections, by their names.
+    @property
+    def seeds(self) -> Any:
+        return self.run.seeds
+
+    @property
+    def field(self) -> dict[str, Any]:
+        return self.run.field
+
+    @property
+    def recognizer(self) -> Any:
+        return self.run.recognizer
+
+    @property
+    def segmenter(self) -> Any:
+        return self.run.segmenter
+
+    @property
+    def learning(self) -> Any:
+        return self.run.learning
+
+    def trial_seeds(self) -> list[int]:
+        """Every profile's trial seeds: ``first_trial``, ``first_trial + 1``, …"""
+        return [self.seeds.first_trial + i for i in range(self.benchmark.trials)]
+
+    def crowds(self) -> list[Crowd]:
+        """The crowds this benchmark runs, in its order."""
+        return [self.profiles[name] for name in self.benchmark.profiles]
+
+    @classmethod
+    def quick(cls) -> BenchmarkConfig:
+        """A benchmark of about a minute: 2 trials per profile, 5 demonstrations per member and
+        configuration, 5 attempts per configuration, 3 tuning candidates on 3 attempts each, and
+        the quick reproduction's recogniser."""
+        full = cls()
+        return dataclasses.replace(
+            full, run=_with_lp_weighting(RunConfig.quick()),
+            benchmark=dataclasses.replace(full.benchmark, trials=2, demonstrations_per_configuration=5,
+                                          attempts_per_configuration=5, validation_attempts_per_configuration=3,
+                                          tuning_budget=3))
+
+    def to_dict(self) -> dict[str, Any]:
+        run = self.run.to_dict()
+        del run["experiments"]
+        benchmark = {k: list(v) if isinstance(v, tuple) else v for k, v in dataclasses.asdict(self.benchmark).items()}
+        return {**run, "benchmark": benchmark,
+                "profiles": {name: {"members": crowd.to_members()} for name, crowd in self.profiles.items()}}
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
+        base = base or cls()
+        own = {"benchmark", "profiles"}
+        run = RunConfig.from_dict({k: v for k, v in data.items() if k not in own}, base=base.run)
+        profiles = dict(base.profiles)
+        for name, table in _table("profiles", data.get("profiles", {})).items():
+            members = _table(f"profiles.{name}", table)
+            unknown = sorted(set(members) - {"members"})
+            if unknown:
+                raise ConfigError(f"unknown key in [profiles.{name}]: {unknown[0]} (a profile has members only)")
+            try:
+                profiles[name] = Crowd.from_members(name, members.get("members", []))
+            except ValueError as error:
+                raise ConfigError(f"[profiles.{name}] {error}") from error
+        benchmark = base.benchmark
+        if "benchmark" in data:
+            defaults = {k: list(v) if isinstance(v, tuple) else v
+                        for k, v in dataclasses.asdict(base.benchmark).items()}
+            values = _checked("benchmark", _table("benchmark", data["benchmark"]), defaults)
+            benchmark = dataclasses.replace(base.benchmark, **values)
+        return cls(run=run, benchmark=benchmark, profiles=profiles)
+
+    def to_toml(self) -> str:
+        lines = self.run.to_toml().split("\n[experiments]")[0].rstrip().split("\n")
+        lines[0] = "# polymimic benchmark configuration"
+        lines.append("")
+        docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(BenchmarkSettings)}
+        values = {k: list(v) if isinstance(v, tuple) else v for k, v in dataclasses.asdict(self.benchmark).items()}
+        write_table(lines, "benchmark", values, docs)
+        for name, crowd in self.profiles.items():
+            lines.append(f"[profiles.{name}]")
+            lines.append("members = [")
+            lines.extend(f"  {{ {', '.join(f'{k} = {write_value(v)}' for k, v in m.items())} }},"
+                         for m in crowd.to_members())
+            lines.extend(["]", ""])
+        return "\n".join(lines).rstrip() + "\n"
+
+    @classmethod
+    def from_toml(cls, text: str, *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
+        try:
+            data = loads(text)
+        except ValueError as error:
+            raise ConfigError(str(error)) from error
+        return cls.from_dict(data, base=base)
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str], *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
+        try:
+            with open(path, encoding="utf-8") as file:
+                text = file.read()
+        except OSError as error:
+            raise ConfigError(f"cannot read config {os.fspath(path)!r}: {error.strerror}") from error
+        try:
+            return cls.from_toml(text, base=base)
+        except ConfigError as error:
+            raise ConfigError(f"{os.fspath(path)}: {error}") from error
+
+
+def _with_lp_weighting(run: RunConfig) -> RunConfig:
+    """The benchmark's imitator learns more from members of higher LP (SPEC §6.3)."""
+    return dataclasses.replace(run, learning=run.learning.replace(imitator_weighting="lp"))

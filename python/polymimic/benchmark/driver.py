@@ -1,0 +1,233 @@
+"""``polymimic benchmark``: the crowds recorded, every method trained on every trial, every method
+evaluated on the same attempts, and the summary and report written.
+
+Steps, each resumable (every result is written to the run directory, atomically, as it
+arrives, and a rerun redoes only what is missing or damaged):
+
+1. **recognise** — self-observation and the recogniser, as a reproduction makes them;
+2. **record** — each profile's crowd, 25 valid demonstrations per member and configuration,
+   to ``datasets/crowd_<profile>.parquet``;
+3. **learn** — every trial of every profile, LP-weighted and with every LP held at 0.5;
+4. **tune** — every baseline's hyperparameters on validation attempts (``bco_lp`` weighs by
+   the first trial's LPs);
+5. **evaluate** — every method after every trial, on the evaluation attempts;
+6. **report** — ``benchmark.json``, ``benchmark.md``, ``benchmark.html`` and the plots.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import json
+import pathlib
+import sys
+import time
+from collections.abc import Callable
+from typing import Any
+
+from polymimic._atomic import atomic_write_text
+from polymimic._native import PrimitiveRecognizer
+from polymimic.benchmark.config import BenchmarkConfig
+from polymimic.benchmark.figures import draw_figures
+from polymimic.benchmark.files import load_method_evaluation, load_tuning
+from polymimic.benchmark.report import benchmark_html, benchmark_markdown
+from polymimic.benchmark.rundir import BenchmarkDir
+from polymimic.benchmark.summary import gather
+from polymimic.benchmark.tasks import (
+    POLYMIMIC_METHODS,
+    ProfileInputs,
+    Shared,
+    dumps,
+    evaluation_task,
+    trial_task,
+    tuning_task,
+)
+from polymimic.crowds import Crowd, record_crowd
+from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
+from polymimic.field import PRIMITIVES, self_observation
+from polymimic.learning import TrialResult, segmented
+from polymimic.reproduce.backends import TaskRunner
+from polymimic.reproduce.progress import progress
+
+__all__ = ["Benchmark"]
+
+
+@dataclasses.dataclass
+class Benchmark:
+    """One benchmark run: its directory, config, where tasks run, and whether to keep quiet."""
+
+    run: BenchmarkDir
+    config: BenchmarkConfig
+    runner: TaskRunner
+    quiet: bool = False
+
+    def say(self, message: str) -> None:
+        if not self.quiet:
+            print(message, file=sys.stderr)
+
+    def _step(self, name: str, work: Callable[[], int]) -> int:
+        started = time.perf_counter()
+        self.run.stage_started(name)
+        made = work()
+        self.run.stage_finished(name, time.perf_counter() - started, made=made)
+        self.say(f"{name}: {made} made in {time.perf_counter() - started:.1f} s")
+        return made
+
+    def run_all(self) -> float:
+        """Every step, in order; the seconds they took."""
+        started = time.perf_counter()
+        self._step("recognise", self.recognise)
+        self._step("record", self.record)
+        shared = self.shared()
+        self._step("learn", lambda: self.learn(shared))
+        self._step("tune", lambda: self.tune(shared))
+        self._step("evaluate", lambda: self.evaluate(shared))
+        self._step("report", self.report)
+        return time.perf_counter() - started
+
+    # 1. The recogniser.
+
+    def recognise(self) -> int:
+        if self.run.finished(self.run.recognizer_path, PrimitiveRecognizer.load):
+            return 0
+        settings, path = self.config.recognizer, self.run.self_observation_path("train")
+        count = len(PRIMITIVES) * settings.train_per_primitive
+        if not self.run.finished(path, lambda p: _counted(load_self_observation(p), count)):
+            save_self_observation(self_observation(settings.train_per_primitive,
+                                                   seed=self.config.seeds.self_observation_train,
+                                                   config=self.config.field), path)
+        sequences = load_self_observation(path)
+        options = {k: v for k, v in dataclasses.asdict(settings).items()
+                   if k not in ("train_per_primitive", "test_per_primitive")}
+        PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences],
+                                  **options).save(self.run.recognizer_path)
+        return 1
+
+    # 2. The crowds.
+
+    def record(self) -> int:
+        made, n = 0, self.config.benchmark.demonstrations_per_configuration
+        crowds = self.config.crowds()
+        with progress(total=len(crowds), desc="record", quiet=self.quiet) as bar:
+            for crowd in crowds:
+                path = self.run.crowd_path(crowd.name)
+                if not self.run.finished(path, functools.partial(_crowd_loaded, crowd=crowd, n=n)):
+                    save_demonstrations(record_crowd(crowd, n=n, seed=self.config.seeds.demonstrations,
+                                                     config=self.config.field), path)
+                    made += 1
+                bar.update(1)
+        return made
+
+    def shared(self) -> Shared:
+        recognizer = PrimitiveRecognizer.load(self.run.require(self.run.recognizer_path, "benchmark"))
+        segmenter = dataclasses.asdict(self.config.segmenter)
+        profiles = {}
+        for crowd in self.config.crowds():
+            demos = load_demonstrations(self.run.require(self.run.crowd_path(crowd.name), "benchmark"))
+            profiles[crowd.name] = ProfileInputs(crowd, demos, segmented(demos, recognizer, **segmenter))
+        return Shared(self.config, recognizer, profiles)
+
+    # 3. Trials.
+
+    def learn(self, shared: Shared) -> int:
+        jobs = [(crowd.name, seed, uniform) for crowd in self.config.crowds() for seed in self.config.trial_seeds()
+                for uniform in self._trial_kinds()
+                if not self.run.finished(self.run.trial_path(crowd.name, seed, uniform_lp=uniform), TrialResult.load)]
+        for crowd in self.config.crowds():
+            self.run.profile_dir(crowd.name).mkdir(parents=True, exist_ok=True)
+        with progress(total=len(jobs), desc="learn", quiet=self.quiet) as bar:
+            for (profile, seed, uniform), text in self.runner.map(trial_task, shared, jobs):
+                atomic_write_text(self.run.trial_path(profile, seed, uniform_lp=uniform), text)
+                bar.update(1)
+        return len(jobs)
+
+    def _trial_kinds(self) -> list[bool]:
+        """Whether trials with every LP held are needed, besides the LP-weighted ones."""
+        methods = self.config.benchmark.methods
+        return [False] + ([True] if "polymimic_uniform_lp" in methods else [])
+
+    def _trial_json(self, profile: str, seed: int, *, uniform_lp: bool = False) -> str:
+        path = self.run.require(self.run.trial_path(profile, seed, uniform_lp=uniform_lp), "benchmark")
+        return path.read_text(encoding="utf-8")
+
+    # 4. Tuning.
+
+    def _baselines(self) -> list[str]:
+        return [m for m in self.config.benchmark.methods if m not in POLYMIMIC_METHODS and m != "ppo"]
+
+    def tune(self, shared: Shared) -> int:
+        first = self.config.seeds.first_trial
+        jobs = [(crowd.name, method, self._trial_json(crowd.name, first) if method == "bco_lp" else None)
+                for crowd in self.config.crowds() for method in self._baselines()
+                if not self.run.finished(self.run.tuning_path(crowd.name, method), load_tuning)]
+        with progress(total=len(jobs), desc="tune", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(tuning_task, shared, jobs):
+                atomic_write_text(self.run.tuning_path(result["profile"], result["method"]), dumps(result))
+                bar.update(1)
+        return len(jobs)
+
+    # 5. Evaluation.
+
+    def _evaluation_done(self, profile: str, method: str, seed: int) -> bool:
+        path = self.run.evaluation_path(profile, method, seed)
+        if not self.run.finished(path, load_method_evaluation):
+            return False
+        saved = load_method_evaluation(path)
+        return (saved["attempts"] == 2 * self.config.benchmark.attempts_per_configuration
+                and saved["seed"] == self.config.seeds.evaluation)
+
+    def evaluation_jobs(self) -> list[tuple[str, str, int, str | None, dict[str, Any] | None]]:
+        jobs: list[tuple[str, str, int, str | None, dict[str, Any] | None]] = []
+        methods = [m for m in self.config.benchmark.methods if m != "ppo"]
+        for crowd in self.config.crowds():
+            for method in methods:
+                tuned = None if method in POLYMIMIC_METHODS else load_tuning(
+                    self.run.require(self.run.tuning_path(crowd.name, method), "benchmark"))["hyperparameters"]
+                for seed in self.config.trial_seeds():
+                    if self._evaluation_done(crowd.name, method, seed):
+                        continue
+                    uniform = POLYMIMIC_METHODS.get(method, ("", False))[1]
+                    needs_trial = method in POLYMIMIC_METHODS or method == "bco_lp"
+                    trial = self._trial_json(crowd.name, seed, uniform_lp=uniform) if needs_trial else None
+                    jobs.append((crowd.name, method, seed, trial, tuned))
+        return jobs
+
+    def evaluate(self, shared: Shared) -> int:
+        jobs = self.evaluation_jobs()
+        with progress(total=len(jobs), desc="evaluate", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(evaluation_task, shared, jobs):
+                path = self.run.evaluation_path(result["profile"], result["method"], result["trial_seed"])
+                atomic_write_text(path, dumps(result))
+                bar.update(1)
+        return len(jobs)
+
+
+    # 6. The summary and the report.
+
+    def report(self) -> int:
+        summary = gather(self.run, self.config)
+        atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
+        draw_figures(summary, self.run.plots)
+        stages = self.run.manifest()["stages"]
+        seconds = {name: float(stages[name]["seconds"]) for name in ("recognise", "record", "learn", "tune", "evaluate")
+                   if isinstance(stages.get(name, {}).get("seconds"), (int, float))}
+        markdown = benchmark_markdown(summary, seconds=seconds)
+        atomic_write_text(self.run.report_md_path, markdown + "\n")
+        atomic_write_text(self.run.report_html_path, benchmark_html(markdown, images_from=str(self.run.path)))
+        return 3
+
+
+def _counted(items: list[Any], count: int) -> list[Any]:
+    if len(items) != count:
+        raise ValueError(f"it holds {len(items)} items where the config asks for {count}")
+    return items
+
+
+def _crowd_loaded(path: pathlib.Path, *, crowd: Crowd, n: int) -> list[Any]:
+    """The crowd's demonstrations at ``path``, if they are ``n`` per configuration of every member."""
+    demos = _counted(load_demonstrations(path), 2 * n * len(crowd))
+    found = [d.demonstrator for d in demos]
+    for member in crowd.members:
+        if found.count(member.name) != 2 * n:
+            raise ValueError(f"it holds {found.count(member.name)} demonstrations of {member.name!r}, not {2 * n}")
+    return demos

@@ -1,0 +1,85 @@
+"""``benchmark.md`` and ``benchmark.html``: the benchmark's tables, targets and pictures, in words
+a reader can check against ``benchmark.json``."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from polymimic.benchmark.figures import FIGURES
+from polymimic.benchmark.targets import check_targets
+from polymimic.reproduce.markdown import to_html
+from polymimic.reproduce.report import msd
+
+__all__ = ["benchmark_html", "benchmark_markdown"]
+
+
+def _verdict(met: bool | None) -> str:
+    return {True: "met", False: "**missed**", None: "n/a"}[met]
+
+
+def _hyperparameters(chosen: Mapping[str, Any]) -> str:
+    return ", ".join(f"{k}={v}" for k, v in chosen.items()).replace("|", "/")
+
+
+def _methods_table(profile: Mapping[str, Any]) -> list[str]:
+    rows = ["| method | goals | own goals | net goals | evaluated | chosen on validation |",
+            "| --- | --- | --- | --- | --- | --- |"]
+    for method, s in profile["methods"].items():
+        rows.append(f"| {method} | {msd(s['goals'])} | {msd(s['own_goals'])} | {msd(s['net_goals'])} | "
+                    f"{s['evaluated']} × {s['attempts']} | {_hyperparameters(s['hyperparameters'])} |")
+    return rows
+
+
+def _members_table(profile: Mapping[str, Any]) -> list[str]:
+    rows = ["| member | controller | body | ε | goals | own goals | attempts | final LP |",
+            "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for name, m in profile["demonstrators"].items():
+        rows.append(f"| {name} | {m['controller']} | {m['body']} | {m['lapse']:g} | {m['goals']} | "
+                    f"{m['own_goals']} | {m['attempts']} | {msd(m['final_lp'], digits=2)} |")
+    return rows
+
+
+def _recovery_rows(summary: Mapping[str, Any]) -> list[str]:
+    rows = ["| profile | estimator | Spearman ρ | Kendall τ | best on top |", "| --- | --- | --- | --- | --- |"]
+    for name, profile in summary["profiles"].items():
+        for label, key in (("LP", "skill_recovery"), ("own net goals", "skill_by_outcomes")):
+            r = profile[key]
+            hits = r["best_hits"] if r["best_hits"] is not None else r["top_among_best"]
+            top = "n/a" if hits is None else f"{hits} of {profile['trials']}"
+            rows.append(f"| {name} | {label} | {msd(r['spearman'], digits=3)} | {msd(r['kendall'], digits=3)} | "
+                        f"{top} |")
+    return rows
+
+
+def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] | None = None) -> str:
+    """The report of a ``benchmark.json``; ``seconds`` are the steps' times, from the manifest."""
+    sizes = summary["sizes"]
+    lines = ["# polymimic against the baselines", "",
+             f"{sizes['trials']} trials per profile; every member records {sizes['demonstrations_per_configuration']} "
+             f"valid demonstrations per field configuration; every method plays the same "
+             f"{2 * sizes['attempts_per_configuration']} evaluation attempts (seed {sizes['evaluation_seed']}) after "
+             f"every trial. Every baseline's hyperparameters were chosen among {sizes['tuning_budget']} candidates "
+             f"on {2 * sizes['validation_attempts_per_configuration']} validation attempts (validation seed "
+             f"{sizes['validation_seed']}, disjoint from the evaluation's); polymimic's methods use the thesis's "
+             "constants, untuned. Mean (sd) over trials.", ""]
+    if seconds:
+        lines += ["Time: " + ", ".join(f"{k} {v:.0f} s" for k, v in seconds.items())
+                  + f"; {sum(seconds.values()):.0f} s in all.", ""]
+    lines += ["## Targets", "", "| target | measured | verdict |", "| --- | --- | --- |"]
+    lines += [f"| {t['statement']} | {t['measured']} | {_verdict(t['met'])} |" for t in check_targets(summary)]
+    lines += ["", "## Net goals", "", f"![Net goals by method and profile](plots/{FIGURES['net_goals']})", ""]
+    for name, profile in summary["profiles"].items():
+        lines += [f"### {name}", "", *_methods_table(profile), ""]
+    lines += ["## Skill recovery", "",
+              "How well each estimate ranks the members by true skill (lower ε is better): the members' final LPs, "
+              "and the plain estimator that ranks them by the net goals of their own demonstrations.", "",
+              *_recovery_rows(summary), "", f"![LP against lapse](plots/{FIGURES['lp_vs_lapse']})", "",
+              f"![LP over training](plots/{FIGURES['lp_over_training']})", "", "## The crowds", ""]
+    for name, profile in summary["profiles"].items():
+        lines += [f"### {name}", "", *_members_table(profile), ""]
+    return "\n".join(lines)
+
+
+def benchmark_html(markdown: str, *, images_from: str) -> str:
+    return to_html(markdown, title="polymimic benchmark", images_from=images_from)

@@ -1,0 +1,56 @@
+"""A benchmark's run directory.
+
+::
+
+    manifest.json                    version, config, start and finish of every stage
+    datasets/self_observation_train.parquet, models/recognizer.json
+    datasets/crowd_<profile>.parquet every member's demonstrations (load_demonstrations reads it)
+    models/benchmark/<profile>/trial_<seed>.json               the LP-weighted trial
+    models/benchmark/<profile>/trial_<seed>_uniform_lp.json    every LP held at 0.5
+    models/benchmark/<profile>/tuning_<method>.json            the candidates tried, the choice
+    models/benchmark/<profile>/evaluation_<method>_<seed>.json one method's attempts after one trial
+    benchmark.json, benchmark.md, benchmark.html, plots/benchmark_*.png
+
+>>> import tempfile
+>>> run = BenchmarkDir(tempfile.mkdtemp())
+>>> run.trial_path("linear", 3, uniform_lp=True).name
+'trial_3_uniform_lp.json'
+"""
+
+from __future__ import annotations
+
+import os
+import pathlib
+
+from polymimic.benchmark.config import BenchmarkConfig
+from polymimic.reproduce.rundir import RunHouse
+
+__all__ = ["BenchmarkDir"]
+
+
+class BenchmarkDir(RunHouse[BenchmarkConfig]):
+    """Paths of a benchmark's files."""
+
+    manifest_format = "polymimic.benchmark_run"
+    config_type = BenchmarkConfig
+
+    def __init__(self, path: str | os.PathLike[str]) -> None:
+        super().__init__(path)
+        self.results_path = self.path / "benchmark.json"
+        self.report_md_path = self.path / "benchmark.md"
+        self.report_html_path = self.path / "benchmark.html"
+
+    def crowd_path(self, profile: str) -> pathlib.Path:
+        return self.datasets / f"crowd_{profile}.parquet"
+
+    def profile_dir(self, profile: str) -> pathlib.Path:
+        return self.models / "benchmark" / profile
+
+    def trial_path(self, profile: str, seed: int, *, uniform_lp: bool = False) -> pathlib.Path:
+        return self.profile_dir(profile) / f"trial_{seed}{'_uniform_lp' if uniform_lp else ''}.json"
+
+    def tuning_path(self, profile: str, method: str) -> pathlib.Path:
+        return self.profile_dir(profile) / f"tuning_{method}.json"
+
+    def evaluation_path(self, profile: str, method: str, seed: int) -> pathlib.Path:
+        return self.profile_dir(profile) / f"evaluation_{method}_{seed}.json"

@@ -1,0 +1,145 @@
+"""``benchmark.json``: what a benchmark measured, gathered from its run directory (SPEC §6.3).
+
+Per profile: every member's own outcomes; skill recovery (Spearman ρ and Kendall τ between the
+members' final LPs and true skill, mean and sd over trials, and how many trials put a member of
+the lowest ε on top) beside the same for the plain estimator that ranks members by the net
+goals of their own demonstrations; every method's goals, own goals and net goals after every
+trial. ``None`` stands where a number does not exist (ρ where every member has the same ε).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import Any, TypedDict
+
+import numpy as np
+
+from polymimic._native import __version__
+from polymimic.benchmark.config import BenchmarkConfig
+from polymimic.benchmark.files import load_method_evaluation, load_tuning
+from polymimic.benchmark.rundir import BenchmarkDir
+from polymimic.benchmark.tasks import POLYMIMIC_METHODS, final_lps
+from polymimic.crowds import Crowd
+from polymimic.datasets import load_demonstrations
+from polymimic.learning import TrialResult
+from polymimic.ranking import kendall, spearman
+from polymimic.reproduce.results import mean_sd
+from polymimic.reproduce.schema import MeanSd
+
+__all__ = ["FORMAT", "VERSION", "MemberSummary", "MethodSummary", "ProfileSummary", "SkillRecovery", "gather"]
+
+FORMAT, VERSION = "polymimic.benchmark", 1
+LP_POINTS = 200
+"""LP-over-training curves keep at most this many points per member."""
+
+
+class MemberSummary(TypedDict):
+    controller: str
+    body: str
+    lapse: float
+    goals: int
+    own_goals: int
+    attempts: int
+    final_lp: MeanSd
+
+
+class SkillRecovery(TypedDict):
+    spearman: MeanSd
+    kendall: MeanSd
+    best_hits: int | None
+    """Trials whose top-ranked member is the one of lowest ε (None where no single one is)."""
+    top_among_best: int | None
+    """Trials whose top-ranked member is one of those of lowest ε (None where all share it)."""
+
+
+class MethodSummary(TypedDict):
+    goals: MeanSd
+    own_goals: MeanSd
+    net_goals: MeanSd
+    attempts: int
+    evaluated: int
+    hyperparameters: dict[str, Any]
+
+
+class ProfileSummary(TypedDict):
+    demonstrators: dict[str, MemberSummary]
+    trials: int
+    skill_recovery: SkillRecovery
+    skill_by_outcomes: SkillRecovery
+    methods: dict[str, MethodSummary]
+    lp_over_training: dict[str, list[float]]
+
+
+def recovery(rankings: Sequence[Mapping[str, float]], crowd: Crowd) -> SkillRecovery:
+    """How well each ranking (a score per member, higher is better) recovers true skill."""
+    lapses = crowd.lapses()
+    names = list(crowd.names)
+    skill = [-lapses[n] for n in names]
+    rhos, taus, on_top = [], [], 0
+    best = set(crowd.best())
+    for scores in rankings:
+        values = [scores[n] for n in names]
+        rho, tau = spearman(values, skill), kendall(values, skill)
+        if rho is not None and tau is not None:
+            rhos.append(rho)
+            taus.append(tau)
+        top = [n for n in names if scores[n] == max(values)]
+        on_top += len(top) == 1 and top[0] in best
+    return SkillRecovery(spearman=mean_sd(rhos), kendall=mean_sd(taus), best_hits=on_top if len(best) == 1 else None,
+                         top_among_best=None if len(best) == len(names) else on_top)
+
+
+def _downsampled(history: Sequence[float], points: int = LP_POINTS) -> list[float]:
+    if len(history) <= points:
+        return [float(v) for v in history]
+    picks = np.linspace(0, len(history) - 1, points).round().astype(int)
+    return [float(history[i]) for i in picks]
+
+
+def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, method: str) -> MethodSummary:
+    saved = [load_method_evaluation(run.require(run.evaluation_path(profile, method, s), "benchmark"))
+             for s in config.trial_seeds()]
+    if method in POLYMIMIC_METHODS:
+        control, uniform = POLYMIMIC_METHODS[method]
+        chosen: dict[str, Any] = {"control": control, "lp": "held at 0.5" if uniform else "learned",
+                                  "imitator_weighting": config.learning.imitator_weighting,
+                                  "tuned": "no: the thesis's constants"}
+    else:
+        chosen = load_tuning(run.require(run.tuning_path(profile, method), "benchmark"))["chosen"]
+    return MethodSummary(goals=mean_sd(e["goals"] for e in saved), own_goals=mean_sd(e["own_goals"] for e in saved),
+                         net_goals=mean_sd(e["goals"] - e["own_goals"] for e in saved),
+                         attempts=2 * config.benchmark.attempts_per_configuration, evaluated=len(saved),
+                         hyperparameters=chosen)
+
+
+def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd) -> ProfileSummary:
+    demos = load_demonstrations(run.require(run.crowd_path(crowd.name), "benchmark"))
+    trials = [TrialResult.load(run.require(run.trial_path(crowd.name, s), "benchmark")) for s in config.trial_seeds()]
+    lps = [final_lps(t) for t in trials]
+    net: dict[str, float] = {}
+    members: dict[str, MemberSummary] = {}
+    for member in crowd.members:
+        own = [d for d in demos if d.demonstrator == member.name]
+        goals, own_goals = sum(d.outcome == "goal" for d in own), sum(d.outcome == "own_goal" for d in own)
+        net[member.name] = (goals - own_goals) / len(own)
+        members[member.name] = MemberSummary(controller=member.controller, body=member.body, lapse=member.lapse,
+                                             goals=goals, own_goals=own_goals, attempts=len(own),
+                                             final_lp=mean_sd(lp[member.name] for lp in lps))
+    methods = [m for m in config.benchmark.methods if m != "ppo"]
+    return ProfileSummary(
+        demonstrators=members, trials=len(trials), skill_recovery=recovery(lps, crowd),
+        skill_by_outcomes=recovery([net] * len(trials), crowd),
+        methods={m: _method_summary(run, config, crowd.name, m) for m in methods},
+        lp_over_training={name: _downsampled(model.lp_history) for name, model in trials[0].models.items()})
+
+
+def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
+    """The whole ``benchmark.json`` of a finished run (the same seeds give the same bytes)."""
+    settings = config.benchmark
+    sizes = {"trials": settings.trials, "demonstrations_per_configuration": settings.demonstrations_per_configuration,
+             "attempts_per_configuration": settings.attempts_per_configuration,
+             "validation_attempts_per_configuration": settings.validation_attempts_per_configuration,
+             "tuning_budget": settings.tuning_budget, "evaluation_seed": config.seeds.evaluation,
+             "validation_seed": settings.validation_seed}
+    return {"format": FORMAT, "version": VERSION, "polymimic_version": __version__, "sizes": sizes,
+            "profiles": {crowd.name: _profile(run, config, crowd) for crowd in config.crowds()}}

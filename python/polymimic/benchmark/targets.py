@@ -1,0 +1,92 @@
+"""The benchmark's targets (issue "Crowds and baselines"), each checked against a summary with the
+measured numbers beside it: met, missed, or not applicable where a profile or method was not run.
+
+>>> summary = {"profiles": {"linear": {"skill_recovery": {"spearman": {"mean": 0.95}},
+...                                    "skill_by_outcomes": {"spearman": {"mean": 0.97}}, "methods": {}}}}
+>>> [(t["statement"][:24], t["met"]) for t in check_targets(summary)]
+[('linear: Spearman ρ(LP, s', True), ('linear: ρ(LP) within 0.0', True)]
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any, TypedDict
+
+__all__ = ["LEARN_FROM_DEMONSTRATIONS", "Target", "check_targets"]
+
+LEARN_FROM_DEMONSTRATIONS = ("bco", "bco_lp", "bc", "bc_best")
+"""The baselines polymimic must beat: those that learn from the same demonstrations."""
+
+
+class Target(TypedDict):
+    statement: str
+    measured: str
+    met: bool | None
+
+
+def _net(profile: Mapping[str, Any], method: str) -> float | None:
+    entry = profile["methods"].get(method)
+    return None if entry is None else entry["net_goals"]["mean"]
+
+
+def _ratio_met(value: float, reference: float) -> bool:
+    """``value`` ≥ 1.2 × ``reference`` where the reference is positive; else just above it."""
+    return value >= 1.2 * reference if reference > 0 else value > reference
+
+
+def _beats_baselines(name: str, profile: Mapping[str, Any]) -> list[Target]:
+    ours = _net(profile, "polymimic")
+    rivals = {m: _net(profile, m) for m in LEARN_FROM_DEMONSTRATIONS}
+    present = {m: v for m, v in rivals.items() if v is not None}
+    if ours is None or not present:
+        return []
+    best = max(present, key=lambda m: present[m])
+    measured = f"polymimic {ours:.1f}, best baseline {best} {present[best]:.1f}"
+    out = [Target(statement=f"{name}: polymimic scores the most net goals of the methods learning from "
+                            f"demonstrations", measured=measured, met=ours >= present[best])]
+    if present[best] > 0:
+        out.append(Target(statement=f"{name}: polymimic ≥ 1.2 × the best baseline's net goals",
+                          measured=f"{ours:.1f} vs 1.2 × {present[best]:.1f} = {1.2 * present[best]:.1f}",
+                          met=ours >= 1.2 * present[best]))
+    return out
+
+
+def _skill(name: str, profile: Mapping[str, Any]) -> list[Target]:
+    lp, outcomes = profile["skill_recovery"]["spearman"]["mean"], profile["skill_by_outcomes"]["spearman"]["mean"]
+    out = [Target(statement=f"{name}: Spearman ρ(LP, skill) ≥ 0.9", measured="n/a" if lp is None else f"{lp:.3f}",
+                  met=None if lp is None else lp >= 0.9)]
+    if name == "linear":
+        out.append(Target(statement=f"{name}: ρ(LP) within 0.05 of the net-goal ranking's ρ (or above it)",
+                          measured="n/a" if lp is None or outcomes is None else f"{lp:.3f} vs {outcomes:.3f}",
+                          met=None if lp is None or outcomes is None else lp >= outcomes - 0.05))
+    return out
+
+
+def _what_lp_buys(name: str, profile: Mapping[str, Any]) -> list[Target]:
+    out = []
+    trials, recovery = profile.get("trials", 0), profile["skill_recovery"]
+    hits = recovery.get("top_among_best")
+    if hits is not None and trials:
+        out.append(Target(statement=f"{name}: a member of the lowest ε has the highest LP in ≥ 95 % of trials",
+                          measured=f"{hits} of {trials} trials", met=hits >= 0.95 * trials))
+    ours, uniform = _net(profile, "polymimic"), _net(profile, "polymimic_uniform_lp")
+    if ours is not None and uniform is not None:
+        out.append(Target(statement=f"{name}: polymimic − polymimic_uniform_lp ≥ 3 net goals",
+                          measured=f"{ours:.1f} − {uniform:.1f} = {ours - uniform:.1f}", met=ours - uniform >= 3))
+    bco, bco_lp = _net(profile, "bco"), _net(profile, "bco_lp")
+    if bco is not None and bco_lp is not None:
+        out.append(Target(statement=f"{name}: bco_lp ≥ 1.2 × bco in net goals (above it where bco ≤ 0)",
+                          measured=f"{bco_lp:.1f} vs {bco:.1f}", met=_ratio_met(bco_lp, bco)))
+    return out
+
+
+def check_targets(summary: Mapping[str, Any]) -> list[Target]:
+    """Every target that applies to the profiles and methods of ``summary``."""
+    out: list[Target] = []
+    for name, profile in summary["profiles"].items():
+        out += _beats_baselines(name, profile)
+        if name in ("linear", "mixed_bodies"):
+            out += _skill(name, profile)
+        if name in ("one_good", "mixed_bodies"):
+            out += _what_lp_buys(name, profile)
+    return out

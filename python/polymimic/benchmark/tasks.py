@@ -1,0 +1,121 @@
+"""The benchmark's tasks: module-level functions of what every task shares and its own job, so
+that process-pool and Ray workers can import them (see
+:class:`~polymimic.reproduce.backends.TaskRunner`). Each returns plain data the driver writes
+to the run directory; each depends on its job and the shared inputs alone.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+from typing import Any
+
+from polymimic import baselines
+from polymimic._native import PrimitiveRecognizer
+from polymimic.benchmark.config import BenchmarkConfig
+from polymimic.crowds import Crowd
+from polymimic.field import Demonstration
+from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate, run_trial
+
+__all__ = ["POLYMIMIC_METHODS", "ProfileInputs", "Shared", "evaluation_task", "final_lps", "trial_task",
+           "tuning_task"]
+
+POLYMIMIC_METHODS = {"polymimic": ("improved", False), "polymimic_thesis_control": ("thesis", False),
+                     "polymimic_uniform_lp": ("improved", True)}
+"""polymimic's own methods: (control, whether every LP is held at 0.5)."""
+
+
+@dataclasses.dataclass(frozen=True)
+class ProfileInputs:
+    """One crowd and what it demonstrated, as recordings and segmented."""
+
+    crowd: Crowd
+    demonstrations: list[Demonstration]
+    segmented: SegmentedDemonstrations
+
+
+@dataclasses.dataclass(frozen=True)
+class Shared:
+    """What every task of a benchmark shares."""
+
+    config: BenchmarkConfig
+    recognizer: PrimitiveRecognizer
+    profiles: dict[str, ProfileInputs]
+
+    def learning(self, uniform_lp: bool) -> LearningConfig:
+        config: LearningConfig = self.config.learning
+        return config.replace(hold_lp=True) if uniform_lp else config
+
+
+def trial_task(shared: Shared, job: tuple[str, int, bool]) -> str:
+    """``(profile, trial seed, uniform LP)`` → the trial as :meth:`TrialResult.to_json` writes it."""
+    profile, seed, uniform_lp = job
+    inputs = shared.profiles[profile]
+    return run_trial(inputs.segmented, recognizer=shared.recognizer, ordering=list(inputs.crowd.names),
+                     config=shared.learning(uniform_lp), phase_one="interleaved", seed=seed).to_json()
+
+
+def final_lps(trial: TrialResult) -> dict[str, float]:
+    """Every member's final LP in ``trial``."""
+    return {name: model.lp for name, model in trial.models.items()}
+
+
+def _baseline_inputs(shared: Shared, profile: str, method: str, trial_json: str | None) -> dict[str, Any]:
+    """What :func:`polymimic.baselines.fit` needs for ``method`` beyond the demonstrations."""
+    inputs = shared.profiles[profile]
+    extra: dict[str, Any] = {"recognizer": shared.recognizer,
+                             "segmenter": dataclasses.asdict(shared.config.segmenter)}
+    if method == "bco_lp":
+        assert trial_json is not None, "bco_lp weighs by a trial's LPs"
+        extra["weights"] = final_lps(TrialResult.from_json(trial_json))
+    if method == "bc_best":
+        best = inputs.crowd.best()
+        extra["member"] = best[0] if len(best) == 1 else best
+    return extra
+
+
+def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, Any]:
+    """``(profile, method, the first trial's JSON for bco_lp)`` → the hyperparameters chosen on
+    validation attempts, and every candidate's score there."""
+    profile, method, trial_json = job
+    settings, seeds = shared.config.benchmark, shared.config.seeds
+    tuning = baselines.tune(method, shared.profiles[profile].demonstrations, budget=settings.tuning_budget,
+                            validation_seed=settings.validation_seed,
+                            attempts_per_configuration=settings.validation_attempts_per_configuration,
+                            evaluation_seed=seeds.evaluation,
+                            evaluation_attempts_per_configuration=settings.attempts_per_configuration,
+                            seed=seeds.first_trial, field_config=shared.config.field,
+                            **_baseline_inputs(shared, profile, method, trial_json))
+    return {"profile": profile, "method": method, "chosen": tuning.chosen,
+            "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
+            "validation_attempts": len(tuning.validation_attempts)}
+
+
+def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[str, Any] | None]) -> dict[str, Any]:
+    """``(profile, method, trial seed, the trial's JSON, the tuned hyperparameters)`` → the
+    method's goals and own goals on the evaluation attempts after that trial."""
+    profile, method, trial_seed, trial_json, hyperparameters = job
+    settings, seeds, inputs = shared.config.benchmark, shared.config.seeds, shared.profiles[profile]
+    if method in POLYMIMIC_METHODS:
+        control, uniform_lp = POLYMIMIC_METHODS[method]
+        assert trial_json is not None
+        policy = ImitatorPolicy(TrialResult.from_json(trial_json), recognizer=shared.recognizer,
+                                config=shared.learning(uniform_lp), control=control,
+                                demonstrations=inputs.segmented if control == "improved" else None)
+        result = evaluate(policy, attempts_per_configuration=settings.attempts_per_configuration,
+                          seed=seeds.evaluation, field_config=shared.config.field)
+    else:
+        assert hyperparameters is not None
+        chosen = baselines.Hyperparameters.from_dict(hyperparameters)
+        demos = inputs.demonstrations if method != "random" else []
+        fitted = baselines.fit(method, demos, hyperparameters=chosen, seed=trial_seed,
+                               **(_baseline_inputs(shared, profile, method, trial_json) if method != "random" else {}))
+        result = baselines.evaluate_policy(fitted, attempts_per_configuration=settings.attempts_per_configuration,
+                                           seed=seeds.evaluation, field_config=shared.config.field)
+    outcomes = [a.outcome for a in result.attempts]
+    return {"profile": profile, "method": method, "trial_seed": trial_seed, "seed": seeds.evaluation,
+            "goals": result.goals, "own_goals": result.own_goals, "attempts": len(outcomes), "outcomes": outcomes}
+
+
+def dumps(data: dict[str, Any]) -> str:
+    return json.dumps(data, sort_keys=True) + "\n"

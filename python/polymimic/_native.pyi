@@ -191,7 +191,7 @@ class PrimitiveRecognizer:
     def __reduce__(self) -> tuple[Any, tuple[str]]: ...
 
 def record_demonstrations(
-    demonstrator: str, *, configuration: int, n: int, seed: int = 0, config: str | None = None
+    demonstrator: str, *, configuration: int, n: int, seed: int = 0, lapse: float = 0.0, config: str | None = None
 ) -> list[dict[str, Any]]: ...
 def record_self_observation(
     n_per_primitive: int, *, seed: int = 0, config: str | None = None

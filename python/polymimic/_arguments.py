@@ -6,7 +6,7 @@ from __future__ import annotations
 import numbers
 from typing import Any
 
-__all__ = ["integer"]
+__all__ = ["integer", "probability"]
 
 
 def integer(name: str, value: Any, low: int, high: int | None = None) -> int:
@@ -27,3 +27,19 @@ def integer(name: str, value: Any, low: int, high: int | None = None) -> int:
         allowed = f"at least {low}" if high is None else f"in {low}..{high}"
         raise ValueError(f"{name} must be {allowed}, got {number}")
     return number
+
+
+def probability(name: str, value: Any) -> float:
+    """``value`` as a float in [0, 1]; a ``ValueError`` naming ``name``, the value and the range
+    for anything else: out of range, NaN, a bool (``True`` is not a probability) or no number.
+
+    >>> probability("lapse", 0.25)
+    0.25
+    >>> probability("lapse", 1.5)
+    Traceback (most recent call last):
+    ...
+    ValueError: lapse must be a number in [0, 1], got 1.5
+    """
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0.0 <= float(value) <= 1.0:
+        raise ValueError(f"{name} must be a number in [0, 1], got {value!r}")
+    return float(value)

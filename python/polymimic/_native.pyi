@@ -191,7 +191,7 @@ class PrimitiveRecognizer:
     def __reduce__(self) -> tuple[Any, tuple[str]]: ...
 
 def record_demonstrations(
-    demonstrator: str, *, configuration: int, n: int, seed: int = 0, config: str | None = None
+    demonstrator: str, *, configuration: int, n: int, seed: int = 0, lapse: float = 0.0, config: str | None = None
 ) -> list[dict[str, Any]]: ...
 def record_self_observation(
     n_per_primitive: int, *, seed: int = 0, config: str | None = None
@@ -247,6 +247,8 @@ class LearningConfig:
         permanency_step: float = 0.02,
         initial_lp: float = 0.5,
         imitator_lp: float = 0.9,
+        hold_lp: bool = False,
+        imitator_weighting: Literal["even", "lp"] = "even",
         lp_goal: float = 0.01,
         lp_ball_to_goal: float = 0.005,
         lp_robot_to_ball: float = 0.002,
@@ -290,6 +292,10 @@ class LearningConfig:
     def initial_lp(self) -> float: ...
     @property
     def imitator_lp(self) -> float: ...
+    @property
+    def hold_lp(self) -> bool: ...
+    @property
+    def imitator_weighting(self) -> str: ...
     @property
     def lp_goal(self) -> float: ...
     @property

@@ -25,7 +25,7 @@ from typing import Any
 import numpy as np
 
 from polymimic import _native
-from polymimic._arguments import integer
+from polymimic._arguments import integer, probability
 
 FRAME_DTYPE = np.dtype([
     ("t_s", "f8"),
@@ -185,19 +185,42 @@ def _field_config(config: Mapping[str, Any] | str | None) -> str | None:
     return None if config is None else json.dumps(check_config(config))
 
 
-def record(demonstrator: str, *, configuration: int, n: int, seed: int = 0,
+def record(demonstrator: str, *, configuration: int, n: int, seed: int = 0, lapse: float = 0.0,
            config: dict[str, Any] | str | None = None) -> list[Demonstration]:
     """``n`` valid demonstrations of ``demonstrator`` from field ``configuration`` (1 or 2).
 
     Episodes run in parallel in Rust with the GIL released; a demonstration whose tracking was
-    lost is discarded and replaced, deterministically. ``config`` overrides the field
-    configuration (see :func:`default_config`).
+    lost is discarded and replaced, deterministically. ``seed`` is any integer in
+    ``[0, 2**64)``. ``config`` overrides the field configuration (see :func:`default_config`).
+
+    ``lapse`` is the demonstrator's lapse rate ε in [0, 1] (SPEC §6.1), a skill set by design:
+    at the start of every second of an episode (tracker frames 0, 30, 60, …), with probability
+    ε, the demonstrator spends that second on one uniformly random primitive instead of its
+    controller's commands (on the humanoid, which takes no primitives, the equivalent walk
+    forward or backward, turn left or right, or wait), then its controller takes over again.
+    The frames record the commands actually sent. The lapses are drawn from a random stream of
+    their own under each episode's seed, so the same ``seed`` gives the same lapses, the
+    episodes keep their seeds at every ε, and ``lapse=0.0`` is the controller's own
+    demonstrations, bit for bit.
+
+    >>> sloppy = record("expert", configuration=1, n=1, seed=3, lapse=1.0)
+    >>> bool((sloppy[0].frames["command"] <= 4).all())  # primitives only; the Expert's own are 100 up
+    True
+
+    Raises
+    ------
+    ValueError
+        For an unknown demonstrator, a configuration other than 1 or 2, ``n`` below 1, a seed
+        outside ``[0, 2**64)`` or a ``lapse`` that is not a number in [0, 1].
+    TypeError
+        For a configuration, ``n`` or seed that is not an integer.
     """
     if demonstrator not in DEMONSTRATORS:
         raise ValueError(f"unknown demonstrator {demonstrator!r}; expected one of {', '.join(DEMONSTRATORS)}")
     configuration, n = integer("configuration", configuration, 1, 2), integer("n", n, 1)
     raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n,
-                                        seed=integer("seed", seed, 0, 2**63 - 1), config=_field_config(config))
+                                        seed=integer("seed", seed, 0, 2**64 - 1),
+                                        lapse=probability("lapse", lapse), config=_field_config(config))
     return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=d["demonstrator"],
                           configuration=d["configuration"], seed=d["seed"]) for d in raw]
 
@@ -207,7 +230,7 @@ def self_observation(n_per_primitive: int, *, seed: int = 0,
     """The imitator alone on the field executing random one-second primitives: exactly
     ``n_per_primitive`` valid sequences of each of forward, backward, left, right and stop."""
     frames, primitives = _native.record_self_observation(integer("n_per_primitive", n_per_primitive, 1),
-                                                         seed=integer("seed", seed, 0, 2**63 - 1),
+                                                         seed=integer("seed", seed, 0, 2**64 - 1),
                                                          config=_field_config(config))
     return [PrimitiveSequence(primitive=p, frames=as_frames(f)) for f, p in zip(frames, primitives)]
 

@@ -60,6 +60,22 @@ class LearningConfig(_native.LearningConfig):
       and a demonstrator that wanders for a minute is not judged by its wandering many times
       over its outcome) or ``"per_span"`` (a whole step each span, the thesis's letter).
 
+    Two switches decide how much the LP shapes the imitator:
+
+    - ``hold_lp``: ``False``, or ``True`` to hold every demonstrator's LP at ``initial_lp``
+      throughout a trial (the uniform-LP ablation: nothing moves it);
+    - ``imitator_weighting``: ``"even"`` (every demonstration counts the same for the imitator,
+      the thesis) or ``"lp"``: a demonstration by member m counts with weight
+      ``w_m = LP_m / max_k LP_k`` (the best member weighs 1; if every LP is 0 all weigh 1). In
+      phase 2 of a trial the weights come from the demonstrator models' LPs at that moment and
+      scale the imitator's gains from the demonstration (the frequency step of eq 3.11 and the
+      permanency step; not the decay), so behaviours shown only by members of low LP gain
+      little and decay away; :class:`ImitatorPolicy` with ``control="improved"`` weighs each
+      demonstration's samples by the trial's final LP weight of its demonstrator (the ball's
+      response and a state's value as weighted means, the push region as weighted
+      percentiles). With ``"even"``, or with ``hold_lp`` (all LPs equal), every weight is 1 and
+      the results are exactly those of the thesis's scheme.
+
     ``save``/``load`` use TOML.
 
     Examples
@@ -166,7 +182,10 @@ class ImitatorPolicy(_native.ImitatorPolicy):
     only from where the scoring demonstrations pushed the ball toward the goal (a region
     relative to the ball and the goal, learned from them) or when one predicts a goal; anywhere
     else the robot takes the shortest route there in its own primitives, round the ball rather
-    than through it.
+    than through it. With ``config.imitator_weighting == "lp"`` what the improved control learns
+    from a demonstration weighs its demonstrator's final LP relative to the best in ``trial``
+    (see :class:`LearningConfig`); a demonstration whose demonstrator has no model in ``trial``
+    is a ``ValueError`` naming it.
 
     The policy itself is the compiled one; this class only segments recordings it is given.
     """

@@ -5,7 +5,8 @@ use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use polymimic_field::{
-    BodyKind, Command, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Primitive, demonstrate,
+    BodyKind, Command, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, LapseRate, Primitive,
+    demonstrate,
 };
 
 const FRAMES: u64 = 900;
@@ -38,7 +39,7 @@ fn scripted(seed: u64) -> usize {
 
 /// One Expert demonstration from configuration 2 (about 30 s of pushing round and along).
 fn expert_demonstration(config: &FieldConfig) -> usize {
-    demonstrate(Demonstrator::Expert, Configuration::Two, 11, config).expect("runs").frames.len()
+    demonstrate(Demonstrator::Expert, Configuration::Two, 11, LapseRate::NONE, config).expect("runs").frames.len()
 }
 
 fn bench_field(c: &mut Criterion) {

@@ -3,7 +3,7 @@
 
 use std::time::Instant;
 
-use polymimic_field::{Command, Configuration, Demonstrator, FieldConfig, Outcome, record};
+use polymimic_field::{Command, Configuration, Demonstrator, FieldConfig, LapseRate, Outcome, record};
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let args: Vec<String> = std::env::args().collect();
@@ -14,7 +14,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for d in Demonstrator::ALL {
         for c in Configuration::ALL {
             let start = Instant::now();
-            let demos = record(d, c, n, seed, &config)?;
+            let demos = record(d, c, n, seed, LapseRate::NONE, &config)?;
             let ms = start.elapsed().as_secs_f64() * 1e3;
             let count = |o: Outcome| demos.iter().filter(|x| x.outcome == o).count();
             let mean_s = demos.iter().map(|x| x.frames.last().map_or(0.0, |f| f.t_s)).sum::<f64>() / demos.len() as f64;
@@ -36,7 +36,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for d in Demonstrator::ALL {
         let mut counts = std::collections::BTreeMap::new();
         for c in Configuration::ALL {
-            for demo in record(d, c, n, seed, &config)? {
+            for demo in record(d, c, n, seed, LapseRate::NONE, &config)? {
                 for f in &demo.frames {
                     *counts.entry(f.command).or_insert(0usize) += 1;
                 }

@@ -5,7 +5,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::body::BodyKind;
-use crate::controller::{Controller, Expert, HumanoidController, Poor, TinyController};
+use crate::controller::{Controller, Expert, HumanoidController, LapseRate, Lapsing, Poor, TinyController};
 use crate::episode::{Episode, Outcome};
 use crate::error::{FieldError, FieldParamError};
 use crate::math::derive_seed;
@@ -87,8 +87,12 @@ pub struct Demonstration {
     pub demonstrator: Demonstrator,
     /// From which configuration.
     pub configuration: Configuration,
-    /// The episode seed: [`demonstrate`] with it replays this demonstration bit for bit.
+    /// The episode seed: [`demonstrate`] with it and [`Demonstration::lapse`] replays this
+    /// demonstration bit for bit.
     pub seed: u64,
+    /// The demonstrator's lapse rate (SPEC §6.1); absent in older files, which had none.
+    #[serde(default)]
+    pub lapse: LapseRate,
     /// How it ended.
     pub outcome: Outcome,
     /// Whether tracking held throughout (always true in what [`record`] returns).
@@ -97,7 +101,8 @@ pub struct Demonstration {
     pub frames: Vec<Frame>,
 }
 
-/// Run one demonstration episode with the given episode seed (valid or not).
+/// Run one demonstration episode with the given episode seed (valid or not), the demonstrator
+/// lapsing at `lapse` (SPEC §6.1; [`LapseRate::NONE`] is its controller alone, bit for bit).
 ///
 /// # Errors
 /// A parameter error for an invalid config.
@@ -105,20 +110,21 @@ pub fn demonstrate(
     demonstrator: Demonstrator,
     configuration: Configuration,
     seed: u64,
+    lapse: LapseRate,
     config: &FieldConfig,
 ) -> Result<Demonstration, FieldError> {
     let setup = EpisodeSetup::configuration(demonstrator.body(), configuration, config);
     let mut episode = Episode::new(&setup, config, seed)?;
-    let mut controller = demonstrator.controller();
+    let mut controller = Lapsing::new(demonstrator.controller(), lapse, seed);
     let max_frames = (config.time_limit_s * f64::from(FRAME_RATE_HZ)).ceil() as usize + 1;
-    run_controller(&mut episode, controller.as_mut(), max_frames)?;
+    run_controller(&mut episode, &mut controller, max_frames)?;
     let outcome = episode.outcome().unwrap_or(Outcome::TimeUp);
     let valid = episode.is_valid();
-    Ok(Demonstration { demonstrator, configuration, seed, outcome, valid, frames: episode.into_frames() })
+    Ok(Demonstration { demonstrator, configuration, seed, lapse, outcome, valid, frames: episode.into_frames() })
 }
 
-/// Record `n_valid` valid demonstrations. Attempt `i` runs with episode seed
-/// `derive_seed(seed, stream, i)`; invalid attempts are skipped, so the result is the first
+/// Record `n_valid` valid demonstrations, the demonstrator lapsing at `lapse`. Attempt `i`
+/// runs with episode seed `derive_seed(seed, stream, i)` (whatever `lapse` is); invalid attempts are skipped, so the result is the first
 /// `n_valid` valid attempts in order: the same bits on any number of threads.
 ///
 /// # Errors
@@ -129,6 +135,7 @@ pub fn record(
     configuration: Configuration,
     n_valid: usize,
     seed: u64,
+    lapse: LapseRate,
     config: &FieldConfig,
 ) -> Result<Vec<Demonstration>, FieldError> {
     config.check()?;
@@ -144,7 +151,7 @@ pub fn record(
         let batch = ((n_valid - out.len()) + 2).min(max_attempts - next);
         let results: Vec<Result<Demonstration, FieldError>> = (next..next + batch)
             .into_par_iter()
-            .map(|i| demonstrate(demonstrator, configuration, derive_seed(seed, stream, i as u64), config))
+            .map(|i| demonstrate(demonstrator, configuration, derive_seed(seed, stream, i as u64), lapse, config))
             .collect();
         next += batch;
         for r in results {
@@ -157,8 +164,9 @@ pub fn record(
     Ok(out)
 }
 
-/// [`record`] for several demonstrators, `n_valid` per configuration each, in parallel; the
-/// result is ordered by demonstrator (as given), then configuration 1 before 2.
+/// [`record`] for several demonstrators, `n_valid` per configuration each, all lapsing at
+/// `lapse`, in parallel; the result is ordered by demonstrator (as given), then configuration 1
+/// before 2.
 ///
 /// # Errors
 /// As [`record`].
@@ -166,12 +174,13 @@ pub fn record_all(
     demonstrators: &[Demonstrator],
     n_valid: usize,
     seed: u64,
+    lapse: LapseRate,
     config: &FieldConfig,
 ) -> Result<Vec<Demonstration>, FieldError> {
     let jobs: Vec<(Demonstrator, Configuration)> =
         demonstrators.iter().flat_map(|d| Configuration::ALL.map(|c| (*d, c))).collect();
     let parts: Vec<Result<Vec<Demonstration>, FieldError>> =
-        jobs.par_iter().map(|&(d, c)| record(d, c, n_valid, seed, config)).collect();
+        jobs.par_iter().map(|&(d, c)| record(d, c, n_valid, seed, lapse, config)).collect();
     let mut out = Vec::with_capacity(jobs.len() * n_valid);
     for p in parts {
         out.extend(p?);
@@ -195,11 +204,12 @@ mod tests {
     fn record_retries_invalid_demonstrations() {
         let mut config = FieldConfig::default();
         config.tracker.loss_probability = 0.002;
-        let demos = record(Demonstrator::Poor, Configuration::Two, 3, 9, &config).expect("records");
+        let demos = record(Demonstrator::Poor, Configuration::Two, 3, 9, LapseRate::NONE, &config).expect("records");
         assert_eq!(demos.len(), 3);
         assert!(demos.iter().all(|d| d.valid));
         // Replaying a seed gives the same frames.
-        let again = demonstrate(Demonstrator::Poor, Configuration::Two, demos[0].seed, &config).expect("replays");
+        let again = demonstrate(Demonstrator::Poor, Configuration::Two, demos[0].seed, LapseRate::NONE, &config)
+            .expect("replays");
         assert_eq!(again.frames.len(), demos[0].frames.len());
         assert_eq!(again.outcome, demos[0].outcome);
     }
@@ -208,7 +218,7 @@ mod tests {
     fn hopeless_tracking_is_reported_not_looped() {
         let mut config = FieldConfig::default();
         config.tracker.loss_probability = 1.0;
-        let r = record(Demonstrator::Poor, Configuration::One, 2, 1, &config);
+        let r = record(Demonstrator::Poor, Configuration::One, 2, 1, LapseRate::NONE, &config);
         assert!(matches!(r, Err(FieldError::RetriesExhausted { .. })));
     }
 }

@@ -12,7 +12,7 @@
 //! ```
 //! use polymimic_field::{
 //!     BodyKind, Command, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig,
-//!     Primitive, primitive_stats, record, self_observation,
+//!     LapseRate, Primitive, primitive_stats, record, self_observation,
 //! };
 //!
 //! let config = FieldConfig::default();
@@ -23,8 +23,11 @@
 //! assert!(table[Primitive::Forward.index()].distance_mean_mm > 0.0);
 //!
 //! // Demonstrations: valid shots on goal with the outcome and the commands sent.
-//! let demos = record(Demonstrator::Expert, Configuration::One, 2, 7, &config)?;
+//! let demos = record(Demonstrator::Expert, Configuration::One, 2, 7, LapseRate::NONE, &config)?;
 //! assert_eq!(demos.len(), 2);
+//! // The same Expert, spending about half of its seconds on a random primitive (SPEC §6.1).
+//! let sloppy = record(Demonstrator::Expert, Configuration::One, 2, 7, LapseRate::new(0.5)?, &config)?;
+//! assert_eq!(sloppy.len(), 2);
 //!
 //! // An external policy drives the imitator frame by frame.
 //! let setup = EpisodeSetup::configuration(BodyKind::Lego, Configuration::One, &config);
@@ -57,7 +60,7 @@ mod tracker;
 pub use batch::EpisodeBatch;
 pub use body::BodyKind;
 pub use command::{Command, CommandInfo, ExpertCommand, HumanoidCommand, Language, command_table};
-pub use controller::Controller;
+pub use controller::{Controller, LapseRate};
 pub use demonstrate::{Demonstration, Demonstrator, demonstrate, record, record_all};
 pub use episode::{Episode, Observation, Outcome, StepResult};
 pub use error::{FieldError, FieldParamError};

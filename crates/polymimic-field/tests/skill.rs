@@ -3,12 +3,12 @@
 //! driving straight at the ball, scores on itself whenever the ball sits before its own goal;
 //! the tiny robot and the humanoid score often with few own goals.
 
-use polymimic_field::{Demonstrator, FieldConfig, Outcome, record_all};
+use polymimic_field::{Demonstrator, FieldConfig, LapseRate, Outcome, record_all};
 
 #[test]
 fn demonstrators_have_the_thesis_skill_ordering() {
     let config = FieldConfig::default();
-    let demos = record_all(&Demonstrator::ALL, 25, 2024, &config).expect("records");
+    let demos = record_all(&Demonstrator::ALL, 25, 2024, LapseRate::NONE, &config).expect("records");
     assert_eq!(demos.len(), Demonstrator::ALL.len() * 50);
     let count = |d: Demonstrator, o: Outcome| demos.iter().filter(|x| x.demonstrator == d && x.outcome == o).count();
     for d in Demonstrator::ALL {
@@ -43,7 +43,7 @@ fn recording_is_identical_across_thread_counts() {
             .num_threads(threads)
             .build()
             .expect("pool")
-            .install(|| record_all(&[Demonstrator::Expert, Demonstrator::Humanoid], 3, 5, &config))
+            .install(|| record_all(&[Demonstrator::Expert, Demonstrator::Humanoid], 3, 5, LapseRate::NONE, &config))
             .expect("records")
     };
     let (one, two) = (run(1), run(2));

@@ -2,7 +2,8 @@
 //! watched: the thesis's future work asks for far more samples behind ball predictions
 //! (§5.4) than one behaviour's own spans give. Every segment named by a primitive is one
 //! sample: where the ball lay relative to the robot when the segment began, and how far it
-//! moved, in the robot's frame. A prediction averages the samples whose ball lay nearest.
+//! moved, in the robot's frame. A prediction averages the samples whose ball lay nearest,
+//! each weighing what its demonstration weighs.
 
 use polymimic_perceive::Label;
 use polymimic_types::{Pose, Primitive, TrackedFrame};
@@ -11,6 +12,7 @@ use serde::{Deserialize, Serialize};
 use crate::nearest::nearest;
 use crate::round::SegmentedDemonstration;
 use crate::state::Pitch;
+use crate::weighting::weighted;
 
 /// Samples averaged by one prediction…
 const NEIGHBOURS: usize = 8;
@@ -33,8 +35,8 @@ fn to_field_frame(robot: &Pose, local: [f64; 2]) -> (f64, f64) {
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct BallResponse {
     /// Per primitive (in [`Primitive::ALL`] order): the ball's start and its displacement, both
-    /// in the robot's frame at the start, mm.
-    samples: Vec<Vec<[f64; 4]>>,
+    /// in the robot's frame at the start, mm, and the sample's weight.
+    samples: Vec<Vec<[f64; 5]>>,
 }
 
 impl BallResponse {
@@ -42,8 +44,20 @@ impl BallResponse {
     /// began with the ball at rest (it moved no more than `ball_moved_mm` over the segment before).
     #[must_use]
     pub fn learn(demonstrations: &[SegmentedDemonstration], pitch: &Pitch, ball_moved_mm: f64) -> Self {
+        Self::learn_weighted(demonstrations, &[], pitch, ball_moved_mm)
+    }
+
+    /// [`Self::learn`], every sample of demonstration i weighing `weights[i]` (see
+    /// [`crate::WorldModel::learn_weighted`]).
+    #[must_use]
+    pub fn learn_weighted(
+        demonstrations: &[SegmentedDemonstration],
+        weights: &[f64],
+        pitch: &Pitch,
+        ball_moved_mm: f64,
+    ) -> Self {
         let mut samples = vec![Vec::new(); Primitive::ALL.len()];
-        for demo in demonstrations.iter().filter(|d| d.pitch == *pitch) {
+        for (demo, weight) in weighted(demonstrations, weights).filter(|(d, _)| d.pitch == *pitch) {
             for (k, segment) in demo.segments.iter().enumerate() {
                 // A ball still rolling from before would credit the primitive with its roll.
                 let rolling = k > 0 && {
@@ -64,7 +78,7 @@ impl BallResponse {
                 let moved =
                     to_robot_frame(&start.robot, end.ball_x_mm - start.ball_x_mm, end.ball_y_mm - start.ball_y_mm);
                 if ball.iter().chain(&moved).all(|v| v.is_finite()) {
-                    samples[primitive as usize].push([ball[0], ball[1], moved[0], moved[1]]);
+                    samples[primitive as usize].push([ball[0], ball[1], moved[0], moved[1], weight]);
                 }
             }
         }
@@ -79,7 +93,8 @@ impl BallResponse {
 
     /// Where the ball will be after `primitive` starts from `state`, in field coordinates: the
     /// mean displacement of the samples whose ball lay nearest to where it lies now, counting
-    /// the ball as staying put for every one of the [`NEIGHBOURS`] missing nearby.
+    /// the ball as staying put for every one of the [`NEIGHBOURS`] missing nearby. Samples
+    /// weigh their weights and each missing one 1: Σ wᵢ·dᵢ / (Σ wᵢ + missing).
     #[must_use]
     pub fn predict(&self, state: &TrackedFrame, primitive: Primitive) -> (f64, f64) {
         let robot = &state.robot;
@@ -88,10 +103,18 @@ impl BallResponse {
             return (state.ball_x_mm, state.ball_y_mm);
         };
         let nearest = nearest(samples.iter().map(|s| [s[0], s[1]]), &here, NEIGHBOURS);
+        let near: Vec<&[f64; 5]> = nearest
+            .iter()
+            .filter(|(d2, _)| *d2 <= NEIGHBOURHOOD_MM * NEIGHBOURHOOD_MM)
+            .map(|&(_, i)| &samples[i])
+            .collect();
+        // With every weight 1 the denominator is NEIGHBOURS and each share exactly 1/NEIGHBOURS.
+        let denominator = near.iter().map(|s| s[4]).sum::<f64>() + (NEIGHBOURS - near.len()) as f64;
         let mut mean = [0.0; 2];
-        for &(_, i) in nearest.iter().filter(|(d2, _)| *d2 <= NEIGHBOURHOOD_MM * NEIGHBOURHOOD_MM) {
-            mean[0] += samples[i][2] / NEIGHBOURS as f64;
-            mean[1] += samples[i][3] / NEIGHBOURS as f64;
+        for sample in near {
+            let share = sample[4] / denominator;
+            mean[0] += sample[2] * share;
+            mean[1] += sample[3] * share;
         }
         let (dx, dy) = to_field_frame(robot, mean);
         (state.ball_x_mm + dx, state.ball_y_mm + dy)
@@ -142,6 +165,67 @@ mod tests {
         assert_eq!(response.predict(&far, Primitive::Forward), (400.0, 0.0));
         // No samples for a turn: the ball stays.
         assert_eq!(response.predict(&state, Primitive::Left), (150.0, 0.0));
+    }
+
+    /// [`pushes`] carrying the ball `moved_mm` instead of 30 mm.
+    fn pushes_by(moved_mm: f64) -> SegmentedDemonstration {
+        let mut demo = pushes();
+        demo.segments[0].end.ball_y_mm = 50.0 + moved_mm;
+        demo
+    }
+
+    #[test]
+    fn a_sample_weighs_its_demonstrations_weight_and_a_missing_one_counts_as_staying_put() {
+        let state = frame(Pose::new(100.0, 0.0, 0.0), (150.0, 0.0));
+        let demos = [pushes(), pushes_by(60.0)];
+        // Weight 0 leaves the 60 mm push out: the 30 mm push alone, as if never shown the other.
+        let alone = BallResponse::learn(&demos[..1], &Pitch::LARGE, 10.0).predict(&state, Primitive::Forward);
+        let weighted = BallResponse::learn_weighted(&demos, &[1.0, 0.0], &Pitch::LARGE, 10.0);
+        assert_eq!(weighted.sample_count(Primitive::Forward), 1);
+        assert_eq!(weighted.predict(&state, Primitive::Forward), alone);
+        // Weights 1 and ½ with six missing: (30 · 1 + 60 · ½) / (1 + ½ + 6) = 8 mm.
+        let half = BallResponse::learn_weighted(&demos, &[1.0, 0.5], &Pitch::LARGE, 10.0);
+        let (x, y) = half.predict(&state, Primitive::Forward);
+        assert!((x - 158.0).abs() < 1e-12 && y.abs() < 1e-12, "({x}, {y})");
+        // Evenly: (30 + 60) / 8.
+        let even = BallResponse::learn(&demos, &Pitch::LARGE, 10.0).predict(&state, Primitive::Forward);
+        assert!((even.0 - (150.0 + 90.0 / 8.0)).abs() < 1e-12, "{even:?}");
+    }
+
+    #[test]
+    fn weights_of_one_predict_bit_for_bit_what_the_unweighted_mean_did() {
+        // Pushes of many lengths from around the ball, more than eight of them near it.
+        let demos: Vec<SegmentedDemonstration> = (0..20)
+            .map(|k| {
+                let mut demo = pushes_by(7.0 + 3.3 * f64::from(k));
+                demo.segments[0].start.ball_x_mm = 1.7 * f64::from(k) - 15.0;
+                demo
+            })
+            .collect();
+        let response = BallResponse::learn_weighted(&demos, &vec![1.0; demos.len()], &Pitch::LARGE, 10.0);
+        assert_eq!(response, BallResponse::learn(&demos, &Pitch::LARGE, 10.0));
+        // The mean as it was written before weights: each nearby displacement / NEIGHBOURS.
+        let unweighted = |state: &TrackedFrame| {
+            let robot = &state.robot;
+            let here = to_robot_frame(robot, state.ball_x_mm - robot.x_mm(), state.ball_y_mm - robot.y_mm());
+            let samples = &response.samples[Primitive::Forward as usize];
+            let mut mean = [0.0; 2];
+            for &(d2, i) in &nearest(samples.iter().map(|s| [s[0], s[1]]), &here, NEIGHBOURS) {
+                if d2 <= NEIGHBOURHOOD_MM * NEIGHBOURHOOD_MM {
+                    mean[0] += samples[i][2] / NEIGHBOURS as f64;
+                    mean[1] += samples[i][3] / NEIGHBOURS as f64;
+                }
+            }
+            let (dx, dy) = to_field_frame(robot, mean);
+            (state.ball_x_mm + dx, state.ball_y_mm + dy)
+        };
+        for k in 0..40 {
+            let k = f64::from(k);
+            let state = frame(Pose::new(3.0 * k, -2.0 * k, 0.1 * k), (3.0 * k + 45.0 + k, -2.0 * k + 0.7 * k));
+            let (x, y) = response.predict(&state, Primitive::Forward);
+            let (ux, uy) = unweighted(&state);
+            assert_eq!((x.to_bits(), y.to_bits()), (ux.to_bits(), uy.to_bits()), "state {k}");
+        }
     }
 
     #[test]

@@ -56,6 +56,23 @@ pub enum LpScope {
     Every,
 }
 
+/// How much each demonstration counts for the imitator: in the imitator's model during the
+/// trial's phase 2, and in the [`crate::WorldModel`] its improved control learns.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ImitatorWeighting {
+    /// Every demonstration counts the same (the thesis).
+    #[default]
+    Even,
+    /// *Choice*: a demonstration by member m counts with weight `w_m = LP_m / max_k LP_k`
+    /// (the member of highest LP weighs 1; if every LP is 0, every member weighs 1). In phase
+    /// 2 the LPs are the demonstrator models' at that moment and the weight multiplies the
+    /// imitator's gains from the demonstration (the frequency step of eq 3.11 and the
+    /// permanency step), not its decay; the world model of the improved control weighs each
+    /// demonstration's samples by its demonstrator's final LP.
+    Lp,
+}
+
 /// The constants of behaviour creation, permanency, decay, learning preference and
 /// prediction. Defaults are the thesis's; the ones it leaves open are marked *choice*.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -79,6 +96,11 @@ pub struct LearningConfig {
     pub initial_lp: f64,
     /// The imitator's model's fixed LP.
     pub imitator_lp: f64,
+    /// Ablation: every demonstrator's model keeps `initial_lp` throughout the trial (no cause
+    /// moves it), so every demonstrator is preferred alike.
+    pub hold_lp: bool,
+    /// *Choice*: how much each demonstration counts for the imitator.
+    pub imitator_weighting: ImitatorWeighting,
     pub lp_goal: f64,
     pub lp_ball_to_goal: f64,
     pub lp_robot_to_ball: f64,
@@ -126,6 +148,8 @@ impl Default for LearningConfig {
             permanency_step: 0.02,
             initial_lp: 0.5,
             imitator_lp: 0.9,
+            hold_lp: false,
+            imitator_weighting: ImitatorWeighting::Even,
             lp_goal: 0.01,
             lp_ball_to_goal: 0.005,
             lp_robot_to_ball: 0.002,

@@ -15,6 +15,10 @@ pub enum LearnParamsError {
         "demonstration {index} is {demonstrator:?}'s, whom the ordering leaves out: name every demonstrator whose demonstrations are given"
     )]
     OutsideOrdering { index: usize, demonstrator: String },
+    #[error(
+        "demonstration {index} is {demonstrator:?}'s, who has no model in the trial: its weight is that model's LP"
+    )]
+    NoModelFor { index: usize, demonstrator: String },
     #[error("no demonstrations: a trial needs at least one")]
     NoDemonstrations,
     #[error("the ordering is empty: name at least one demonstrator")]

@@ -3,7 +3,7 @@
 //! the trained imitators scored on the field. Python's `polymimic.experiments` orchestrates the
 //! same steps at scale; this is the quick path for studying learning itself.
 
-use polymimic_field::{Demonstrator, FieldConfig, FieldError, Frame, Outcome, record_all, self_observation};
+use polymimic_field::{Demonstrator, FieldConfig, FieldError, Frame, LapseRate, Outcome, record_all, self_observation};
 use polymimic_perceive::{LabelledSequence, PerceiveError, Recognizer, RecognizerConfig, SegmenterConfig, segment};
 use polymimic_types::TrackedFrame;
 use thiserror::Error;
@@ -102,7 +102,7 @@ impl Laboratory {
         per_configuration: usize,
         seed: u64,
     ) -> Result<Vec<SegmentedDemonstration>, LaboratoryError> {
-        record_all(demonstrators, per_configuration, seed, &self.field)?
+        record_all(demonstrators, per_configuration, seed, LapseRate::NONE, &self.field)?
             .iter()
             .map(|d| self.segmented(d.demonstrator.name(), pitch_of(d.demonstrator), d.outcome, &d.frames))
             .collect()

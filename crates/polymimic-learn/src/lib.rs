@@ -21,13 +21,14 @@ mod shaping;
 mod state;
 mod state_value;
 mod trial;
+mod weighting;
 mod world;
 
 pub use approach::ApproachPlan;
 pub use average::{AverageChoice, AverageSearch, net_goals, net_goals_of, spare_attempts, tracked_throughout};
 pub use ball_response::BallResponse;
 pub use behaviour::Behaviour;
-pub use config::{LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
+pub use config::{ImitatorWeighting, LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
 pub use control::{Attempt, ControlMode, ImitatorPolicy, attempt_seeds};
 pub use error::{LearnError, LearnParamsError};
 pub use laboratory::{FinalLps, Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, pitch_of, summarise};
@@ -41,6 +42,7 @@ pub use shaping::{LpCause, LpCauseCounts};
 pub use state::{Pitch, ball_to_goal_mm, precondition_measures, range_bearing, robot_to_ball_mm};
 pub use state_value::StateValue;
 pub use trial::{PhaseOne, TrialResult, run_trial};
+pub use weighting::{demonstration_weights, lp_weights};
 pub use world::WorldModel;
 
 #[cfg(test)]

@@ -124,17 +124,18 @@ impl ForwardModel {
         self.lp_history.push(self.lp);
     }
 
-    /// Eq 3.11 on `frequency[from][to]`; returns whether it passed the creation threshold.
-    pub(crate) fn strengthen(&mut self, from: usize, to: usize, config: &LearningConfig) -> bool {
-        self.frequency[from][to] += config.min_frequency + config.min_frequency * self.lp;
+    /// Eq 3.11 on `frequency[from][to]`, its step scaled by `weight` (1 for the thesis's);
+    /// returns whether it passed the creation threshold.
+    pub(crate) fn strengthen(&mut self, from: usize, to: usize, weight: f64, config: &LearningConfig) -> bool {
+        self.frequency[from][to] += (config.min_frequency + config.min_frequency * self.lp) * weight;
         self.frequency[from][to] > config.creation_threshold
     }
 
-    /// Raises a behaviour's permanency (it may become permanent).
-    pub(crate) fn reinforce(&mut self, index: usize, config: &LearningConfig) {
+    /// Raises a behaviour's permanency by `weight` permanency steps (it may become permanent).
+    pub(crate) fn reinforce(&mut self, index: usize, weight: f64, config: &LearningConfig) {
         let b = &mut self.behaviours[index];
         if !b.permanent {
-            b.permanency += config.permanency_step;
+            b.permanency += config.permanency_step * weight;
         }
     }
 
@@ -172,7 +173,7 @@ impl ForwardModel {
     /// holds it already, more permanency for that copy. Returns whether it was a duplicate.
     pub fn nominate(&mut self, primitives: &[Primitive], nominated_by: usize, config: &LearningConfig) -> bool {
         if let Some(index) = self.index_of(primitives) {
-            self.reinforce(index, config);
+            self.reinforce(index, 1.0, config);
             return true;
         }
         let index = self.insert(primitives.to_vec(), config);

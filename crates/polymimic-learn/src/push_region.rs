@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::state::{Pitch, ball_to_goal_mm};
+use crate::weighting::weighted;
 
 /// The share of pushing poses left out at each end of a range (the 10th to 90th percentile).
 const RANGE_TAIL: f64 = 0.1;
@@ -47,11 +48,35 @@ pub struct Interval {
     pub high: f64,
 }
 
+/// The weighted percentile `share` of `values` (each a value and its weight), sorted by value:
+/// the value k whose cumulative weight before it, `c_k`, lies nearest `share · c_{n−1}` (the
+/// later on a tie). With every weight 1 that is the value of rank `round((n − 1) · share)`.
+fn percentile(sorted: &[(f64, f64)], share: f64) -> f64 {
+    let Some(((last, _), before)) = sorted.split_last() else { return f64::NAN };
+    let target = before.iter().map(|&(_, w)| w).sum::<f64>() * share;
+    let (mut best, mut best_gap, mut cumulative) = (*last, f64::INFINITY, 0.0);
+    for &(value, weight) in sorted {
+        let gap = (cumulative - target).abs();
+        if gap <= best_gap {
+            (best, best_gap) = (value, gap);
+        }
+        cumulative += weight;
+    }
+    best
+}
+
+/// `values` sorted by value (a stable sort: equal values keep their order).
+fn sorted(mut values: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
+    values.sort_by(|a, b| a.0.total_cmp(&b.0));
+    values
+}
+
 impl Interval {
-    /// The central part of `values` (at least `min_half_width` either side of the median).
-    fn central(values: &mut [f64], min_half_width: f64) -> Self {
-        values.sort_by(f64::total_cmp);
-        let at = |share: f64| values[((values.len() - 1) as f64 * share).round() as usize];
+    /// The central part of `values` (each a value and its weight; at least `min_half_width`
+    /// either side of the weighted median).
+    fn central(values: Vec<(f64, f64)>, min_half_width: f64) -> Self {
+        let values = sorted(values);
+        let at = |share: f64| percentile(&values, share);
         let median = at(0.5);
         Self {
             low: at(RANGE_TAIL).min(median - min_half_width),
@@ -92,8 +117,23 @@ impl PushRegion {
         ball_moved_mm: f64,
         min_half_width: (f64, f64),
     ) -> Option<Self> {
+        Self::learn_weighted(demonstrations, &[], pitch, ball_moved_mm, min_half_width)
+    }
+
+    /// [`Self::learn`], every push of demonstration i weighing `weights[i]` (see
+    /// [`crate::WorldModel::learn_weighted`]): ranges and the contact distance are weighted
+    /// percentiles, `pushes` counts the pushes of weight above 0.
+    #[must_use]
+    pub fn learn_weighted(
+        demonstrations: &[SegmentedDemonstration],
+        weights: &[f64],
+        pitch: &Pitch,
+        ball_moved_mm: f64,
+        min_half_width: (f64, f64),
+    ) -> Option<Self> {
         let mut starts = Vec::new();
-        for demo in demonstrations.iter().filter(|d| d.pitch == *pitch && d.ending == Ending::Goal) {
+        let scoring = weighted(demonstrations, weights).filter(|(d, _)| d.pitch == *pitch && d.ending == Ending::Goal);
+        for (demo, weight) in scoring {
             for segment in &demo.segments {
                 let (start, end) = (&segment.start, &segment.end);
                 if ball_to_goal_mm(start, pitch) - ball_to_goal_mm(end, pitch) <= ball_moved_mm {
@@ -101,22 +141,21 @@ impl PushRegion {
                 }
                 let pose = BallGoalPose::of(&start.robot, (start.ball_x_mm, start.ball_y_mm), pitch);
                 if [pose.along_mm, pose.across_mm, pose.heading_rad].iter().all(|v| v.is_finite()) {
-                    starts.push(pose);
+                    starts.push((pose, weight));
                 }
             }
         }
         if starts.is_empty() {
             return None;
         }
-        let column = |f: fn(&BallGoalPose) -> f64| starts.iter().map(f).collect::<Vec<f64>>();
+        let column = |f: fn(&BallGoalPose) -> f64| starts.iter().map(|(p, w)| (f(p), *w)).collect::<Vec<_>>();
         let (mm, rad) = min_half_width;
-        let mut distances = column(BallGoalPose::distance_mm);
-        distances.sort_by(f64::total_cmp);
         Some(Self {
-            along_mm: Interval::central(&mut column(|p| p.along_mm), mm),
-            across_mm: Interval::central(&mut column(|p| p.across_mm), mm),
-            heading_rad: Interval::central(&mut column(|p| p.heading_rad), rad),
-            contact_mm: distances[distances.len() / 2],
+            along_mm: Interval::central(column(|p| p.along_mm), mm),
+            across_mm: Interval::central(column(|p| p.across_mm), mm),
+            heading_rad: Interval::central(column(|p| p.heading_rad), rad),
+            // The weighted median: with every weight 1, the value of rank n / 2.
+            contact_mm: percentile(&sorted(column(BallGoalPose::distance_mm)), 0.5),
             pushes: starts.len(),
         })
     }
@@ -154,6 +193,62 @@ mod tests {
 
     fn demo(ending: Ending, segments: Vec<Segment>) -> SegmentedDemonstration {
         SegmentedDemonstration { demonstrator: "expert".to_owned(), pitch: Pitch::LARGE, ending, segments }
+    }
+
+    #[test]
+    fn a_weighted_percentile_is_the_value_whose_weight_before_it_is_nearest_the_share() {
+        // Weights 1, 3, 1, 1 on 10, 20, 30, 40: c = 0, 1, 4, 5 and c₃ = 5.
+        let values = sorted(vec![(30.0, 1.0), (10.0, 1.0), (40.0, 1.0), (20.0, 3.0)]);
+        assert_eq!(percentile(&values, 0.3), 20.0, "1.5: c₁ = 1 is nearest");
+        assert_eq!(percentile(&values, 0.05), 10.0, "0.25: c₀ = 0 is nearest");
+        assert_eq!(percentile(&values, 0.7), 30.0, "3.5: c₂ = 4 is nearest");
+        assert_eq!(percentile(&values, 0.5), 30.0, "2.5: c₁ = 1 and c₂ = 4 tie, the later wins");
+        assert_eq!(percentile(&values, 0.9), 40.0, "4.5: c₂ = 4 and c₃ = 5 tie, the later wins");
+        // Evenly, the median of four is the third (rank round(1.5) = 2).
+        let even = sorted(vec![(30.0, 1.0), (10.0, 1.0), (40.0, 1.0), (20.0, 1.0)]);
+        assert_eq!((percentile(&even, 0.5), percentile(&even, 0.3)), (30.0, 20.0));
+        assert_eq!(percentile(&[(7.0, 0.5)], 0.9), 7.0);
+    }
+
+    #[test]
+    fn weights_of_one_pick_the_rank_the_unweighted_percentile_picked() {
+        for n in 1..80_u32 {
+            // Values out of order, some repeated.
+            let values: Vec<f64> = (0..n).map(|k| f64::from((k * 37) % 23) - 0.5 * f64::from(k % 4)).collect();
+            let mut plain = values.clone();
+            plain.sort_by(f64::total_cmp);
+            let ones = sorted(values.iter().map(|&v| (v, 1.0)).collect());
+            for share in [RANGE_TAIL, 0.5, 1.0 - RANGE_TAIL, 0.0, 1.0, 0.25] {
+                let rank = ((plain.len() - 1) as f64 * share).round() as usize;
+                assert_eq!(percentile(&ones, share).to_bits(), plain[rank].to_bits(), "n = {n}, share = {share}");
+            }
+            assert_eq!(percentile(&ones, 0.5).to_bits(), plain[plain.len() / 2].to_bits(), "the median, n = {n}");
+        }
+    }
+
+    #[test]
+    fn pushes_weigh_what_their_demonstrations_weigh() {
+        let push =
+            |back: f64| segment(frame((-back, 0.0, 0.0), (0.0, 0.0)), frame((40.0 - back, 0.0, 0.0), (40.0, 0.0)));
+        let near = demo(Ending::Goal, (0..5).map(|k| push(120.0 + 10.0 * f64::from(k))).collect());
+        let far = demo(Ending::Goal, (0..5).map(|k| push(300.0 + 10.0 * f64::from(k))).collect());
+        let demos = [near, far];
+        let learn = |weights: &[f64]| PushRegion::learn_weighted(&demos, weights, &Pitch::LARGE, 10.0, (20.0, 0.1));
+        assert_eq!(learn(&[1.0, 0.0]), PushRegion::learn(&demos[..1], &Pitch::LARGE, 10.0, (20.0, 0.1)));
+        assert_eq!(learn(&[1.0, 1.0]), PushRegion::learn(&demos, &Pitch::LARGE, 10.0, (20.0, 0.1)));
+        // Evenly, the median distance is the sixth of ten (300) and the 10th percentile of
+        // along_mm the second (−330).
+        let even = learn(&[]).expect("ten pushes");
+        assert_eq!((even.contact_mm, even.along_mm.low, even.along_mm.high), (300.0, -330.0, -130.0));
+        // The near pushes weigh 4, the far 1. Distances 120 … 160 then 300 … 340: c = 0, 4, 8,
+        // 12, 16, 20, … with c₉ = 24, so the median (12) is the fourth, 150 mm. along_mm
+        // −340 … −300 then −160 … −120: c = 0 … 5, 9, 13, 17, 21 (c₉ = 21); the 10th percentile
+        // (2.1) is the third, −320, the 90th (18.9) the ninth, −130.
+        let region = learn(&[4.0, 1.0]).expect("ten pushes");
+        assert_eq!(region.pushes, 10);
+        assert_eq!(region.contact_mm, 150.0);
+        assert_eq!((region.along_mm.low, region.along_mm.high), (-320.0, -130.0));
+        assert_eq!(learn(&[0.0, 0.0]), None);
     }
 
     #[test]

@@ -72,6 +72,21 @@ impl ForwardModel {
         config: &LearningConfig,
         rng: &mut ChaCha8Rng,
     ) -> Vec<Event> {
+        self.process_weighted(demo, 1.0, motion, config, rng)
+    }
+
+    /// [`Self::process`] with what the demonstration gives scaled by `weight`: every
+    /// frequency step (eq 3.11) and permanency step it earns, not the decay (eq 3.12), so a
+    /// behaviour seen only in demonstrations of small weight gains little and decays away.
+    /// A weight of 1 is [`Self::process`].
+    pub fn process_weighted(
+        &mut self,
+        demo: &SegmentedDemonstration,
+        weight: f64,
+        motion: &MotionTable,
+        config: &LearningConfig,
+        rng: &mut ChaCha8Rng,
+    ) -> Vec<Event> {
         let segments = &demo.segments;
         let mut events = Vec::new();
         let Some((mut c, first)) = next_primitive(segments, 0) else { return events };
@@ -99,9 +114,9 @@ impl ForwardModel {
             let ball_accurate = accurate_ball_predictions(&span.matched, &predictions, &start, &end, config);
             let selected = self.choose_behaviour(&span.matched, &ball_accurate);
             let selected_primitives = self.behaviours[selected].primitives.clone();
-            self.count_what_followed(&current, selected, &ball_accurate, shapes_lp, config);
+            self.count_what_followed(&current, selected, &ball_accurate, shapes_lp, weight, config);
             let selected = self.index_of(&selected_primitives).unwrap_or(selected);
-            self.reinforce(selected, config);
+            self.reinforce(selected, weight, config);
             self.behaviours[selected].record_span(&start, &end, &demo.pitch, config);
             self.decay(config);
             if shapes_lp {
@@ -167,6 +182,7 @@ impl ForwardModel {
         selected: usize,
         ball_accurate: &[usize],
         shapes_lp: bool,
+        weight: f64,
         config: &LearningConfig,
     ) {
         let from = self.index_of(current);
@@ -175,14 +191,14 @@ impl ForwardModel {
                 self.shape_lp(LpCause::BallPredicted, config);
             }
             if let Some(from) = from {
-                self.follow(from, i, config);
+                self.follow(from, i, weight, config);
             }
         }
         if ball_accurate.contains(&selected) && shapes_lp {
             self.shape_lp(LpCause::BallPredicted, config);
         }
         if let Some(from) = from {
-            self.follow(from, selected, config);
+            self.follow(from, selected, weight, config);
         }
     }
 
@@ -219,16 +235,17 @@ impl ForwardModel {
     }
 
     /// Behaviour `to` followed behaviour `from`: eq 3.11, and past the creation threshold
-    /// their concatenation is created (or, if it exists, reinforced).
-    fn follow(&mut self, from: usize, to: usize, config: &LearningConfig) {
-        if !self.strengthen(from, to, config) {
+    /// their concatenation is created (or, if it exists, reinforced), the steps scaled by
+    /// `weight`.
+    fn follow(&mut self, from: usize, to: usize, weight: f64, config: &LearningConfig) {
+        if !self.strengthen(from, to, weight, config) {
             return;
         }
         self.frequency[from][to] = 0.0;
         let mut joined = self.behaviours[from].primitives.clone();
         joined.extend_from_slice(&self.behaviours[to].primitives);
         match self.index_of(&joined) {
-            Some(existing) => self.reinforce(existing, config),
+            Some(existing) => self.reinforce(existing, weight, config),
             None => {
                 self.insert(joined, config);
             }

@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 use crate::nearest::nearest;
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::state::Pitch;
+use crate::weighting::weighted;
 
 /// What an outcome one second further ahead is worth, relative to one now.
 const DISCOUNT_PER_S: f64 = 0.95;
@@ -32,18 +33,25 @@ fn features(state: &TrackedFrame) -> [f64; 6] {
     ]
 }
 
-/// States seen in demonstrations, each with its discounted outcome.
+/// States seen in demonstrations, each with its discounted outcome and its weight.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct StateValue {
-    samples: Vec<([f64; 6], f64)>,
+    samples: Vec<([f64; 6], f64, f64)>,
 }
 
 impl StateValue {
     /// Every segment boundary of the demonstrations played on `pitch`.
     #[must_use]
     pub fn learn(demonstrations: &[SegmentedDemonstration], pitch: &Pitch) -> Self {
+        Self::learn_weighted(demonstrations, &[], pitch)
+    }
+
+    /// [`Self::learn`], every state of demonstration i weighing `weights[i]` (see
+    /// [`crate::WorldModel::learn_weighted`]).
+    #[must_use]
+    pub fn learn_weighted(demonstrations: &[SegmentedDemonstration], weights: &[f64], pitch: &Pitch) -> Self {
         let mut samples = Vec::new();
-        for demo in demonstrations.iter().filter(|d| d.pitch == *pitch) {
+        for (demo, weight) in weighted(demonstrations, weights).filter(|(d, _)| d.pitch == *pitch) {
             let outcome = match demo.ending {
                 Ending::Goal => 1.0,
                 Ending::OwnGoal => -1.0,
@@ -56,7 +64,7 @@ impl StateValue {
                 let point = features(state);
                 if point.iter().all(|v| v.is_finite()) {
                     let to_go_s = (end_frame - frame as f64) * FRAME_DT_S;
-                    samples.push((point, outcome * DISCOUNT_PER_S.powf(to_go_s)));
+                    samples.push((point, outcome * DISCOUNT_PER_S.powf(to_go_s), weight));
                 }
             }
         }
@@ -73,14 +81,17 @@ impl StateValue {
         self.samples.is_empty()
     }
 
-    /// The mean value of the demonstrated states nearest `state` (0 with none).
+    /// The mean value of the demonstrated states nearest `state`, weighted by their weights:
+    /// Σ w·v / Σ w (0 with none).
     #[must_use]
     pub fn estimate(&self, state: &TrackedFrame) -> f64 {
-        let nearest = nearest(self.samples.iter().map(|(point, _)| *point), &features(state), NEIGHBOURS);
-        if nearest.is_empty() {
+        let nearest = nearest(self.samples.iter().map(|(point, ..)| *point), &features(state), NEIGHBOURS);
+        let total: f64 = nearest.iter().map(|&(_, i)| self.samples[i].2).sum();
+        if total <= 0.0 {
             return 0.0;
         }
-        nearest.iter().map(|&(_, i)| self.samples[i].1).sum::<f64>() / nearest.len() as f64
+        // With every weight 1 this is the plain sum over the count, bit for bit.
+        nearest.iter().map(|&(_, i)| self.samples[i].1 * self.samples[i].2).sum::<f64>() / total
     }
 }
 
@@ -127,5 +138,41 @@ mod tests {
             value.estimate(&TrackedFrame { robot: Pose::new(-280.0, 0.0, 0.0), ball_x_mm: 0.0, ball_y_mm: 0.0 });
         assert!((near_goals - (4.0 * 0.95 + 4.0 * 1.0) / 8.0).abs() < 1e-12, "{near_goals}");
         assert_eq!(StateValue::default().estimate(&demos[0].segments[0].start), 0.0);
+    }
+
+    fn at(x: f64) -> TrackedFrame {
+        TrackedFrame { robot: Pose::new(x, 0.0, 0.0), ball_x_mm: 0.0, ball_y_mm: 0.0 }
+    }
+
+    #[test]
+    fn a_state_is_worth_the_weighted_mean_of_its_neighbours() {
+        let demos = [demo(-300.0, Ending::Goal, Pitch::LARGE), demo(-290.0, Ending::OwnGoal, Pitch::LARGE)];
+        // Weight 0: the own goal is left out, the goal alone counts.
+        let goal_only = StateValue::learn(&demos[..1], &Pitch::LARGE).estimate(&at(-300.0));
+        let weighted = StateValue::learn_weighted(&demos, &[1.0, 0.0], &Pitch::LARGE);
+        assert_eq!(weighted.len(), 2);
+        assert_eq!(weighted.estimate(&at(-300.0)), goal_only);
+        assert!((goal_only - (0.95 + 1.0) / 2.0).abs() < 1e-12);
+        // Weights 1 and ¼: (0.95 + 1 − ¼ (0.95 + 1)) / (2 + 2 · ¼) = 0.3 · 1.95.
+        let quarter = StateValue::learn_weighted(&demos, &[1.0, 0.25], &Pitch::LARGE).estimate(&at(-300.0));
+        assert!((quarter - 0.3 * 1.95).abs() < 1e-12, "{quarter}");
+    }
+
+    #[test]
+    fn weights_of_one_estimate_bit_for_bit_what_the_plain_mean_did() {
+        let demos: Vec<SegmentedDemonstration> = (0..12)
+            .map(|i| {
+                let ending = [Ending::Goal, Ending::OwnGoal, Ending::Other][i % 3];
+                demo(-300.0 + 37.0 * i as f64, ending, Pitch::LARGE)
+            })
+            .collect();
+        let value = StateValue::learn_weighted(&demos, &vec![1.0; demos.len()], &Pitch::LARGE);
+        assert_eq!(value, StateValue::learn(&demos, &Pitch::LARGE));
+        for k in 0..50 {
+            let state = at(-350.0 + 17.3 * f64::from(k));
+            let near = nearest(value.samples.iter().map(|(point, ..)| *point), &features(&state), NEIGHBOURS);
+            let plain = near.iter().map(|&(_, i)| value.samples[i].1).sum::<f64>() / near.len() as f64;
+            assert_eq!(value.estimate(&state).to_bits(), plain.to_bits(), "state {k}");
+        }
     }
 }

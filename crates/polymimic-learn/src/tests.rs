@@ -238,3 +238,74 @@ fn a_saved_model_with_an_lp_outside_zero_to_one_is_damaged() {
         matches!(ForwardModel::from_json(&damaged), Err(LearnError::Corrupt(m)) if m.contains("lp must be in [0, 1]"))
     );
 }
+
+/// A demonstration backing away from a ball ahead along −x for `count` backward segments, each
+/// ending exactly 50 mm further back.
+fn backing(count: usize, name: &str, ending: Ending) -> SegmentedDemonstration {
+    let mut demo = straight(count, name, ending);
+    for (i, segment) in demo.segments.iter_mut().enumerate() {
+        segment.label = Label::Primitive(Primitive::Backward);
+        segment.start.robot = Pose::new(100.0 - 50.0 * i as f64, 0.0, 0.0);
+        segment.end.robot = Pose::new(100.0 - 50.0 * (i + 1) as f64, 0.0, 0.0);
+    }
+    demo
+}
+
+/// A scorer driving at the ball and a demonstrator backing away from it into its own goal,
+/// thirty demonstrations each, under clamped LPs (so the second's falls to 0).
+fn scorer_and_loser(config: &LearningConfig) -> TrialResult {
+    let config = LearningConfig { lp_bounds: LpBounds::Clamp, ..config.clone() };
+    let demos: Vec<SegmentedDemonstration> =
+        (0..30).flat_map(|_| [straight(12, "scorer", Ending::Goal), backing(12, "loser", Ending::OwnGoal)]).collect();
+    let ordering = ["scorer".to_owned(), "loser".to_owned()];
+    run_trial(&demos, &ordering, &exact_motion(), &config, PhaseOne::Interleaved, 11).unwrap()
+}
+
+#[test]
+fn held_lps_stay_where_they_started_throughout_the_trial() {
+    let held = scorer_and_loser(&LearningConfig { hold_lp: true, ..LearningConfig::default() });
+    for model in &held.models {
+        assert_eq!(model.lp_history, vec![0.5], "{}", model.name);
+        assert_eq!(model.lp, 0.5);
+        assert_eq!(model.metrics.lp_causes, LpCauseCounts::default());
+    }
+    let moving = scorer_and_loser(&LearningConfig::default());
+    assert!(moving.models.iter().all(|m| m.lp_history.len() > 1 && m.lp != 0.5));
+    let other_start = LearningConfig { hold_lp: true, initial_lp: 0.3, ..LearningConfig::default() };
+    assert!(scorer_and_loser(&other_start).models.iter().all(|m| m.lp_history == [0.3]));
+}
+
+#[test]
+fn weighting_by_lp_starves_what_only_the_least_preferred_demonstrator_shows() {
+    let letters_of = |result: &TrialResult| letters(&result.imitator);
+    let even = scorer_and_loser(&LearningConfig::default());
+    let by_lp =
+        scorer_and_loser(&LearningConfig { imitator_weighting: ImitatorWeighting::Lp, ..LearningConfig::default() });
+    // The weighting acts on the imitator only: the demonstrators' LPs end where they did.
+    for result in [&even, &by_lp] {
+        assert_eq!(result.models[0].lp, 1.0, "the scorer");
+        assert_eq!(result.models[1].lp, 0.0, "the loser");
+    }
+    // Backing up is shown only by the loser: counted evenly, the imitator makes it permanent;
+    // weighted by the loser's LP it gains nothing from it, decays and is pruned.
+    let backing_up = |names: &[String]| names.iter().any(|n| n.len() > 1 && n.chars().all(|c| c == 'B'));
+    assert!(backing_up(&letters_of(&even)), "{:?}", letters_of(&even));
+    assert!(!backing_up(&letters_of(&by_lp)), "{:?}", letters_of(&by_lp));
+    let permanency = |result: &TrialResult| {
+        result.imitator.index_of(&[Primitive::Backward; 2]).map_or(0.0, |i| result.imitator.behaviours[i].permanency)
+    };
+    assert!(permanency(&by_lp) < permanency(&even));
+}
+
+#[test]
+fn weighting_by_equal_lps_is_bit_for_bit_the_even_trial() {
+    let held = LearningConfig { hold_lp: true, ..LearningConfig::default() };
+    let weighted = LearningConfig { imitator_weighting: ImitatorWeighting::Lp, ..held.clone() };
+    assert_eq!(scorer_and_loser(&weighted), scorer_and_loser(&held));
+    let zero = LearningConfig { initial_lp: 0.0, ..weighted.clone() };
+    assert_eq!(
+        scorer_and_loser(&zero),
+        scorer_and_loser(&LearningConfig { initial_lp: 0.0, ..held }),
+        "all at 0: all weigh 1"
+    );
+}

@@ -5,12 +5,13 @@ use rand::seq::SliceRandom;
 use rand_chacha::ChaCha8Rng;
 use serde::{Deserialize, Serialize};
 
-use crate::config::LearningConfig;
+use crate::config::{ImitatorWeighting, LearningConfig};
 use crate::error::{LearnError, LearnParamsError};
 use crate::model::{Event, ForwardModel};
 use crate::prediction::MotionTable;
 use crate::round::SegmentedDemonstration;
 use crate::shaping::LpCause;
+use crate::weighting::lp_weights;
 
 /// How phase 1 presents demonstrations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -71,7 +72,7 @@ pub fn run_trial(
         return Err(LearnParamsError::OutsideOrdering { index, demonstrator: d.demonstrator.clone() }.into());
     }
     let mut models: Vec<ForwardModel> =
-        ordering.iter().map(|name| ForwardModel::new(name, config.initial_lp, false, config)).collect();
+        ordering.iter().map(|name| ForwardModel::new(name, config.initial_lp, config.hold_lp, config)).collect();
     let mut imitator = ForwardModel::new("imitator", config.imitator_lp, true, config);
     let mut rngs: Vec<ChaCha8Rng> = (0..=models.len() as u64).map(|s| stream_rng(seed, s + 1)).collect();
     let mut order_rng = stream_rng(seed, 0);
@@ -103,7 +104,11 @@ pub fn run_trial(
             let events = models[m].process(&demonstrations[i], motion, config, &mut rngs[m]);
             nominate(&events, m, &mut models, &mut imitator, config);
         }
-        let events = imitator.process(&demonstrations[i], motion, config, &mut rngs[imitator_stream]);
+        let weight = match (config.imitator_weighting, model_of(&demonstrations[i])) {
+            (ImitatorWeighting::Lp, Some(m)) => lp_weights(&models.iter().map(|model| model.lp).collect::<Vec<_>>())[m],
+            _ => 1.0,
+        };
+        let events = imitator.process_weighted(&demonstrations[i], weight, motion, config, &mut rngs[imitator_stream]);
         judge_candidates(&events, &mut models, config);
     }
     imitator.prune();

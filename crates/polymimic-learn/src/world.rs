@@ -1,7 +1,7 @@
 //! What the imitator learns about the field itself from watching: how the ball responds to
 //! each primitive, how good each state is, and where pushes toward the goal begin. All depend
-//! only on the demonstrations watched, not on a trial's random order, so one serves every
-//! trial of an experiment.
+//! only on the demonstrations watched (and their weights), not on a trial's random order, so
+//! one serves every trial of an experiment.
 
 use crate::approach::{ApproachPlan, MIN_REGION_HALF_WIDTH};
 use crate::ball_response::BallResponse;
@@ -24,7 +24,7 @@ pub struct WorldModel {
 
 impl WorldModel {
     /// Learns from the demonstrations played on `pitch` (the imitator's own field), moving
-    /// with `motion` (the imitator's primitives).
+    /// with `motion` (the imitator's primitives), every demonstration counting the same.
     #[must_use]
     pub fn learn(
         demonstrations: &[SegmentedDemonstration],
@@ -32,10 +32,26 @@ impl WorldModel {
         motion: &MotionTable,
         config: &LearningConfig,
     ) -> Self {
-        let push_region = PushRegion::learn(demonstrations, pitch, config.ball_moved_mm, MIN_REGION_HALF_WIDTH);
+        Self::learn_weighted(demonstrations, &[], pitch, motion, config)
+    }
+
+    /// [`Self::learn`] with every sample of demonstration i weighing `weights[i]` (1 for a
+    /// demonstration beyond the end of `weights`; one of weight 0 is left out): the ball's
+    /// response and a state's value are weighted means, the push region's ranges weighted
+    /// percentiles. Weights of 1 give exactly [`Self::learn`].
+    #[must_use]
+    pub fn learn_weighted(
+        demonstrations: &[SegmentedDemonstration],
+        weights: &[f64],
+        pitch: &Pitch,
+        motion: &MotionTable,
+        config: &LearningConfig,
+    ) -> Self {
+        let push_region =
+            PushRegion::learn_weighted(demonstrations, weights, pitch, config.ball_moved_mm, MIN_REGION_HALF_WIDTH);
         Self {
-            ball_response: BallResponse::learn(demonstrations, pitch, config.ball_moved_mm),
-            state_value: StateValue::learn(demonstrations, pitch),
+            ball_response: BallResponse::learn_weighted(demonstrations, weights, pitch, config.ball_moved_mm),
+            state_value: StateValue::learn_weighted(demonstrations, weights, pitch),
             approach: push_region.map(|p| ApproachPlan::new(p, motion)),
         }
     }

@@ -3,7 +3,7 @@
 //! recogniser trained on 1000 self-observed primitives of each type.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use polymimic_field::{Demonstrator, FieldConfig, Frame, PrimitiveSequence, record_all, self_observation};
+use polymimic_field::{Demonstrator, FieldConfig, Frame, LapseRate, PrimitiveSequence, record_all, self_observation};
 use polymimic_perceive::{LabelledSequence, Recognizer, RecognizerConfig, SegmenterConfig, TrackedFrame, segment_many};
 
 fn labelled(s: &PrimitiveSequence) -> LabelledSequence {
@@ -16,8 +16,8 @@ fn segment_300(c: &mut Criterion) {
         self_observation(1000, 1, &config).expect("records").iter().map(labelled).collect();
     let recognizer = Recognizer::train(&training, RecognizerConfig::default()).expect("trains");
     let everyone = [Demonstrator::Expert, Demonstrator::Poor, Demonstrator::Tiny, Demonstrator::Humanoid];
-    let mut demonstrations = record_all(&everyone, 25, 1, &config).expect("records");
-    demonstrations.extend(record_all(&everyone[..2], 25, 2, &config).expect("records"));
+    let mut demonstrations = record_all(&everyone, 25, 1, LapseRate::NONE, &config).expect("records");
+    demonstrations.extend(record_all(&everyone[..2], 25, 2, LapseRate::NONE, &config).expect("records"));
     assert_eq!(demonstrations.len(), 300);
     let frames: Vec<Vec<TrackedFrame>> =
         demonstrations.iter().map(|d| d.frames.iter().map(Frame::tracked).collect()).collect();

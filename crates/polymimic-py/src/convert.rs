@@ -7,16 +7,43 @@ use std::sync::atomic::{AtomicU32, Ordering};
 use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
 use pyo3::PyTypeInfo;
 use pyo3::exceptions::{
-    PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError, PyTypeError, PyValueError,
+    PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyOverflowError, PyPermissionError, PyTypeError, PyValueError,
 };
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyTuple};
+use pyo3::types::{PyBool, PyList, PyTuple};
 
 use crate::errors::ModelFileError;
 
 /// A whole number ≥ 0 given as a Python int, with a ValueError naming `name` otherwise.
 pub fn non_negative(name: &str, value: i64) -> PyResult<usize> {
     usize::try_from(value).map_err(|_| PyValueError::new_err(format!("{name} must be ≥ 0, got {value}")))
+}
+
+/// A field seed: any Python int in [0, 2**64), as the field's seeds are u64 (numpy integers
+/// too). A bool or a non-integer is a `TypeError`; an int out of range a `ValueError` naming
+/// the seed and the range, not Python's bare `OverflowError`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Seed(pub u64);
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Seed {
+    type Error = PyErr;
+
+    fn extract(obj: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        let not_an_integer =
+            || Ok::<_, PyErr>(PyTypeError::new_err(format!("seed must be an integer, got {}", obj.repr()?)));
+        if obj.is_instance_of::<PyBool>() {
+            return Err(not_an_integer()?);
+        }
+        match obj.extract::<u64>() {
+            Ok(seed) => Ok(Self(seed)),
+            Err(e) if e.is_instance_of::<PyOverflowError>(obj.py()) => Err(PyValueError::new_err(format!(
+                "seed must be in 0..{} (0 ≤ seed < 2**64), got {}",
+                u64::MAX,
+                obj.repr()?
+            ))),
+            Err(_) => Err(not_an_integer()?),
+        }
+    }
 }
 
 fn asarray<'py>(value: &Bound<'py, PyAny>, dtype: Option<&str>) -> PyResult<Bound<'py, PyAny>> {

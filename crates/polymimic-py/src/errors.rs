@@ -3,7 +3,7 @@
 //! Bad arguments are `ValueError`; failures that depend on the data meeting a model derive
 //! from `polymimic.PolymimicError`.
 
-use polymimic_field::FieldError;
+use polymimic_field::{FieldError, FieldParamError};
 use polymimic_hmm::HmmError;
 use polymimic_learn::{LaboratoryError, LearnError, LearnParamsError};
 use polymimic_perceive::PerceiveError;
@@ -71,10 +71,15 @@ create_exception!(
     "A simulation could not run: a finished episode stepped, a command the body cannot execute, too many lost recordings."
 );
 
+#[allow(clippy::needless_pass_by_value)] // used as `map_err(field_param_error)`
+pub fn field_param_error(error: FieldParamError) -> PyErr {
+    PyValueError::new_err(error.to_string())
+}
+
 #[allow(clippy::needless_pass_by_value)] // used as `map_err(field_error)`
 pub fn field_error(error: FieldError) -> PyErr {
     match error {
-        FieldError::Param(e) => PyValueError::new_err(e.to_string()),
+        FieldError::Param(e) => field_param_error(e),
         other => FieldRunError::new_err(other.to_string()),
     }
 }

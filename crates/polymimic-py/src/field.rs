@@ -3,8 +3,8 @@
 
 use numpy::{PyArray1, PyArray2};
 use polymimic_field::{
-    BodyKind, Command, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, THESIS_TABLE_3_1,
-    command_table, record, self_observation,
+    BodyKind, Command, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, LapseRate,
+    THESIS_TABLE_3_1, command_table, record, self_observation,
 };
 use polymimic_types::{Pose, Primitive};
 use pyo3::exceptions::PyValueError;
@@ -12,8 +12,8 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use std::sync::Mutex;
 
-use crate::convert::{matrix, non_negative};
-use crate::errors::field_error;
+use crate::convert::{Seed, matrix, non_negative};
+use crate::errors::{field_error, field_param_error};
 
 /// Columns of the frame arrays handed to Python.
 pub const FRAME_COLUMNS: [&str; 7] =
@@ -67,21 +67,24 @@ fn positive(name: &str, value: i64) -> PyResult<usize> {
     }
 }
 
-/// Valid demonstrations of one demonstrator from one configuration, run in parallel.
+/// Valid demonstrations of one demonstrator from one configuration, run in parallel, the
+/// demonstrator lapsing at rate `lapse` (SPEC §6.1).
 #[pyfunction]
-#[pyo3(signature = (demonstrator, *, configuration, n, seed=0, config=None))]
+#[pyo3(signature = (demonstrator, *, configuration, n, seed=Seed(0), lapse=0.0, config=None),
+       text_signature = "(demonstrator, *, configuration, n, seed=0, lapse=0.0, config=None)")]
 pub fn record_demonstrations<'py>(
     py: Python<'py>,
     demonstrator: &str,
     configuration: i64,
     n: i64,
-    seed: i64,
+    seed: Seed,
+    lapse: f64,
     config: Option<&str>,
 ) -> PyResult<Bound<'py, PyList>> {
     let who = Demonstrator::from_name(demonstrator).map_err(|e| PyValueError::new_err(e.to_string()))?;
     let (configuration, n) = (self::configuration(configuration)?, positive("n", n)?);
-    let (seed, config) = (non_negative("seed", seed)? as u64, field_config(config)?);
-    let demonstrations = py.detach(|| record(who, configuration, n, seed, &config)).map_err(field_error)?;
+    let (lapse, config) = (LapseRate::new(lapse).map_err(field_param_error)?, field_config(config)?);
+    let demonstrations = py.detach(|| record(who, configuration, n, seed.0, lapse, &config)).map_err(field_error)?;
     let out = PyList::empty(py);
     for d in &demonstrations {
         let item = PyDict::new(py);
@@ -97,16 +100,17 @@ pub fn record_demonstrations<'py>(
 
 /// One-second primitives of the imitator alone on the field: `(frames, primitive names)`.
 #[pyfunction]
-#[pyo3(signature = (n_per_primitive, *, seed=0, config=None))]
+#[pyo3(signature = (n_per_primitive, *, seed=Seed(0), config=None),
+       text_signature = "(n_per_primitive, *, seed=0, config=None)")]
 pub fn record_self_observation<'py>(
     py: Python<'py>,
     n_per_primitive: i64,
-    seed: i64,
+    seed: Seed,
     config: Option<&str>,
 ) -> PyResult<(Bound<'py, PyList>, Vec<&'static str>)> {
     let n = positive("n_per_primitive", n_per_primitive)?;
-    let (seed, config) = (non_negative("seed", seed)? as u64, field_config(config)?);
-    let sequences = py.detach(|| self_observation(n, seed, &config)).map_err(field_error)?;
+    let config = field_config(config)?;
+    let sequences = py.detach(|| self_observation(n, seed.0, &config)).map_err(field_error)?;
     let frames = PyList::empty(py);
     for s in &sequences {
         frames.append(frames_array(py, &s.frames)?)?;
@@ -191,16 +195,16 @@ impl PyEpisode {
     /// A new episode: `body` on the field of its size, in `configuration` 1 or 2 (or alone,
     /// without a ball, when `configuration` is None).
     #[new]
-    #[pyo3(signature = (body="lego", *, configuration=Some(1), seed=0, config=None),
+    #[pyo3(signature = (body="lego", *, configuration=Some(1), seed=Seed(0), config=None),
            text_signature = "(body='lego', *, configuration=1, seed=0, config=None)")]
-    fn new(body: &str, configuration: Option<i64>, seed: i64, config: Option<&str>) -> PyResult<Self> {
+    fn new(body: &str, configuration: Option<i64>, seed: Seed, config: Option<&str>) -> PyResult<Self> {
         let body = self::body(body)?;
         let config = field_config(config)?;
         let setup = match configuration {
             Some(number) => EpisodeSetup::configuration(body, self::configuration(number)?, &config),
             None => EpisodeSetup::alone(body),
         };
-        let episode = Episode::new(&setup, &config, non_negative("seed", seed)? as u64).map_err(field_error)?;
+        let episode = Episode::new(&setup, &config, seed.0).map_err(field_error)?;
         Ok(Self { episode: Mutex::new(episode) })
     }
 

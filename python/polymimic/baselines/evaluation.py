@@ -2,8 +2,7 @@
 
 :func:`evaluate_policy` plays the attempts :func:`polymimic.evaluate` plays for the imitator:
 the same configurations and episode seeds (``polymimic._native.attempt_seeds``), so the same
-starts and the same noise (but see :func:`binding_seed`: this build's ``Episode`` cannot take
-half of those seeds yet). At every decision one batched ``predict`` goes over the
+starts and the same noise. At every decision one batched ``predict`` goes over the
 observations of every unfinished episode, and each runs its primitive for the policy's
 ``frames_per_action`` frames; a vector environment can replace the stepping without the
 policies changing. During a tracking dropout the observation repeats the last good reading.
@@ -30,7 +29,7 @@ from polymimic.baselines.policy import Policy
 from polymimic.field import PRIMITIVES, Demonstration, _field_config, as_frames
 from polymimic.learning import Evaluation
 
-__all__ = ["VALIDATION_SEED_BASE", "attempts_of", "binding_seed", "evaluate_policy", "play"]
+__all__ = ["VALIDATION_SEED_BASE", "attempts_of", "evaluate_policy", "play"]
 
 VALIDATION_SEED_BASE = 2**62
 """Evaluation seeds lie in ``[0, 2**62)``, validation seeds in ``[2**62, 2**63)``: the two
@@ -66,7 +65,6 @@ def play(policy: Policy, attempts: list[tuple[int, int]], *,
     if not isinstance(policy, Policy):
         raise ValueError(f"policy must have frames_per_action, predict, reset and save; got {type(policy).__name__}")
     config = _field_config(field_config)
-    attempts = [(c, binding_seed(s)) for c, s in attempts]
     episodes = [_native.Episode("lego", configuration=c, seed=s, config=config) for c, s in attempts]
     policy.reset()
     with threadpool_limits(limits=1):  # a batch of ≤ 50 rows gains nothing from threads, and loses on a busy node
@@ -112,30 +110,6 @@ def evaluate_policy(policy: Policy, *, attempts_per_configuration: int = 25, see
     """
     seed = _check_seed(seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's")
     return play(policy, attempts_of(attempts_per_configuration, seed=seed), field_config=field_config)
-
-
-def binding_seed(seed: int) -> int:
-    """The episode seed ``polymimic.Episode`` is given for an attempt's seed.
-
-    ``attempt_seeds`` derives 64-bit seeds, but this build's ``Episode`` takes seeds below
-    2**63 only; until it takes any 64-bit seed, a seed from 2**63 up loses its top bit, and
-    that attempt starts from the same configuration with other noise than the imitator's. The
-    attempt records the seed it ran with.
-    """
-    if seed < 2**63 or _EPISODE_TAKES_64_BIT_SEEDS:
-        return seed
-    return seed - 2**63
-
-
-def _takes_64_bit_seeds() -> bool:
-    try:
-        _native.Episode("lego", configuration=1, seed=2**63)
-    except (OverflowError, ValueError):
-        return False
-    return True
-
-
-_EPISODE_TAKES_64_BIT_SEEDS = _takes_64_bit_seeds()
 
 
 def _observation(episode: _native.Episode, last: np.ndarray | None) -> np.ndarray:

@@ -6,8 +6,7 @@ evaluation's, with the same number of candidates for every method (SPEC §6.2).
 evaluation (:func:`polymimic.baselines.evaluate_policy`, like the imitator's) takes seeds below
 ``VALIDATION_SEED_BASE = 2**62``: the two seed spaces never meet. The episode seeds derived from
 them are 64-bit hashes; :func:`tune` also checks that none of its episodes is one of the
-evaluation's under ``evaluation_seed`` (by the seed the episode really runs with, see
-:func:`~polymimic.baselines.evaluation.binding_seed`), and refuses to tune if one were.
+evaluation's under ``evaluation_seed``, and refuses to tune if one were.
 
 **The effort.** ``budget`` candidates for every method (:func:`~polymimic.baselines.hyperparameters.candidates`:
 the same draws for every method); each is fitted on all the demonstrations and scored by its net
@@ -31,7 +30,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.baselines.evaluation import VALIDATION_SEED_BASE, _check_seed, attempts_of, binding_seed, play
+from polymimic.baselines.evaluation import VALIDATION_SEED_BASE, _check_seed, attempts_of, play
 from polymimic.baselines.hyperparameters import Hyperparameters
 from polymimic.baselines.hyperparameters import candidates as draw_candidates
 from polymimic.baselines.methods import check_method, fit_prepared, prepare
@@ -111,10 +110,10 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
     """
     method = check_method(method)
     attempts = validation_attempts(attempts_per_configuration, validation_seed=validation_seed)
-    evaluation = {binding_seed(s) for _, s in attempts_of(
+    evaluation = {s for _, s in attempts_of(
         evaluation_attempts_per_configuration,
         seed=_check_seed(evaluation_seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's"))}
-    shared = sorted(s for _, s in attempts if binding_seed(s) in evaluation)
+    shared = sorted(s for _, s in attempts if s in evaluation)
     if shared:
         raise ValueError(f"validation attempts share episode seeds {shared} with the evaluation; "
                          f"choose another validation_seed")

@@ -3,6 +3,7 @@
 mod babbler;
 mod expert;
 mod humanoid;
+mod lapse;
 mod planner;
 mod poor;
 mod tiny;
@@ -10,6 +11,7 @@ mod tiny;
 pub use babbler::Babbler;
 pub use expert::Expert;
 pub use humanoid::HumanoidController;
+pub use lapse::{LapseRate, Lapsing, primitive_command};
 pub use poor::Poor;
 pub use tiny::TinyController;
 

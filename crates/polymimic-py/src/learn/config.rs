@@ -4,7 +4,7 @@
 
 use std::hash::{DefaultHasher, Hash, Hasher};
 
-use polymimic_learn::{LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
+use polymimic_learn::{ImitatorWeighting, LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyString, PyTuple, PyType};
@@ -12,7 +12,7 @@ use pyo3::types::{PyBool, PyDict, PyString, PyTuple, PyType};
 use crate::convert::one_of;
 
 /// Every constant, in the order `to_dict` and `repr` give them.
-const NAMES: [&str; 26] = [
+const NAMES: [&str; 28] = [
     "creation_threshold",
     "default_permanency",
     "permanency_threshold",
@@ -22,6 +22,8 @@ const NAMES: [&str; 26] = [
     "permanency_step",
     "initial_lp",
     "imitator_lp",
+    "hold_lp",
+    "imitator_weighting",
     "lp_goal",
     "lp_ball_to_goal",
     "lp_robot_to_ball",
@@ -46,6 +48,7 @@ const SCOPES: [(&str, LpScope); 2] = [("own_demonstrator", LpScope::OwnDemonstra
 const CRITERIA: [(&str, LpCriteria); 2] = [("foremost", LpCriteria::Foremost), ("both", LpCriteria::Both)];
 const WEIGHTS: [(&str, LpApproachWeight); 2] =
     [("per_demonstration", LpApproachWeight::PerDemonstration), ("per_span", LpApproachWeight::PerSpan)];
+const WEIGHTINGS: [(&str, ImitatorWeighting); 2] = [("even", ImitatorWeighting::Even), ("lp", ImitatorWeighting::Lp)];
 
 fn name_of<T: PartialEq + Copy>(options: &[(&'static str, T)], value: T) -> &'static str {
     options.iter().find(|(_, o)| *o == value).map_or("", |(name, _)| name)
@@ -74,6 +77,14 @@ fn count(name: &str, value: &Bound<'_, PyAny>) -> PyResult<usize> {
     usize::try_from(whole).map_err(|_| PyValueError::new_err(format!("config: {name} = {whole} must be ≥ 0")))
 }
 
+/// A switch given for `name`: `True` or `False` only.
+fn flag(name: &str, value: &Bound<'_, PyAny>) -> PyResult<bool> {
+    if !value.is_instance_of::<PyBool>() {
+        return Err(PyTypeError::new_err(format!("{name} must be True or False, got {}", value.repr()?)));
+    }
+    value.extract()
+}
+
 fn choice<T: Copy>(name: &str, value: &Bound<'_, PyAny>, options: &[(&str, T)]) -> PyResult<T> {
     let text: String = value.extract().map_err(|_| {
         PyTypeError::new_err(format!(
@@ -100,6 +111,8 @@ fn set(c: &mut LearningConfig, name: &str, value: &Bound<'_, PyAny>) -> PyResult
         "permanency_step" => float(&mut c.permanency_step),
         "initial_lp" => float(&mut c.initial_lp),
         "imitator_lp" => float(&mut c.imitator_lp),
+        "hold_lp" => flag(name, value).map(|v| c.hold_lp = v),
+        "imitator_weighting" => choice(name, value, &WEIGHTINGS).map(|v| c.imitator_weighting = v),
         "lp_goal" => float(&mut c.lp_goal),
         "lp_ball_to_goal" => float(&mut c.lp_ball_to_goal),
         "lp_robot_to_ball" => float(&mut c.lp_robot_to_ball),
@@ -130,6 +143,13 @@ fn set(c: &mut LearningConfig, name: &str, value: &Bound<'_, PyAny>) -> PyResult
 /// whole config is checked once, here, and a value out of range is a ``ValueError`` naming the
 /// constant, the value and what it may be. Instances are immutable: ``replace`` makes a
 /// changed copy. They compare, hash and pickle by value.
+///
+/// ``hold_lp=True`` holds every demonstrator's LP at ``initial_lp`` throughout a trial (the
+/// uniform-LP ablation). ``imitator_weighting`` is ``"even"`` (every demonstration counts the
+/// same for the imitator, the thesis) or ``"lp"``: a demonstration by member m counts with
+/// weight ``LP_m / max_k LP_k`` (all 1 if every LP is 0), scaling the imitator's frequency
+/// and permanency gains from it in phase 2 (the LPs of that moment; decay is not scaled) and
+/// its samples in the improved control's world model (the final LPs).
 ///
 /// Examples
 /// --------
@@ -166,6 +186,8 @@ impl PyLearningConfig {
         let float = |x: f64| Ok(x.into_pyobject(py)?.into_any());
         match name {
             "ball_min_samples" => Ok(c.ball_min_samples.into_pyobject(py)?.into_any()),
+            "hold_lp" => Ok(PyBool::new(py, c.hold_lp).to_owned().into_any()),
+            "imitator_weighting" => Ok(PyString::new(py, name_of(&WEIGHTINGS, c.imitator_weighting)).into_any()),
             "lp_bounds" => Ok(PyString::new(py, name_of(&BOUNDS, c.lp_bounds)).into_any()),
             "lp_scope" => Ok(PyString::new(py, name_of(&SCOPES, c.lp_scope)).into_any()),
             "lp_criteria" => Ok(PyString::new(py, name_of(&CRITERIA, c.lp_criteria)).into_any()),
@@ -303,6 +325,16 @@ impl PyLearningConfig {
     #[getter]
     fn imitator_lp(&self) -> f64 {
         self.config.imitator_lp
+    }
+    /// Whether every demonstrator's LP is held at `initial_lp` throughout a trial.
+    #[getter]
+    fn hold_lp(&self) -> bool {
+        self.config.hold_lp
+    }
+    /// `"even"` or `"lp"`.
+    #[getter]
+    fn imitator_weighting(&self) -> &'static str {
+        name_of(&WEIGHTINGS, self.config.imitator_weighting)
     }
     #[getter]
     fn lp_goal(&self) -> f64 {

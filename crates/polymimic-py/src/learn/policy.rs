@@ -3,7 +3,8 @@
 use std::sync::Arc;
 
 use polymimic_learn::{
-    Attempt, ControlMode, ForwardModel, ImitatorPolicy, LearningConfig, MotionTable, Pitch, WorldModel,
+    Attempt, ControlMode, ForwardModel, ImitatorPolicy, ImitatorWeighting, LearningConfig, MotionTable, Pitch,
+    WorldModel, demonstration_weights,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -39,7 +40,10 @@ pub(crate) fn attempt_list<'py>(py: Python<'py>, attempts: &[Attempt]) -> PyResu
 /// learning-preference criteria runs primitive by primitive, stopping before leaving the
 /// field. ``control="improved"`` learns from ``demonstrations`` (those the imitator watched,
 /// segmented) how the ball responds to each primitive, how good each state is and where the
-/// scoring demonstrations pushed from, and chooses again after every primitive.
+/// scoring demonstrations pushed from, and chooses again after every primitive. With
+/// ``config.imitator_weighting == "lp"`` each demonstration's samples weigh
+/// ``LP / max LP`` of its demonstrator's model in ``trial`` (the final LPs); a demonstration
+/// whose demonstrator has no model there is a ``ValueError``.
 #[pyclass(name = "ImitatorPolicy", module = "polymimic", frozen, subclass)]
 pub struct PyImitatorPolicy {
     model: Arc<ForwardModel>,
@@ -80,7 +84,15 @@ impl PyImitatorPolicy {
                         "demonstrations: none was played on the imitator's (large) field, so there is nothing to learn the ball's response from",
                     ));
                 }
-                Some(py.detach(|| WorldModel::learn(&demos, &Pitch::LARGE, &motion, &config)))
+                let weights = match config.imitator_weighting {
+                    ImitatorWeighting::Even => Vec::new(),
+                    ImitatorWeighting::Lp => {
+                        let lps: Vec<(String, f64)> =
+                            trial.record.models.iter().map(|m| (m.name.clone(), m.lp)).collect();
+                        demonstration_weights(&demos, &lps).map_err(crate::errors::learn_params_error)?
+                    }
+                };
+                Some(py.detach(|| WorldModel::learn_weighted(&demos, &weights, &Pitch::LARGE, &motion, &config)))
             }
         };
         Ok(Self { model, motion, config, mode, world })

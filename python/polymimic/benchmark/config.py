@@ -38,6 +38,9 @@ METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "bco
 
 DEFAULT_METHODS = METHODS[:-1]
 
+TRIAL_INDEPENDENT = ("bc", "bco", "bc_best", "random")
+"""Baselines that learn the same thing in every trial: the crowd's demonstrations, unweighted."""
+
 
 def _doc(text: str, default: Any) -> Any:
     return dataclasses.field(default=default, metadata={"doc": text})
@@ -56,6 +59,8 @@ class BenchmarkSettings:
     tuning_budget: int = _doc("hyperparameter candidates tried per method and profile", 12)
     validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
     ppo_steps: tuple[int, ...] = _doc("environment-step budgets at which ppo is evaluated", (100_000, 1_000_000))
+    refit_baselines: bool = _doc("fit bc, bco, bc_best and random again for every trial's seed (their data are "
+                                 "the same in every trial: by default they are fitted and evaluated once)", False)
 
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
@@ -116,6 +121,12 @@ class BenchmarkConfig:
     def trial_seeds(self) -> list[int]:
         """Every profile's trial seeds: ``first_trial``, ``first_trial + 1``, …"""
         return [self.seeds.first_trial + i for i in range(self.benchmark.trials)]
+
+    def evaluated_seeds(self, method: str) -> list[int]:
+        """The trials after which ``method`` is evaluated: every one, but only the first for a
+        baseline whose data no trial changes, unless ``refit_baselines``."""
+        once = method in TRIAL_INDEPENDENT and not self.benchmark.refit_baselines
+        return self.trial_seeds()[:1] if once else self.trial_seeds()
 
     def crowds(self) -> list[Crowd]:
         """The crowds this benchmark runs, in its order."""

@@ -183,7 +183,7 @@ class Benchmark:
             for method in methods:
                 tuned = None if method in POLYMIMIC_METHODS else load_tuning(
                     self.run.require(self.run.tuning_path(crowd.name, method), "benchmark"))["hyperparameters"]
-                for seed in self.config.trial_seeds():
+                for seed in self.config.evaluated_seeds(method):
                     if self._evaluation_done(crowd.name, method, seed):
                         continue
                     uniform = POLYMIMIC_METHODS.get(method, ("", False))[1]

@@ -98,7 +98,7 @@ def _downsampled(history: Sequence[float], points: int = LP_POINTS) -> list[floa
 
 def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, method: str) -> MethodSummary:
     saved = [load_method_evaluation(run.require(run.evaluation_path(profile, method, s), "benchmark"))
-             for s in config.trial_seeds()]
+             for s in config.evaluated_seeds(method)]
     if method in POLYMIMIC_METHODS:
         control, uniform = POLYMIMIC_METHODS[method]
         chosen: dict[str, Any] = {"control": control, "lp": "held at 0.5" if uniform else "learned",

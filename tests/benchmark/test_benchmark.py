@@ -1,0 +1,159 @@
+"""`polymimic benchmark` end to end on a tiny crowd: its files, its summary's schema and sense,
+resumption, damaged files, and the same bits on one worker or two."""
+
+import json
+
+import pytest
+
+from polymimic.benchmark.config import METHODS, BenchmarkConfig
+from polymimic.benchmark.rundir import BenchmarkDir
+from polymimic.cli import main
+from polymimic.learning import TrialResult
+
+TINY = """
+[recognizer]
+train_per_primitive = 40
+codebook_size = 16
+[benchmark]
+profiles = ["pair", "duo"]
+trials = 2
+demonstrations_per_configuration = 2
+attempts_per_configuration = 2
+validation_attempts_per_configuration = 1
+tuning_budget = 2
+[profiles.pair]
+members = [{ controller = "expert", lapse = 0.0, name = "good" }, { controller = "expert", lapse = 1.0, name = "bad" }]
+[profiles.duo]
+members = [{ controller = "tiny", lapse = 0.1 }, { controller = "poor", lapse = 0.6 }]
+"""
+
+
+@pytest.fixture(scope="module")
+def tiny_toml(tmp_path_factory):
+    path = tmp_path_factory.mktemp("config") / "tiny.toml"
+    path.write_text(TINY)
+    return path
+
+
+@pytest.fixture(scope="module")
+def benchmarked(tmp_path_factory, tiny_toml):
+    run = tmp_path_factory.mktemp("runs") / "bench"
+    assert main(["benchmark", "--config", str(tiny_toml), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0
+    return run
+
+
+def _summary(run):
+    return json.loads((run / "benchmark.json").read_text())
+
+
+def test_the_run_holds_every_file(benchmarked):
+    names = {p.name for p in benchmarked.rglob("*") if p.is_file()}
+    assert {"benchmark.json", "benchmark.md", "benchmark.html", "crowd_pair.parquet", "crowd_duo.parquet",
+            "trial_0.json", "trial_1_uniform_lp.json", "tuning_bc.json", "evaluation_polymimic_1.json",
+            "evaluation_bco_lp_1.json", "evaluation_bc_0.json", "benchmark_net_goals.png"} <= names
+    # bc learns the same data in every trial: fitted and evaluated once.
+    assert "evaluation_bc_1.json" not in names
+
+
+def test_the_summary_follows_its_schema(benchmarked):
+    summary = _summary(benchmarked)
+    assert (summary["format"], summary["version"]) == ("polymimic.benchmark", 1)
+    assert set(summary["sizes"]) >= {"trials", "attempts_per_configuration", "tuning_budget"}
+    pair = summary["profiles"]["pair"]
+    assert set(pair) == {"demonstrators", "trials", "skill_recovery", "skill_by_outcomes", "methods",
+                         "lp_over_training"}
+    assert pair["trials"] == 2
+    assert set(pair["demonstrators"]["good"]) == {"controller", "body", "lapse", "goals", "own_goals", "attempts",
+                                                  "final_lp"}
+    assert pair["demonstrators"]["good"]["attempts"] == 4
+    assert set(pair["skill_recovery"]) == {"spearman", "kendall", "best_hits", "top_among_best"}
+    assert list(pair["methods"]) == list(METHODS[:-1])
+    for method, entry in pair["methods"].items():
+        assert set(entry) == {"goals", "own_goals", "net_goals", "attempts", "evaluated", "hyperparameters"}
+        assert entry["attempts"] == 4
+        assert entry["evaluated"] == (1 if method in ("bc", "bco", "bc_best", "random") else 2)
+        assert entry["net_goals"]["mean"] == pytest.approx(entry["goals"]["mean"] - entry["own_goals"]["mean"])
+    assert pair["methods"]["bc"]["hyperparameters"]["classifier"]
+    assert pair["methods"]["polymimic"]["hyperparameters"]["control"] == "improved"
+    duo = summary["profiles"]["duo"]
+    assert duo["demonstrators"]["tiny_00"]["body"] == "tiny"
+
+
+def test_the_skill_statistics_are_the_members_own(benchmarked):
+    pair = _summary(benchmarked)["profiles"]["pair"]
+    run = BenchmarkDir(benchmarked)
+    # Two members: ρ and τ are +1 in a trial where the ε = 0 member ends with the higher LP, −1
+    # where with the lower; best_hits counts the former.
+    trials = [TrialResult.load(run.trial_path("pair", s)) for s in (0, 1)]
+    signs = [1.0 if t.models["good"].lp > t.models["bad"].lp else -1.0 for t in trials
+             if t.models["good"].lp != t.models["bad"].lp]
+    assert pair["skill_recovery"]["spearman"]["mean"] == pytest.approx(sum(signs) / len(signs))
+    assert pair["skill_recovery"]["kendall"]["mean"] == pytest.approx(sum(signs) / len(signs))
+    assert pair["skill_recovery"]["best_hits"] == signs.count(1.0)
+    assert pair["demonstrators"]["good"]["final_lp"]["mean"] == pytest.approx(
+        sum(t.models["good"].lp for t in trials) / 2)
+    # The net-goal estimator ranks by the members' own outcomes, the same in every trial.
+    good, bad = pair["demonstrators"]["good"], pair["demonstrators"]["bad"]
+    good_net, bad_net = good["goals"] - good["own_goals"], bad["goals"] - bad["own_goals"]
+    expected = None if good_net == bad_net else (1.0 if good_net > bad_net else -1.0)
+    assert pair["skill_by_outcomes"]["spearman"]["mean"] == expected
+    assert pair["skill_by_outcomes"]["spearman"]["sd"] == (None if expected is None else 0.0)
+
+
+def test_a_rerun_redoes_nothing_and_a_lost_or_damaged_file_is_made_again(benchmarked, tiny_toml, capsys):
+    run = BenchmarkDir(benchmarked)
+    before = _summary(benchmarked)
+    run.evaluation_path("pair", "polymimic", 1).unlink()
+    run.tuning_path("duo", "bco").write_text('{"profile": "duo", "method": "bco", "chosen": {}')  # truncated
+    assert main(["benchmark", "--config", str(tiny_toml), "--run-dir", str(benchmarked), "--quiet",
+                 "--workers", "1"]) == 0
+    stages = run.manifest()["stages"]
+    assert stages["learn"]["made"] == 0 and stages["record"]["made"] == 0
+    # The tuning is made again, bit for bit, so its evaluations stand; the one lost is redone.
+    assert stages["tune"]["made"] == 1
+    assert stages["evaluate"]["made"] == 1
+    assert "tuning_bco.json is damaged" in capsys.readouterr().err
+    assert _summary(benchmarked) == before
+
+
+def test_one_worker_or_two_give_the_same_bits(benchmarked, tiny_toml, tmp_path):
+    other = tmp_path / "two"
+    assert main(["benchmark", "--config", str(tiny_toml), "--run-dir", str(other), "--quiet", "--workers", "2"]) == 0
+    assert (other / "benchmark.json").read_bytes() == (benchmarked / "benchmark.json").read_bytes()
+
+
+def test_the_config_round_trips_as_toml(tiny_toml):
+    config = BenchmarkConfig.load(tiny_toml)
+    assert BenchmarkConfig.from_toml(config.to_toml()) == config
+    assert config.crowds()[0].names == ("good", "bad")
+    assert BenchmarkConfig.from_toml(BenchmarkConfig.quick().to_toml()) == BenchmarkConfig.quick()
+
+
+@pytest.mark.parametrize(("argv", "message"), [
+    (["--profiles", "one_goood"], "unknown profile 'one_goood'"),
+    (["--methods", "bcx"], "unknown method 'bcx'"),
+    (["--profiles", "pair", "pair"], "names 'pair' twice"),
+])
+def test_bad_names_are_one_line_usage_errors(argv, message, tiny_toml, tmp_path, capsys):
+    assert main(["benchmark", "--config", str(tiny_toml), "--run-dir", str(tmp_path / "r"), *argv]) == 2
+    err = capsys.readouterr().err.strip()
+    assert message in err and len(err.splitlines()) == 1
+
+
+@pytest.mark.parametrize(("extra", "message"), [
+    ('[profiles.solo]\nmembers = [{ controller = "expert", lapse = 0.1 }]\n', "at least two"),
+    ('[profiles.wild]\nmembers = [{ controller = "expert", lapse = 1.2 }, { controller = "poor", lapse = 0 }]\n',
+     "lapse 1.2"),
+    ("[benchmark]\ntrials = 0\n", "trials = 0"),
+])
+def test_bad_crowds_and_sizes_are_named(extra, message, tmp_path, capsys):
+    path = tmp_path / "bad.toml"
+    path.write_text(extra)
+    assert main(["benchmark", "--config", str(path), "--run-dir", str(tmp_path / "r")]) == 2
+    assert message in capsys.readouterr().err
+
+
+def test_the_report_states_every_choice(benchmarked):
+    text = (benchmarked / "benchmark.md").read_text()
+    assert "## Targets" in text and "chosen on validation" in text
+    assert "classifier=" in text

@@ -1,0 +1,113 @@
+"""Crowds: the five profiles as SPEC §6.1 lists them, crowds from data, and their recordings."""
+
+import dataclasses
+import json
+
+import numpy as np
+import pyarrow.parquet as pq
+import pytest
+
+import polymimic
+from polymimic import recognition
+from polymimic.crowds import PROFILES, Crowd, Member, member_seed, profile, record_crowd
+from polymimic.field import FRAME_DTYPE, Demonstration
+from polymimic.learning import segmented
+
+
+def test_the_five_profiles_are_the_specs():
+    lapses = {name: sorted(c.lapses().values()) for name, c in PROFILES.items()}
+    assert lapses["one_good"] == [0.05] + [0.9] * 9
+    assert lapses["half"] == [0.05] * 5 + [0.9] * 5
+    assert lapses["equal"] == [0.5] * 10
+    assert lapses["linear"] == pytest.approx([0.05 + 0.1 * k for k in range(10)])
+    mixed = PROFILES["mixed_bodies"]
+    assert sorted((m.controller, m.lapse) for m in mixed.members) == sorted(
+        (c, e) for c in ("expert", "tiny", "humanoid") for e in (0.05, 0.5, 0.9))
+    assert {m.body for m in mixed.members} == {"lego", "tiny", "humanoid"}
+    assert PROFILES["one_good"].best() == ("expert_00",)
+    assert len(PROFILES["half"].best()) == 5
+
+
+def test_a_crowd_round_trips_as_data():
+    crowd = PROFILES["mixed_bodies"]
+    assert Crowd.from_members(crowd.name, crowd.to_members()) == crowd
+    counted = Crowd.from_members("c", [{"controller": "poor", "lapse": 0.2, "count": 3},
+                                       {"controller": "expert", "lapse": 0, "name": "star"}])
+    assert counted.names == ("poor_00", "poor_01", "poor_02", "star")
+    assert counted.members[-1] == Member("star", "expert", 0.0)
+
+
+@pytest.mark.parametrize(("members", "match"), [
+    ([{"controller": "expert", "lapse": 0.1}], "at least two"),
+    ([{"controller": "expert", "lapse": 1.5}, {"controller": "poor", "lapse": 0.1}], r"lapse 1\.5.*\[0, 1\]"),
+    ([{"controller": "expert", "lapse": float("nan")}, {"controller": "poor", "lapse": 0.1}], "lapse nan"),
+    ([{"controller": "expert", "lapse": True}, {"controller": "poor", "lapse": 0.1}], "lapse True"),
+    ([{"controller": "experts", "lapse": 0.1}, {"controller": "poor", "lapse": 0.1}], "controller 'experts'"),
+    ([{"controller": "expert"}, {"controller": "poor", "lapse": 0.1}], "missing key 'lapse'"),
+    ([{"controller": "expert", "lapse": 0.1, "lapes": 2}, {"controller": "poor", "lapse": 0.1}],
+     "unknown key 'lapes'"),
+    ([{"controller": "expert", "lapse": 0.1, "name": "a"}, {"controller": "poor", "lapse": 0.1, "name": "a"}],
+     "names member 'a' twice"),
+    ([{"controller": "expert", "lapse": 0.1, "count": 0}, {"controller": "poor", "lapse": 0.1}], "count"),
+    ("expert", "a list of tables"),
+])
+def test_bad_crowds_are_refused_by_name(members, match):
+    with pytest.raises(ValueError, match=match):
+        Crowd.from_members("mine", members)
+
+
+def test_unknown_profiles_are_named():
+    with pytest.raises(ValueError, match="unknown profile 'one_goood'; expected one of one_good"):
+        profile("one_goood")
+
+
+def test_members_of_one_controller_and_lapse_record_different_demonstrations():
+    assert len({member_seed(0, i) for i in range(10)}) == 10
+    assert member_seed(3, 1) == member_seed(3, 1) != member_seed(4, 1)
+    demos = record_crowd(PROFILES["half"], n=1, seed=2)
+    assert [d.demonstrator for d in demos[:4]] == ["expert_00", "expert_00", "expert_01", "expert_01"]
+    assert [d.configuration for d in demos[:2]] == [1, 2]
+    assert demos[0].frames.tobytes() != demos[2].frames.tobytes()
+
+
+def test_a_crowd_of_lapse_zero_records_its_controllers_own_demonstrations():
+    crowd = Crowd.from_members("pure", [{"controller": "expert", "lapse": 0.0}, {"controller": "tiny", "lapse": 0.0}])
+    demos = record_crowd(crowd, n=2, seed=5)
+    own = polymimic.record("tiny", configuration=1, n=2, seed=member_seed(5, 1))
+    mine = [d for d in demos if d.demonstrator == "tiny_01" and d.configuration == 1]
+    assert [d.frames.tobytes() for d in mine] == [d.frames.tobytes() for d in own]
+    assert {d.body for d in mine} == {"tiny"}
+
+
+def test_a_demonstration_of_an_unknown_demonstrator_names_its_body():
+    frames = np.zeros(3, dtype=FRAME_DTYPE)
+    assert Demonstration(frames, "goal", "alice", 1, 0, body="tiny").body == "tiny"
+    with pytest.raises(ValueError, match="give its body"):
+        Demonstration(frames, "goal", "alice", 1, 0)
+    with pytest.raises(ValueError, match="body 'wheels'"):
+        Demonstration(frames, "goal", "alice", 1, 0, body="wheels")
+
+
+def test_a_crowds_bodies_survive_a_dataset_round_trip(tmp_path):
+    demos = record_crowd(PROFILES["mixed_bodies"], n=1, seed=1)
+    polymimic.save_demonstrations(demos, tmp_path / "crowd.parquet")
+    again = polymimic.load_demonstrations(tmp_path / "crowd.parquet")
+    assert [(d.demonstrator, d.body) for d in again] == [(d.demonstrator, d.body) for d in demos]
+
+
+def test_a_version_1_dataset_without_bodies_reads_with_the_known_ones(tmp_path):
+    path = tmp_path / "old.parquet"
+    polymimic.save_demonstrations(polymimic.record("tiny", configuration=1, n=1, seed=0), path)
+    table = pq.read_table(path).drop_columns(["body"])
+    header = json.loads(table.schema.metadata[b"polymimic"])
+    header["version"] = 1
+    pq.write_table(table.replace_schema_metadata({b"polymimic": json.dumps(header).encode()}), path)
+    assert [d.body for d in polymimic.load_demonstrations(path)] == ["tiny"]
+
+
+def test_the_small_field_follows_the_body_not_the_name():
+    recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=8)
+    tiny = polymimic.record("tiny", configuration=1, n=1, seed=0)[0]
+    renamed = [dataclasses.replace(tiny, demonstrator="tiny_07"), dataclasses.replace(tiny, demonstrator="t",
+                                                                                      body="lego")]
+    assert segmented(renamed, recognizer).pitches == ["small", "large"]

@@ -19,13 +19,14 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
 
 from polymimic import _native
 from polymimic._arguments import integer, probability
+from polymimic._tables import Path, merged
 
 FRAME_DTYPE = np.dtype([
     ("t_s", "f8"),
@@ -152,32 +153,31 @@ def check_config(config: Mapping[str, Any] | str) -> dict[str, Any]:
             raise ValueError(f"the field config is not valid JSON: {error}") from error
     if not isinstance(config, Mapping):
         raise TypeError(f"the field config must be a mapping, got {type(config).__name__}")
-    merged = _checked_table("", default_config(), config)
-    checked: dict[str, Any] = json.loads(_native.check_field_config(json.dumps(merged)))
+    full = merged(default_config(), config, unknown=_unknown_key, not_table=_not_a_table, leaf=_number)
+    checked: dict[str, Any] = json.loads(_native.check_field_config(json.dumps(full)))
     return checked
 
 
-def _checked_table(prefix: str, defaults: Mapping[str, Any], values: Mapping[str, Any]) -> dict[str, Any]:
-    merged = dict(defaults)
-    for key, value in values.items():
-        name = f"{prefix}{key}"
-        if key not in defaults:
-            raise ValueError(f"unknown key {name!r} in the field config; known keys: "
-                             f"{', '.join(prefix + k for k in defaults)}")
-        default = defaults[key]
-        if isinstance(default, Mapping):
-            if not isinstance(value, Mapping):
-                raise TypeError(f"field config {name!r} must be a table, got {value!r}")
-            merged[key] = _checked_table(f"{name}.", default, value)
-        elif isinstance(value, bool) or not isinstance(value, (int, float)) or (
-                isinstance(default, int) and not isinstance(value, int)):
-            kind = "an integer" if isinstance(default, int) else "a number"
-            raise TypeError(f"field config {name!r} must be {kind}, like the default {default!r}; got {value!r}")
-        elif not math.isfinite(value):
-            raise ValueError(f"field config {name!r} must be a finite number, got {value!r}")
-        else:
-            merged[key] = value
-    return merged
+def _unknown_key(path: Path, known: Sequence[str]) -> Exception:
+    prefix = "".join(f"{k}." for k in path[:-1])
+    return ValueError(f"unknown key {'.'.join(path)!r} in the field config; known keys: "
+                      f"{', '.join(prefix + k for k in known)}")
+
+
+def _not_a_table(path: Path, value: Any) -> Exception:
+    return TypeError(f"field config {'.'.join(path)!r} must be a table, got {value!r}")
+
+
+def _number(path: Path, value: Any, default: Any) -> Any:
+    """A finite number, an integer where the default is one."""
+    name = ".".join(path)
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or (
+            isinstance(default, int) and not isinstance(value, int)):
+        kind = "an integer" if isinstance(default, int) else "a number"
+        raise TypeError(f"field config {name!r} must be {kind}, like the default {default!r}; got {value!r}")
+    if not math.isfinite(value):
+        raise ValueError(f"field config {name!r} must be a finite number, got {value!r}")
+    return value
 
 
 def _field_config(config: Mapping[str, Any] | str | None) -> str | None:

@@ -3,7 +3,8 @@
 //! kinematic collider switched on only while it swings. Units are mm and s; rapier's tolerances
 //! are scaled to the ball through `length_unit`.
 
-use polymimic_types::{Point, Pose};
+use nalgebra::Vector2;
+use polymimic_types::{Point, Pose, rotation_by_rad};
 use rapier2d::math::Pose as RPose;
 use rapier2d::prelude::{
     ColliderBuilder, ColliderHandle, PhysicsWorld, RigidBody, RigidBodyBuilder, RigidBodyHandle, Vector,
@@ -11,7 +12,7 @@ use rapier2d::prelude::{
 use serde::{Deserialize, Serialize};
 
 use crate::error::{FieldParamError, check_range};
-use crate::math::{Rng, cos, gaussian, sin};
+use crate::math::{Rng, gaussian};
 
 /// Ball material and rolling resistance.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -49,6 +50,13 @@ impl BallParams {
 /// A pose as rapier takes it (glam, f32): the one place our poses cross into the physics.
 fn rpose(p: Pose) -> RPose {
     RPose::new(Vector::new(p.x_mm() as f32, p.y_mm() as f32), p.theta_rad() as f32)
+}
+
+/// A rapier velocity turned by `turn_rad`, in rapier's f32 (the rotation's cosine and sine
+/// rounded to f32 first).
+fn turned(v: Vector, turn_rad: f64) -> Vector {
+    let turned = rotation_by_rad(turn_rad).cast::<f32>() * Vector2::new(v.x, v.y);
+    Vector::new(turned.x, turned.y)
 }
 
 /// What the physics world starts with.
@@ -199,8 +207,7 @@ impl Physics {
         if let Some(b) = self.world.bodies.get_mut(self.ball) {
             let v = b.linvel();
             if v.length() > 1.0 && !b.is_sleeping() {
-                let (s, c) = (sin(turn) as f32, cos(turn) as f32);
-                b.set_linvel(Vector::new(c * v.x - s * v.y, s * v.x + c * v.y), false);
+                b.set_linvel(turned(v, turn), false);
             }
         }
     }
@@ -265,6 +272,16 @@ mod tests {
             foot_size_mm: None,
         };
         Physics::new(&scene, 1.0 / 240.0, crate::math::rng(0, 0))
+    }
+
+    #[test]
+    fn the_wobble_turns_the_velocity_as_the_field_always_did() {
+        for (turn, v) in [(0.01, Vector::new(250.0, -3.5)), (-0.3, Vector::new(-17.25, 99.0)), (2.0, Vector::new(1.5, 0.0))] {
+            let (s, c) = (libm::sin(turn) as f32, libm::cos(turn) as f32);
+            let by_hand = Vector::new(c * v.x - s * v.y, s * v.x + c * v.y);
+            let t = turned(v, turn);
+            assert_eq!((t.x.to_bits(), t.y.to_bits()), (by_hand.x.to_bits(), by_hand.y.to_bits()));
+        }
     }
 
     #[test]

@@ -8,7 +8,7 @@ use polymimic_perceive::{
     segment, segment_many,
 };
 use polymimic_types::{Pose, Primitive, TrackedFrame};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple, PyType};
 
@@ -54,20 +54,55 @@ fn representations(name: &str) -> PyResult<(Representation, Representation)> {
     )
 }
 
-fn segmenter_config(
-    min_frames: i64,
-    stop_distance_mm: f64,
-    stop_rotation_deg: f64,
-    limit_sds: f64,
-    gap_margin: f64,
-) -> PyResult<SegmenterConfig> {
-    Ok(SegmenterConfig {
-        min_frames: non_negative("min_frames", min_frames)?,
-        stop_distance_mm,
-        stop_rotation_deg,
-        limit_sds,
-        gap_margin,
-    })
+/// The segmenter's keywords, in the order a signature would list them; each one left out takes
+/// `SegmenterConfig::default()`, the defaults' one home.
+const SEGMENTER_KEYWORDS: [&str; 5] = ["min_frames", "stop_distance_mm", "stop_rotation_deg", "limit_sds", "gap_margin"];
+
+/// The segmenter's settings as `segment` and `segment_many` take them (`**settings`), read the
+/// way pyo3 reads a signature: an unknown keyword is a `TypeError` naming it, then each value's
+/// type is checked in [`SEGMENTER_KEYWORDS`] order, before the frames; the range of `min_frames`
+/// is checked after them, by [`Self::config`].
+struct SegmenterSettings {
+    min_frames: Option<i64>,
+    config: SegmenterConfig,
+}
+
+impl SegmenterSettings {
+    fn extract(method: &str, settings: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+        let mut out = Self { min_frames: None, config: SegmenterConfig::default() };
+        let Some(settings) = settings else { return Ok(out) };
+        for key in settings.keys() {
+            let key: String = key.extract()?;
+            if !SEGMENTER_KEYWORDS.contains(&key.as_str()) {
+                return Err(PyTypeError::new_err(format!(
+                    "PrimitiveRecognizer.{method}() got an unexpected keyword argument '{key}'"
+                )));
+            }
+        }
+        if let Some(value) = settings.get_item("min_frames")? {
+            out.min_frames = Some(value.extract()?);
+        }
+        let c = &mut out.config;
+        for (name, slot) in [
+            ("stop_distance_mm", &mut c.stop_distance_mm),
+            ("stop_rotation_deg", &mut c.stop_rotation_deg),
+            ("limit_sds", &mut c.limit_sds),
+            ("gap_margin", &mut c.gap_margin),
+        ] {
+            if let Some(value) = settings.get_item(name)? {
+                *slot = value.extract()?;
+            }
+        }
+        Ok(out)
+    }
+
+    fn config(self) -> PyResult<SegmenterConfig> {
+        let mut config = self.config;
+        if let Some(min_frames) = self.min_frames {
+            config.min_frames = non_negative("min_frames", min_frames)?;
+        }
+        Ok(config)
+    }
 }
 
 /// Segments as columns: labels, frame ranges, end frames and scores.
@@ -179,46 +214,39 @@ impl PyPrimitiveRecognizer {
 
     /// Segments a demonstration; returns columns: `label` (list of str), `first_frame`,
     /// `last_frame` (int arrays), `start` and `end` (`(k, 5)` frames) and `scores` (`(k, 4)`).
-    #[pyo3(signature = (frames, *, min_frames=10, stop_distance_mm=1.0, stop_rotation_deg=20.0, limit_sds=2.0,
-                        gap_margin=2.0))]
-    #[allow(clippy::too_many_arguments)]
+    /// Settings, keyword-only: `min_frames=10`, `stop_distance_mm=1.0`, `stop_rotation_deg=20.0`,
+    /// `limit_sds=2.0`, `gap_margin=2.0`.
+    #[pyo3(signature = (frames, **settings))]
     fn segment<'py>(
         &self,
         py: Python<'py>,
         frames: &Bound<'py, PyAny>,
-        min_frames: i64,
-        stop_distance_mm: f64,
-        stop_rotation_deg: f64,
-        limit_sds: f64,
-        gap_margin: f64,
+        settings: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyDict>> {
+        let settings = SegmenterSettings::extract("segment", settings)?;
         let frames = tracked_frames(frames, "demonstration")?;
-        let config = segmenter_config(min_frames, stop_distance_mm, stop_rotation_deg, limit_sds, gap_margin)?;
+        let config = settings.config()?;
         let segments = py.detach(|| segment(&frames, &self.recognizer, &config)).map_err(perceive_error)?;
         segment_columns(py, &segments)
     }
 
-    /// `segment` for many demonstrations, in parallel; one dictionary of columns each.
-    #[pyo3(signature = (demonstrations, *, min_frames=10, stop_distance_mm=1.0, stop_rotation_deg=20.0,
-                        limit_sds=2.0, gap_margin=2.0))]
-    #[allow(clippy::too_many_arguments)]
+    /// `segment` for many demonstrations, in parallel, with the same settings; one dictionary
+    /// of columns each.
+    #[pyo3(signature = (demonstrations, **settings))]
     fn segment_many<'py>(
         &self,
         py: Python<'py>,
         demonstrations: &Bound<'py, PyAny>,
-        min_frames: i64,
-        stop_distance_mm: f64,
-        stop_rotation_deg: f64,
-        limit_sds: f64,
-        gap_margin: f64,
+        settings: Option<&Bound<'py, PyDict>>,
     ) -> PyResult<Bound<'py, PyList>> {
+        let settings = SegmenterSettings::extract("segment_many", settings)?;
         let all: Vec<Vec<TrackedFrame>> = demonstrations
             .try_iter()?
             .enumerate()
             .map(|(i, d)| tracked_frames(&d?, &format!("demonstration {i}")))
             .collect::<PyResult<_>>()?;
         let refs: Vec<&[TrackedFrame]> = all.iter().map(Vec::as_slice).collect();
-        let config = segmenter_config(min_frames, stop_distance_mm, stop_rotation_deg, limit_sds, gap_margin)?;
+        let config = settings.config()?;
         let segmented = py.detach(|| segment_many(&refs, &self.recognizer, &config)).map_err(perceive_error)?;
         let out = PyList::empty(py);
         for segments in &segmented {

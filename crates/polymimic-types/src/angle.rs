@@ -3,7 +3,7 @@
 
 use std::f64::consts::{PI, TAU};
 
-use nalgebra::UnitComplex;
+use nalgebra::{UnitComplex, Vector2};
 
 /// An angle wrapped into (−π, π], exactly: the remainder of a division by 2π is exact, and an
 /// angle already in range comes back unchanged. Non-finite angles pass through. The field's
@@ -37,6 +37,15 @@ pub fn wrap_angle_euclid_rad(angle_rad: f64) -> f64 {
 #[must_use]
 pub fn rotation_by_rad(angle_rad: f64) -> UnitComplex<f64> {
     UnitComplex::from_cos_sin_unchecked(libm::cos(angle_rad), libm::sin(angle_rad))
+}
+
+/// The unit vector at `angle_rad` from +x: the x axis turned by [`rotation_by_rad`], read off
+/// the rotation (`rotation * Vector2::x()` would add products with zero, which can flip the
+/// sign of a zero component).
+#[must_use]
+pub fn direction_rad(angle_rad: f64) -> Vector2<f64> {
+    let rotation = rotation_by_rad(angle_rad);
+    Vector2::new(rotation.cos_angle(), rotation.sin_angle())
 }
 
 #[cfg(test)]

@@ -26,7 +26,7 @@ mod point;
 mod pose;
 mod primitive;
 
-pub use angle::{rotation_by_rad, wrap_angle_euclid_rad, wrap_angle_rad};
+pub use angle::{direction_rad, rotation_by_rad, wrap_angle_euclid_rad, wrap_angle_rad};
 pub use frame::TrackedFrame;
 pub use motion::MotionStats;
 pub use point::Point;

@@ -1,6 +1,7 @@
 //! A point on the field, on nalgebra's `Point2`.
 
 use std::fmt;
+use std::ops::Add;
 
 use nalgebra::{Point2, Vector2};
 use serde::{Deserialize, Serialize};
@@ -101,6 +102,15 @@ impl From<Point> for Point2<f64> {
     }
 }
 
+/// A point moved by a displacement, mm.
+impl Add<Vector2<f64>> for Point {
+    type Output = Point;
+
+    fn add(self, v: Vector2<f64>) -> Point {
+        Self(self.0 + v)
+    }
+}
+
 impl fmt::Debug for Point {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("Point").field("x_mm", &self.x_mm()).field("y_mm", &self.y_mm()).finish()
@@ -117,6 +127,7 @@ mod tests {
         assert_eq!(a.dist_mm(b), 5.0);
         assert_eq!(a.bearing_rad(b), libm::atan2(4.0, 3.0));
         assert_eq!(a.to(b), Vector2::new(3.0, 4.0));
+        assert_eq!(a + a.to(b), b);
     }
 
     #[test]

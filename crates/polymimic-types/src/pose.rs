@@ -7,7 +7,7 @@ use std::fmt;
 use nalgebra::{Isometry2, Point2, Translation2, UnitComplex, Vector2};
 use serde::{Deserialize, Serialize};
 
-use crate::angle::{rotation_by_rad, wrap_angle_rad};
+use crate::angle::{direction_rad, rotation_by_rad, wrap_angle_rad};
 use crate::point::Point;
 
 /// A robot pose: position (mm) and heading (rad, counter-clockwise from +x). Serialises as
@@ -85,7 +85,14 @@ impl Pose {
     /// The unit vector along the heading, field axes (`libm`, the field's maths).
     #[must_use]
     pub fn heading(&self) -> Vector2<f64> {
-        Vector2::new(libm::cos(self.theta_rad), libm::sin(self.theta_rad))
+        direction_rad(self.theta_rad)
+    }
+
+    /// The point `dist_mm` along the heading (behind the pose if negative), field coordinates:
+    /// the position plus `dist_mm` times [`Self::heading`], each axis one product and one sum.
+    #[must_use]
+    pub fn ahead(&self, dist_mm: f64) -> Point {
+        self.point() + self.heading() * dist_mm
     }
 
     /// The robot's frame (x forward, y to the left) in field coordinates: `field_from_robot`
@@ -190,6 +197,21 @@ mod tests {
                 let r = pose.robot_from_field(Point::new(px, py));
                 let (dx, dy) = (px - x, py - y);
                 assert_eq!(r, Point::new(c * dx + s * dy, -s * dx + c * dy));
+            }
+        }
+    }
+
+    #[test]
+    fn ahead_is_the_hand_written_step_along_the_heading() {
+        for (x, y, theta) in [(10.0, -20.0, 0.8), (-333.3, 12.7, -2.9), (0.1, 0.2, 3.1), (-0.0, -0.0, -0.0)] {
+            let pose = Pose::new(x, y, theta);
+            let (s, c) = (libm::sin(theta), libm::cos(theta));
+            for d in [33.0, -7.25, 1e-3, 0.0] {
+                let p = pose.ahead(d);
+                assert_eq!((p.x_mm().to_bits(), p.y_mm().to_bits()), ((x + c * d).to_bits(), (y + s * d).to_bits()));
+                if d != 0.0 {
+                    assert_eq!(p, pose.field_from_robot(Point::new(d, 0.0)));
+                }
             }
         }
     }

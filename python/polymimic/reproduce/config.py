@@ -24,8 +24,10 @@ import dataclasses
 import json
 import math
 import os
+from collections.abc import Sequence
 from typing import Any
 
+from polymimic._tables import Path, merged
 from polymimic._toml import loads, write_table
 from polymimic.field import check_config, default_config
 from polymimic.learning import LearningConfig
@@ -187,7 +189,7 @@ class RunConfig:
                 values = _checked(name, _table(name, data[name]), dataclasses.asdict(current))
                 changes[name] = dataclasses.replace(current, **values)
         if "field" in data:
-            field = _merged("field", base.field, _table("field", data["field"]))
+            field = _field_section(base.field, _table("field", data["field"]))
             try:
                 check_config(field)
             except (ValueError, TypeError) as error:
@@ -265,14 +267,16 @@ def _type_name(kind: type) -> str:
         kind, kind.__name__)
 
 
-def _merged(section: str, defaults: dict[str, Any], values: dict[str, Any]) -> dict[str, Any]:
-    """Nested tables (the field's) merged key by key, with unknown keys refused."""
-    merged = dict(defaults)
-    for key, value in values.items():
-        if key not in defaults:
-            raise ConfigError(f"unknown key in [{section}]: {key}")
-        if isinstance(defaults[key], dict):
-            merged[key] = _merged(f"{section}.{key}", defaults[key], _table(f"{section}.{key}", value))
-        else:
-            merged[key] = _typed(f"[{section}] {key}", value, defaults[key])
-    return merged
+def _field_section(defaults: dict[str, Any], values: dict[str, Any]) -> dict[str, Any]:
+    """``[field]`` merged over the field's defaults, nested tables key by key, worded as a run
+    config's sections are."""
+    def unknown(path: Path, known: Sequence[str]) -> Exception:
+        return ConfigError(f"unknown key in [{'.'.join(path[:-1])}]: {path[-1]}")
+
+    def not_table(path: Path, value: Any) -> Exception:
+        return ConfigError(f"[{'.'.join(path)}] must be a table, got {value!r}")
+
+    def leaf(path: Path, value: Any, default: Any) -> Any:
+        return _typed(f"[{'.'.join(path[:-1])}] {path[-1]}", value, default)
+
+    return merged(defaults, values, unknown=unknown, not_table=not_table, leaf=leaf, path=("field",))

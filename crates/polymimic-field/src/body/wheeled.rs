@@ -9,12 +9,12 @@
 //! mass makes translation lag noticeably (residual motion carries into the next primitive),
 //! while its small yaw inertia and the skid's scrubbing make rotation settle quickly.
 
-use polymimic_types::Pose;
+use polymimic_types::{Pose, direction_rad};
 use serde::{Deserialize, Serialize};
 
 use crate::command::{Command, LEGO_WHEEL_BASE_MM};
 use crate::error::FieldParamError;
-use crate::math::{Rng, cos, exp, gaussian, sin, wrap_angle_rad};
+use crate::math::{Rng, exp, gaussian, wrap_angle_rad};
 
 /// Random traction of one manoeuvre class, drawn on every command onset.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -162,11 +162,9 @@ impl WheeledBody {
         self.v_mm_s += a_v * (self.target_v_mm_s - self.v_mm_s);
         self.omega_rad_s += a_w * (self.target_omega_rad_s - self.omega_rad_s);
         let theta_mid = self.pose.theta_rad() + 0.5 * self.omega_rad_s * dt_s;
-        self.pose = Pose::new(
-            self.pose.x_mm() + self.v_mm_s * cos(theta_mid) * dt_s,
-            self.pose.y_mm() + self.v_mm_s * sin(theta_mid) * dt_s,
-            wrap_angle_rad(self.pose.theta_rad() + self.omega_rad_s * dt_s),
-        );
+        // The wheels carry the body along its mid-step heading.
+        let moved = self.pose.point() + direction_rad(theta_mid) * self.v_mm_s * dt_s;
+        self.pose = Pose::at(moved, wrap_angle_rad(self.pose.theta_rad() + self.omega_rad_s * dt_s));
     }
 }
 

@@ -4,7 +4,7 @@
 use polymimic_types::{Point, Pose};
 
 use crate::geometry::FieldGeometry;
-use crate::math::{PI, cos, sin, wrap_angle_rad};
+use crate::math::{PI, wrap_angle_rad};
 
 /// What the attacker should do next.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -39,18 +39,15 @@ pub(crate) fn aim_point(field: &FieldGeometry) -> Point {
     Point::new(field.half_length_mm() + field.ball_diameter_mm, 0.0)
 }
 
-/// Unit vector and its left normal for the ball–goal line.
-fn line(ball: Point, aim: Point) -> ((f64, f64), (f64, f64)) {
-    let a = ball.bearing_rad(aim);
-    let g = (cos(a), sin(a));
-    (g, (-g.1, g.0))
+/// The ball–goal line as a frame: at the ball, x toward the aim point, y its left normal.
+fn line(ball: Point, aim: Point) -> Pose {
+    Pose::at(ball, ball.bearing_rad(aim))
 }
 
 /// The spot behind the ball on the ball–goal line, `extra` mm farther back than the gap.
 pub(crate) fn behind_spot(ball: Point, aim: Point, s: &Sizes, extra: f64) -> Point {
-    let (g, _) = line(ball, aim);
     let back = s.ball_r + s.front + s.gap + extra;
-    Point::new(ball.x_mm() - g.0 * back, ball.y_mm() - g.1 * back)
+    line(ball, aim).ahead(-back)
 }
 
 /// Is the way from `a` to `b` blocked by a disc of radius `r` at `c`? Only the interior of the
@@ -73,11 +70,14 @@ fn clamp_to_field(p: Point, field: &FieldGeometry, reach: f64) -> Point {
 
 /// Which way round the ball (+1: through the line's left-normal side, counter-clockwise). The robot's own side of the
 /// line; on the line, the side away from the nearer side line; on the centre line, left.
-fn detour_side(lateral: f64, ball: Point, n: (f64, f64), s: &Sizes) -> f64 {
+fn detour_side(lateral: f64, line: Pose, s: &Sizes) -> f64 {
+    let ball = line.point();
+    // The y of the line's left normal (−sin, cos) is the x of its direction.
+    let normal_y = line.heading().x;
     if lateral.abs() > 0.3 * s.ball_r {
         lateral.signum()
-    } else if ball.y_mm().abs() > 0.3 * s.ball_r && n.1.abs() > 1e-6 {
-        -ball.y_mm().signum() * n.1.signum()
+    } else if ball.y_mm().abs() > 0.3 * s.ball_r && normal_y.abs() > 1e-6 {
+        -ball.y_mm().signum() * normal_y.signum()
     } else {
         1.0
     }
@@ -87,11 +87,11 @@ fn detour_side(lateral: f64, ball: Point, n: (f64, f64), s: &Sizes) -> f64 {
 /// pushing while roughly behind the ball).
 pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, pushing: bool) -> Plan {
     let aim = aim_point(field);
-    let (g, n) = line(ball, aim);
-    let rel = (robot.x_mm() - ball.x_mm(), robot.y_mm() - ball.y_mm());
-    let along = rel.0 * g.0 + rel.1 * g.1;
-    let lateral = rel.0 * n.0 + rel.1 * n.1;
-    let goal_heading = ball.bearing_rad(aim);
+    let line = line(ball, aim);
+    // The robot in the line's frame: how far along it (negative: behind the ball), how far off.
+    let in_line_frame = line.robot_from_field(robot.point());
+    let (along, lateral) = (in_line_frame.x_mm(), in_line_frame.y_mm());
+    let goal_heading = line.theta_rad();
     let heading_err = wrap_angle_rad(goal_heading - robot.theta_rad());
     let contact = s.ball_r + s.front;
     // Behind the ball, on the line, facing the goal: push; looser once already pushing.
@@ -100,7 +100,7 @@ pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, p
     let on_line = lateral.abs() < k * 0.45 * s.ball_r.max(s.spot_tol);
     let facing = heading_err.abs() < k * s.face_tol_rad && robot.relative_bearing_rad(ball).abs() < k * s.face_tol_rad;
     if behind && on_line && facing {
-        return Plan::Push(Point::new(ball.x_mm() + g.0 * 2.0 * contact, ball.y_mm() + g.1 * 2.0 * contact));
+        return Plan::Push(line.ahead(2.0 * contact));
     }
     let spot = clamp_to_field(behind_spot(ball, aim, s, 0.0), field, s.reach);
     if robot.point().dist_mm(spot) < s.spot_tol {
@@ -111,14 +111,14 @@ pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, p
     if !blocked(robot.point(), spot, ball, clearance) {
         return Plan::GoTo(spot);
     }
-    let side = detour_side(lateral, ball, n, s);
+    let side = detour_side(lateral, line, s);
     let d = robot.point().dist_mm(ball);
     let away = robot.point().bearing_rad(ball) + PI;
     let target = if d <= 1.05 * clearance {
         // Too close: back off round the ball, a quarter turn ahead on the chosen side.
         // Counter-clockwise round the ball passes the left-normal side (+1).
         let a = away + side * 0.6;
-        Point::new(ball.x_mm() + 1.4 * clearance * cos(a), ball.y_mm() + 1.4 * clearance * sin(a))
+        Pose::at(ball, a).ahead(1.4 * clearance)
     } else {
         // Aim just outside the tangent to the clearance circle on the chosen side; as the
         // robot moves the tangent point slides round the ball until the spot is in view.
@@ -126,7 +126,7 @@ pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, p
         let alpha = (r / d).min(1.0).asin();
         let dir = robot.point().bearing_rad(ball) - side * alpha;
         let reach = (d * d - r * r).max(0.0).sqrt() + 0.5 * r;
-        Point::new(robot.x_mm() + reach * cos(dir), robot.y_mm() + reach * sin(dir))
+        Pose::at(robot.point(), dir).ahead(reach)
     };
     Plan::GoTo(clamp_to_field(target, field, s.reach))
 }

@@ -124,8 +124,9 @@ pub fn demonstrate(
 }
 
 /// Record `n_valid` valid demonstrations, the demonstrator lapsing at `lapse`. Attempt `i`
-/// runs with episode seed `derive_seed(seed, stream, i)` (whatever `lapse` is); invalid attempts are skipped, so the result is the first
-/// `n_valid` valid attempts in order: the same bits on any number of threads.
+/// runs with episode seed `derive_seed(seed, stream, i)` (whatever `lapse` is); invalid
+/// attempts are skipped, so the result is the first `n_valid` valid attempts in order: the
+/// same bits on any number of threads.
 ///
 /// # Errors
 /// A parameter error for an invalid config; `RetriesExhausted` if too many attempts lose

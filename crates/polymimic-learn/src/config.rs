@@ -245,3 +245,22 @@ impl LearningConfig {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_lp_switches_default_to_the_thesis_and_round_trip_through_json() {
+        let config = LearningConfig::default();
+        assert!(!config.hold_lp);
+        assert_eq!(config.imitator_weighting, ImitatorWeighting::Even);
+        let text = r#"{"hold_lp": true, "imitator_weighting": "lp"}"#;
+        let changed = LearningConfig::from_json(text).expect("a valid config");
+        assert!(changed.hold_lp && changed.imitator_weighting == ImitatorWeighting::Lp);
+        assert_eq!(LearningConfig { hold_lp: true, imitator_weighting: ImitatorWeighting::Lp, ..config }, changed);
+        assert_eq!(LearningConfig::from_json(&changed.to_json()), Ok(changed));
+        let refused = LearningConfig::from_json(r#"{"imitator_weighting": "lpp"}"#).unwrap_err().to_string();
+        assert!(refused.contains("lpp") && refused.contains("expected `even` or `lp`"), "{refused}");
+    }
+}

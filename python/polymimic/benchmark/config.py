@@ -33,10 +33,9 @@ from polymimic.reproduce.config import ConfigError, RunConfig, _checked, _in_ran
 __all__ = ["METHODS", "BenchmarkConfig", "BenchmarkSettings"]
 
 METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "bco", "bco_lp", "bc", "bc_best",
-           "random", "ppo")
-"""Every method a benchmark can compare (SPEC §6.2); ``ppo`` needs the ``rl`` extra."""
-
-DEFAULT_METHODS = METHODS[:-1]
+           "random")
+"""Every method a benchmark compares (SPEC §6.2). ``ppo``, which learns from the reward rather
+than from demonstrations, runs on its own (:mod:`polymimic.baselines.ppo`)."""
 
 TRIAL_INDEPENDENT = ("bc", "bco", "bc_best", "random")
 """Baselines that learn the same thing in every trial: the crowd's demonstrations, unweighted."""
@@ -51,14 +50,13 @@ class BenchmarkSettings:
     """How big a benchmark is, what it compares, and how hard every baseline is tuned."""
 
     profiles: tuple[str, ...] = _doc("the crowds to run, by name", tuple(PROFILES))
-    methods: tuple[str, ...] = _doc("the methods to compare", DEFAULT_METHODS)
+    methods: tuple[str, ...] = _doc("the methods to compare", METHODS)
     trials: int = _doc("learning trials per profile (seeds first_trial, first_trial + 1, …)", 20)
     demonstrations_per_configuration: int = _doc("valid demonstrations per member and field configuration", 25)
     attempts_per_configuration: int = _doc("evaluation attempts per method, trial and field configuration", 25)
     validation_attempts_per_configuration: int = _doc("tuning attempts per configuration (never evaluated)", 10)
-    tuning_budget: int = _doc("hyperparameter candidates tried per method and profile", 12)
+    tuning_budget: int = _doc("hyperparameter candidates tried per method and profile", 6)
     validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
-    ppo_steps: tuple[int, ...] = _doc("environment-step budgets at which ppo is evaluated", (100_000, 1_000_000))
     refit_baselines: bool = _doc("fit bc, bco, bc_best and random again for every trial's seed (their data are "
                                  "the same in every trial: by default they are fitted and evaluated once)", False)
 
@@ -67,7 +65,7 @@ class BenchmarkSettings:
                      "validation_attempts_per_configuration", "tuning_budget"):
             _in_range("benchmark", name, getattr(self, name), 1)
         _in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
-        for name in ("profiles", "methods", "ppo_steps"):
+        for name in ("profiles", "methods"):
             value = getattr(self, name)
             if not isinstance(value, (list, tuple)) or not value:
                 raise ConfigError(f"[benchmark] {name} must be a non-empty list, got {value!r}")
@@ -78,9 +76,6 @@ class BenchmarkSettings:
             if method not in METHODS:
                 raise ConfigError(f"[benchmark] methods: unknown method {method!r}; expected one of "
                                   f"{', '.join(METHODS)}")
-        for steps in self.ppo_steps:
-            if isinstance(steps, bool) or not isinstance(steps, int) or steps < 1:
-                raise ConfigError(f"[benchmark] ppo_steps must list positive integers, got {steps!r}")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -139,7 +134,7 @@ class BenchmarkConfig:
         the quick reproduction's recogniser."""
         full = cls()
         return dataclasses.replace(
-            full, run=_with_lp_weighting(RunConfig.quick()),
+            full, run=_with_lp_weighting(dataclasses.replace(RunConfig.quick(), experiments=full.run.experiments)),
             benchmark=dataclasses.replace(full.benchmark, trials=2, demonstrations_per_configuration=5,
                                           attempts_per_configuration=5, validation_attempts_per_configuration=3,
                                           tuning_budget=3))

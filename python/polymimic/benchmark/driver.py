@@ -153,7 +153,7 @@ class Benchmark:
     # 4. Tuning.
 
     def _baselines(self) -> list[str]:
-        return [m for m in self.config.benchmark.methods if m not in POLYMIMIC_METHODS and m != "ppo"]
+        return [m for m in self.config.benchmark.methods if m not in POLYMIMIC_METHODS]
 
     def tune(self, shared: Shared) -> int:
         first = self.config.seeds.first_trial
@@ -178,7 +178,7 @@ class Benchmark:
 
     def evaluation_jobs(self) -> list[tuple[str, str, int, str | None, dict[str, Any] | None]]:
         jobs: list[tuple[str, str, int, str | None, dict[str, Any] | None]] = []
-        methods = [m for m in self.config.benchmark.methods if m != "ppo"]
+        methods = self.config.benchmark.methods
         for crowd in self.config.crowds():
             for method in methods:
                 tuned = None if method in POLYMIMIC_METHODS else load_tuning(

@@ -125,7 +125,7 @@ def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd) -> Profil
         members[member.name] = MemberSummary(controller=member.controller, body=member.body, lapse=member.lapse,
                                              goals=goals, own_goals=own_goals, attempts=len(own),
                                              final_lp=mean_sd(lp[member.name] for lp in lps))
-    methods = [m for m in config.benchmark.methods if m != "ppo"]
+    methods = config.benchmark.methods
     return ProfileSummary(
         demonstrators=members, trials=len(trials), skill_recovery=recovery(lps, crowd),
         skill_by_outcomes=recovery([net] * len(trials), crowd),

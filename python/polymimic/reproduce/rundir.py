@@ -207,12 +207,13 @@ class RunHouse(Generic[ConfigT]):
         if self.path.exists() and any(p.name != _LOCK_NAME for p in self.path.iterdir()):
             raise RunError(f"{self.path} exists, is not empty and holds no manifest.json: not a run directory")
         config = config or self.config_type()
-        for folder in (self.datasets, self.models, self.plots):
-            folder.mkdir(parents=True, exist_ok=True)
-
+        # The manifest first: a run stopped before it is an empty directory, one stopped after it a run.
+        self.path.mkdir(parents=True, exist_ok=True)
         self._write({"format": self.manifest_format, "version": MANIFEST_VERSION, "polymimic_version": __version__,
                      "created": _now(), "config": config.to_dict(), "seeds": config.to_dict()["seeds"],
                      "stages": {}})
+        for folder in (self.datasets, self.models, self.plots):
+            folder.mkdir(parents=True, exist_ok=True)
         return config
 
     def manifest(self) -> dict[str, Any]:

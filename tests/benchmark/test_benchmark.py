@@ -157,3 +157,15 @@ def test_the_report_states_every_choice(benchmarked):
     text = (benchmarked / "benchmark.md").read_text()
     assert "## Targets" in text and "chosen on validation" in text
     assert "classifier=" in text
+
+
+def test_ray_gives_the_same_bits(benchmarked, tiny_toml, tmp_path):
+    pytest.importorskip("ray")
+    other = tmp_path / "ray"
+    methods = ["polymimic", "bco_lp", "random"]
+    assert main(["benchmark", "--config", str(tiny_toml), "--run-dir", str(other), "--quiet", "--backend", "ray",
+                 "--workers", "2", "--methods", *methods]) == 0
+    ours, theirs = _summary(benchmarked)["profiles"], _summary(other)["profiles"]
+    for profile in ours:
+        assert {m: ours[profile]["methods"][m] for m in methods} == theirs[profile]["methods"]
+        assert ours[profile]["skill_recovery"] == theirs[profile]["skill_recovery"]

@@ -28,7 +28,7 @@ def scripted(rule, *, seed, configuration=1, place=None, hold_frames=1, max_fram
         observation = np.array([*seen["robot"], *(seen["ball"] or (math.nan, math.nan))])
         episode.run([rule(observation)] * hold_frames)
     return polymimic.Demonstration(frames=as_frames(episode.frames), outcome=episode.outcome or "time_up",
-                                   demonstrator="scripted", configuration=configuration, seed=seed)
+                                   demonstrator="scripted", configuration=configuration, seed=seed, body="lego")
 
 
 def always_forward(observation):

@@ -76,9 +76,9 @@ def test_file_is_one_row_per_frame_with_versioned_metadata(tmp_path, demos):
     table = pq.read_table(path)
     assert table.num_rows == sum(len(d.frames) for d in demos)
     assert table.column_names == ["episode", *polymimic.field.FRAME_DTYPE.names, "demonstrator", "configuration",
-                                  "seed", "outcome"]
+                                  "seed", "outcome", "body"]
     header = json.loads(table.schema.metadata[b"polymimic"])
-    assert header["format"] == "polymimic.demonstrations" and header["version"] == 1
+    assert header["format"] == "polymimic.demonstrations" and header["version"] == 2
     assert table.column("episode").to_pylist()[-1] == len(demos) - 1
 
 
@@ -147,7 +147,7 @@ def rewrite(path, *, header=None, table=None):
 @pytest.mark.parametrize(
     "header, match",
     [
-        ({"format": "polymimic.demonstrations", "version": 2}, "is format version 2, written by a newer polymimic"),
+        ({"format": "polymimic.demonstrations", "version": 3}, "is format version 3, written by a newer polymimic"),
         ({"format": "polymimic.demonstrations", "version": 0}, "invalid format version 0"),
         ({"format": "polymimic.demonstrations", "version": "1"}, "invalid format version '1'"),
         ({"format": "polymimic.codebook", "version": 1}, "holds polymimic.codebook, not polymimic.demonstrations$"),

@@ -4,8 +4,10 @@ A decision sample is one frame's observation and its label, taken every
 :data:`SAMPLE_STRIDE_FRAMES` frames (any frame is a moment the policy may decide at); frames
 without a label give none. Where that would give more than :data:`MAX_DECISION_SAMPLES` (a
 crowd of ten members gives about 100 000), the stride widens evenly for every demonstration
-until it does not, so that a fit costs the same whatever the crowd's size. Each sample weighs its demonstrator's weight (1 unless a method
-says otherwise: ``bco_lp`` uses the LP), and, when the hyperparameters ask for balance, its
+until it does not, so that a fit costs the same whatever the crowd's size.
+
+Each sample weighs its demonstrator's weight (1 unless a method says otherwise: ``bco_lp`` uses
+the LP), and, when the hyperparameters ask for balance, its
 primitive's balancing weight too (every primitive's samples then weigh the same in total,
 scikit-learn's ``"balanced"`` rule on the weighted counts). Samples of weight 0 are dropped
 before fitting, so that a member weighted 0 is exactly a member left out.

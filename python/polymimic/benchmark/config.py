@@ -57,12 +57,14 @@ class BenchmarkSettings:
     validation_attempts_per_configuration: int = _doc("tuning attempts per configuration (never evaluated)", 10)
     tuning_budget: int = _doc("hyperparameter candidates tried per method and profile", 6)
     validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
+    lp_plugin_trials: int = _doc("trials after which bco_lp, refitted with each trial's LPs, is evaluated: the "
+                                 "first ones", 5)
     refit_baselines: bool = _doc("fit bc, bco, bc_best and random again for every trial's seed (their data are "
                                  "the same in every trial: by default they are fitted and evaluated once)", False)
 
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
-                     "validation_attempts_per_configuration", "tuning_budget"):
+                     "validation_attempts_per_configuration", "tuning_budget", "lp_plugin_trials"):
             _in_range("benchmark", name, getattr(self, name), 1)
         _in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
         for name in ("profiles", "methods"):
@@ -119,9 +121,12 @@ class BenchmarkConfig:
 
     def evaluated_seeds(self, method: str) -> list[int]:
         """The trials after which ``method`` is evaluated: every one, but only the first for a
-        baseline whose data no trial changes, unless ``refit_baselines``."""
-        once = method in TRIAL_INDEPENDENT and not self.benchmark.refit_baselines
-        return self.trial_seeds()[:1] if once else self.trial_seeds()
+        baseline whose data no trial changes (unless ``refit_baselines``), and the first
+        ``lp_plugin_trials`` for ``bco_lp``, a fit per trial."""
+        seeds = self.trial_seeds()
+        if method in TRIAL_INDEPENDENT and not self.benchmark.refit_baselines:
+            return seeds[:1]
+        return seeds[:self.benchmark.lp_plugin_trials] if method == "bco_lp" else seeds
 
     def crowds(self) -> list[Crowd]:
         """The crowds this benchmark runs, in its order."""

@@ -62,7 +62,10 @@ def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, floa
              f"every trial. Every baseline's hyperparameters were chosen among {sizes['tuning_budget']} candidates "
              f"on {2 * sizes['validation_attempts_per_configuration']} validation attempts (validation seed "
              f"{sizes['validation_seed']}, disjoint from the evaluation's); polymimic's methods use the thesis's "
-             "constants, untuned. Mean (sd) over trials.", ""]
+             "constants, untuned. bc, bco, bc_best and random learn the same data in every trial"
+             f"{': refitted with every trial' if sizes['refit_baselines'] else ', so they are fitted and evaluated once'}"
+             f"; bco_lp, which weighs by each trial's LPs, after each of the first {sizes['lp_plugin_trials']} "
+             "trials. Mean (sd) over the trials evaluated (the column `evaluated`).", ""]
     if seconds:
         lines += ["Time: " + ", ".join(f"{k} {v:.0f} s" for k, v in seconds.items())
                   + f"; {sum(seconds.values()):.0f} s in all.", ""]

@@ -14,6 +14,10 @@ from polymimic.reproduce.report import msd
 __all__ = ["benchmark_html", "benchmark_markdown"]
 
 
+def _refit(refit: bool) -> str:
+    return ": refitted with every trial" if refit else ", so they are fitted and evaluated once"
+
+
 def _verdict(met: bool | None) -> str:
     return {True: "met", False: "**missed**", None: "n/a"}[met]
 
@@ -63,7 +67,7 @@ def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, floa
              f"on {2 * sizes['validation_attempts_per_configuration']} validation attempts (validation seed "
              f"{sizes['validation_seed']}, disjoint from the evaluation's); polymimic's methods use the thesis's "
              "constants, untuned. bc, bco, bc_best and random learn the same data in every trial"
-             f"{': refitted with every trial' if sizes['refit_baselines'] else ', so they are fitted and evaluated once'}"
+             f"{_refit(sizes['refit_baselines'])}"
              f"; bco_lp, which weighs by each trial's LPs, after each of the first {sizes['lp_plugin_trials']} "
              "trials. Mean (sd) over the trials evaluated (the column `evaluated`).", ""]
     if seconds:

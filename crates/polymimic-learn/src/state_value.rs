@@ -152,7 +152,7 @@ mod tests {
         let weighted = StateValue::learn_weighted(&demos, &[1.0, 0.0], &Pitch::LARGE);
         assert_eq!(weighted.len(), 2);
         assert_eq!(weighted.estimate(&at(-300.0)), goal_only);
-        assert!((goal_only - (0.95 + 1.0) / 2.0).abs() < 1e-12);
+        assert!((goal_only - 1.95 / 2.0).abs() < 1e-12);
         // Weights 1 and ¼: (0.95 + 1 − ¼ (0.95 + 1)) / (2 + 2 · ¼) = 0.3 · 1.95.
         let quarter = StateValue::learn_weighted(&demos, &[1.0, 0.25], &Pitch::LARGE).estimate(&at(-300.0));
         assert!((quarter - 0.3 * 1.95).abs() < 1e-12, "{quarter}");

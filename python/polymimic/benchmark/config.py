@@ -26,9 +26,9 @@ import dataclasses
 import os
 from typing import Any
 
-from polymimic._toml import loads, write_table, write_value
+from polymimic._toml import write_table, write_value
 from polymimic.crowds import PROFILES, Crowd
-from polymimic.reproduce.config import ConfigError, RunConfig, _checked, _in_range, _table
+from polymimic.reproduce.config import ConfigError, RunConfig, _checked, _in_range, _table, read_config, toml_tables
 
 __all__ = ["METHODS", "BenchmarkConfig", "BenchmarkSettings"]
 
@@ -191,23 +191,11 @@ class BenchmarkConfig:
 
     @classmethod
     def from_toml(cls, text: str, *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
-        try:
-            data = loads(text)
-        except ValueError as error:
-            raise ConfigError(str(error)) from error
-        return cls.from_dict(data, base=base)
+        return cls.from_dict(toml_tables(text), base=base)
 
     @classmethod
     def load(cls, path: str | os.PathLike[str], *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
-        try:
-            with open(path, encoding="utf-8") as file:
-                text = file.read()
-        except OSError as error:
-            raise ConfigError(f"cannot read config {os.fspath(path)!r}: {error.strerror}") from error
-        try:
-            return cls.from_toml(text, base=base)
-        except ConfigError as error:
-            raise ConfigError(f"{os.fspath(path)}: {error}") from error
+        return read_config(path, lambda text: cls.from_toml(text, base=base))
 
 
 def _with_lp_weighting(run: RunConfig) -> RunConfig:

@@ -24,8 +24,8 @@ import dataclasses
 import json
 import math
 import os
-from collections.abc import Sequence
-from typing import Any
+from collections.abc import Callable, Sequence
+from typing import Any, TypeVar
 
 from polymimic._tables import Path, merged
 from polymimic._toml import loads, write_table
@@ -33,6 +33,9 @@ from polymimic.field import check_config, default_config
 from polymimic.learning import LearningConfig
 
 __all__ = ["ConfigError", "ExperimentSettings", "RecognizerSettings", "RunConfig", "SeedSettings", "SegmenterSettings"]
+
+
+Loaded = TypeVar("Loaded")
 
 
 class ConfigError(ValueError):
@@ -220,23 +223,32 @@ class RunConfig:
 
     @classmethod
     def from_toml(cls, text: str, *, base: RunConfig | None = None) -> RunConfig:
-        try:
-            data = loads(text)
-        except ValueError as error:
-            raise ConfigError(str(error)) from error
-        return cls.from_dict(data, base=base)
+        return cls.from_dict(toml_tables(text), base=base)
 
     @classmethod
     def load(cls, path: str | os.PathLike[str], *, base: RunConfig | None = None) -> RunConfig:
-        try:
-            with open(path, encoding="utf-8") as file:
-                text = file.read()
-        except OSError as error:
-            raise ConfigError(f"cannot read config {os.fspath(path)!r}: {error.strerror}") from error
-        try:
-            return cls.from_toml(text, base=base)
-        except ConfigError as error:
-            raise ConfigError(f"{os.fspath(path)}: {error}") from error
+        return read_config(path, lambda text: cls.from_toml(text, base=base))
+
+
+def toml_tables(text: str) -> dict[str, Any]:
+    """The tables of a config's TOML, a :class:`ConfigError` where it is not TOML."""
+    try:
+        return loads(text)
+    except ValueError as error:
+        raise ConfigError(str(error)) from error
+
+
+def read_config(path: str | os.PathLike[str], parse: Callable[[str], Loaded]) -> Loaded:
+    """The config ``parse`` makes of the file at ``path``; its errors name the file."""
+    try:
+        with open(path, encoding="utf-8") as file:
+            text = file.read()
+    except OSError as error:
+        raise ConfigError(f"cannot read config {os.fspath(path)!r}: {error.strerror}") from error
+    try:
+        return parse(text)
+    except ConfigError as error:
+        raise ConfigError(f"{os.fspath(path)}: {error}") from error
 
 
 def _table(section: str, value: Any) -> dict[str, Any]:

@@ -19,8 +19,10 @@ from polymimic._native import (
     ImpossibleSequenceError,
     ModelFileError,
     NotFittedError,
+    PolicyError,
     PolymimicError,
     PrimitiveRecognizer,
+    Reading,
     __version__,
 )
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
@@ -54,9 +56,11 @@ __all__ = [
     "ModelFileError",
     "ModelResult",
     "NotFittedError",
+    "PolicyError",
     "PolymimicError",
     "PrimitiveRecognizer",
     "PrimitiveSequence",
+    "Reading",
     "SegmentedDemonstrations",
     "TrialResult",
     "__version__",

@@ -15,6 +15,7 @@ class NotFittedError(PolymimicError): ...
 class ImpossibleSequenceError(PolymimicError): ...
 class ModelFileError(PolymimicError): ...
 class FieldRunError(PolymimicError): ...
+class PolicyError(PolymimicError): ...
 
 FRAME_COLUMNS: list[str]
 
@@ -196,6 +197,36 @@ def record_demonstrations(
 def record_self_observation(
     n_per_primitive: int, *, seed: int = 0, config: str | None = None
 ) -> tuple[list[npt.NDArray[np.float64]], list[str]]: ...
+def record_python_policy(
+    act: Any,
+    reset: Any,
+    *,
+    name: str,
+    body: str,
+    configuration: int,
+    n: int,
+    seed: int = 0,
+    decision_hz: float = 30.0,
+    timeout_s: float | None = None,
+    config: str | None = None,
+) -> list[dict[str, Any]]: ...
+def record_builtin_at_rate(
+    demonstrator: str, *, configuration: int, n: int, seed: int = 0, decision_hz: float = 30.0
+) -> list[int]: ...
+
+class Reading:
+    t_s: float
+    frame: int
+    robot_x_mm: float
+    robot_y_mm: float
+    robot_theta_rad: float
+    ball_x_mm: float
+    ball_y_mm: float
+    field_length_mm: float
+    field_width_mm: float
+    @property
+    def ball_seen(self) -> bool: ...
+
 def commands() -> list[dict[str, Any]]: ...
 def thesis_table_3_1() -> dict[str, dict[str, float]]: ...
 def default_field_config() -> str: ...

@@ -27,6 +27,7 @@ import numpy as np
 from polymimic import _native
 from polymimic._arguments import integer, probability
 from polymimic._tables import Path, merged
+from polymimic.policies import policy_parts
 
 FRAME_DTYPE = np.dtype([
     ("t_s", "f8"),
@@ -185,44 +186,92 @@ def _field_config(config: Mapping[str, Any] | str | None) -> str | None:
     return None if config is None else json.dumps(check_config(config))
 
 
-def record(demonstrator: str, *, configuration: int, n: int, seed: int = 0, lapse: float = 0.0,
-           config: dict[str, Any] | str | None = None) -> list[Demonstration]:
+def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0, lapse: float = 0.0,
+           config: dict[str, Any] | str | None = None, body: str | None = None, name: str | None = None,
+           decision_hz: float | None = None, timeout_s: float | None = 10.0) -> list[Demonstration]:
     """``n`` valid demonstrations of ``demonstrator`` from field ``configuration`` (1 or 2).
 
-    Episodes run in parallel in Rust with the GIL released; a demonstration whose tracking was
-    lost is discarded and replaced, deterministically. ``seed`` is any integer in
-    ``[0, 2**64)``. ``config`` overrides the field configuration (see :func:`default_config`).
+    ``demonstrator`` is a built-in's name (one of :data:`DEMONSTRATORS`) or a Python policy of
+    your own (see :mod:`polymimic.policies`). A demonstration whose tracking was lost is
+    discarded and replaced, deterministically. ``seed`` is any integer in ``[0, 2**64)``.
+    ``config`` overrides the field configuration (see :func:`default_config`).
 
-    ``lapse`` is the demonstrator's lapse rate ε in [0, 1] (SPEC §6.1), a skill set by design:
-    at the start of every second of an episode (tracker frames 0, 30, 60, …), with probability
-    ε, the demonstrator spends that second on one uniformly random primitive instead of its
-    controller's commands (on the humanoid, which takes no primitives, the equivalent walk
-    forward or backward, turn left or right, or wait), then its controller takes over again.
-    The frames record the commands actually sent. The lapses are drawn from a random stream of
-    their own under each episode's seed, so the same ``seed`` gives the same lapses, the
-    episodes keep their seeds at every ε, and ``lapse=0.0`` is the controller's own
-    demonstrations, bit for bit.
+    Built-in demonstrators run in parallel in Rust with the GIL released. ``lapse`` is their
+    lapse rate ε in [0, 1] (SPEC §6.1), a skill set by design: at the start of every second of
+    an episode (tracker frames 0, 30, 60, …), with probability ε, the demonstrator spends that
+    second on one uniformly random primitive instead of its controller's commands (on the
+    humanoid, which takes no primitives, the equivalent walk forward or backward, turn left or
+    right, or wait), then its controller takes over again. The frames record the commands
+    actually sent. The lapses are drawn from a random stream of their own under each episode's
+    seed, so the same ``seed`` gives the same lapses, the episodes keep their seeds at every ε,
+    and ``lapse=0.0`` is the controller's own demonstrations, bit for bit.
 
     >>> sloppy = record("expert", configuration=1, n=1, seed=3, lapse=1.0)
     >>> bool((sloppy[0].frames["command"] <= 4).all())  # primitives only; the Expert's own are 100 up
     True
 
+    A Python policy drives ``body`` (one of :data:`BODY_NAMES`) on the Rust field, its
+    episodes one after the other; the GIL is held only while it is called. Its demonstrations
+    carry ``name``, and a policy that takes longer than ``timeout_s`` seconds over one decision
+    (``None``: no limit) is interrupted.
+
+    >>> import math
+    >>> def chase(reading):  # turn toward the ball, then drive at it
+    ...     bearing = math.atan2(reading.ball_y_mm - reading.robot_y_mm, reading.ball_x_mm - reading.robot_x_mm)
+    ...     error = math.remainder(bearing - reading.robot_theta_rad, math.tau)
+    ...     return "forward" if abs(error) < 0.3 else ("left" if error > 0 else "right")
+    >>> mine = record(chase, body="lego", name="chaser", configuration=1, n=2, seed=3, decision_hz=10)
+    >>> [(d.demonstrator, d.body) for d in mine]
+    [('chaser', 'lego'), ('chaser', 'lego')]
+
     Raises
     ------
     ValueError
         For an unknown demonstrator, a configuration other than 1 or 2, ``n`` below 1, a seed
-        outside ``[0, 2**64)`` or a ``lapse`` that is not a number in [0, 1].
+        outside ``[0, 2**64)``, a ``lapse`` that is not a number in [0, 1]; for a policy, a
+        missing body or name, or a ``decision_hz`` that does not divide 30.
     TypeError
-        For a configuration, ``n`` or seed that is not an integer.
+        For a configuration, ``n`` or seed that is not an integer, or a demonstrator that is
+        neither a name nor a policy.
+    polymimic.PolicyError
+        When a policy raises (its exception is the cause), answers with something that is not a
+        command its body executes, or does not answer within ``timeout_s``; the message names
+        the policy, the attempt, its seed and the episode time.
     """
-    if demonstrator not in DEMONSTRATORS:
-        raise ValueError(f"unknown demonstrator {demonstrator!r}; expected one of {', '.join(DEMONSTRATORS)}")
     configuration, n = integer("configuration", configuration, 1, 2), integer("n", n, 1)
-    raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n,
-                                        seed=integer("seed", seed, 0, 2**64 - 1),
-                                        lapse=probability("lapse", lapse), config=_field_config(config))
+    seed, lapse = integer("seed", seed, 0, 2**64 - 1), probability("lapse", lapse)
+    if not isinstance(demonstrator, str):
+        return _record_policy(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse, config=config,
+                              body=body, name=name, decision_hz=decision_hz, timeout_s=timeout_s)
+    if demonstrator not in DEMONSTRATORS:
+        raise ValueError(f"unknown demonstrator {demonstrator!r}; expected one of {', '.join(DEMONSTRATORS)} "
+                         f"or a Python policy")
+    for keyword, value in (("body", body), ("name", name), ("decision_hz", decision_hz)):
+        if value is not None:
+            raise ValueError(f"{keyword}= is for a Python policy; the built-in {demonstrator!r} has its own")
+    raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse,
+                                        config=_field_config(config))
     return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=d["demonstrator"],
                           configuration=d["configuration"], seed=d["seed"]) for d in raw]
+
+
+def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse: float,
+                   config: dict[str, Any] | str | None, body: str | None, name: str | None,
+                   decision_hz: float | None, timeout_s: float | None) -> list[Demonstration]:
+    parts = policy_parts(policy, decision_hz=decision_hz, name=name, reserved=tuple(BODIES))
+    if body not in BODY_NAMES:
+        raise ValueError(f"a Python demonstrator needs its body: body= one of {', '.join(BODY_NAMES)}; got {body!r}")
+    if lapse != 0.0:
+        raise ValueError("lapse= is for the built-in demonstrators; a Python policy lapses as it is written to")
+    if timeout_s is not None and (isinstance(timeout_s, bool) or not isinstance(timeout_s, (int, float))
+                                  or not 0 < timeout_s < math.inf):
+        raise ValueError(f"timeout_s must be a positive number of seconds or None, got {timeout_s!r}")
+    raw = _native.record_python_policy(parts.act, parts.reset, name=parts.name, body=body, configuration=configuration,
+                                       n=n, seed=seed, decision_hz=parts.decision_hz,
+                                       timeout_s=None if timeout_s is None else float(timeout_s),
+                                       config=_field_config(config))
+    return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=parts.name,
+                          configuration=d["configuration"], seed=d["seed"], body=body) for d in raw]
 
 
 def self_observation(n_per_primitive: int, *, seed: int = 0,

@@ -52,6 +52,7 @@ mod error;
 mod geometry;
 mod math;
 mod physics;
+mod policy;
 mod record;
 mod setup;
 mod stats;
@@ -67,6 +68,10 @@ pub use error::{FieldError, FieldParamError};
 pub use geometry::{FieldGeometry, FieldSize};
 pub use math::derive_seed;
 pub use physics::BallParams;
+pub use policy::{
+    ControllerPolicy, DecisionRate, EpisodeStart, Policy, PolicyFailure, PolicyFault, PolicyRecording,
+    demonstrate_policy, policy_episode_seed, record_policy,
+};
 /// The domain types the field shares with every crate, re-exported for the field's users.
 pub use polymimic_types::{MotionStats, Point, Pose, Primitive, TrackedFrame, wrap_angle_rad};
 pub use record::{PrimitiveSequence, run_controller, self_observation, self_observation_batch};

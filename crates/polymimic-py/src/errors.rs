@@ -71,6 +71,13 @@ create_exception!(
     "A simulation could not run: a finished episode stepped, a command the body cannot execute, too many lost recordings."
 );
 
+create_exception!(
+    polymimic,
+    PolicyError,
+    PolymimicError,
+    "A Python demonstrator failed: it raised (its exception is the cause), answered with something that is not a command of its body, or did not answer in time."
+);
+
 #[allow(clippy::needless_pass_by_value)] // used as `map_err(field_param_error)`
 pub fn field_param_error(error: FieldParamError) -> PyErr {
     PyValueError::new_err(error.to_string())

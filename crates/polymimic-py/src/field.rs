@@ -3,15 +3,16 @@
 
 use numpy::{PyArray1, PyArray2};
 use polymimic_field::{
-    BodyKind, Command, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, LapseRate,
-    THESIS_TABLE_3_1, command_table, record, self_observation,
+    BodyKind, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, LapseRate, THESIS_TABLE_3_1,
+    command_table, record, self_observation,
 };
-use polymimic_types::{Pose, Primitive};
+use polymimic_types::Pose;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use std::sync::Mutex;
 
+use crate::command::parse_command;
 use crate::convert::{Seed, matrix, non_negative};
 use crate::errors::{field_error, field_param_error};
 
@@ -51,7 +52,7 @@ pub(crate) fn configuration_number(configuration: Configuration) -> u8 {
     }
 }
 
-fn body(name: &str) -> PyResult<BodyKind> {
+pub(crate) fn body(name: &str) -> PyResult<BodyKind> {
     match name {
         "lego" => Ok(BodyKind::Lego),
         "tiny" => Ok(BodyKind::Tiny),
@@ -60,7 +61,7 @@ fn body(name: &str) -> PyResult<BodyKind> {
     }
 }
 
-fn positive(name: &str, value: i64) -> PyResult<usize> {
+pub(crate) fn positive(name: &str, value: i64) -> PyResult<usize> {
     match non_negative(name, value)? {
         0 => Err(PyValueError::new_err(format!("{name} must be at least 1, got 0"))),
         n => Ok(n),
@@ -160,24 +161,6 @@ pub fn check_field_config(config: &str) -> PyResult<String> {
     Ok(field_config(Some(config))?.to_json())
 }
 
-/// A primitive name or a command id (see `commands()`).
-fn parse_command(command: &Bound<'_, PyAny>) -> PyResult<Command> {
-    if let Ok(name) = command.extract::<String>() {
-        return Primitive::from_name(&name).map(Command::Primitive).ok_or_else(
-            || {
-                PyValueError::new_err(format!(
-                    "unknown command {name:?}; expected a primitive name (forward, backward, left, right, stop) or a command id"
-                ))
-            },
-        );
-    }
-    let id: i64 = command
-        .extract()
-        .map_err(|_| PyValueError::new_err("command must be a primitive name or an integer command id"))?;
-    let id = u16::try_from(id).map_err(|_| PyValueError::new_err(format!("unknown command id {id}")))?;
-    Command::from_id(id).map_err(|e| PyValueError::new_err(e.to_string()))
-}
-
 /// An episode on the field, stepped one tracker frame at a time by a policy.
 #[pyclass(name = "Episode", module = "polymimic", frozen)]
 pub struct PyEpisode {
@@ -209,23 +192,13 @@ impl PyEpisode {
     }
 
     /// Sends one command for one tracker frame; returns the frame recorded and the outcome
-    /// (None while the episode goes on). `command` is a primitive name or a command id.
+    /// (None while the episode goes on). `command` is a primitive name, a command name or id.
     fn step<'py>(
         &self,
         py: Python<'py>,
         command: &Bound<'py, PyAny>,
     ) -> PyResult<(Bound<'py, PyArray1<f64>>, Option<&'static str>)> {
-        let command = if let Ok(name) = command.extract::<String>() {
-            Primitive::from_name(&name)
-                .map(Command::Primitive)
-                .ok_or_else(|| PyValueError::new_err(format!("unknown command {name:?}; expected a primitive name (forward, backward, left, right, stop) or a command id")))?
-        } else {
-            let id: i64 = command
-                .extract()
-                .map_err(|_| PyValueError::new_err("command must be a primitive name or an integer command id"))?;
-            let id = u16::try_from(id).map_err(|_| PyValueError::new_err(format!("unknown command id {id}")))?;
-            Command::from_id(id).map_err(|e| PyValueError::new_err(e.to_string()))?
-        };
+        let command = parse_command(command)?;
         let result = self.with(|e| e.step(command)).map_err(field_error)?;
         Ok((
             PyArray1::from_vec(py, frame_row(&result.frame).to_vec()),

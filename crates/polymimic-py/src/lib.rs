@@ -1,6 +1,7 @@
 //! Python bindings of polymimic: conversions and error mapping only; the algorithms live in
 //! the core crates.
 
+mod command;
 mod convert;
 mod errors;
 mod field;
@@ -8,7 +9,9 @@ mod field_batch;
 mod hmm;
 mod learn;
 mod perceive;
+mod policy;
 mod vq;
+mod watchdog;
 
 use pyo3::prelude::*;
 
@@ -34,6 +37,8 @@ mod _native {
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;
     #[pymodule_export]
+    use super::policy::{PyReading, record_builtin_at_rate, record_python_policy};
+    #[pymodule_export]
     use super::vq::PyCodebook;
 
     #[pymodule_init]
@@ -44,6 +49,7 @@ mod _native {
         m.add("ImpossibleSequenceError", errors::ImpossibleSequenceError::type_object(py))?;
         m.add("ModelFileError", errors::ModelFileError::type_object(py))?;
         m.add("FieldRunError", errors::FieldRunError::type_object(py))?;
+        m.add("PolicyError", errors::PolicyError::type_object(py))?;
         m.add("FRAME_COLUMNS", super::field::FRAME_COLUMNS.to_vec())?;
         m.add("__version__", env!("CARGO_PKG_VERSION"))?;
         Ok(())

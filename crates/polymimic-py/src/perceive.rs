@@ -56,7 +56,8 @@ fn representations(name: &str) -> PyResult<(Representation, Representation)> {
 
 /// The segmenter's keywords, in the order a signature would list them; each one left out takes
 /// `SegmenterConfig::default()`, the defaults' one home.
-const SEGMENTER_KEYWORDS: [&str; 5] = ["min_frames", "stop_distance_mm", "stop_rotation_deg", "limit_sds", "gap_margin"];
+const SEGMENTER_KEYWORDS: [&str; 5] =
+    ["min_frames", "stop_distance_mm", "stop_rotation_deg", "limit_sds", "gap_margin"];
 
 /// The segmenter's settings as `segment` and `segment_many` take them (`**settings`), read the
 /// way pyo3 reads a signature: an unknown keyword is a `TypeError` naming it, then each value's

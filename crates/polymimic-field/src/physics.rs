@@ -276,7 +276,9 @@ mod tests {
 
     #[test]
     fn the_wobble_turns_the_velocity_as_the_field_always_did() {
-        for (turn, v) in [(0.01, Vector::new(250.0, -3.5)), (-0.3, Vector::new(-17.25, 99.0)), (2.0, Vector::new(1.5, 0.0))] {
+        for (turn, v) in
+            [(0.01, Vector::new(250.0, -3.5)), (-0.3, Vector::new(-17.25, 99.0)), (2.0, Vector::new(1.5, 0.0))]
+        {
             let (s, c) = (libm::sin(turn) as f32, libm::cos(turn) as f32);
             let by_hand = Vector::new(c * v.x - s * v.y, s * v.x + c * v.y);
             let t = turned(v, turn);

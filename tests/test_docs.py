@@ -42,3 +42,17 @@ MODULES = [polymimic] + [
 def test_docstring_examples(module):
     result = doctest.testmod(module, optionflags=doctest.ELLIPSIS)
     assert result.failed == 0
+
+
+def test_readme_body_table_is_a_body():
+    """The README's [bodies.<name>] example reads as the body its comments describe."""
+    from polymimic._toml import loads
+    from polymimic.bodies import bodies_from_tables
+
+    blocks = [b.split("```", 1)[0] for b in README.read_text().split("```toml\n")[1:]]
+    tables = [loads(b) for b in blocks if "[bodies." in b]
+    assert tables, "the README shows a body table"
+    for table in tables:
+        for name, body in bodies_from_tables(table["bodies"]).items():
+            assert body.primitives_mm_s["forward"] == (60.0, 58.0), name
+            assert body.primitives_mm_s["backward"] == (-60.0, -60.0), "the others derived from the top speed"

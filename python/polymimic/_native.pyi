@@ -2,7 +2,7 @@
 
 import os
 from collections.abc import Iterable, Iterator, Mapping, Sequence
-from typing import Any, Literal, Self, final
+from typing import Any, Literal, Protocol, Self, final
 
 import numpy as np
 import numpy.typing as npt
@@ -21,6 +21,11 @@ FRAME_COLUMNS: list[str]
 
 _Symbols = npt.ArrayLike
 _Path = str | os.PathLike[str]
+
+class _NativeBody(Protocol):
+    def _native_body(self) -> tuple[str, str]: ...
+
+_Body = str | _NativeBody
 
 @final
 class DiscreteHMM:
@@ -192,8 +197,16 @@ class PrimitiveRecognizer:
     def __reduce__(self) -> tuple[Any, tuple[str]]: ...
 
 def record_demonstrations(
-    demonstrator: str, *, configuration: int, n: int, seed: int = 0, lapse: float = 0.0, config: str | None = None
+    demonstrator: str,
+    *,
+    configuration: int,
+    n: int,
+    seed: int = 0,
+    lapse: float = 0.0,
+    config: str | None = None,
+    body: _Body | None = None,
 ) -> list[dict[str, Any]]: ...
+def thesis_wheeled_bodies() -> list[tuple[str, str]]: ...
 def record_self_observation(
     n_per_primitive: int, *, seed: int = 0, config: str | None = None
 ) -> tuple[list[npt.NDArray[np.float64]], list[str]]: ...
@@ -202,7 +215,7 @@ def record_python_policy(
     reset: Any,
     *,
     name: str,
-    body: str,
+    body: _Body,
     configuration: int,
     n: int,
     seed: int = 0,
@@ -247,7 +260,7 @@ class EpisodeBatch:
 @final
 class Episode:
     def __new__(
-        cls, body: str = "lego", *, configuration: int | None = 1, seed: int = 0, config: str | None = None
+        cls, body: _Body = "lego", *, configuration: int | None = 1, seed: int = 0, config: str | None = None
     ) -> Episode: ...
     def step(self, command: str | int) -> tuple[npt.NDArray[np.float64], str | None]: ...
     def run(self, commands: list[str | int]) -> tuple[npt.NDArray[np.float64], str | None]: ...

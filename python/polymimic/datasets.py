@@ -39,7 +39,7 @@ import numpy as np
 from polymimic import _native
 from polymimic._atomic import atomic_path
 from polymimic._native import ModelFileError
-from polymimic.field import BODY_NAMES, FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, PrimitiveSequence
+from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, PrimitiveSequence
 
 __all__ = ["load_demonstrations", "load_self_observation", "save_demonstrations", "save_self_observation"]
 
@@ -135,7 +135,7 @@ def load_demonstrations(path: str | os.PathLike[str]) -> list[Demonstration]:
     _check_values(meta["outcome"], OUTCOMES, "outcome", path)
     _check_values(meta["configuration"], (1, 2), "configuration", path)
     if "body" in meta:
-        _check_values(meta["body"], BODY_NAMES, "body", path)
+        _check_names(meta["body"], "body", path)
     frames = _frames(columns)
     try:
         return [Demonstration(frames=frames[a:b].copy(), outcome=str(meta["outcome"][i]),
@@ -330,6 +330,13 @@ def _per_group(columns: dict[str, np.ndarray], name: str, starts: np.ndarray, st
     if len(values) and not (values == np.repeat(first, stops - starts)).all():
         raise ModelFileError(f"{os.fspath(where)} has a {name!r} that changes within one {group}")
     return first
+
+
+def _check_names(values: np.ndarray, name: str, where: str | os.PathLike[str]) -> None:
+    """Every value a name (a word of letters, digits and _): a body's, a demonstrator's."""
+    for value in values:
+        if not isinstance(value, str) or not value.isidentifier():
+            raise ModelFileError(f"{os.fspath(where)}: column {name!r} holds {value!r}; expected a name")
 
 
 def _check_values(values: np.ndarray, allowed: tuple[Any, ...], name: str, where: str | os.PathLike[str]) -> None:

@@ -27,6 +27,7 @@ import numpy as np
 from polymimic import _native
 from polymimic._arguments import integer, probability
 from polymimic._tables import Path, merged
+from polymimic.bodies import WheeledBody, body_name, native_body
 from polymimic.policies import policy_parts
 
 FRAME_DTYPE = np.dtype([
@@ -68,9 +69,10 @@ BODY_NAMES = ("lego", "tiny", "humanoid")
 class Demonstration:
     """One recorded attempt at a penalty kick.
 
-    ``body`` is the demonstrator's body (one of :data:`BODY_NAMES`); left empty, it is the body
-    :func:`body_of` knows for ``demonstrator``, so a demonstrator of another name (a crowd's
-    member, your own) names its body.
+    ``body`` is the demonstrator's body's name (one of :data:`BODY_NAMES`, or a
+    :class:`polymimic.bodies.WheeledBody`'s); left empty, it is the body :func:`body_of` knows
+    for ``demonstrator``, so a demonstrator of another name (a crowd's member, your own) names
+    its body.
 
     >>> import numpy as np
     >>> frames = np.zeros(2, dtype=FRAME_DTYPE)
@@ -97,9 +99,9 @@ class Demonstration:
                 raise ValueError(f"unknown demonstrator {self.demonstrator!r}: give its body (one of "
                                  f"{', '.join(BODY_NAMES)}) with body=")
             object.__setattr__(self, "body", BODIES[self.demonstrator])
-        elif self.body not in BODY_NAMES:
-            raise ValueError(f"demonstration of {self.demonstrator!r} has body {self.body!r}; expected one of "
-                             f"{', '.join(BODY_NAMES)}")
+        elif not isinstance(self.body, str) or not self.body.isidentifier():
+            raise ValueError(f"demonstration of {self.demonstrator!r} has body {self.body!r}; expected a body's name "
+                             f"(one of {', '.join(BODY_NAMES)} or a polymimic.bodies.WheeledBody's)")
 
     def __repr__(self) -> str:
         return (f"Demonstration({self.demonstrator}, configuration={self.configuration}, "
@@ -187,7 +189,7 @@ def _field_config(config: Mapping[str, Any] | str | None) -> str | None:
 
 
 def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0, lapse: float = 0.0,
-           config: dict[str, Any] | str | None = None, body: str | None = None, name: str | None = None,
+           config: dict[str, Any] | str | None = None, body: str | WheeledBody | None = None, name: str | None = None,
            decision_hz: float | None = None, timeout_s: float | None = 10.0) -> list[Demonstration]:
     """``n`` valid demonstrations of ``demonstrator`` from field ``configuration`` (1 or 2).
 
@@ -210,7 +212,12 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     >>> bool((sloppy[0].frames["command"] <= 4).all())  # primitives only; the Expert's own are 100 up
     True
 
-    A Python policy drives ``body`` (one of :data:`BODY_NAMES`) on the Rust field, its
+    ``body`` puts a built-in controller on another body (one of :data:`BODY_NAMES` or a
+    :class:`polymimic.bodies.WheeledBody`: Poor's and Tiny's primitives drive any wheeled body,
+    the Expert's wheel speeds one that takes them, the humanoid's only the humanoid), and
+    ``name`` names the demonstrations (the demonstrator's own name by default).
+
+    A Python policy drives ``body`` on the Rust field, its
     episodes one after the other; the GIL is held only while it is called. Its demonstrations
     carry ``name``, and a policy that takes longer than ``timeout_s`` seconds over one decision
     (``None``: no limit) is interrupted.
@@ -246,32 +253,51 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     if demonstrator not in DEMONSTRATORS:
         raise ValueError(f"unknown demonstrator {demonstrator!r}; expected one of {', '.join(DEMONSTRATORS)} "
                          f"or a Python policy")
-    for keyword, value in (("body", body), ("name", name), ("decision_hz", decision_hz)):
-        if value is not None:
-            raise ValueError(f"{keyword}= is for a Python policy; the built-in {demonstrator!r} has its own")
+    if decision_hz is not None:
+        raise ValueError(f"decision_hz= is for a Python policy; the built-in {demonstrator!r} decides every frame")
+    if body is not None:
+        _check_body(body)
     raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse,
-                                        config=_field_config(config))
-    return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=d["demonstrator"],
-                          configuration=d["configuration"], seed=d["seed"]) for d in raw]
+                                        config=_field_config(config),
+                                        body=None if body is None else native_body(body))
+    who = demonstrator if name is None else _own_name(name)
+    return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=who,
+                          configuration=d["configuration"], seed=d["seed"],
+                          body="" if body is None else body_name(body)) for d in raw]
+
+
+def _check_body(body: Any) -> None:
+    if not isinstance(body, WheeledBody) and body not in BODY_NAMES:
+        raise ValueError(f"body must be one of {', '.join(BODY_NAMES)} or a polymimic.bodies.WheeledBody; "
+                         f"got {body!r}")
+
+
+def _own_name(name: Any) -> str:
+    if not isinstance(name, str) or not name.isidentifier():
+        raise ValueError(f"name must be a word of letters, digits and _, got {name!r}")
+    return name
 
 
 def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse: float,
-                   config: dict[str, Any] | str | None, body: str | None, name: str | None,
+                   config: dict[str, Any] | str | None, body: str | WheeledBody | None, name: str | None,
                    decision_hz: float | None, timeout_s: float | None) -> list[Demonstration]:
     parts = policy_parts(policy, decision_hz=decision_hz, name=name, reserved=tuple(BODIES))
-    if body not in BODY_NAMES:
-        raise ValueError(f"a Python demonstrator needs its body: body= one of {', '.join(BODY_NAMES)}; got {body!r}")
+    if body is None:
+        raise ValueError(f"a Python demonstrator needs its body: body= one of {', '.join(BODY_NAMES)} or a "
+                         f"polymimic.bodies.WheeledBody")
+    _check_body(body)
     if lapse != 0.0:
         raise ValueError("lapse= is for the built-in demonstrators; a Python policy lapses as it is written to")
     if timeout_s is not None and (isinstance(timeout_s, bool) or not isinstance(timeout_s, (int, float))
                                   or not 0 < timeout_s < math.inf):
         raise ValueError(f"timeout_s must be a positive number of seconds or None, got {timeout_s!r}")
-    raw = _native.record_python_policy(parts.act, parts.reset, name=parts.name, body=body, configuration=configuration,
+    raw = _native.record_python_policy(parts.act, parts.reset, name=parts.name, body=native_body(body),
+                                       configuration=configuration,
                                        n=n, seed=seed, decision_hz=parts.decision_hz,
                                        timeout_s=None if timeout_s is None else float(timeout_s),
                                        config=_field_config(config))
     return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=parts.name,
-                          configuration=d["configuration"], seed=d["seed"], body=body) for d in raw]
+                          configuration=d["configuration"], seed=d["seed"], body=body_name(body)) for d in raw]
 
 
 def self_observation(n_per_primitive: int, *, seed: int = 0,

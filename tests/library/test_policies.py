@@ -181,8 +181,8 @@ def test_a_policy_that_hangs_is_interrupted_after_its_timeout():
 @pytest.mark.parametrize(("kwargs", "error", "message"), [
     ({"body": "lego"}, ValueError, r"needs a name: record\(policy, name=\.\.\.\)"),
     ({"body": "lego", "name": "expert"}, ValueError, r"name 'expert' is a built-in demonstrator's"),
-    ({"name": "x"}, ValueError, r"needs its body: body= one of lego, tiny, humanoid; got None"),
-    ({"name": "x", "body": "wheelie"}, ValueError, r"got 'wheelie'"),
+    ({"name": "x"}, ValueError, r"needs its body: body= one of lego, tiny, humanoid or a polymimic.bodies.WheeledBody"),
+    ({"name": "x", "body": "wheelie"}, ValueError, r"body must be one of .* got 'wheelie'"),
     ({"name": "x", "body": "lego", "decision_hz": 7}, ValueError, r"decision_hz must divide .* got 7"),
     ({"name": "x", "body": "lego", "decision_hz": 60}, ValueError, r"got 60"),
     ({"name": "x", "body": "lego", "lapse": 0.2}, ValueError, r"lapse= is for the built-in demonstrators"),
@@ -197,7 +197,9 @@ def test_bad_policy_arguments_are_refused_by_name(kwargs, error, message):
 def test_neither_a_name_nor_a_policy_is_refused():
     with pytest.raises(TypeError, match=r"a built-in's name, a callable .* got 42"):
         record(42, body="lego", name="x", configuration=1, n=1)
-    with pytest.raises(ValueError, match=r"body= is for a Python policy; the built-in 'expert' has its own"):
+    with pytest.raises(ValueError, match=r"the expert controller cannot drive the tiny body"):
         record("expert", body="tiny", configuration=1, n=1)
+    with pytest.raises(ValueError, match=r"decision_hz= is for a Python policy; the built-in 'poor' decides every"):
+        record("poor", decision_hz=10, configuration=1, n=1)
     with pytest.raises(ValueError, match=r"unknown demonstrator 'expret'"):
         record("expret", configuration=1, n=1)

@@ -75,6 +75,19 @@ impl Demonstrator {
         }
     }
 
+    /// Whether its controller can drive `body`: the humanoid's only the humanoid, the Expert's
+    /// wheel speeds a wheeled body that takes them, Poor's and Tiny's primitives any wheeled one.
+    #[must_use]
+    pub const fn can_drive(self, body: BodyKind) -> bool {
+        match (self, body) {
+            (Demonstrator::Humanoid, b) => matches!(b, BodyKind::Humanoid),
+            (Demonstrator::Expert, BodyKind::Lego) => true,
+            (Demonstrator::Expert, BodyKind::Wheeled(params, _)) => params.accepts_expert_commands,
+            (Demonstrator::Expert, _) => false,
+            (Demonstrator::Poor | Demonstrator::Tiny, b) => b.is_wheeled(),
+        }
+    }
+
     const fn stream(self, configuration: Configuration) -> u64 {
         100 + 10 * self as u64 + configuration.number() as u64
     }
@@ -113,7 +126,29 @@ pub fn demonstrate(
     lapse: LapseRate,
     config: &FieldConfig,
 ) -> Result<Demonstration, FieldError> {
-    let setup = EpisodeSetup::configuration(demonstrator.body(), configuration, config);
+    demonstrate_on(demonstrator, demonstrator.body(), configuration, seed, lapse, config)
+}
+
+/// [`demonstrate`] with the demonstrator's controller on another body (SPEC §6.4), which it
+/// must be able to drive ([`Demonstrator::can_drive`]).
+///
+/// # Errors
+/// `ControllerNotSupported` for a body the controller cannot drive; a parameter error for an
+/// invalid config.
+pub fn demonstrate_on(
+    demonstrator: Demonstrator,
+    body: BodyKind,
+    configuration: Configuration,
+    seed: u64,
+    lapse: LapseRate,
+    config: &FieldConfig,
+) -> Result<Demonstration, FieldError> {
+    if !demonstrator.can_drive(body) {
+        return Err(
+            FieldParamError::ControllerNotSupported { controller: demonstrator.name(), body: body.name() }.into()
+        );
+    }
+    let setup = EpisodeSetup::configuration(body, configuration, config);
     let mut episode = Episode::new(&setup, config, seed)?;
     let mut controller = Lapsing::new(demonstrator.controller(), lapse, seed);
     let max_frames = (config.time_limit_s * f64::from(FRAME_RATE_HZ)).ceil() as usize + 1;
@@ -139,7 +174,29 @@ pub fn record(
     lapse: LapseRate,
     config: &FieldConfig,
 ) -> Result<Vec<Demonstration>, FieldError> {
+    record_on(demonstrator, demonstrator.body(), configuration, n_valid, seed, lapse, config)
+}
+
+/// [`record`] with the demonstrator's controller on another body (SPEC §6.4); the same episode
+/// seeds as on its own.
+///
+/// # Errors
+/// As [`record`]; `ControllerNotSupported` for a body the controller cannot drive.
+pub fn record_on(
+    demonstrator: Demonstrator,
+    body: BodyKind,
+    configuration: Configuration,
+    n_valid: usize,
+    seed: u64,
+    lapse: LapseRate,
+    config: &FieldConfig,
+) -> Result<Vec<Demonstration>, FieldError> {
     config.check()?;
+    if !demonstrator.can_drive(body) {
+        return Err(
+            FieldParamError::ControllerNotSupported { controller: demonstrator.name(), body: body.name() }.into()
+        );
+    }
     let stream = demonstrator.stream(configuration);
     let max_attempts = 4 * n_valid + 20;
     let mut out = Vec::with_capacity(n_valid);
@@ -152,7 +209,9 @@ pub fn record(
         let batch = ((n_valid - out.len()) + 2).min(max_attempts - next);
         let results: Vec<Result<Demonstration, FieldError>> = (next..next + batch)
             .into_par_iter()
-            .map(|i| demonstrate(demonstrator, configuration, derive_seed(seed, stream, i as u64), lapse, config))
+            .map(|i| {
+                demonstrate_on(demonstrator, body, configuration, derive_seed(seed, stream, i as u64), lapse, config)
+            })
             .collect();
         next += batch;
         for r in results {
@@ -213,6 +272,47 @@ mod tests {
             .expect("replays");
         assert_eq!(again.frames.len(), demos[0].frames.len());
         assert_eq!(again.outcome, demos[0].outcome);
+    }
+
+    #[test]
+    fn the_lego_as_data_is_the_lego_bit_for_bit() {
+        let config = FieldConfig::default();
+        let json = crate::body::LEGO.to_json().replace("\"lego\"", "\"lego_as_data\"");
+        let params = crate::body::WheeledParams::from_json(&json).expect("the Lego's constants are valid");
+        assert_eq!(params.name, "lego_as_data");
+        let as_data = BodyKind::Wheeled(params, crate::FieldSize::Large);
+        for who in [Demonstrator::Expert, Demonstrator::Poor] {
+            let ours = record_on(who, as_data, Configuration::Two, 2, 5, LapseRate::NONE, &config).expect("records");
+            let theirs = record(who, Configuration::Two, 2, 5, LapseRate::NONE, &config).expect("records");
+            let bits = |d: &[Demonstration]| -> Vec<u64> {
+                d.iter()
+                    .flat_map(|x| x.frames.iter().flat_map(|f| [f.robot_x_mm.to_bits(), f.ball_y_mm.to_bits()]))
+                    .collect()
+            };
+            assert_eq!(bits(&ours), bits(&theirs), "{who:?}");
+        }
+    }
+
+    #[test]
+    fn a_controller_is_refused_a_body_it_cannot_drive() {
+        let config = FieldConfig::default();
+        let mut slow = crate::body::TINY;
+        slow.name = "slow";
+        let slow = BodyKind::Wheeled(slow, crate::FieldSize::Small);
+        for (who, body) in [
+            (Demonstrator::Expert, slow),
+            (Demonstrator::Expert, BodyKind::Tiny),
+            (Demonstrator::Humanoid, BodyKind::Lego),
+            (Demonstrator::Poor, BodyKind::Humanoid),
+        ] {
+            let r = record_on(who, body, Configuration::One, 1, 0, LapseRate::NONE, &config);
+            assert!(
+                matches!(r, Err(FieldError::Param(FieldParamError::ControllerNotSupported { .. }))),
+                "{who:?} on {}",
+                body.name()
+            );
+        }
+        assert!(record_on(Demonstrator::Poor, slow, Configuration::One, 1, 0, LapseRate::NONE, &config).is_ok());
     }
 
     #[test]

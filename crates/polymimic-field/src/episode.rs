@@ -43,7 +43,7 @@ impl Outcome {
 }
 
 /// What a controller gets each frame.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct Observation {
     /// Time, s.
     pub t_s: f64,

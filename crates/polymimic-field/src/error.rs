@@ -26,6 +26,14 @@ pub enum FieldParamError {
         /// Body name.
         body: &'static str,
     },
+    /// A built-in controller asked to drive a body it has no commands for.
+    #[error("the {controller} controller cannot drive the {body} body")]
+    ControllerNotSupported {
+        /// The controller's demonstrator.
+        controller: &'static str,
+        /// Body name.
+        body: &'static str,
+    },
     /// A pose or ball position lies outside the field.
     #[error("{what} at ({x_mm:.1}, {y_mm:.1}) mm is outside the field")]
     OutsideField {

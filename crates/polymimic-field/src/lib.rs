@@ -62,7 +62,7 @@ pub use batch::EpisodeBatch;
 pub use body::BodyKind;
 pub use command::{Command, CommandInfo, ExpertCommand, HumanoidCommand, Language, command_table};
 pub use controller::{Controller, LapseRate};
-pub use demonstrate::{Demonstration, Demonstrator, demonstrate, record, record_all};
+pub use demonstrate::{Demonstration, Demonstrator, demonstrate, demonstrate_on, record, record_all, record_on};
 pub use episode::{Episode, Observation, Outcome, StepResult};
 pub use error::{FieldError, FieldParamError};
 pub use geometry::{FieldGeometry, FieldSize};

@@ -98,7 +98,7 @@ impl Configuration {
 }
 
 /// Where an episode starts and when it ends.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct EpisodeSetup {
     /// The robot.
     pub body: BodyKind,

@@ -4,7 +4,7 @@
 use numpy::{PyArray1, PyArray2};
 use polymimic_field::{
     BodyKind, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, LapseRate, THESIS_TABLE_3_1,
-    command_table, record, self_observation,
+    command_table, record_on, self_observation,
 };
 use polymimic_types::Pose;
 use pyo3::exceptions::PyValueError;
@@ -12,6 +12,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use std::sync::Mutex;
 
+use crate::bodies::Body;
 use crate::command::parse_command;
 use crate::convert::{Seed, matrix, non_negative};
 use crate::errors::{field_error, field_param_error};
@@ -52,15 +53,6 @@ pub(crate) fn configuration_number(configuration: Configuration) -> u8 {
     }
 }
 
-pub(crate) fn body(name: &str) -> PyResult<BodyKind> {
-    match name {
-        "lego" => Ok(BodyKind::Lego),
-        "tiny" => Ok(BodyKind::Tiny),
-        "humanoid" => Ok(BodyKind::Humanoid),
-        other => Err(PyValueError::new_err(format!("body must be \"lego\", \"tiny\" or \"humanoid\", got {other:?}"))),
-    }
-}
-
 pub(crate) fn positive(name: &str, value: i64) -> PyResult<usize> {
     match non_negative(name, value)? {
         0 => Err(PyValueError::new_err(format!("{name} must be at least 1, got 0"))),
@@ -71,8 +63,9 @@ pub(crate) fn positive(name: &str, value: i64) -> PyResult<usize> {
 /// Valid demonstrations of one demonstrator from one configuration, run in parallel, the
 /// demonstrator lapsing at rate `lapse` (SPEC §6.1).
 #[pyfunction]
-#[pyo3(signature = (demonstrator, *, configuration, n, seed=Seed(0), lapse=0.0, config=None),
-       text_signature = "(demonstrator, *, configuration, n, seed=0, lapse=0.0, config=None)")]
+#[pyo3(signature = (demonstrator, *, configuration, n, seed=Seed(0), lapse=0.0, config=None, body=None),
+       text_signature = "(demonstrator, *, configuration, n, seed=0, lapse=0.0, config=None, body=None)")]
+#[allow(clippy::too_many_arguments)] // the keywords of `polymimic.record`
 pub fn record_demonstrations<'py>(
     py: Python<'py>,
     demonstrator: &str,
@@ -81,11 +74,14 @@ pub fn record_demonstrations<'py>(
     seed: Seed,
     lapse: f64,
     config: Option<&str>,
+    body: Option<Body>,
 ) -> PyResult<Bound<'py, PyList>> {
     let who = Demonstrator::from_name(demonstrator).map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let body = body.map_or(who.body(), |b| b.0);
     let (configuration, n) = (self::configuration(configuration)?, positive("n", n)?);
     let (lapse, config) = (LapseRate::new(lapse).map_err(field_param_error)?, field_config(config)?);
-    let demonstrations = py.detach(|| record(who, configuration, n, seed.0, lapse, &config)).map_err(field_error)?;
+    let demonstrations =
+        py.detach(|| record_on(who, body, configuration, n, seed.0, lapse, &config)).map_err(field_error)?;
     let out = PyList::empty(py);
     for d in &demonstrations {
         let item = PyDict::new(py);
@@ -178,10 +174,10 @@ impl PyEpisode {
     /// A new episode: `body` on the field of its size, in `configuration` 1 or 2 (or alone,
     /// without a ball, when `configuration` is None).
     #[new]
-    #[pyo3(signature = (body="lego", *, configuration=Some(1), seed=Seed(0), config=None),
+    #[pyo3(signature = (body=Body(BodyKind::Lego), *, configuration=Some(1), seed=Seed(0), config=None),
            text_signature = "(body='lego', *, configuration=1, seed=0, config=None)")]
-    fn new(body: &str, configuration: Option<i64>, seed: Seed, config: Option<&str>) -> PyResult<Self> {
-        let body = self::body(body)?;
+    fn new(body: Body, configuration: Option<i64>, seed: Seed, config: Option<&str>) -> PyResult<Self> {
+        let body = body.0;
         let config = field_config(config)?;
         let setup = match configuration {
             Some(number) => EpisodeSetup::configuration(body, self::configuration(number)?, &config),

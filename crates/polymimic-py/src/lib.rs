@@ -1,6 +1,7 @@
 //! Python bindings of polymimic: conversions and error mapping only; the algorithms live in
 //! the core crates.
 
+mod bodies;
 mod command;
 mod convert;
 mod errors;
@@ -20,6 +21,8 @@ mod _native {
     use super::{PyModule, PyModuleMethods, PyResult, errors};
     use pyo3::{Bound, PyTypeInfo};
 
+    #[pymodule_export]
+    use super::bodies::thesis_wheeled_bodies;
     #[pymodule_export]
     use super::field::{
         PyEpisode, check_field_config, commands, default_field_config, record_demonstrations, record_self_observation,

@@ -11,10 +11,11 @@ use pyo3::exceptions::{PyTimeoutError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
+use crate::bodies::Body;
 use crate::command::parse_command;
 use crate::convert::Seed;
 use crate::errors::{PolicyError, field_error, field_param_error};
-use crate::field::{body, configuration, configuration_number, field_config, frames_array, positive};
+use crate::field::{configuration, configuration_number, field_config, frames_array, positive};
 use crate::watchdog::Watchdog;
 
 /// The tracker's latest reading, as a Python policy gets it.
@@ -158,7 +159,7 @@ pub fn record_python_policy<'py>(
     act: Py<PyAny>,
     reset: Option<Py<PyAny>>,
     name: &str,
-    body: &str,
+    body: Body,
     configuration: i64,
     n: i64,
     seed: Seed,
@@ -166,7 +167,7 @@ pub fn record_python_policy<'py>(
     timeout_s: Option<f64>,
     config: Option<&str>,
 ) -> PyResult<Bound<'py, PyList>> {
-    let body = self::body(body)?;
+    let body = body.0;
     let asked_configuration = configuration;
     let (configuration, n) = (self::configuration(configuration)?, positive("n", n)?);
     let rate = DecisionRate::from_hz(decision_hz).map_err(field_param_error)?;

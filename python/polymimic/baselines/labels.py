@@ -30,6 +30,7 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
+from polymimic.bodies import field_of
 from polymimic.field import PRIMITIVES, Demonstration, command_primitives
 
 __all__ = ["NO_LABEL", "Labelled", "check_demonstrations", "check_weights", "command_labels", "segment_labels"]
@@ -97,7 +98,7 @@ def observations_of(demo: Demonstration) -> np.ndarray:
                                                 "ball_x_mm", "ball_y_mm")]).astype(np.float64)
     for column in range(obs.shape[1]):
         obs[:, column] = _repeat_last_good(obs[:, column])
-    if demo.body == "tiny":
+    if field_of(demo.body) == "small":
         obs[:, [0, 1]] *= _SMALL_TO_LARGE
         obs[:, [3, 4]] *= _SMALL_TO_LARGE
     return obs

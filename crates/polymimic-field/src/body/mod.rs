@@ -4,7 +4,7 @@ mod humanoid;
 mod wheeled;
 
 use polymimic_types::{Point, Pose};
-use serde::{Deserialize, Serialize};
+use serde::Serialize;
 
 pub use humanoid::{HUMANOID, HumanoidParams};
 pub use wheeled::{LEGO, TINY, Traction, WheeledParams};
@@ -17,8 +17,8 @@ use crate::error::FieldParamError;
 use crate::geometry::FieldSize;
 use crate::math::Rng;
 
-/// The robots of the thesis.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+/// The robots of the thesis, and wheeled robots described as data (SPEC §6.4).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum BodyKind {
     /// The Lego Mindstorms two-wheeled robot: the imitator, and the Expert and Poor demonstrators.
     Lego,
@@ -26,6 +26,8 @@ pub enum BodyKind {
     Tiny,
     /// The humanoid, with a head camera.
     Humanoid,
+    /// A two-wheeled robot of the user's, on one of the two fields.
+    Wheeled(WheeledParams, FieldSize),
 }
 
 impl BodyKind {
@@ -35,6 +37,7 @@ impl BodyKind {
         match self {
             BodyKind::Tiny => FieldSize::Small,
             BodyKind::Lego | BodyKind::Humanoid => FieldSize::Large,
+            BodyKind::Wheeled(_, field) => field,
         }
     }
 
@@ -45,7 +48,14 @@ impl BodyKind {
             BodyKind::Lego => (LEGO.length_mm, LEGO.width_mm),
             BodyKind::Tiny => (TINY.length_mm, TINY.width_mm),
             BodyKind::Humanoid => (HUMANOID.length_mm, HUMANOID.width_mm),
+            BodyKind::Wheeled(params, _) => (params.length_mm, params.width_mm),
         }
+    }
+
+    /// Whether it drives on two wheels (and so takes the primitives).
+    #[must_use]
+    pub const fn is_wheeled(self) -> bool {
+        !matches!(self, BodyKind::Humanoid)
     }
 
     /// Name.
@@ -55,6 +65,7 @@ impl BodyKind {
             BodyKind::Lego => "lego",
             BodyKind::Tiny => "tiny",
             BodyKind::Humanoid => "humanoid",
+            BodyKind::Wheeled(params, _) => params.name,
         }
     }
 }
@@ -72,6 +83,7 @@ impl Body {
             BodyKind::Lego => Body::Wheeled(WheeledBody::new(LEGO, pose)),
             BodyKind::Tiny => Body::Wheeled(WheeledBody::new(TINY, pose)),
             BodyKind::Humanoid => Body::Humanoid(HumanoidBody::new(HUMANOID, pose)),
+            BodyKind::Wheeled(params, _) => Body::Wheeled(WheeledBody::new(params, pose)),
         }
     }
 

@@ -9,11 +9,14 @@
 //! mass makes translation lag noticeably (residual motion carries into the next primitive),
 //! while its small yaw inertia and the skid's scrubbing make rotation settle quickly.
 
-use polymimic_types::{Pose, direction_rad};
+use std::collections::BTreeSet;
+use std::sync::Mutex;
+
+use polymimic_types::{Pose, Primitive, direction_rad};
 use serde::{Deserialize, Serialize};
 
 use crate::command::{Command, LEGO_WHEEL_BASE_MM};
-use crate::error::FieldParamError;
+use crate::error::{FieldParamError, check_range};
 use crate::math::{Rng, exp, gaussian, wrap_angle_rad};
 
 /// Random traction of one manoeuvre class, drawn on every command onset.
@@ -28,7 +31,7 @@ pub struct Traction {
 }
 
 /// Constants of a two-wheeled body. The Lego values are calibrated against Table 3.1.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct WheeledParams {
     /// Name (for errors and reports).
     pub name: &'static str,
@@ -50,6 +53,8 @@ pub struct WheeledParams {
     pub traction_refresh_frames: u32,
     /// Whether the Expert's wheel-speed language can drive this body.
     pub accepts_expert_commands: bool,
+    /// The fastest a wheel turns, mm/s: no command may ask for more.
+    pub top_wheel_speed_mm_s: f64,
 }
 
 /// The Lego Mindstorms imitator (about 150 mm across), calibrated so that one-second primitives
@@ -71,6 +76,8 @@ pub const LEGO: WheeledParams = WheeledParams {
     tau_angular_s: 0.02,
     traction_refresh_frames: 30,
     accepts_expert_commands: true,
+    // The Expert's sprint, its fastest command.
+    top_wheel_speed_mm_s: 130.0,
 };
 
 /// The tiny robot (the Citizen Eco-Be): a tenth of the Lego's size, slow, erratic.
@@ -85,7 +92,111 @@ pub const TINY: WheeledParams = WheeledParams {
     tau_angular_s: 0.03,
     traction_refresh_frames: 30,
     accepts_expert_commands: false,
+    top_wheel_speed_mm_s: 25.0,
 };
+
+/// The Expert's fastest wheel speed, mm/s: a body that takes its commands must reach it.
+const EXPERT_TOP_WHEEL_SPEED_MM_S: f64 = 130.0;
+
+impl WheeledParams {
+    /// Check every constant: sizes, the wheel base, the top speed and the lags positive,
+    /// slip spreads non-negative, every primitive's wheels within the top speed, Stop still.
+    ///
+    /// # Errors
+    /// `OutOfRange` naming the first constant that is not.
+    pub fn check(&self) -> Result<(), FieldParamError> {
+        let positive = |name, value: f64| check_range(name, value, f64::MIN_POSITIVE, 1e6, "positive");
+        positive("length_mm", self.length_mm)?;
+        positive("width_mm", self.width_mm)?;
+        positive("wheel_base_mm", self.wheel_base_mm)?;
+        positive("top_wheel_speed_mm_s", self.top_wheel_speed_mm_s)?;
+        positive("tau_linear_s", self.tau_linear_s)?;
+        positive("tau_angular_s", self.tau_angular_s)?;
+        check_range("traction_refresh_frames", f64::from(self.traction_refresh_frames), 1.0, 1e6, "at least 1")?;
+        let top = self.top_wheel_speed_mm_s;
+        for &(left, right) in &self.primitive_wheels_mm_s {
+            for wheel in [left, right] {
+                check_range("primitive_wheels_mm_s", wheel, -top, top, "within ± top_wheel_speed_mm_s")?;
+            }
+        }
+        let (stop_left, stop_right) = self.primitive_wheels_mm_s[Primitive::Stop.index()];
+        check_range("primitive_wheels_mm_s (stop)", stop_left.abs() + stop_right.abs(), 0.0, 0.0, "0 for Stop")?;
+        for t in &self.traction {
+            check_range("traction.common_sd", t.common_sd, 0.0, 10.0, "0 ≤ sd ≤ 10")?;
+            check_range("traction.differential_sd", t.differential_sd, 0.0, 1.0, "0 ≤ sd ≤ 1")?;
+        }
+        if self.accepts_expert_commands {
+            check_range(
+                "top_wheel_speed_mm_s",
+                top,
+                EXPERT_TOP_WHEEL_SPEED_MM_S,
+                f64::INFINITY,
+                "at least the Expert's 130 mm/s for a body that takes its commands",
+            )?;
+        }
+        Ok(())
+    }
+
+    /// A body from JSON (the constants by name, as serialised), checked; its name is kept for
+    /// the life of the process (names are few, and errors quote them).
+    ///
+    /// # Errors
+    /// `Json` for malformed JSON or an unknown key; `OutOfRange` as [`WheeledParams::check`].
+    pub fn from_json(json: &str) -> Result<Self, FieldParamError> {
+        let data: WheeledParamsData = serde_json::from_str(json).map_err(|e| FieldParamError::Json(e.to_string()))?;
+        let params = Self {
+            name: interned(&data.name),
+            length_mm: data.length_mm,
+            width_mm: data.width_mm,
+            wheel_base_mm: data.wheel_base_mm,
+            primitive_wheels_mm_s: data.primitive_wheels_mm_s,
+            traction: data.traction,
+            tau_linear_s: data.tau_linear_s,
+            tau_angular_s: data.tau_angular_s,
+            traction_refresh_frames: data.traction_refresh_frames,
+            accepts_expert_commands: data.accepts_expert_commands,
+            top_wheel_speed_mm_s: data.top_wheel_speed_mm_s,
+        };
+        params.check()?;
+        Ok(params)
+    }
+
+    /// The constants as JSON ([`WheeledParams::from_json`] reads them back).
+    #[must_use]
+    pub fn to_json(&self) -> String {
+        // Serialising plain numbers and a name cannot fail.
+        serde_json::to_string(self).unwrap_or_default()
+    }
+}
+
+/// [`WheeledParams`] as read, with an owned name.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct WheeledParamsData {
+    name: String,
+    length_mm: f64,
+    width_mm: f64,
+    wheel_base_mm: f64,
+    primitive_wheels_mm_s: [(f64, f64); 5],
+    traction: [Traction; 5],
+    tau_linear_s: f64,
+    tau_angular_s: f64,
+    traction_refresh_frames: u32,
+    accepts_expert_commands: bool,
+    top_wheel_speed_mm_s: f64,
+}
+
+/// `name` as a `'static` string, each distinct name allocated once.
+fn interned(name: &str) -> &'static str {
+    static NAMES: Mutex<BTreeSet<&'static str>> = Mutex::new(BTreeSet::new());
+    let mut names = NAMES.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some(known) = names.get(name) {
+        return known;
+    }
+    let kept: &'static str = Box::leak(name.to_owned().into_boxed_str());
+    names.insert(kept);
+    kept
+}
 
 /// State of a two-wheeled body.
 #[derive(Debug, Clone)]
@@ -181,6 +292,37 @@ mod tests {
 
     use crate::command::{ExpertCommand, HumanoidCommand};
     use crate::math::rng;
+
+    #[test]
+    fn the_thesis_bodies_pass_their_own_checks_and_round_trip_through_json() {
+        for params in [LEGO, TINY] {
+            assert_eq!(params.check(), Ok(()));
+            assert_eq!(WheeledParams::from_json(&params.to_json()), Ok(params));
+        }
+    }
+
+    #[test]
+    fn bad_constants_are_refused_by_name() {
+        let refused = |edit: fn(&mut WheeledParams)| {
+            let mut p = LEGO;
+            edit(&mut p);
+            match p.check() {
+                Err(FieldParamError::OutOfRange { name, .. }) => name,
+                other => panic!("expected a refusal, got {other:?}"),
+            }
+        };
+        assert_eq!(refused(|p| p.length_mm = 0.0), "length_mm");
+        assert_eq!(refused(|p| p.width_mm = -3.0), "width_mm");
+        assert_eq!(refused(|p| p.wheel_base_mm = f64::NAN), "wheel_base_mm");
+        assert_eq!(refused(|p| p.tau_linear_s = 0.0), "tau_linear_s");
+        assert_eq!(refused(|p| p.primitive_wheels_mm_s[0] = (200.0, 40.0)), "primitive_wheels_mm_s");
+        assert_eq!(refused(|p| p.primitive_wheels_mm_s[4] = (1.0, 0.0)), "primitive_wheels_mm_s (stop)");
+        assert_eq!(refused(|p| p.traction[1].common_sd = -0.1), "traction.common_sd");
+        assert_eq!(refused(|p| p.top_wheel_speed_mm_s = 100.0), "top_wheel_speed_mm_s");
+        assert!(matches!(WheeledParams::from_json("{\"name\": \"x\"}"), Err(FieldParamError::Json(_))));
+        let extra = LEGO.to_json().replace("{", "{\"wheels\": 3,");
+        assert!(matches!(WheeledParams::from_json(&extra), Err(FieldParamError::Json(e)) if e.contains("wheels")));
+    }
 
     fn run(body: &mut WheeledBody, command: Command, frames: u32, r: &mut Rng) {
         for _ in 0..frames {

@@ -64,7 +64,7 @@ impl From<LapseRate> for f64 {
 #[must_use]
 pub fn primitive_command(p: Primitive, body: BodyKind) -> Command {
     match body {
-        BodyKind::Lego | BodyKind::Tiny => Command::Primitive(p),
+        BodyKind::Lego | BodyKind::Tiny | BodyKind::Wheeled(..) => Command::Primitive(p),
         BodyKind::Humanoid => Command::Humanoid(match p {
             Primitive::Forward => HumanoidCommand::WalkForward,
             Primitive::Backward => HumanoidCommand::WalkBackward,

@@ -1,0 +1,331 @@
+"""Bodies as data (SPEC §6.4): a two-wheeled robot of your own, described by its constants.
+
+A :class:`WheeledBody` is a robot's size, wheel base, top wheel speed, motor lag and slip, and
+the field it plays on (``"large"``, 1020 × 810 mm with a 100 mm ball, or ``"small"``, 560 × 345
+mm with a 25 mm ball). It drives with the imitator's five primitives, whose wheel speeds you may
+give or leave to be derived from the top speed. Pass it wherever a body is asked for:
+:func:`polymimic.record` (a Python policy, or the built-in Poor, Tiny and, on a body that takes
+its wheel speeds, Expert controllers) and :class:`polymimic.Episode`. The thesis's Lego and tiny
+robots are two entries of :data:`THESIS_BODIES`, with the constants the field was calibrated
+with: a body equal to one of them is that body, bit for bit.
+
+>>> import polymimic
+>>> rover = WheeledBody("rover", length_mm=200, width_mm=180, wheel_base_mm=160, top_wheel_speed_mm_s=150)
+>>> rover.primitives_mm_s["forward"], rover.primitives_mm_s["left"]
+((60.0, 60.0), (-52.5, 52.5))
+>>> demos = polymimic.record("poor", body=rover, configuration=1, n=1, seed=0)
+>>> demos[0].demonstrator, demos[0].body
+('poor', 'rover')
+
+In a TOML file, each body is a table (see :func:`bodies_from_tables`)::
+
+    [bodies.rover]
+    length_mm = 200
+    width_mm = 180
+    wheel_base_mm = 160
+    top_wheel_speed_mm_s = 150
+    motor_lag_s = 0.1
+    slip = { common_sd = 0.2, differential_sd = 0.04 }
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import threading
+from collections.abc import Mapping
+from typing import Any, Union
+
+from polymimic import _native
+
+__all__ = ["FIELDS", "THESIS_BODIES", "Slip", "WheeledBody", "bodies_from_tables", "field_of"]
+
+PRIMITIVE_NAMES = ("forward", "backward", "left", "right", "stop")
+FIELDS = ("large", "small")
+"""The fields a body may play on: the thesis's large field (Lego, humanoid) and small one (tiny)."""
+
+DRIVE_FRACTION = 0.4
+"""Derived primitives: forward and backward run both wheels at this fraction of the top speed,"""
+SPIN_FRACTION = 0.35
+"""and left and right spin on the spot with the wheels at this fraction, opposite ways (the Lego's
+calibrated primitives run at 0.37–0.47 and 0.33–0.41 of its top speed)."""
+
+_THESIS_FIELDS = {"lego": "large", "tiny": "small", "humanoid": "large"}
+
+
+def _known_keys(what: str, mapping: Mapping[str, Any], known: tuple[str, ...]) -> None:
+    for key in mapping:
+        if key not in known:
+            raise ValueError(f"unknown key {what}.{key}; known: {', '.join(known)}")
+
+
+def _number_in(name: str, value: Any, low: float, high: float, *, open_low: bool = False) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or \
+            value > high or value < low or (open_low and value <= low):
+        allowed = "a positive number" if open_low and low == 0 else f"a number in [{low:g}, {high:g}]"
+        raise ValueError(f"{name} must be {allowed}, got {value!r}")
+    return float(value)
+
+
+@dataclasses.dataclass(frozen=True)
+class Slip:
+    """How far the wheels stray from what a command asks, drawn afresh whenever a command starts
+    (and after each second it is held): a common factor, log-normal with mean 1 and sd
+    ``common_sd``, scales both wheels (carpet, battery); a differential δ, normal with sd
+    ``differential_sd``, slows the left wheel by (1 − δ) and speeds the right by (1 + δ)."""
+
+    common_sd: float = 0.2
+    differential_sd: float = 0.04
+
+    def __post_init__(self) -> None:
+        _number_in("slip.common_sd", self.common_sd, 0.0, 10.0)
+        _number_in("slip.differential_sd", self.differential_sd, 0.0, 1.0)
+
+
+SlipSpec = Union[Slip, Mapping[str, Slip]]
+
+
+@dataclasses.dataclass(frozen=True)
+class WheeledBody:
+    """A two-wheeled robot: every length in mm, speed in mm/s, lag in s.
+
+    ``motor_lag_s`` and ``turn_lag_s`` are the time constants with which the robot's forward
+    speed and turn rate follow its wheels (its mass, its yaw inertia). ``slip`` is one
+    :class:`Slip` for every primitive or a mapping from primitive name to one.
+    ``primitives_mm_s`` maps each primitive to its (left, right) wheel speeds, every one within
+    the top speed and ``stop`` at rest; left out, they are derived (:data:`DRIVE_FRACTION`,
+    :data:`SPIN_FRACTION`). ``expert_commands`` lets the Expert's wheel-speed language drive
+    the body (it needs a top speed of at least 130 mm/s, the Expert's sprint).
+
+    Every value is checked when the body is made: a ``ValueError`` names the constant and what
+    is allowed.
+
+    >>> WheeledBody("flat", length_mm=0, width_mm=10, wheel_base_mm=8, top_wheel_speed_mm_s=20)
+    Traceback (most recent call last):
+    ...
+    ValueError: body 'flat': length_mm must be a positive number, got 0
+    """
+
+    name: str
+    length_mm: float
+    width_mm: float
+    wheel_base_mm: float
+    top_wheel_speed_mm_s: float
+    motor_lag_s: float = 0.1
+    turn_lag_s: float = 0.03
+    slip: SlipSpec = Slip()
+    primitives_mm_s: Mapping[str, tuple[float, float]] = dataclasses.field(default_factory=dict)
+    field: str = "large"
+    expert_commands: bool = False
+    fresh_slip_frames: int = 30
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or not self.name.isidentifier():
+            raise ValueError(f"a body's name must be a word of letters, digits and _, got {self.name!r}")
+        try:
+            for key in ("length_mm", "width_mm", "wheel_base_mm", "top_wheel_speed_mm_s", "motor_lag_s",
+                        "turn_lag_s"):
+                _number_in(key, getattr(self, key), 0.0, 1e6, open_low=True)
+            if self.field not in FIELDS:
+                raise ValueError(f"field must be one of {', '.join(FIELDS)}, got {self.field!r}")
+            if not isinstance(self.expert_commands, bool):
+                raise ValueError(f"expert_commands must be true or false, got {self.expert_commands!r}")
+            if self.expert_commands and self.top_wheel_speed_mm_s < 130:
+                raise ValueError(f"expert_commands needs a top_wheel_speed_mm_s of at least 130 (the Expert's "
+                                 f"sprint), got {self.top_wheel_speed_mm_s}")
+            if isinstance(self.fresh_slip_frames, bool) or not isinstance(self.fresh_slip_frames, int) or \
+                    self.fresh_slip_frames < 1:
+                raise ValueError(f"fresh_slip_frames must be a whole number ≥ 1, got {self.fresh_slip_frames!r}")
+            object.__setattr__(self, "primitives_mm_s", self._checked_primitives())
+            object.__setattr__(self, "slip", self._checked_slip())
+        except ValueError as error:
+            raise ValueError(f"body {self.name!r}: {error}") from None
+        _describe(self)
+
+    def _checked_primitives(self) -> dict[str, tuple[float, float]]:
+        given = dict(self.primitives_mm_s)
+        _known_keys("primitives_mm_s", given, PRIMITIVE_NAMES)
+        top = float(self.top_wheel_speed_mm_s)
+        drive, spin = DRIVE_FRACTION * top, SPIN_FRACTION * top
+        derived = {"forward": (drive, drive), "backward": (-drive, -drive), "left": (-spin, spin),
+                   "right": (spin, -spin), "stop": (0.0, 0.0)}
+        out = {}
+        for name in PRIMITIVE_NAMES:
+            pair = given.get(name, derived[name])
+            if not isinstance(pair, (tuple, list)) or len(pair) != 2:
+                raise ValueError(f"primitives_mm_s.{name} must be a (left, right) pair of wheel speeds, got {pair!r}")
+            left, right = (_number_in(f"primitives_mm_s.{name}", v, -top, top) for v in pair)
+            out[name] = (left, right)
+        if out["stop"] != (0.0, 0.0):
+            raise ValueError(f"primitives_mm_s.stop must be (0, 0), got {out['stop']}")
+        return out
+
+    def _checked_slip(self) -> SlipSpec:
+        if isinstance(self.slip, Slip):
+            return self.slip
+        if not isinstance(self.slip, Mapping):
+            raise ValueError(f"slip must be a Slip or a mapping from primitive name to one, got {self.slip!r}")
+        _known_keys("slip", self.slip, PRIMITIVE_NAMES)
+        missing = [p for p in PRIMITIVE_NAMES if p not in self.slip]
+        if missing:
+            raise ValueError(f"slip by primitive lacks {', '.join(missing)}")
+        for name, value in self.slip.items():
+            if not isinstance(value, Slip):
+                raise ValueError(f"slip.{name} must be a Slip, got {value!r}")
+        return dict(self.slip)
+
+    def slip_of(self, primitive: str) -> Slip:
+        """The slip of one primitive."""
+        return self.slip if isinstance(self.slip, Slip) else self.slip[primitive]
+
+    def _native_body(self) -> tuple[str, str]:
+        """The constants as the field reads them, and the field's name."""
+        constants = {
+            "name": self.name,
+            "length_mm": float(self.length_mm),
+            "width_mm": float(self.width_mm),
+            "wheel_base_mm": float(self.wheel_base_mm),
+            "primitive_wheels_mm_s": [list(self.primitives_mm_s[p]) for p in PRIMITIVE_NAMES],
+            "traction": [{"common_sd": float(self.slip_of(p).common_sd),
+                          "differential_sd": float(self.slip_of(p).differential_sd)} for p in PRIMITIVE_NAMES],
+            "tau_linear_s": float(self.motor_lag_s),
+            "tau_angular_s": float(self.turn_lag_s),
+            "traction_refresh_frames": self.fresh_slip_frames,
+            "accepts_expert_commands": self.expert_commands,
+            "top_wheel_speed_mm_s": float(self.top_wheel_speed_mm_s),
+        }
+        return json.dumps(constants), self.field
+
+    @classmethod
+    def from_table(cls, name: str, table: Mapping[str, Any], *, where: str = "") -> WheeledBody:
+        """A body from a TOML table (``[bodies.<name>]``): the constructor's keywords, ``slip``
+        as ``{common_sd, differential_sd}`` (or one such table per primitive) and
+        ``primitives_mm_s`` as ``{forward = [l, r], …}``. A ``ValueError`` names ``where`` and
+        the key for anything unknown or out of range.
+
+        >>> WheeledBody.from_table("cart", {"length_mm": 90, "width_mm": 80, "wheel_base_mm": 70,
+        ...                                 "top_wheel_speed_mm_s": 60, "colour": "red"}, where="[bodies.cart]")
+        Traceback (most recent call last):
+        ...
+        ValueError: [bodies.cart]: unknown key 'colour'; known keys: length_mm, width_mm, ...
+        """
+        where = where or f"[bodies.{name}]"
+        if not isinstance(table, Mapping):
+            raise ValueError(f"{where} must be a table, got {table!r}")
+        known = [f.name for f in dataclasses.fields(cls) if f.name != "name"]
+        for key in table:
+            if key not in known:
+                raise ValueError(f"{where}: unknown key {key!r}; known keys: {', '.join(known)}")
+        values = dict(table)
+        if "slip" in values:
+            values["slip"] = _slip_from(values["slip"], where)
+        if "primitives_mm_s" in values:
+            primitives = values["primitives_mm_s"]
+            if not isinstance(primitives, Mapping):
+                raise ValueError(f"{where}: primitives_mm_s must be a table of (left, right) pairs, got {primitives!r}")
+            values["primitives_mm_s"] = {k: tuple(v) if isinstance(v, list) else v for k, v in primitives.items()}
+        try:
+            return cls(name, **values)
+        except TypeError as error:
+            raise ValueError(f"{where}: {error}") from None
+        except ValueError as error:
+            raise ValueError(f"{where}: {error}") from None
+
+
+def _slip_from(value: Any, where: str) -> SlipSpec:
+    def one(table: Any, key: str) -> Slip:
+        if not isinstance(table, Mapping):
+            raise ValueError(f"{where}: {key} must be a table {{common_sd, differential_sd}}, got {table!r}")
+        unknown = [k for k in table if k not in ("common_sd", "differential_sd")]
+        if unknown:
+            raise ValueError(f"{where}: unknown key {key}.{unknown[0]!r}; known keys: common_sd, differential_sd")
+        try:
+            return Slip(**table)
+        except ValueError as error:
+            raise ValueError(f"{where}: {error}") from None
+    if isinstance(value, Mapping) and set(value) <= set(PRIMITIVE_NAMES) and value:
+        return {name: one(table, f"slip.{name}") for name, table in value.items()}
+    return one(value, "slip")
+
+
+def bodies_from_tables(tables: Mapping[str, Any]) -> dict[str, WheeledBody]:
+    """Every ``[bodies.<name>]`` table of a parsed TOML file (the ``bodies`` table itself) as a
+    body. A thesis body's name may be used only for the thesis's own constants.
+
+    >>> import tomllib
+    >>> text = '[bodies.cart]\\nlength_mm = 90\\nwidth_mm = 80\\nwheel_base_mm = 70\\ntop_wheel_speed_mm_s = 60\\n'
+    >>> bodies_from_tables(tomllib.loads(text)["bodies"])["cart"].primitives_mm_s["forward"]
+    (24.0, 24.0)
+    """
+    if not isinstance(tables, Mapping):
+        raise ValueError(f"[bodies] must hold one table per body, got {tables!r}")
+    return {name: WheeledBody.from_table(name, table) for name, table in tables.items()}
+
+
+def _thesis_bodies() -> dict[str, WheeledBody]:
+    out = {}
+    for name, text in _native.thesis_wheeled_bodies():
+        c = json.loads(text)
+        out[name] = WheeledBody(
+            name, length_mm=c["length_mm"], width_mm=c["width_mm"], wheel_base_mm=c["wheel_base_mm"],
+            top_wheel_speed_mm_s=c["top_wheel_speed_mm_s"], motor_lag_s=c["tau_linear_s"],
+            turn_lag_s=c["tau_angular_s"],
+            slip={p: Slip(**t) for p, t in zip(PRIMITIVE_NAMES, c["traction"])},
+            primitives_mm_s={p: tuple(w) for p, w in zip(PRIMITIVE_NAMES, c["primitive_wheels_mm_s"])},
+            field=_THESIS_FIELDS[name], expert_commands=c["accepts_expert_commands"],
+            fresh_slip_frames=c["traction_refresh_frames"])
+    return out
+
+
+_described: dict[str, WheeledBody] = {}
+_lock = threading.Lock()
+_building_thesis_bodies = True
+
+
+def _describe(body: WheeledBody) -> None:
+    """Remember which field a body plays on, so that what is learned from its demonstrations
+    is read on the right field; one name, one set of constants."""
+    with _lock:
+        known = _described.get(body.name)
+        if known is not None and known != body:
+            raise ValueError(f"body {body.name!r} is already described with other constants; give this one "
+                             f"another name")
+        if known is None and body.name in _THESIS_FIELDS and not _building_thesis_bodies:
+            raise ValueError(f"body name {body.name!r} is the thesis's; give your body a name of its own")
+        _described[body.name] = body
+
+
+THESIS_BODIES: dict[str, WheeledBody] = _thesis_bodies()
+"""The thesis's two wheeled bodies, ``lego`` and ``tiny``, as data."""
+_building_thesis_bodies = False
+
+
+def field_of(body: str) -> str:
+    """The field (``"large"`` or ``"small"``) a body plays on: a thesis body's, or a
+    :class:`WheeledBody` made in this process.
+
+    >>> field_of("tiny"), field_of("humanoid")
+    ('small', 'large')
+    """
+    if body in _THESIS_FIELDS:
+        return _THESIS_FIELDS[body]
+    with _lock:
+        known = _described.get(body)
+    if known is None:
+        raise ValueError(f"unknown body {body!r}: describe it (polymimic.bodies.WheeledBody, or its [bodies.{body}] "
+                         f"table) before learning from its demonstrations")
+    return known.field
+
+
+def native_body(body: str | WheeledBody) -> str | WheeledBody:
+    """What the field takes for ``body``: a thesis body by its name (so that it is that body,
+    bit for bit), any other as its constants."""
+    if isinstance(body, WheeledBody) and THESIS_BODIES.get(body.name) == body:
+        return body.name
+    return body
+
+
+def body_name(body: str | WheeledBody) -> str:
+    """The name a demonstration records for ``body``."""
+    return body.name if isinstance(body, WheeledBody) else body

@@ -1,0 +1,162 @@
+"""Bodies as data: wheeled robots of the user's own, and the thesis's two as entries of a table."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+
+import numpy as np
+import pytest
+
+import polymimic
+from polymimic import record
+from polymimic._toml import loads
+from polymimic.bodies import THESIS_BODIES, Slip, WheeledBody, bodies_from_tables, field_of
+from polymimic.datasets import load_demonstrations, save_demonstrations
+from polymimic.field import check_config
+
+NOISELESS = json.dumps(check_config({"tracker": {"position_sigma_mm": 0.0, "heading_sigma_rad": 0.0,
+                                                 "spike_probability": 0.0, "loss_probability": 0.0}}))
+
+
+def test_the_thesis_bodies_as_data_are_those_bodies_bit_for_bit():
+    for name, demonstrator in (("lego", "poor"), ("tiny", "tiny"), ("lego", "expert")):
+        copy = dataclasses.replace(THESIS_BODIES[name], name=f"{name}_as_data")
+        ours = record(demonstrator, body=copy, configuration=2, n=2, seed=3)
+        theirs = record(demonstrator, configuration=2, n=2, seed=3)
+        assert [d.seed for d in ours] == [d.seed for d in theirs]
+        for a, b in zip(ours, theirs):
+            assert a.body == f"{name}_as_data" and b.body == name
+            assert a.frames.tobytes() == b.frames.tobytes()
+
+
+def test_the_thesis_bodies_hold_the_calibrated_constants():
+    lego, tiny = THESIS_BODIES["lego"], THESIS_BODIES["tiny"]
+    assert (lego.length_mm, lego.width_mm, lego.wheel_base_mm, lego.top_wheel_speed_mm_s) == (140, 150, 175, 130)
+    assert lego.primitives_mm_s["forward"] == (51.55, 47.86) and lego.slip_of("backward") == Slip(0.248, 0.343)
+    assert (tiny.field, tiny.wheel_base_mm, tiny.expert_commands) == ("small", 12, False)
+    assert field_of("lego") == "large" and field_of("tiny") == "small"
+
+
+def test_a_new_body_drives_as_its_constants_say():
+    """Without slip or tracker noise, one second of Forward from rest covers what the field's
+    integrator gives for a first-order lag: N substeps of dt, the speed after substep k being
+    v(1 − aᵏ) with a = e^(−dt/τ), so v·dt·(N − a(1 − aᴺ)/(1 − a)) (v·(T − τ(1 − e^(−T/τ)))
+    as dt → 0)."""
+    top, lag = 150.0, 0.1
+    body = WheeledBody("sprinter", length_mm=100, width_mm=100, wheel_base_mm=90, top_wheel_speed_mm_s=top,
+                       motor_lag_s=lag, slip=Slip(0.0, 0.0))
+    episode = polymimic.Episode(body, configuration=None, config=NOISELESS)
+    frames, _ = episode.run(["forward"] * 30)
+    speed = 0.4 * top
+    expected_mm = speed * _lagged_seconds(lag)
+    # The 31st reading (after 30 frames of driving) is where the robot stands at 1 s.
+    end = episode.observation()["robot"]
+    assert end[0] - frames[0, 1] == pytest.approx(expected_mm, rel=1e-9)
+    assert abs(end[1]) < 1e-9 and abs(end[2]) < 1e-12
+    # A left spin turns counter-clockwise at (2 · 0.35 · top / wheel base) rad/s once the lag settles.
+    spin = polymimic.Episode(body, configuration=None, config=NOISELESS)
+    spin.run(["left"] * 30)
+    rate = 2 * 0.35 * top / 90
+    assert spin.observation()["robot"][2] == pytest.approx(rate * _lagged_seconds(0.03), rel=1e-9)
+
+
+def _lagged_seconds(lag_s: float, substeps: int = 240) -> float:
+    """Seconds of full speed a first-order lag delivers over one second from rest."""
+    dt = 1.0 / substeps
+    a = math.exp(-dt / lag_s)
+    return dt * (substeps - a * (1 - a**substeps) / (1 - a))
+
+
+def test_python_policies_and_built_in_controllers_drive_a_new_body(tmp_path):
+    rover = WheeledBody("rover_test", length_mm=200, width_mm=180, wheel_base_mm=160, top_wheel_speed_mm_s=150)
+    mine = record(lambda r: "forward", body=rover, name="straight", configuration=1, n=2, seed=1)
+    poor = record("poor", body=rover, name="poor_rover", configuration=2, n=2, seed=1)
+    assert {(d.demonstrator, d.body) for d in mine + poor} == {("straight", "rover_test"), ("poor_rover", "rover_test")}
+    save_demonstrations(mine + poor, tmp_path / "rover.parquet")
+    assert [d.body for d in load_demonstrations(tmp_path / "rover.parquet")] == ["rover_test"] * 4
+    assert field_of("rover_test") == "large"
+    with pytest.raises(ValueError, match="the expert controller cannot drive the rover_test body"):
+        record("expert", body=rover, configuration=1, n=1)
+
+
+def test_a_small_field_body_plays_on_the_small_field():
+    mouse = WheeledBody("mouse", length_mm=20, width_mm=20, wheel_base_mm=16, top_wheel_speed_mm_s=40, field="small")
+    demo = record("tiny", body=mouse, configuration=1, n=1, seed=2)[0]
+    assert np.nanmax(np.abs(demo.frames["robot_x_mm"])) <= 280.0 + 1e-6
+    assert polymimic.Episode(mouse).observation()["field"] == (560.0, 345.0)
+
+
+def test_bodies_read_from_toml_tables():
+    text = """
+[bodies.cart]
+length_mm = 90
+width_mm = 80
+wheel_base_mm = 70
+top_wheel_speed_mm_s = 60
+motor_lag_s = 0.08
+field = "small"
+slip = { common_sd = 0.1, differential_sd = 0.02 }
+primitives_mm_s = { forward = [30, 28] }
+
+[bodies.skid]
+length_mm = 120
+width_mm = 120
+wheel_base_mm = 100
+top_wheel_speed_mm_s = 140
+expert_commands = true
+[bodies.skid.slip]
+forward = { common_sd = 0.1, differential_sd = 0.01 }
+backward = { common_sd = 0.3, differential_sd = 0.3 }
+left = { common_sd = 0.5, differential_sd = 0.05 }
+right = { common_sd = 0.5, differential_sd = 0.05 }
+stop = { common_sd = 0.0, differential_sd = 0.0 }
+"""
+    bodies = bodies_from_tables(loads(text)["bodies"])
+    cart, skid = bodies["cart"], bodies["skid"]
+    assert cart.primitives_mm_s["forward"] == (30.0, 28.0) and cart.primitives_mm_s["backward"] == (-24.0, -24.0)
+    assert cart.slip == Slip(0.1, 0.02) and cart.field == "small" and cart.motor_lag_s == 0.08
+    assert skid.slip_of("backward") == Slip(0.3, 0.3) and skid.expert_commands
+    assert len(record("expert", body=skid, configuration=1, n=1, seed=0)) == 1
+
+
+@pytest.mark.parametrize(("table", "message"), [
+    ({"width_mm": 80, "wheel_base_mm": 70, "top_wheel_speed_mm_s": 60}, r"missing 1 required .*'length_mm'"),
+    ({"length_mm": -5}, r"length_mm must be a positive number, got -5"),
+    ({"wheel_base_mm": 0}, r"wheel_base_mm must be a positive number, got 0"),
+    ({"top_wheel_speed_mm_s": math.inf}, r"top_wheel_speed_mm_s must be a positive number, got inf"),
+    ({"motor_lag_s": "fast"}, r"motor_lag_s must be a positive number, got 'fast'"),
+    ({"colour": "red"}, r"unknown key 'colour'; known keys: length_mm"),
+    ({"field": "huge"}, r"field must be one of large, small, got 'huge'"),
+    ({"primitives_mm_s": {"forward": [100, 30]}}, r"primitives_mm_s.forward must be a number in \[-60, 60\], got 100"),
+    ({"primitives_mm_s": {"jump": [1, 1]}}, r"unknown key primitives_mm_s.jump"),
+    ({"primitives_mm_s": {"stop": [1, 0]}}, r"primitives_mm_s.stop must be \(0, 0\)"),
+    ({"primitives_mm_s": {"left": [1]}}, r"primitives_mm_s.left must be a \(left, right\) pair"),
+    ({"slip": {"common_sd": -0.1, "differential_sd": 0.0}}, r"slip.common_sd must be a number in \[0, 10\]"),
+    ({"slip": {"common": 0.1}}, r"unknown key slip.'common'"),
+    ({"slip": {"forward": {"common_sd": 0.1, "differential_sd": 0.0}}}, r"slip by primitive lacks backward"),
+    ({"expert_commands": True}, r"expert_commands needs a top_wheel_speed_mm_s of at least 130"),
+    ({"fresh_slip_frames": 0}, r"fresh_slip_frames must be a whole number ≥ 1, got 0"),
+])
+def test_bad_body_tables_are_refused_naming_the_table_and_key(table, message):
+    base = {"length_mm": 90, "width_mm": 80, "wheel_base_mm": 70, "top_wheel_speed_mm_s": 60}
+    if "length_mm" not in table and "width_mm" in table:
+        base = {}
+    with pytest.raises(ValueError, match=r"\[bodies.bad\]: .*" + message):
+        WheeledBody.from_table("bad", {**base, **table})
+
+
+def test_names_are_one_body_each_and_the_thesis_names_are_the_thesis_bodies():
+    WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
+    WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)  # the same: fine
+    with pytest.raises(ValueError, match="body 'twin' is already described with other constants"):
+        WheeledBody("twin", length_mm=60, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
+    with pytest.raises(ValueError, match="body 'lego' is already described with other constants"):
+        dataclasses.replace(THESIS_BODIES["lego"], wheel_base_mm=100)
+    with pytest.raises(ValueError, match="body name 'humanoid' is the thesis's"):
+        WheeledBody("humanoid", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
+    with pytest.raises(ValueError, match="a body's name must be a word"):
+        WheeledBody("my bot", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
+    with pytest.raises(ValueError, match=r"unknown body 'never_made': describe it"):
+        field_of("never_made")

@@ -37,6 +37,7 @@ from polymimic.learning import (
     run_trial,
 )
 from polymimic.plots import animate_demonstration, plot_demonstration, plot_log_likelihoods
+from polymimic.tracks import ImportedTracks, TrackLogError, import_tracks, write_tracks
 
 if importlib.util.find_spec("gymnasium") is not None:
     from polymimic import env as _env  # noqa: F401  (registers PenaltyKick-v0 with Gymnasium)
@@ -49,6 +50,7 @@ __all__ = [
     "Evaluation",
     "FieldRunError",
     "ImitatorPolicy",
+    "ImportedTracks",
     "LearningConfig",
     "ImpossibleSequenceError",
     "ModelFileError",
@@ -58,12 +60,14 @@ __all__ = [
     "PrimitiveRecognizer",
     "PrimitiveSequence",
     "SegmentedDemonstrations",
+    "TrackLogError",
     "TrialResult",
     "__version__",
     "animate_demonstration",
     "average_demonstrator",
     "command_table",
     "evaluate",
+    "import_tracks",
     "load_demonstrations",
     "load_self_observation",
     "plot_demonstration",
@@ -73,4 +77,5 @@ __all__ = [
     "save_demonstrations",
     "save_self_observation",
     "self_observation",
+    "write_tracks",
 ]

@@ -96,14 +96,16 @@ def unit_hint(quantity: str, unit: str) -> str:
 def no_such_column(path: str, missing: list[str], expected: dict[str, str], found: list[str],
                    units: Units) -> TrackLogError:
     """The error for required columns the file lacks, with the likeliest fix."""
-    hints = []
+    suffixed: dict[tuple[str, str], list[str]] = {}
     for name in missing:
         if name in QUANTITY:
             quantity = QUANTITY[name]
             for unit in UNITS[quantity]:
                 if f"{name}_{unit}" in found:
-                    hints.append(f"the file has {name}_{unit}: did you mean {unit_hint(quantity, unit)}?")
+                    suffixed.setdefault((quantity, unit), []).append(f"{name}_{unit}")
                     break
+    hints = [f"The file has {', '.join(names)}: did you mean {unit_hint(quantity, unit)}?"
+             for (quantity, unit), names in suffixed.items()]
     wanted = ", ".join(f"{name} (as {expected[name]!r})" for name in missing)
     hint = " " + " ".join(hints) if hints else (" Name the file's columns with columns={'robot_x': 'x', ...}.")
     return TrackLogError(f"{path}: no column for {wanted}; the file has {', '.join(map(repr, found)) or 'none'}."

@@ -66,11 +66,21 @@ def nominal_period_s(log: Log, stretches: list[Stretch], rate_hz: float | None, 
     """The interval between readings: ``1 / rate_hz`` if given (checked against the log's median
     interval), else that median; a time unit that cannot be right is refused."""
     t_s = log.measured["t"]
-    steps = np.concatenate([np.diff(t_s[s.start:s.stop]) for s in stretches])
-    if steps.size == 0:
+    # The unit is judged on every step forward, across episodes too: in a log whose seconds were
+    # declared as milliseconds every reading is an episode of its own.
+    forward = np.diff(t_s)
+    forward = forward[forward > 0]
+    if forward.size == 0:
         return 1.0 / rate_hz if rate_hz is not None else 1.0 / 30.0
-    median_s = float(np.median(steps))
     low, high = PERIOD_RANGE_S
+    overall_s = float(np.median(forward))
+    if not low <= overall_s <= high:
+        raw = overall_s / UNITS["time"][time_unit]
+        raise TrackLogError(f"{log.path}, column {log.file_names['t']!r}: readings are {raw:g} {time_unit} apart "
+                            f"(the median interval), outside a tracker's {low:g}–{high:g} s"
+                            f"{_time_hint(overall_s, time_unit)}")
+    steps = np.concatenate([np.diff(t_s[s.start:s.stop]) for s in stretches])
+    median_s = float(np.median(steps)) if steps.size else overall_s
     if not low <= median_s <= high:
         raw = median_s / UNITS["time"][time_unit]
         raise TrackLogError(f"{log.path}, column {log.file_names['t']!r}: readings are {raw:g} {time_unit} apart "

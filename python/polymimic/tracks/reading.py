@@ -85,7 +85,7 @@ def _read_csv(where: str) -> tuple[list[str], dict[str, Any]]:
     import pyarrow.csv as pacsv
 
     try:
-        with open(where, newline="", encoding="utf-8") as handle:
+        with open(where, newline="", encoding="utf-8-sig") as handle:  # as Arrow, past a byte-order mark
             header = next(csv.reader(handle), None)
     except (OSError, UnicodeDecodeError, csv.Error) as error:
         raise TrackLogError(f"{where} is not a readable CSV file ({error})") from error

@@ -3,7 +3,8 @@
 Readings more than :data:`MARGIN_SHARE` of the field's size beyond its lines, headings beyond a
 full turn, or x readings that never reach :data:`MIN_REACH_SHARE` of the half length from the
 centre (the robot and the ball start a sixth of the length from it) mean a unit declared wrong;
-the error says which unit would fit.
+the error says which unit would fit. Headings in radians declared as degrees cannot be told
+apart: every value fits.
 """
 
 from __future__ import annotations

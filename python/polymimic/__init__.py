@@ -39,6 +39,7 @@ from polymimic.learning import (
     run_trial,
 )
 from polymimic.plots import animate_demonstration, plot_demonstration, plot_log_likelihoods
+from polymimic.tracks import ImportedTracks, TrackLogError, import_tracks, write_tracks
 
 if importlib.util.find_spec("gymnasium") is not None:
     from polymimic import env as _env  # noqa: F401  (registers PenaltyKick-v0 with Gymnasium)
@@ -51,6 +52,7 @@ __all__ = [
     "Evaluation",
     "FieldRunError",
     "ImitatorPolicy",
+    "ImportedTracks",
     "LearningConfig",
     "ImpossibleSequenceError",
     "ModelFileError",
@@ -62,12 +64,14 @@ __all__ = [
     "PrimitiveSequence",
     "Reading",
     "SegmentedDemonstrations",
+    "TrackLogError",
     "TrialResult",
     "__version__",
     "animate_demonstration",
     "average_demonstrator",
     "command_table",
     "evaluate",
+    "import_tracks",
     "load_demonstrations",
     "load_self_observation",
     "plot_demonstration",
@@ -77,4 +81,5 @@ __all__ = [
     "save_demonstrations",
     "save_self_observation",
     "self_observation",
+    "write_tracks",
 ]

@@ -4,6 +4,7 @@
 is given) and writes report.html beside results.json; `polymimic config` prints every parameter.
 `polymimic benchmark` compares polymimic with the baselines on crowds of demonstrators and
 writes benchmark.html beside benchmark.json (runs/benchmark/<timestamp> unless --run-dir).
+`polymimic import-tracks` turns a tracker log into a run's demonstrations.
 """
 
 from __future__ import annotations
@@ -11,8 +12,10 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import pathlib
+import re
 import sys
 import time
+import warnings
 from typing import Any
 
 from polymimic import __version__, demo
@@ -20,8 +23,9 @@ from polymimic._native import PolymimicError
 from polymimic.benchmark.config import METHODS, BenchmarkConfig
 from polymimic.benchmark.driver import Benchmark
 from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.datasets import load_demonstrations
+from polymimic.datasets import load_demonstrations, save_demonstrations
 from polymimic.export import ACTIONS
+from polymimic.field import BODY_NAMES
 from polymimic.plots import animate_demonstration
 from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.config import ConfigError, RunConfig
@@ -29,6 +33,8 @@ from polymimic.reproduce.export import export_run
 from polymimic.reproduce.roster import CONTROLS, DEMONSTRATORS, EXPERIMENTS
 from polymimic.reproduce.rundir import MissingInputError, RunDir, RunError, latest_run_path, new_run_path
 from polymimic.reproduce.stages import Context, reproduce, run_stage
+from polymimic.tracks import LostTrackingWarning, TrackLogError, import_tracks
+from polymimic.tracks.units import UNITS
 
 EXIT_USAGE = 2
 """Bad input: a missing stage input, a bad config, an unreadable file (as argparse's own errors)."""
@@ -138,7 +144,31 @@ def build_parser() -> argparse.ArgumentParser:
     benchmark.add_argument("--methods", nargs="+", metavar="METHOD",
                            help=f"only these methods (of {' '.join(METHODS)})")
     benchmark.set_defaults(handler=_benchmark)
+    _add_import_tracks(commands)
     return parser
+
+
+def _add_import_tracks(commands: Any) -> None:
+    text = ("a tracker log (CSV or Parquet) resampled to 30 frames a second and saved as a run's demonstrations, "
+            "datasets/imported_<NAME>.parquet")
+    tracks = commands.add_parser("import-tracks", help=text, description=text)
+    tracks.add_argument("file", type=pathlib.Path, help="the log: .csv or .parquet, one row per reading")
+    tracks.add_argument("--as", dest="name", required=True, help="the demonstrator's name (letters, digits, _ and -)")
+    tracks.add_argument("--body", choices=BODY_NAMES, default="lego", help="the demonstrator's body (default lego)")
+    for quantity, option in (("length", "--length-unit"), ("angle", "--angle-unit"), ("time", "--time-unit")):
+        tracks.add_argument(option, dest=f"{quantity}_unit", choices=list(UNITS[quantity]),
+                            help=f"the log's {quantity} unit (default {next(iter(UNITS[quantity]))})")
+    tracks.add_argument("--rate-hz", type=float, help="the log's nominal rate, checked against its timestamps")
+    tracks.add_argument("--configuration", type=int, choices=(1, 2), help="every episode's field configuration "
+                                                                          "(default: the log's, else inferred)")
+    tracks.add_argument("--column", action="append", default=[], metavar="NAME=FILE_COLUMN",
+                        help="the file's column for one of polymimic's (t, robot_x, ..., episode); repeatable")
+    tracks.add_argument("--ignore", action="append", default=[], metavar="FILE_COLUMN",
+                        help="a file column to skip; repeatable")
+    tracks.add_argument("--run-dir", type=pathlib.Path, help="the run to add the demonstrations to (default: the "
+                                                             "newest run under runs/)")
+    tracks.add_argument("--out", type=pathlib.Path, help="write the demonstrations to this Parquet file instead")
+    tracks.set_defaults(handler=_import_tracks)
 
 
 def _requested_config(args: argparse.Namespace) -> Any:
@@ -261,6 +291,43 @@ def _benchmark(args: argparse.Namespace) -> int:
         seconds = bench.run_all()
         bench.say(f"benchmarked in {seconds:.1f} s")
     print(run.report_html_path)
+    return 0
+
+
+def _import_tracks(args: argparse.Namespace) -> int:
+    if not re.fullmatch(r"[A-Za-z0-9_-]+", args.name):
+        raise RunError(f"--as {args.name!r}: a demonstrator's name is letters, digits, _ and - (it names a file)")
+    columns = {}
+    for item in args.column:
+        name, sep, file_column = item.partition("=")
+        if not sep or not name or not file_column:
+            raise RunError(f"--column {item!r}: expected polymimic_name=file_column, e.g. --column t=time")
+        columns[name] = file_column
+    units = {q: u for q in UNITS if (u := getattr(args, f"{q}_unit")) is not None}
+    if args.out is not None:
+        out = pathlib.Path(args.out)
+        if not out.parent.is_dir():
+            raise RunError(f"--out {out}: directory {out.parent} does not exist")
+    else:
+        run = args.run_dir if args.run_dir is not None else latest_run_path()
+        if run is None:
+            raise MissingInputError("no run under runs/: name one with --run-dir, or write to a file with --out")
+        if not pathlib.Path(run).is_dir():
+            raise MissingInputError(f"--run-dir {run}: no such directory")
+        out = pathlib.Path(run) / "datasets" / f"imported_{args.name}.parquet"
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", LostTrackingWarning)  # the summary line says which were invalid
+            imported = import_tracks(args.file, demonstrator=args.name, columns=columns, units=units,
+                                     rate_hz=args.rate_hz, body=args.body, configuration=args.configuration,
+                                     ignore=args.ignore)
+    except (TrackLogError, OSError, ValueError, TypeError) as error:  # the log or the options: bad input, named
+        raise RunError(str(error)) from error
+    if not imported.demonstrations:
+        raise RunError(f"{imported.summary()}: no demonstration to write")
+    out.parent.mkdir(exist_ok=True)
+    save_demonstrations(imported.demonstrations, out)
+    print(f"{imported.summary()}; written to {out}")
     return 0
 
 

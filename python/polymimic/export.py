@@ -34,7 +34,7 @@ import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.env import ENV_ID
-from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, command_primitives
+from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, primitives_sent
 
 __all__ = ["ACTIONS", "OBSERVED", "from_minari", "steps_of", "to_minari"]
 
@@ -87,7 +87,7 @@ def steps_of(demonstration: Demonstration, *, step_frames: int = 30, actions: st
     ends = np.minimum(np.arange(1, n_steps + 1) * step_frames, len(frames) - 1)
     starts = np.concatenate([[0], ends[:-1]])
     if actions == "commands":
-        labels = command_primitives()[frames["command"]]
+        labels = primitives_sent(demonstration)
         named = np.array([PRIMITIVES.index(str(p)) for p in labels])
     else:
         if recognizer is None:

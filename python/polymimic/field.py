@@ -49,6 +49,10 @@ BODIES = {"expert": "lego", "poor": "lego", "tiny": "tiny", "humanoid": "humanoi
 ``tiny`` or ``humanoid``."""
 PRIMITIVES = ("forward", "backward", "left", "right", "stop")
 OUTCOMES = ("goal", "own_goal", "ball_out", "robot_out", "time_up")
+UNKNOWN_COMMAND = 65535
+"""The ``command`` of a frame whose command was never recorded (a tracker log without a command
+column): the largest ``u2``, far from every real id, so it is never read as a command. Whatever
+needs the commands sent (:func:`primitives_sent`) refuses such frames."""
 
 assert tuple(_native.FRAME_COLUMNS) == FRAME_DTYPE.names
 
@@ -316,7 +320,9 @@ def command_table() -> list[dict[str, Any]]:
 
 
 def command_primitives() -> np.ndarray:
-    """A lookup array: ``command_primitives()[frames["command"]]`` names each frame's primitive."""
+    """A lookup array: ``command_primitives()[frames["command"]]`` names each frame's primitive.
+
+    It has no entry for :data:`UNKNOWN_COMMAND`; :func:`primitives_sent` checks for it first."""
     table = command_table()
     lookup = np.full(max(row["id"] for row in table) + 1, "", dtype=object)
     for row in table:
@@ -328,3 +334,35 @@ def default_config() -> dict[str, Any]:
     """The field's configuration (tracker noise, physics substeps, time limit, ball)."""
     config: dict[str, Any] = json.loads(_native.default_field_config())
     return config
+
+
+def primitives_sent(demonstration: Demonstration) -> np.ndarray:
+    """The equivalent primitive of the command sent in each of ``demonstration``'s frames; a
+    ``ValueError`` for a demonstration whose commands were not recorded (:data:`UNKNOWN_COMMAND`,
+    as in a tracker log without a command column), so that nothing is measured against
+    commands nobody knows.
+
+    >>> demo = record("poor", configuration=1, n=1, seed=2)[0]
+    >>> set(primitives_sent(demo)) <= set(PRIMITIVES)
+    True
+    >>> demo.frames["command"] = UNKNOWN_COMMAND
+    >>> primitives_sent(demo)
+    Traceback (most recent call last):
+    ...
+    ValueError: demonstration of 'poor' (seed ...) has no recorded commands ...
+    """
+    commands = demonstration.frames["command"].astype(np.int64)
+    unknown = np.flatnonzero(commands == UNKNOWN_COMMAND)
+    if unknown.size:
+        raise ValueError(f"demonstration of {demonstration.demonstrator!r} (seed {demonstration.seed}) has no "
+                         f"recorded commands (frame {int(unknown[0])} on, {unknown.size} frames in all): it was "
+                         "imported without a command column; measures against the commands sent (command "
+                         "match, behavioural cloning on commands) need a log that has one")
+    lookup = command_primitives()
+    beyond = np.flatnonzero(commands >= len(lookup))
+    if beyond.size:
+        raise ValueError(f"demonstration of {demonstration.demonstrator!r} (seed {demonstration.seed}) has command "
+                         f"id {int(commands[beyond[0]])} in frame {int(beyond[0])}, which no controller has; see "
+                         "polymimic.command_table()")
+    sent: np.ndarray = lookup[commands]
+    return sent

@@ -22,7 +22,7 @@ from typing import Any, Literal, TypedDict
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer, thesis_table_3_1
-from polymimic.field import Demonstration, PrimitiveSequence, command_primitives
+from polymimic.field import Demonstration, PrimitiveSequence, primitives_sent
 
 MOVING = ("forward", "backward", "left", "right")
 
@@ -118,11 +118,10 @@ def segment_table(recognizer: PrimitiveRecognizer, demonstrations: Sequence[Demo
     """Table 4.5: per demonstrator, ``command_match`` (share of classifiable segments whose
     label is the equivalent primitive of the commands sent) and ``gaps`` (share of all
     segments that are gaps), with the counts behind them."""
-    primitive_of = command_primitives()
     tally: dict[str, collections.Counter[str]] = collections.defaultdict(collections.Counter)
     segmented = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
     for demo, segments in zip(demonstrations, segmented):
-        sent = primitive_of[demo.frames["command"]]
+        sent = primitives_sent(demo)
         counts = tally[demo.demonstrator]
         for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
             counts["segments"] += 1

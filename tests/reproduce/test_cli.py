@@ -1,5 +1,6 @@
 """The command line."""
 
+import pathlib
 import subprocess
 import sys
 
@@ -23,3 +24,70 @@ def test_demo_accuracy_is_high_and_reproducible():
 def test_module_entry_point_and_version():
     out = subprocess.run([sys.executable, "-m", "polymimic", "--version"], capture_output=True, text=True, check=True)
     assert out.stdout.startswith("polymimic ")
+
+
+def _tracker_log(path, **options):
+    import polymimic
+
+    demos = polymimic.record("poor", configuration=1, n=3, seed=2)
+    polymimic.write_tracks(demos, path, **options)
+    return demos
+
+
+def test_import_tracks_writes_the_runs_demonstrations_and_says_how_many(tmp_path, capsys, monkeypatch):
+    from polymimic.datasets import load_demonstrations
+
+    log = tmp_path / "log.csv"
+    demos = _tracker_log(log, units={"length": "m", "angle": "deg"}, rate_hz=60, include=())
+    run = tmp_path / "runs" / "20260101-000000"
+    run.mkdir(parents=True)
+    (run / "manifest.json").write_text("{}")
+    monkeypatch.chdir(tmp_path)  # the newest run under runs/ is the default
+    argv = ["import-tracks", str(log), "--as", "alice", "--length-unit", "m", "--angle-unit", "deg", "--rate-hz", "60"]
+    assert cli.main(argv) == 0
+    out = capsys.readouterr().out.strip().splitlines()
+    assert out == [f"3 episodes from log.csv: 3 demonstrations, 0 invalid; written to "
+                   f"{pathlib.Path('runs/20260101-000000/datasets/imported_alice.parquet')}"]
+    imported = load_demonstrations(run / "datasets" / "imported_alice.parquet")
+    assert [d.outcome for d in imported] == [d.outcome for d in demos]
+    assert {d.demonstrator for d in imported} == {"alice"}
+
+
+def test_import_tracks_counts_invalid_episodes_and_maps_columns(tmp_path, capsys):
+    log = tmp_path / "log.csv"
+    _tracker_log(log)
+    lines = log.read_text().splitlines()
+    header = lines[0].replace("robot_x_mm", "x")
+    cells = lines[40].split(",")
+    cells[5] = ""  # no ball x: lost tracking in episode 0
+    log.write_text("\n".join([header, *lines[1:40], ",".join(cells), *lines[41:]]) + "\n")
+    out = tmp_path / "alice.parquet"
+    argv = ["import-tracks", str(log), "--as", "alice", "--column", "robot_x=x", "--out", str(out)]
+    assert cli.main(argv) == 0
+    assert capsys.readouterr().out.startswith("3 episodes from log.csv: 2 demonstrations, 1 invalid (episode 0: "
+                                              "lost tracking at 1.30 s")
+    assert out.exists()
+
+
+def test_import_tracks_refuses_bad_logs_in_one_line(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    log = tmp_path / "log.csv"
+    _tracker_log(log, units={"length": "m"})
+    cases = [
+        (["import-tracks", str(log), "--as", "alice", "--out", str(tmp_path / "a.parquet")], "did you mean units="),
+        (["import-tracks", str(log), "--as", "alice", "--length-unit", "m"], "no run under runs/"),
+        (["import-tracks", str(log), "--as", "alice", "--length-unit", "m", "--rate-hz", "0", "--out",
+          str(tmp_path / "a.parquet")], "rate_hz must be a positive number"),
+        (["import-tracks", str(tmp_path / "absent.csv"), "--as", "alice", "--out", str(tmp_path / "a.parquet")],
+         "no such tracker log"),
+        (["import-tracks", str(log), "--as", "al/ice", "--out", str(tmp_path / "a.parquet")], "letters, digits"),
+        (["import-tracks", str(log), "--as", "alice", "--column", "robot_x", "--out", str(tmp_path / "a.parquet")],
+         "expected polymimic_name=file_column"),
+    ]
+    for argv, message in cases:
+        assert cli.main(argv) == 2
+        captured = capsys.readouterr()
+        assert captured.out == "" and len(captured.err.strip().splitlines()) == 1, captured.err
+        assert captured.err.startswith("polymimic import-tracks: error: ") and message in captured.err
+        assert "Traceback" not in captured.err
+    assert not (tmp_path / "a.parquet").exists()

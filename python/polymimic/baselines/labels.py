@@ -31,7 +31,7 @@ import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.bodies import field_of
-from polymimic.field import PRIMITIVES, Demonstration, command_primitives
+from polymimic.field import PRIMITIVES, Demonstration, command_primitives, primitives_sent
 
 __all__ = ["NO_LABEL", "Labelled", "check_demonstrations", "check_weights", "command_labels", "segment_labels"]
 
@@ -119,8 +119,10 @@ def command_labels(demonstrations: Sequence[Demonstration]) -> list[Labelled]:
     """Each frame labelled with the primitive equivalent of the command sent (privileged)."""
     lookup = command_primitives()
     index = np.array([PRIMITIVES.index(p) if p else NO_LABEL for p in lookup], dtype=np.int64)
-    return [Labelled(d.demonstrator, observations_of(d), index[d.frames["command"].astype(np.int64)])
-            for d in check_demonstrations(demonstrations)]
+    demos = check_demonstrations(demonstrations)
+    for d in demos:
+        primitives_sent(d)  # refuses a demonstration whose commands were never recorded
+    return [Labelled(d.demonstrator, observations_of(d), index[d.frames["command"].astype(np.int64)]) for d in demos]
 
 
 def segment_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer,

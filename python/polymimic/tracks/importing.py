@@ -1,0 +1,278 @@
+"""import_tracks: a tracker log read, checked, cut into episodes and resampled into
+demonstrations."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import numbers
+import os
+import warnings
+from collections.abc import Collection, Mapping
+from typing import Any
+
+import numpy as np
+
+from polymimic._native import Episode
+from polymimic.field import BODY_NAMES, FRAME_DTYPE, OUTCOMES, UNKNOWN_COMMAND, Demonstration, command_table
+from polymimic.tracks.episodes import Stretch, lost_tracking, nominal_period_s, split_episodes
+from polymimic.tracks.errors import LostTrackingWarning, TrackLogError
+from polymimic.tracks.outcomes import LINE_TOLERANCE_MM, Field, configuration_of, outcome_of
+from polymimic.tracks.reading import Log, read_log
+from polymimic.tracks.resampling import grid, heading, held, linear
+from polymimic.tracks.scale import check_scale
+from polymimic.tracks.units import checked_units
+
+__all__ = ["ImportedTracks", "field_of", "import_tracks"]
+
+_SHOWN_INVALID = 3
+
+
+@dataclasses.dataclass(frozen=True, repr=False)
+class ImportedTracks:
+    """What :func:`import_tracks` made of a log.
+
+    ``demonstrations`` are the valid episodes in log order; ``invalid`` lists ``(episode,
+    reason)`` for each episode left out (lost tracking); ``episodes`` counts them all. An
+    episode is named by the log's episode id, or by its index in the log (from 0) when the log
+    has no episode column; a demonstration's ``seed`` is that index.
+    """
+
+    demonstrations: list[Demonstration]
+    invalid: list[tuple[Any, str]]
+    episodes: int
+    path: str = ""
+
+    def summary(self) -> str:
+        """One line: how many episodes, how many became demonstrations, which were invalid and why."""
+        source = f" from {os.path.basename(self.path)}" if self.path else ""
+        line = (f"{self.episodes} episode{'s' * (self.episodes != 1)}{source}: {len(self.demonstrations)} "
+                f"demonstration{'s' * (len(self.demonstrations) != 1)}, {len(self.invalid)} invalid")
+        if self.invalid:
+            shown = "; ".join(f"episode {e}: {why}" for e, why in self.invalid[:_SHOWN_INVALID])
+            more = f"; {len(self.invalid) - _SHOWN_INVALID} more" if len(self.invalid) > _SHOWN_INVALID else ""
+            line += f" ({shown}{more})"
+        return line
+
+    def __repr__(self) -> str:
+        return self.summary()
+
+
+def field_of(body: str) -> Field:
+    """The field ``body`` plays on (``lego`` and ``humanoid``: 1020 × 810 mm; ``tiny``: 560 × 345 mm).
+
+    >>> field_of("tiny")
+    Field(length_mm=560.0, width_mm=345.0)
+    """
+    if body not in BODY_NAMES:
+        raise ValueError(f"unknown body {body!r}; expected one of {', '.join(BODY_NAMES)}")
+    length_mm, width_mm = Episode(body).observation()["field"]
+    return Field(float(length_mm), float(width_mm))
+
+
+def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: Mapping[str, str] | None = None,
+                  units: Mapping[str, str] | None = None, rate_hz: float | None = None, body: str = "lego",
+                  configuration: int | None = None, ignore: Collection[str] = (),
+                  line_tolerance_mm: float = LINE_TOLERANCE_MM) -> ImportedTracks:
+    """Demonstrations from a tracker log: a CSV or Parquet table of timed readings.
+
+    Parameters
+    ----------
+    path : str or path-like
+        A ``.csv`` (with a header row) or ``.parquet`` file, one row per reading.
+    demonstrator : str
+        The name the demonstrations are recorded under.
+    columns : dict, optional
+        polymimic's column names (``t``, ``robot_x``, ``robot_y``, ``robot_theta``, ``ball_x``,
+        ``ball_y``; optional ``episode``, ``outcome``, ``command``, ``configuration``) → the file's.
+        A column not named here is looked for under its name with its unit as a suffix
+        (``t_s``, ``robot_x_mm``, ``robot_theta_deg``, as :func:`write_tracks` writes them), then
+        under its bare name.
+    units : dict, optional
+        ``{"length": "mm" | "cm" | "m", "angle": "rad" | "deg", "time": "s" | "ms"}``; mm, rad and
+        s where left out.
+    rate_hz : float, optional
+        The log's nominal rate, checked against its timestamps (the median interval within 10 %);
+        without it the median interval is the nominal period.
+    body : {"lego", "tiny", "humanoid"}
+        The demonstrator's body; its field (size, goals) is the one the outcomes are read on.
+    configuration : {1, 2}, optional
+        Every episode's field configuration; else the log's configuration column, else read
+        from each episode's first reading (the robot behind the ball toward −x is 1, else 2).
+    ignore : list of str
+        File columns to skip; any other column polymimic does not know is refused.
+    line_tolerance_mm : float
+        How far past a line a reading must be to count as beyond it, and how close to a line a
+        log must end to have ended there, for outcomes derived from the geometry: the tracker's
+        jitter (:data:`polymimic.tracks.outcomes.LINE_TOLERANCE_MM`, 1 mm); 0 for the lines as they are.
+
+    Episodes are the log's episode ids in order, or, without an episode column, cut where the
+    log pauses for more than 0.5 s or the robot or ball jumps more than a quarter of the field's
+    length between two readings (:mod:`polymimic.tracks.episodes`). Each episode is resampled to
+    30 frames a second from its first reading (``t_s`` from 0 up to its last reading): linear in
+    position, along the shorter arc in heading (wrapped to (−π, π]), the command held from the
+    reading that sent it. Commands are ids or names of :func:`polymimic.command_table`; without
+    a command column every frame has :data:`polymimic.field.UNKNOWN_COMMAND`. A logged outcome
+    (one of goal, own_goal, ball_out, robot_out, time_up, on any of the episode's rows) is
+    taken as it is; otherwise it is derived from the field's geometry and the frames after it
+    are cut (:mod:`polymimic.tracks.outcomes`). An episode with lost tracking (a NaN reading,
+    or no reading for over three periods) is not returned: it is listed in ``invalid``, and a
+    :class:`LostTrackingWarning` says so.
+
+    Raises
+    ------
+    TrackLogError
+        (a ``ValueError``) for a log that does not read as declared: the message names the
+        file, the data row (from 1; a CSV's line beside it) or episode, and the column.
+    FileNotFoundError
+        If there is no file at ``path``.
+    ValueError, TypeError
+        For arguments out of range or of the wrong type.
+
+    Examples
+    --------
+    >>> import pathlib, tempfile, polymimic
+    >>> from polymimic.tracks import write_tracks
+    >>> log = pathlib.Path(tempfile.mkdtemp()) / "log.csv"
+    >>> demos = polymimic.record("expert", configuration=1, n=3, seed=1)
+    >>> write_tracks(demos, log, units={"length": "m", "angle": "deg"}, rate_hz=60, include=("episode",))
+    >>> imported = import_tracks(log, demonstrator="alice", units={"length": "m", "angle": "deg"}, rate_hz=60)
+    >>> imported
+    3 episodes from log.csv: 3 demonstrations, 0 invalid
+    >>> [d.outcome for d in imported.demonstrations] == [d.outcome for d in demos]
+    True
+    """
+    checked = checked_units(units)
+    field = field_of(body)
+    if not isinstance(demonstrator, str) or not demonstrator:
+        raise ValueError(f"demonstrator must be a non-empty name, got {demonstrator!r}")
+    rate_hz = _rate(rate_hz)
+    if isinstance(line_tolerance_mm, bool) or not isinstance(line_tolerance_mm, numbers.Real) or not (
+            0.0 <= line_tolerance_mm < math.inf):
+        raise ValueError(f"line_tolerance_mm must be a number of mm, at least 0; got {line_tolerance_mm!r}")
+    if configuration is not None and (isinstance(configuration, bool) or configuration not in (1, 2)):
+        raise ValueError(f"configuration must be 1, 2 or None, got {configuration!r}")
+    log = read_log(path, columns=columns, units=checked, ignore=ignore)
+    check_scale(log, field, checked)
+    stretches = split_episodes(log, field_length_mm=field.length_mm)
+    period_s = nominal_period_s(log, stretches, rate_hz, checked["time"])
+    commands = _commands(log) if "command" in log.labels else None
+    _check_outcomes(log)
+    demos: list[Demonstration] = []
+    invalid: list[tuple[Any, str]] = []
+    for index, stretch in enumerate(stretches):
+        logged_outcome = _per_episode(log, stretch, "outcome")
+        logged_configuration = _configuration(log, stretch, configuration)
+        reason = lost_tracking(log, stretch, period_s)
+        if reason is not None:
+            invalid.append((stretch.episode, reason))
+            continue
+        frames = _resampled(log, stretch, commands)
+        if logged_outcome is None:
+            outcome, kept = outcome_of(frames, field, tolerance_mm=float(line_tolerance_mm))
+            frames = frames[:kept].copy()
+        else:
+            outcome = str(logged_outcome)
+        demos.append(Demonstration(frames=frames, outcome=outcome, demonstrator=demonstrator,
+                                   configuration=logged_configuration or configuration_of(frames), seed=index,
+                                   body=body))
+    result = ImportedTracks(demonstrations=demos, invalid=invalid, episodes=len(stretches), path=log.path)
+    if invalid:
+        warnings.warn(result.summary(), LostTrackingWarning, stacklevel=2)
+    return result
+
+
+def _rate(rate_hz: Any) -> float | None:
+    if rate_hz is None:
+        return None
+    if isinstance(rate_hz, bool) or not isinstance(rate_hz, numbers.Real) or not (
+            math.isfinite(float(rate_hz)) and float(rate_hz) > 0):
+        raise ValueError(f"rate_hz must be a positive number of readings a second, got {rate_hz!r}")
+    return float(rate_hz)
+
+
+def _resampled(log: Log, stretch: Stretch, commands: np.ndarray | None) -> np.ndarray:
+    rows = slice(stretch.start, stretch.stop)
+    m = log.measured
+    t_s = m["t"][rows] - m["t"][stretch.start]
+    at_s = grid(float(t_s[-1]))
+    frames = np.empty(len(at_s), dtype=FRAME_DTYPE)
+    frames["t_s"] = at_s
+    for name in ("robot_x", "robot_y", "ball_x", "ball_y"):
+        frames[f"{name}_mm"] = linear(t_s, m[name][rows], at_s)
+    frames["robot_theta_rad"] = heading(t_s, m["robot_theta"][rows], at_s)
+    frames["command"] = UNKNOWN_COMMAND if commands is None else held(t_s, commands[rows], at_s)
+    return frames
+
+
+def _check_outcomes(log: Log) -> None:
+    for row, value in enumerate(log.labels.get("outcome", ())):
+        if value is not None and value not in OUTCOMES:
+            raise TrackLogError(f"{log.where(row, 'outcome')}: outcome {value!r} is not one of "
+                                f"{', '.join(OUTCOMES)} (leave the column out to derive outcomes from the field)")
+
+
+def _per_episode(log: Log, stretch: Stretch, name: str) -> Any:
+    """The one value of column ``name`` on the episode's rows that have one (``None`` if none)."""
+    if name not in log.labels:
+        return None
+    found, first_row = None, 0
+    for row in range(stretch.start, stretch.stop):
+        value = log.labels[name][row]
+        if value is None:
+            continue
+        if found is None:
+            found, first_row = value, row
+        elif value != found:
+            raise TrackLogError(f"{log.where(row, name)}: episode {stretch.episode!r} has {name} {value!r} here but "
+                                f"{found!r} at data row {first_row + 1}; an episode has one")
+    return found
+
+
+def _configuration(log: Log, stretch: Stretch, given: int | None) -> int | None:
+    logged = _per_episode(log, stretch, "configuration")
+    if logged is None:
+        return given
+    try:
+        number = int(logged) if float(logged) == int(float(logged)) else None
+    except (TypeError, ValueError):
+        number = None
+    if number not in (1, 2):
+        row = log.labels["configuration"].index(logged, stretch.start)
+        raise TrackLogError(f"{log.where(row, 'configuration')}: configuration {logged!r}; expected 1 or 2")
+    if given is not None and number != given:
+        raise TrackLogError(f"{log.path}: episode {stretch.episode!r} has configuration {number} in column "
+                            f"{log.file_names['configuration']!r}, but configuration={given} was given")
+    return number
+
+
+def _commands(log: Log) -> np.ndarray:
+    """Each row's command id, from an id or a name of :func:`polymimic.command_table`."""
+    table = command_table()
+    ids = {int(row["id"]) for row in table}
+    by_name = {str(row["name"]): int(row["id"]) for row in table}
+    out = np.empty(log.n_rows, dtype=np.uint16)
+    for row, value in enumerate(log.labels["command"]):
+        command = _command_id(value, ids, by_name)
+        if command is None:
+            raise TrackLogError(f"{log.where(row, 'command')}: {value!r} is no command polymimic knows; expected an "
+                                "id or a name of polymimic.command_table() (e.g. 0 or 'forward')")
+        out[row] = command
+    return out
+
+
+def _command_id(value: Any, ids: set[int], by_name: dict[str, int]) -> int | None:
+    if value is None or isinstance(value, bool):
+        return None
+    if isinstance(value, str):
+        text = value.strip()
+        if text in by_name:
+            return by_name[text]
+        try:
+            value = float(text)
+        except ValueError:
+            return None
+    if isinstance(value, numbers.Real) and math.isfinite(float(value)) and float(value).is_integer():
+        number = int(float(value))
+        return number if number in ids else None
+    return None

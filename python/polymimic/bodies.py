@@ -284,14 +284,11 @@ _building_thesis_bodies = True
 
 
 def _describe(body: WheeledBody) -> None:
-    """Remember which field a body plays on, so that what is learned from its demonstrations
-    is read on the right field; one name, one set of constants."""
+    """Remember the body by its name, so that what is learned from its demonstrations is read on
+    its field; a later body of the same name replaces it (as redefining it in a notebook
+    should), but a thesis body's name stays the thesis body's."""
     with _lock:
-        known = _described.get(body.name)
-        if known is not None and known != body:
-            raise ValueError(f"body {body.name!r} is already described with other constants; give this one "
-                             f"another name")
-        if known is None and body.name in _THESIS_FIELDS and not _building_thesis_bodies:
+        if body.name in _THESIS_FIELDS and not _building_thesis_bodies and _described.get(body.name) != body:
             raise ValueError(f"body name {body.name!r} is the thesis's; give your body a name of its own")
         _described[body.name] = body
 
@@ -316,6 +313,25 @@ def field_of(body: str) -> str:
         raise ValueError(f"unknown body {body!r}: describe it (polymimic.bodies.WheeledBody, or its [bodies.{body}] "
                          f"table) before learning from its demonstrations")
     return known.field
+
+
+def resolve(body: str | WheeledBody) -> str | WheeledBody:
+    """``body`` as the field takes it: a thesis body's name as it is, a :class:`WheeledBody`
+    made in this process by its name, or the body itself; a ``ValueError`` for a name no body
+    has.
+
+    >>> resolve("tiny")
+    'tiny'
+    """
+    if isinstance(body, WheeledBody):
+        return native_body(body)
+    if body in _THESIS_FIELDS:
+        return body
+    with _lock:
+        known = _described.get(body) if isinstance(body, str) else None
+    if known is None:
+        raise ValueError(f"unknown body {body!r}: one of {', '.join(_THESIS_FIELDS)} or a polymimic.bodies.WheeledBody")
+    return native_body(known)
 
 
 def native_body(body: str | WheeledBody) -> str | WheeledBody:

@@ -147,12 +147,13 @@ def test_bad_body_tables_are_refused_naming_the_table_and_key(table, message):
         WheeledBody.from_table("bad", {**base, **table})
 
 
-def test_names_are_one_body_each_and_the_thesis_names_are_the_thesis_bodies():
+def test_a_name_is_its_latest_body_and_the_thesis_names_are_the_thesis_bodies():
     WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
-    WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)  # the same: fine
-    with pytest.raises(ValueError, match="body 'twin' is already described with other constants"):
-        WheeledBody("twin", length_mm=60, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
-    with pytest.raises(ValueError, match="body 'lego' is already described with other constants"):
+    assert field_of("twin") == "large"
+    WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50, field="small")
+    assert field_of("twin") == "small", "described again, the body is its latest description"
+    assert dataclasses.replace(THESIS_BODIES["lego"]) == THESIS_BODIES["lego"]
+    with pytest.raises(ValueError, match="body name 'lego' is the thesis's"):
         dataclasses.replace(THESIS_BODIES["lego"], wheel_base_mm=100)
     with pytest.raises(ValueError, match="body name 'humanoid' is the thesis's"):
         WheeledBody("humanoid", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)

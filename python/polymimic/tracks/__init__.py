@@ -17,7 +17,7 @@ polymimic's 30 frames a second.
 """
 
 from polymimic.tracks.errors import LostTrackingWarning, TrackLogError
-from polymimic.tracks.importing import ImportedTracks, field_of, import_tracks
+from polymimic.tracks.importing import ImportedTracks, import_tracks, playing_field
 from polymimic.tracks.writing import write_tracks
 
-__all__ = ["ImportedTracks", "LostTrackingWarning", "TrackLogError", "field_of", "import_tracks", "write_tracks"]
+__all__ = ["ImportedTracks", "LostTrackingWarning", "TrackLogError", "import_tracks", "playing_field", "write_tracks"]

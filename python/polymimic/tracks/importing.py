@@ -14,7 +14,8 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import Episode
-from polymimic.field import BODY_NAMES, FRAME_DTYPE, OUTCOMES, UNKNOWN_COMMAND, Demonstration, command_table
+from polymimic.bodies import WheeledBody, body_name, resolve
+from polymimic.field import FRAME_DTYPE, OUTCOMES, UNKNOWN_COMMAND, Demonstration, command_table
 from polymimic.tracks.episodes import Stretch, lost_tracking, nominal_period_s, split_episodes
 from polymimic.tracks.errors import LostTrackingWarning, TrackLogError
 from polymimic.tracks.outcomes import LINE_TOLERANCE_MM, Field, configuration_of, outcome_of
@@ -23,7 +24,7 @@ from polymimic.tracks.resampling import grid, heading, held, linear
 from polymimic.tracks.scale import check_scale
 from polymimic.tracks.units import checked_units
 
-__all__ = ["ImportedTracks", "field_of", "import_tracks"]
+__all__ = ["ImportedTracks", "import_tracks", "playing_field"]
 
 _SHOWN_INVALID = 3
 
@@ -58,20 +59,20 @@ class ImportedTracks:
         return self.summary()
 
 
-def field_of(body: str) -> Field:
-    """The field ``body`` plays on (``lego`` and ``humanoid``: 1020 × 810 mm; ``tiny``: 560 × 345 mm).
+def playing_field(body: str | WheeledBody) -> Field:
+    """The size of the field ``body`` plays on (``lego`` and ``humanoid``: 1020 × 810 mm;
+    ``tiny``: 560 × 345 mm; a :class:`polymimic.bodies.WheeledBody`, its own field's).
 
-    >>> field_of("tiny")
+    >>> playing_field("tiny")
     Field(length_mm=560.0, width_mm=345.0)
     """
-    if body not in BODY_NAMES:
-        raise ValueError(f"unknown body {body!r}; expected one of {', '.join(BODY_NAMES)}")
-    length_mm, width_mm = Episode(body).observation()["field"]
+    length_mm, width_mm = Episode(resolve(body)).observation()["field"]
     return Field(float(length_mm), float(width_mm))
 
 
 def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: Mapping[str, str] | None = None,
-                  units: Mapping[str, str] | None = None, rate_hz: float | None = None, body: str = "lego",
+                  units: Mapping[str, str] | None = None, rate_hz: float | None = None,
+                  body: str | WheeledBody = "lego",
                   configuration: int | None = None, ignore: Collection[str] = (),
                   line_tolerance_mm: float = LINE_TOLERANCE_MM) -> ImportedTracks:
     """Demonstrations from a tracker log: a CSV or Parquet table of timed readings.
@@ -94,8 +95,9 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
     rate_hz : float, optional
         The log's nominal rate, checked against its timestamps (the median interval within 10 %);
         without it the median interval is the nominal period.
-    body : {"lego", "tiny", "humanoid"}
-        The demonstrator's body; its field (size, goals) is the one the outcomes are read on.
+    body : {"lego", "tiny", "humanoid"} or polymimic.bodies.WheeledBody
+        The demonstrator's body (or a described body's name); its field (size, goals) is the one
+        the outcomes are read on.
     configuration : {1, 2}, optional
         Every episode's field configuration; else the log's configuration column, else read
         from each episode's first reading (the robot behind the ball toward −x is 1, else 2).
@@ -143,7 +145,7 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
     True
     """
     checked = checked_units(units)
-    field = field_of(body)
+    field = playing_field(body)
     if not isinstance(demonstrator, str) or not demonstrator:
         raise ValueError(f"demonstrator must be a non-empty name, got {demonstrator!r}")
     rate_hz = _rate(rate_hz)
@@ -175,7 +177,7 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
             outcome = str(logged_outcome)
         demos.append(Demonstration(frames=frames, outcome=outcome, demonstrator=demonstrator,
                                    configuration=logged_configuration or configuration_of(frames), seed=index,
-                                   body=body))
+                                   body=body_name(body)))
     result = ImportedTracks(demonstrations=demos, invalid=invalid, episodes=len(stretches), path=log.path)
     if invalid:
         warnings.warn(result.summary(), LostTrackingWarning, stacklevel=2)

@@ -39,7 +39,7 @@ from typing import Any, Union
 
 from polymimic import _native
 
-__all__ = ["FIELDS", "THESIS_BODIES", "Slip", "WheeledBody", "bodies_from_tables", "field_of"]
+__all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Slip", "WheeledBody", "bodies_from_tables", "field_of"]
 
 PRIMITIVE_NAMES = ("forward", "backward", "left", "right", "stop")
 FIELDS = ("large", "small")
@@ -51,7 +51,8 @@ SPIN_FRACTION = 0.35
 """and left and right spin on the spot with the wheels at this fraction, opposite ways (the Lego's
 calibrated primitives run at 0.37–0.47 and 0.33–0.41 of its top speed)."""
 
-_THESIS_FIELDS = {"lego": "large", "tiny": "small", "humanoid": "large"}
+THESIS_BODY_FIELDS = {"lego": "large", "tiny": "small", "humanoid": "large"}
+"""The thesis's bodies and the fields they play on."""
 
 
 def _known_keys(what: str, mapping: Mapping[str, Any], known: tuple[str, ...]) -> None:
@@ -197,6 +198,19 @@ class WheeledBody:
         }
         return json.dumps(constants), self.field
 
+    def to_table(self) -> dict[str, Any]:
+        """The body as a TOML table (:meth:`from_table` reads it back equal).
+
+        >>> cart = WheeledBody("cart", length_mm=90, width_mm=80, wheel_base_mm=70, top_wheel_speed_mm_s=60)
+        >>> WheeledBody.from_table("cart", cart.to_table()) == cart
+        True
+        """
+        slip: Any = (dataclasses.asdict(self.slip) if isinstance(self.slip, Slip)
+                     else {p: dataclasses.asdict(s) for p, s in self.slip.items()})
+        table = {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name not in ("name", "slip",
+                                                                                                   "primitives_mm_s")}
+        return {**table, "slip": slip, "primitives_mm_s": {p: list(w) for p, w in self.primitives_mm_s.items()}}
+
     @classmethod
     def from_table(cls, name: str, table: Mapping[str, Any], *, where: str = "") -> WheeledBody:
         """A body from a TOML table (``[bodies.<name>]``): the constructor's keywords, ``slip``
@@ -273,7 +287,7 @@ def _thesis_bodies() -> dict[str, WheeledBody]:
             turn_lag_s=c["tau_angular_s"],
             slip={p: Slip(**t) for p, t in zip(PRIMITIVE_NAMES, c["traction"])},
             primitives_mm_s={p: tuple(w) for p, w in zip(PRIMITIVE_NAMES, c["primitive_wheels_mm_s"])},
-            field=_THESIS_FIELDS[name], expert_commands=c["accepts_expert_commands"],
+            field=THESIS_BODY_FIELDS[name], expert_commands=c["accepts_expert_commands"],
             fresh_slip_frames=c["traction_refresh_frames"])
     return out
 
@@ -288,7 +302,7 @@ def _describe(body: WheeledBody) -> None:
     its field; a later body of the same name replaces it (as redefining it in a notebook
     should), but a thesis body's name stays the thesis body's."""
     with _lock:
-        if body.name in _THESIS_FIELDS and not _building_thesis_bodies and _described.get(body.name) != body:
+        if body.name in THESIS_BODY_FIELDS and not _building_thesis_bodies and _described.get(body.name) != body:
             raise ValueError(f"body name {body.name!r} is the thesis's; give your body a name of its own")
         _described[body.name] = body
 
@@ -305,8 +319,8 @@ def field_of(body: str) -> str:
     >>> field_of("tiny"), field_of("humanoid")
     ('small', 'large')
     """
-    if body in _THESIS_FIELDS:
-        return _THESIS_FIELDS[body]
+    if body in THESIS_BODY_FIELDS:
+        return THESIS_BODY_FIELDS[body]
     with _lock:
         known = _described.get(body)
     if known is None:
@@ -325,12 +339,13 @@ def resolve(body: str | WheeledBody) -> str | WheeledBody:
     """
     if isinstance(body, WheeledBody):
         return native_body(body)
-    if body in _THESIS_FIELDS:
+    if body in THESIS_BODY_FIELDS:
         return body
     with _lock:
         known = _described.get(body) if isinstance(body, str) else None
     if known is None:
-        raise ValueError(f"unknown body {body!r}: one of {', '.join(_THESIS_FIELDS)} or a polymimic.bodies.WheeledBody")
+        raise ValueError(f"unknown body {body!r}: one of {', '.join(THESIS_BODY_FIELDS)} or a "
+                         f"polymimic.bodies.WheeledBody")
     return native_body(known)
 
 

@@ -104,17 +104,19 @@ def build_parser() -> argparse.ArgumentParser:
     for stage, text in _STAGE_HELP.items():
         sub = commands.add_parser(stage, parents=[_run_options(tasks=True)], help=text, description=text)
         if stage in ("learn", "evaluate"):
-            sub.add_argument("--experiment", action="append", choices=list(EXPERIMENTS),
-                             help="only this experiment (repeatable; default: all)")
+            sub.add_argument("--experiment", action="append", metavar="NAME",
+                             help=f"only this experiment (repeatable; default: all): {', '.join(EXPERIMENTS)} or "
+                                  "one of the run config's [experiments.<name>]")
         if stage == "learn":
             sub.add_argument("--limit", type=_positive, help="run at most this many new trials per experiment")
         sub.set_defaults(handler=_stage, stage=stage)
 
     replay = commands.add_parser("replay", parents=[_run_options(tasks=False)],
                                  help="an episode as an animated GIF: a demonstration, or an imitator's attempt")
-    replay.add_argument("who", choices=[*DEMONSTRATORS, "imitator"])
+    replay.add_argument("who", help=f"{', '.join(DEMONSTRATORS)}, one of the run config's [demonstrators], or "
+                                    "imitator")
     replay.add_argument("--episode", type=int, default=0, help="which episode, from 0 (default 0)")
-    replay.add_argument("--experiment", choices=list(EXPERIMENTS), default="varying_skill",
+    replay.add_argument("--experiment", default="varying_skill",
                         help="whose imitator, for `imitator` (its first evaluated one)")
     replay.add_argument("--control", choices=CONTROLS, default="improved", help="for `imitator`")
     replay.add_argument("--out", type=pathlib.Path, help="the GIF (default: plots/replay_<who>_<episode>.gif)")
@@ -240,7 +242,13 @@ def _run_stages(run: RunDir, config: RunConfig, args: argparse.Namespace) -> int
 
 def _replay(args: argparse.Namespace) -> int:
     run = _existing(RunDir(_run_path(args, new=False)))
-    run.open(_requested_config(args))
+    config = run.open(_requested_config(args))
+    known = [*DEMONSTRATORS, *config.demonstrators, "imitator"]
+    if args.who not in known:
+        raise ConfigError(f"unknown demonstrator {args.who!r}; expected one of {', '.join(known)}")
+    if args.experiment not in config.all_experiments():
+        raise ConfigError(f"unknown experiment {args.experiment!r}; expected one of "
+                          f"{', '.join(config.all_experiments())}")
     if args.who == "imitator":
         source = run.require(run.attempts_path(args.experiment, args.control), "evaluate")
     else:

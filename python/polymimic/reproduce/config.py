@@ -29,8 +29,18 @@ from typing import Any, TypeVar
 
 from polymimic._tables import Path, merged
 from polymimic._toml import loads, write_table
+from polymimic.bodies import WheeledBody
 from polymimic.field import check_config, default_config
 from polymimic.learning import LearningConfig
+from polymimic.reproduce.roster import EXPERIMENTS, Experiment
+from polymimic.reproduce.roster_config import (
+    DemonstratorSpec,
+    RosterError,
+    demonstrators_from_tables,
+    experiments_from_tables,
+    read_bodies,
+    spec_table,
+)
 
 __all__ = ["ConfigError", "ExperimentSettings", "RecognizerSettings", "RunConfig", "SeedSettings", "SegmenterSettings"]
 
@@ -155,6 +165,16 @@ class RunConfig:
     segmenter: SegmenterSettings = dataclasses.field(default_factory=SegmenterSettings)
     learning: LearningConfig = dataclasses.field(default_factory=LearningConfig)
     experiments: ExperimentSettings = dataclasses.field(default_factory=ExperimentSettings)
+    bodies: dict[str, WheeledBody] = dataclasses.field(default_factory=dict)
+    """``[bodies.<name>]``: wheeled bodies of the user's (see :mod:`polymimic.reproduce.roster_config`)."""
+    demonstrators: dict[str, DemonstratorSpec] = dataclasses.field(default_factory=dict)
+    """``[demonstrators.<name>]``: demonstrators of the user's, recorded or imported with the thesis's."""
+    own_experiments: dict[str, Experiment] = dataclasses.field(default_factory=dict)
+    """``[experiments.<name>]``: experiments of the user's, run, evaluated and reported with the thesis's."""
+
+    def all_experiments(self) -> dict[str, Experiment]:
+        """The thesis's three experiments, then the user's."""
+        return {**EXPERIMENTS, **self.own_experiments}
 
     @classmethod
     def quick(cls) -> RunConfig:
@@ -173,24 +193,48 @@ class RunConfig:
                                             evaluated_imitators=2))
 
     def to_dict(self) -> dict[str, Any]:
-        """Plain data, section by section (what ``manifest.json`` keeps)."""
-        return {"seeds": dataclasses.asdict(self.seeds), "field": json.loads(json.dumps(self.field)),
+        """Plain data, section by section (what ``manifest.json`` keeps); the user's bodies,
+        demonstrators and experiments only where there are some."""
+        data = {"seeds": dataclasses.asdict(self.seeds), "field": json.loads(json.dumps(self.field)),
                 "recognizer": dataclasses.asdict(self.recognizer), "segmenter": dataclasses.asdict(self.segmenter),
-                "learning": self.learning.to_dict(), "experiments": dataclasses.asdict(self.experiments)}
+                "learning": self.learning.to_dict(),
+                "experiments": {**dataclasses.asdict(self.experiments),
+                                **{n: _experiment_table(e) for n, e in self.own_experiments.items()}}}
+        if self.bodies:
+            data["bodies"] = {name: body.to_table() for name, body in self.bodies.items()}
+        if self.demonstrators:
+            data["demonstrators"] = {name: spec_table(spec) for name, spec in self.demonstrators.items()}
+        return data
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any], *, base: RunConfig | None = None) -> RunConfig:
-        """A config from plain data; what ``data`` leaves out comes from ``base`` (the thesis's)."""
+    def from_dict(cls, data: dict[str, Any], *, base: RunConfig | None = None,
+                  base_dir: str | os.PathLike[str] = ".") -> RunConfig:
+        """A config from plain data; what ``data`` leaves out comes from ``base`` (the thesis's).
+        Files a demonstrator names (a log, a policy's file) are found relative to ``base_dir``."""
         base = base or cls()
-        unknown = sorted(set(data) - {f.name for f in dataclasses.fields(cls)})
+        unknown = sorted(set(data) - {f.name for f in dataclasses.fields(cls)} - {"own_experiments"})
         if unknown:
             raise ConfigError(f"unknown section{'s' if len(unknown) > 1 else ''}: {', '.join(unknown)}")
         changes: dict[str, Any] = {}
+        own_tables: dict[str, Any] = {}
+        if "experiments" in data:
+            table = _table("experiments", data["experiments"])
+            own_tables = {k: v for k, v in table.items() if isinstance(v, dict)}
+            data = {**data, "experiments": {k: v for k, v in table.items() if k not in own_tables}}
         for name in _SECTIONS:
             if name in data:
                 current = getattr(base, name)
                 values = _checked(name, _table(name, data[name]), dataclasses.asdict(current))
                 changes[name] = dataclasses.replace(current, **values)
+        try:
+            bodies = read_bodies(data["bodies"]) if "bodies" in data else base.bodies
+            demonstrators = (demonstrators_from_tables(data["demonstrators"], bodies=bodies, base_dir=base_dir)
+                             if "demonstrators" in data else base.demonstrators)
+            own = (experiments_from_tables(own_tables, demonstrators=list(demonstrators)) if own_tables
+                   else base.own_experiments)
+        except RosterError as error:
+            raise ConfigError(str(error)) from None
+        changes.update(bodies=bodies, demonstrators=demonstrators, own_experiments=own)
         if "field" in data:
             field = _field_section(base.field, _table("field", data["field"]))
             try:
@@ -210,7 +254,7 @@ class RunConfig:
         """Every parameter, one ``key = value`` line each, with what it means beside it."""
         lines = ["# polymimic run configuration: the thesis's values unless changed", ""]
         for name in ("seeds", "field", "recognizer", "segmenter", "learning", "experiments"):
-            section = getattr(self, name)
+            section: Any = getattr(self, name)
             if isinstance(section, LearningConfig):
                 write_table(lines, name, section.to_dict(), {})
             elif dataclasses.is_dataclass(section) and not isinstance(section, type):
@@ -219,15 +263,31 @@ class RunConfig:
             else:
                 lines.append("# The simulated field of self-observation and of every recorded demonstration.")
                 write_table(lines, name, section, {})
+        for name, experiment in self.own_experiments.items():
+            write_table(lines, f"experiments.{name}", _experiment_table(experiment), {})
+        for name, body in self.bodies.items():
+            write_table(lines, f"bodies.{name}", body.to_table(), {})
+        for name, spec in self.demonstrators.items():
+            write_table(lines, f"demonstrators.{name}", spec_table(spec), {})
         return "\n".join(lines).rstrip() + "\n"
 
     @classmethod
-    def from_toml(cls, text: str, *, base: RunConfig | None = None) -> RunConfig:
-        return cls.from_dict(toml_tables(text), base=base)
+    def from_toml(cls, text: str, *, base: RunConfig | None = None,
+                  base_dir: str | os.PathLike[str] = ".") -> RunConfig:
+        return cls.from_dict(toml_tables(text), base=base, base_dir=base_dir)
 
     @classmethod
     def load(cls, path: str | os.PathLike[str], *, base: RunConfig | None = None) -> RunConfig:
-        return read_config(path, lambda text: cls.from_toml(text, base=base))
+        folder = os.path.dirname(os.path.abspath(path))
+        return read_config(path, lambda text: cls.from_toml(text, base=base, base_dir=folder))
+
+
+def _experiment_table(experiment: Experiment) -> dict[str, Any]:
+    table: dict[str, Any] = {"title": experiment.title, "demonstrators": list(experiment.demonstrators),
+                             "ordering": list(experiment.ordering), "phase_one": experiment.phase_one}
+    if experiment.skill_order is not None:
+        table["skill_order"] = list(experiment.skill_order)
+    return table
 
 
 def toml_tables(text: str) -> dict[str, Any]:

@@ -34,9 +34,9 @@ from polymimic.learning import (
     run_trial,
 )
 from polymimic.reproduce.backends import TaskRunner
-from polymimic.reproduce.config import RunConfig
+from polymimic.reproduce.config import ConfigError, RunConfig
 from polymimic.reproduce.progress import progress
-from polymimic.reproduce.roster import CONTROLS, EXPERIMENTS, Experiment
+from polymimic.reproduce.roster import CONTROLS, Experiment
 from polymimic.reproduce.rundir import MissingInputError, RunDir
 from polymimic.segments import load_segments
 
@@ -119,13 +119,15 @@ def experiment_items(run: RunDir, experiment: Experiment) -> SegmentedDemonstrat
                                            for who in experiment.demonstrators])
 
 
-def _selected(names: Sequence[str] | None) -> list[Experiment]:
+def _selected(config: RunConfig, names: Sequence[str] | None) -> list[Experiment]:
+    """The experiments ``names`` asks for (all of them for None): the thesis's and the config's."""
+    known = config.all_experiments()
     if names is None:
-        return list(EXPERIMENTS.values())
-    unknown = [n for n in names if n not in EXPERIMENTS]
+        return list(known.values())
+    unknown = [n for n in names if n not in known]
     if unknown:
-        raise ValueError(f"unknown experiment {unknown[0]!r}; expected one of {', '.join(EXPERIMENTS)}")
-    return [EXPERIMENTS[n] for n in names]
+        raise ConfigError(f"unknown experiment {unknown[0]!r}; expected one of {', '.join(known)}")
+    return [known[n] for n in names]
 
 
 def learn(run: RunDir, config: RunConfig, runner: TaskRunner, *, experiments: Sequence[str] | None = None,
@@ -134,7 +136,7 @@ def learn(run: RunDir, config: RunConfig, runner: TaskRunner, *, experiments: Se
     return how many ran, by experiment."""
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
     ran = {}
-    for experiment in _selected(experiments):
+    for experiment in _selected(config, experiments):
         missing = [s for s in trial_seeds(config)
                    if not run.finished(run.trial_path(experiment.name, s), TrialResult.load)]
         missing = missing[:limit] if limit is not None else missing
@@ -223,7 +225,7 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
     attempts = 2 * config.experiments.attempts_per_configuration
     seeds = evaluated_seeds(config)
     ran = {}
-    for experiment in _selected(experiments):
+    for experiment in _selected(config, experiments):
         jobs = []
         for seed in seeds:
             for control in CONTROLS:

@@ -23,7 +23,7 @@ from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.figures import METRIC_LABELS, draw_figures
 from polymimic.reproduce.markdown import to_html
 from polymimic.reproduce.results import BEHAVIOUR_COUNTS, gather
-from polymimic.reproduce.roster import HETEROGENEOUS, VARYING_SKILL
+from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, HETEROGENEOUS, VARYING_SKILL
 from polymimic.reproduce.rundir import RunDir
 from polymimic.reproduce.schema import ExperimentResults, MeanSd, Outcomes, Results
 
@@ -119,7 +119,8 @@ class _Report:
 def render(results: Results, figures: dict[str, str], *, manifest: dict[str, Any] | None = None) -> str:
     """The whole report as Markdown."""
     report = _Report(results, figures)
-    for section in (_recognition, _segments, _demonstrators, _heterogeneous, _varying_skill, _appendix_b):
+    for section in (_recognition, _segments, _demonstrators, _heterogeneous, _varying_skill, _own_experiments,
+                    _appendix_b):
         section(report)
     head = _header(results, manifest)
     held = [v[2] for v in report.verdicts if v[2] is not None]
@@ -213,8 +214,9 @@ def _demonstrators(report: _Report) -> None:
     report.heading("Tables 4.6 and 4.9: goals and own goals of each demonstrator")
     report.table(_GOALS_HEADER, _goal_rows(d, thesis.DEMONSTRATOR_GOALS, ("expert", "tiny", "humanoid", "poor",
                                                                          "average")))
-    rate = {w: d[w]["goals"] / d[w]["attempts"] for w in d}
-    own_rate = {w: d[w]["own_goals"] / d[w]["attempts"] for w in d}
+    # The thesis's claims are about its own five; a user's demonstrators have a section of their own.
+    rate = {w: d[w]["goals"] / d[w]["attempts"] for w in DEMONSTRATORS}
+    own_rate = {w: d[w]["own_goals"] / d[w]["attempts"] for w in DEMONSTRATORS}
     report.check("the Expert scores the most goals", _most(rate, "expert"))
     report.check("the Poor demonstrator scores the most own goals", _most(own_rate, "poor"))
 
@@ -392,6 +394,27 @@ def _varying_skill(report: _Report) -> None:
         margin = 2 * (imitator["goals_sd"] or 0.0)
         clearly = (imitator_goals - margin) / imitator["attempts"] > poor["goals"] / poor["attempts"]
     report.check("the improved imitator scores clearly more than the Poor demonstrator (by over two sd)", clearly)
+
+
+def _own_experiments(report: _Report) -> None:
+    """The run config's own experiments: the tables that apply, without thesis columns (the
+    thesis has no numbers for them), and no shape checks."""
+    d = report.r["demonstrators"]
+    for e in (e for name, e in report.r["experiments"].items() if name not in EXPERIMENTS):
+        report.heading(f"Your experiment: {e['title']}")
+        report.say(f"Phase one {e['phase_one']}, ordering {', '.join(e['ordering'])}; {e['trials']} trials. "
+                   "Goals of each demonstrator over its own demonstrations; final LP and match rate mean (sd) "
+                   "over trials.")
+        report.table(["demonstrator", "goals", "own goals", "attempts", "final LP", "rounds matched"],
+                     [(w, d[w]["goals"], d[w]["own_goals"], d[w]["attempts"], msd(e["final_lp"][w], digits=3),
+                       msd(e["match_rate"][w], share=True)) for w in e["ordering"]])
+        if e["lp_order_hits"] is not None:
+            report.say(f"Final LPs in the skill order given: {e['lp_order_hits']} of {e['trials']} trials.")
+        report.table(["control", "goals", "own goals", "attempts", "imitators"],
+                     [(control, f"{num(cell['goals'])} ({num(cell['goals_sd'])})",
+                       f"{num(cell['own_goals'])} ({num(cell['own_goals_sd'])})", cell["attempts"], cell["imitators"])
+                      for control, cell in (("improved", e["imitator"]), ("thesis control",
+                                                                          e["imitator_thesis_control"]))])
 
 
 def _appendix_b(report: _Report) -> None:

@@ -24,11 +24,11 @@ import numpy as np
 from polymimic import __version__, recognition
 from polymimic._native import PrimitiveRecognizer, lp_order_hits
 from polymimic.datasets import load_demonstrations, load_self_observation
-from polymimic.field import Demonstration
+from polymimic.field import UNKNOWN_COMMAND, Demonstration
 from polymimic.learning import LearningConfig, ModelResult, TrialResult
 from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.experiments import evaluated_seeds, load_evaluation, trial_seeds
-from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
+from polymimic.reproduce.roster import DEMONSTRATORS, Experiment
 from polymimic.reproduce.rundir import MissingInputError, RunDir
 from polymimic.reproduce.schema import (
     AppendixB,
@@ -203,8 +203,9 @@ def gather(run: RunDir, config: RunConfig) -> Results:
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
     demos = {who: load_demonstrations(run.require(run.demonstrations_path(who), "record" if who != "average"
                                                   else "segment"))
-             for who in DEMONSTRATORS}
-    to_segment = [d for who in DEMONSTRATORS for d in demos[who]]
+             for who in (*DEMONSTRATORS, *config.demonstrators)}
+    # Table 4.5 measures segments against the commands sent: not for a log that recorded none.
+    to_segment = [d for who in demos for d in demos[who] if not (d.frames["command"] == UNKNOWN_COMMAND).any()]
     imitator_attempts = run.attempts_path("varying_skill", "thesis")
     if imitator_attempts.exists():  # the thesis's VaryingSkillTrained row of Table 4.5
         # As for every demonstrator, only attempts the tracker followed throughout.
@@ -213,7 +214,7 @@ def gather(run: RunDir, config: RunConfig) -> Results:
     experiments: dict[str, ExperimentResults] = {}
     all_trials: list[TrialResult] = []
     attempts = 2 * config.experiments.attempts_per_configuration
-    for name, experiment in EXPERIMENTS.items():
+    for name, experiment in config.all_experiments().items():
         trials = load_trials(run, config, name)
         all_trials += trials
         scores = {control: summarize_evaluations(load_evaluations(run, config, name, control), attempts=attempts)

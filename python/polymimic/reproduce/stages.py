@@ -37,6 +37,7 @@ from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.experiments import evaluate_imitators, learn
 from polymimic.reproduce.report import write_report
 from polymimic.reproduce.roster import DEMONSTRATORS, HETEROGENEOUS, RECORDED
+from polymimic.reproduce.roster_config import LogDemonstrator, record_demonstrator
 from polymimic.reproduce.rundir import RunDir, RunError
 from polymimic.segments import load_segments, save_segments, segment_demonstrations
 
@@ -89,6 +90,21 @@ def _record(ctx: Context) -> int:
                                      config=ctx.config.field)]
             save_demonstrations(demos, path)
             made += 1
+    for name, spec in ctx.config.demonstrators.items():
+        path = ctx.run.demonstrations_path(name)
+        # A log holds as many valid episodes as it holds; a recorded demonstrator n per configuration.
+        count = None if isinstance(spec, LogDemonstrator) else 2 * n
+        if not ctx.finished(path, load_demonstrations, count=count):
+            try:
+                demos, said = record_demonstrator(spec, n=n, seed=ctx.config.seeds.demonstrations,
+                                                  field_config=ctx.config.field, bodies=ctx.config.bodies)
+            except (ValueError, TypeError, OSError) as error:
+                raise RunError(f"[demonstrators.{name}]: {error}") from error
+            if not demos:
+                raise RunError(f"[demonstrators.{name}]: no valid demonstration ({said})")
+            save_demonstrations(demos, path)
+            ctx.say(f"  {said}")
+            made += 1
     if ctx.run.recognizer_path.exists():
         made += _record_average(ctx)
     return made
@@ -135,10 +151,13 @@ def _segment(ctx: Context) -> int:
     recognizer = PrimitiveRecognizer.load(ctx.run.require(ctx.run.recognizer_path, "train"))
     made = _record_average(ctx)
     segmenter = dataclasses.asdict(ctx.config.segmenter)
-    for who in DEMONSTRATORS:
+    for who in (*DEMONSTRATORS, *ctx.config.demonstrators):
         path = ctx.run.segments_path(who)
-        if not ctx.finished(path, load_segments, count=2 * ctx.config.experiments.demonstrations_per_configuration):
-            demos = load_demonstrations(ctx.run.require(ctx.run.demonstrations_path(who), "record"))
+        recorded = ctx.run.demonstrations_path(who)
+        count = (len(load_demonstrations(recorded)) if isinstance(ctx.config.demonstrators.get(who), LogDemonstrator)
+                 and recorded.exists() else 2 * ctx.config.experiments.demonstrations_per_configuration)
+        if not ctx.finished(path, load_segments, count=count):
+            demos = load_demonstrations(ctx.run.require(recorded, "record"))
             save_segments(segment_demonstrations(demos, recognizer, **segmenter), path)
             made += 1
     return made

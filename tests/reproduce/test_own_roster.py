@@ -1,0 +1,145 @@
+"""A run config's own bodies, demonstrators and experiments: recorded, segmented, learned from,
+evaluated and reported like the thesis's, while the thesis's part of the run stays as it was."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from polymimic import write_tracks
+from polymimic.datasets import load_demonstrations
+from polymimic.field import record
+from polymimic.reproduce.backends import TaskRunner
+from polymimic.reproduce.config import ConfigError, RunConfig
+from polymimic.reproduce.rundir import RunDir
+from polymimic.reproduce.stages import Context, reproduce
+
+POLICY = '''
+import math
+
+
+class Straight:
+    """Drive at the ball."""
+
+    decision_hz = 10
+
+    def act(self, reading):
+        bearing = math.atan2(reading.ball_y_mm - reading.robot_y_mm, reading.ball_x_mm - reading.robot_x_mm)
+        error = math.remainder(bearing - reading.robot_theta_rad, math.tau)
+        return "forward" if abs(error) < 0.3 else ("left" if error > 0 else "right")
+'''
+
+ROSTER = '''
+[bodies.cart]
+length_mm = 160
+width_mm = 150
+wheel_base_mm = 140
+top_wheel_speed_mm_s = 140
+
+[demonstrators.cart_poor]
+controller = "poor"
+body = "cart"
+lapse = 0.2
+
+[demonstrators.straight]
+policy = "policies.py:Straight"
+body = "cart"
+
+[demonstrators.logged]
+log = "logs/overhead.csv"
+rate_hz = 20
+units = { length = "m", angle = "deg" }
+
+[experiments.mine]
+title = "the user's crowd"
+demonstrators = ["expert", "cart_poor", "straight", "logged"]
+ordering = ["straight", "logged", "cart_poor", "expert"]
+skill_order = ["expert", "straight", "cart_poor", "logged"]
+'''
+
+
+@pytest.fixture(scope="module")
+def own_run(tiny_run_toml, tmp_path_factory):
+    folder = tmp_path_factory.mktemp("own")
+    (folder / "policies.py").write_text(POLICY)
+    (folder / "logs").mkdir()
+    logged = [d for c in (1, 2) for d in record("poor", configuration=c, n=4, seed=9)]
+    write_tracks(logged, folder / "logs" / "overhead.csv", units={"length": "m", "angle": "deg"}, rate_hz=20,
+                 include=("episode",))
+    (folder / "run.toml").write_text(tiny_run_toml(trials=2) + ROSTER)
+    config = RunConfig.load(folder / "run.toml")
+    run = RunDir(folder / "run")
+    config = run.open(config)
+    reproduce(Context(run=run, config=config, runner=TaskRunner(workers=1), quiet=True))
+    return run, config, logged
+
+
+def test_the_config_reads_and_round_trips(own_run):
+    _, config, _ = own_run
+    assert list(config.demonstrators) == ["cart_poor", "straight", "logged"]
+    assert config.bodies["cart"].primitives_mm_s["forward"] == (56.0, 56.0)
+    assert config.own_experiments["mine"].ordering == ("straight", "logged", "cart_poor", "expert")
+    assert RunConfig.from_toml(config.to_toml()) == config
+    assert RunConfig.from_dict(json.loads(json.dumps(config.to_dict()))) == config
+
+
+def test_every_own_demonstrator_is_recorded_and_segmented(own_run):
+    run, config, logged = own_run
+    n = config.experiments.demonstrations_per_configuration
+    cart = load_demonstrations(run.demonstrations_path("cart_poor"))
+    straight = load_demonstrations(run.demonstrations_path("straight"))
+    imported = load_demonstrations(run.demonstrations_path("logged"))
+    assert len(cart) == len(straight) == 2 * n and len(imported) == len(logged)
+    assert {d.body for d in cart + straight} == {"cart"} and {d.demonstrator for d in imported} == {"logged"}
+    assert [d.outcome for d in imported] == [d.outcome for d in logged]
+    for who in ("cart_poor", "straight", "logged"):
+        assert run.segments_path(who).exists()
+
+
+def test_the_own_experiment_is_learned_evaluated_and_reported(own_run):
+    run, config, _ = own_run
+    results = json.loads(run.results_path.read_text())
+    mine = results["experiments"]["mine"]
+    assert mine["trials"] == 2 and mine["ordering"] == ["straight", "logged", "cart_poor", "expert"]
+    assert set(mine["final_lp"]) == {"straight", "logged", "cart_poor", "expert"}
+    assert mine["lp_order_hits"] is not None and 0 <= mine["lp_order_hits"] <= 2
+    assert mine["imitator"]["imitators"] == 2
+    assert set(results["demonstrators"]) >= {"cart_poor", "straight", "logged"}
+    # Table 4.5 measures segments against commands: the log recorded none, the others did.
+    assert "logged" not in results["segments"] and "straight" in results["segments"]
+    report = run.report_md_path.read_text()
+    assert "## Your experiment: the user's crowd" in report
+    section = report.split("## Your experiment: the user's crowd", 1)[1].split("\n## ", 1)[0]
+    # No thesis columns: the thesis has no numbers for the user's experiment.
+    assert "| demonstrator | goals | own goals | attempts | final LP | rounds matched |" in section
+    assert ", thesis" not in section
+    # The thesis's three experiments are all there as ever.
+    assert {"heterogeneous_rcb", "heterogeneous_bcr", "varying_skill"} <= set(results["experiments"])
+
+
+@pytest.mark.parametrize(("extra", "message"), [
+    ('[demonstrators.expert]\ncontroller = "poor"\n', r"\[demonstrators.expert\]: a demonstrator's name must be"),
+    ('[demonstrators.x]\ncontroller = "poor"\npolicy = "a:b"\n', r"needs exactly one of controller, policy or log"),
+    ('[demonstrators.x]\ncontroller = "pooor"\n', r"controller 'pooor' is not one of expert, poor"),
+    ('[demonstrators.x]\ncontroller = "poor"\nbody = "kart"\n', r"body 'kart' is neither a thesis body"),
+    ('[demonstrators.x]\ncontroller = "poor"\nlapse = 2\n', r"lapse must be a number in \[0, 1\], got 2"),
+    ('[demonstrators.x]\ncontroller = "poor"\ncolour = 1\n', r"unknown key 'colour' for a controller demonstrator"),
+    ('[demonstrators.x]\npolicy = "nocolon"\n', r"policy must be \"module:name\""),
+    ('[demonstrators.x]\npolicy = "a:b"\ndecision_hz = 7\n', r"decision_hz must be one of 30, 15"),
+    ('[experiments.varying_skill]\ndemonstrators = ["expert"]\n', r"an experiment's name must be a word of its own"),
+    ('[experiments.e]\ndemonstrators = ["expert", "nobody"]\n', r"demonstrator 'nobody' is neither the thesis's"),
+    ('[experiments.e]\ndemonstrators = ["expert", "poor"]\nordering = ["poor"]\n', r"ordering .* must list"),
+    ('[experiments.e]\ndemonstrators = ["expert"]\nphase_one = "mixed"\n', r"phase_one must be"),
+    ('[experiments.e]\ndemonstrators = ["expert"]\ncolour = 1\n', r"unknown key 'colour'"),
+    ('[bodies.b]\nlength_mm = 0\nwidth_mm = 1\nwheel_base_mm = 1\ntop_wheel_speed_mm_s = 1\n',
+     r"\[bodies.b\]: body 'b': length_mm must be a positive number, got 0"),
+])
+def test_bad_roster_tables_are_refused_by_table_and_key(extra, message):
+    with pytest.raises(ConfigError, match=message):
+        RunConfig.from_toml(extra)
+
+
+def test_a_thesis_config_keeps_its_manifest_as_it_was():
+    assert set(RunConfig().to_dict()) == {"seeds", "field", "recognizer", "segmenter", "learning", "experiments"}
+    assert RunConfig.from_toml("[experiments]\ntrials = 3\n").own_experiments == {}

@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import pathlib
-import re
 import sys
 import time
 import warnings
@@ -152,10 +151,10 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _add_import_tracks(commands: Any) -> None:
     text = ("a tracker log (CSV or Parquet) resampled to 30 frames a second and saved as a run's demonstrations, "
-            "datasets/imported_<NAME>.parquet")
+            "datasets/demonstrations_<NAME>.parquet: the run's [demonstrators.<NAME>] with imported = true")
     tracks = commands.add_parser("import-tracks", help=text, description=text)
     tracks.add_argument("file", type=pathlib.Path, help="the log: .csv or .parquet, one row per reading")
-    tracks.add_argument("--as", dest="name", required=True, help="the demonstrator's name (letters, digits, _ and -)")
+    tracks.add_argument("--as", dest="name", required=True, help="the demonstrator's name (letters, digits and _)")
     tracks.add_argument("--body", choices=BODY_NAMES, default="lego", help="the demonstrator's body (default lego)")
     for quantity, option in (("length", "--length-unit"), ("angle", "--angle-unit"), ("time", "--time-unit")):
         tracks.add_argument(option, dest=f"{quantity}_unit", choices=list(UNITS[quantity]),
@@ -303,8 +302,9 @@ def _benchmark(args: argparse.Namespace) -> int:
 
 
 def _import_tracks(args: argparse.Namespace) -> int:
-    if not re.fullmatch(r"[A-Za-z0-9_-]+", args.name):
-        raise RunError(f"--as {args.name!r}: a demonstrator's name is letters, digits, _ and - (it names a file)")
+    if not args.name.isidentifier() or args.name in (*DEMONSTRATORS, "imitator"):
+        raise RunError(f"--as {args.name!r}: a demonstrator's name is a word of letters, digits and _, not one of "
+                       f"the thesis's ({', '.join(DEMONSTRATORS)})")
     columns = {}
     for item in args.column:
         name, sep, file_column = item.partition("=")
@@ -322,7 +322,7 @@ def _import_tracks(args: argparse.Namespace) -> int:
             raise MissingInputError("no run under runs/: name one with --run-dir, or write to a file with --out")
         if not pathlib.Path(run).is_dir():
             raise MissingInputError(f"--run-dir {run}: no such directory")
-        out = pathlib.Path(run) / "datasets" / f"imported_{args.name}.parquet"
+        out = RunDir(run).demonstrations_path(args.name)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", LostTrackingWarning)  # the summary line says which were invalid

@@ -47,8 +47,8 @@ def test_import_tracks_writes_the_runs_demonstrations_and_says_how_many(tmp_path
     assert cli.main(argv) == 0
     out = capsys.readouterr().out.strip().splitlines()
     assert out == [f"3 episodes from log.csv: 3 demonstrations, 0 invalid; written to "
-                   f"{pathlib.Path('runs/20260101-000000/datasets/imported_alice.parquet')}"]
-    imported = load_demonstrations(run / "datasets" / "imported_alice.parquet")
+                   f"{pathlib.Path('runs/20260101-000000/datasets/demonstrations_alice.parquet')}"]
+    imported = load_demonstrations(run / "datasets" / "demonstrations_alice.parquet")
     assert [d.outcome for d in imported] == [d.outcome for d in demos]
     assert {d.demonstrator for d in imported} == {"alice"}
 

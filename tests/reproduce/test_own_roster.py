@@ -120,13 +120,15 @@ def test_the_own_experiment_is_learned_evaluated_and_reported(own_run):
 
 @pytest.mark.parametrize(("extra", "message"), [
     ('[demonstrators.expert]\ncontroller = "poor"\n', r"\[demonstrators.expert\]: a demonstrator's name must be"),
-    ('[demonstrators.x]\ncontroller = "poor"\npolicy = "a:b"\n', r"needs exactly one of controller, policy or log"),
+    ('[demonstrators.x]\ncontroller = "poor"\npolicy = "a:b"\n',
+     r"needs exactly one of controller, policy, log or imported; got controller, policy"),
     ('[demonstrators.x]\ncontroller = "pooor"\n', r"controller 'pooor' is not one of expert, poor"),
     ('[demonstrators.x]\ncontroller = "poor"\nbody = "kart"\n', r"body 'kart' is neither a thesis body"),
     ('[demonstrators.x]\ncontroller = "poor"\nlapse = 2\n', r"lapse must be a number in \[0, 1\], got 2"),
     ('[demonstrators.x]\ncontroller = "poor"\ncolour = 1\n', r"unknown key 'colour' for a controller demonstrator"),
     ('[demonstrators.x]\npolicy = "nocolon"\n', r"policy must be \"module:name\""),
     ('[demonstrators.x]\npolicy = "a:b"\ndecision_hz = 7\n', r"decision_hz must be one of 30, 15"),
+    ('[demonstrators.x]\nimported = false\n', r"imported must be true"),
     ('[experiments.varying_skill]\ndemonstrators = ["expert"]\n', r"an experiment's name must be a word of its own"),
     ('[experiments.e]\ndemonstrators = ["expert", "nobody"]\n', r"demonstrator 'nobody' is neither the thesis's"),
     ('[experiments.e]\ndemonstrators = ["expert", "poor"]\nordering = ["poor"]\n', r"ordering .* must list"),
@@ -143,3 +145,28 @@ def test_bad_roster_tables_are_refused_by_table_and_key(extra, message):
 def test_a_thesis_config_keeps_its_manifest_as_it_was():
     assert set(RunConfig().to_dict()) == {"seeds", "field", "recognizer", "segmenter", "learning", "experiments"}
     assert RunConfig.from_toml("[experiments]\ntrials = 3\n").own_experiments == {}
+
+
+def test_a_log_brought_in_with_import_tracks_is_the_runs_demonstrator(tiny_run_toml, tmp_path, capsys):
+    from polymimic import cli
+    from polymimic.reproduce.rundir import MissingInputError
+
+    roster = ('[demonstrators.alice]\nimported = true\n\n[experiments.with_alice]\n'
+              'demonstrators = ["alice", "expert"]\n')
+    config = RunConfig.from_toml(tiny_run_toml(trials=1, evaluated_imitators=1) + roster)
+    run = RunDir(tmp_path / "run")
+    config = run.open(config)
+    ctx = Context(run=run, config=config, runner=TaskRunner(workers=1), quiet=True)
+    with pytest.raises(MissingInputError, match=r"\[demonstrators.alice\] is imported; bring its log in with "
+                                                r"`polymimic import-tracks FILE --as alice"):
+        reproduce(ctx)
+    logged = [d for c in (1, 2) for d in record("poor", configuration=c, n=3, seed=4)]
+    write_tracks(logged, tmp_path / "alice.csv", rate_hz=30, include=("episode",))
+    assert cli.main(["import-tracks", str(tmp_path / "alice.csv"), "--as", "alice", "--run-dir", str(run.path)]) == 0
+    assert "6 episodes from alice.csv: 6 demonstrations, 0 invalid" in capsys.readouterr().out
+    reproduce(ctx)
+    results = json.loads(run.results_path.read_text())
+    assert results["demonstrators"]["alice"]["attempts"] == 6
+    assert set(results["experiments"]["with_alice"]["final_lp"]) == {"alice", "expert"}
+    assert cli.main(["import-tracks", str(tmp_path / "alice.csv"), "--as", "expert", "--run-dir", str(run.path)]) == 2
+    assert "not one of the thesis's" in capsys.readouterr().err

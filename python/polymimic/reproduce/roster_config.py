@@ -27,6 +27,9 @@ reported like the thesis's.
     units = { length = "m", angle = "deg" }
     columns = { t = "time" }
 
+    [demonstrators.alice]          # what `polymimic import-tracks FILE --as alice` put in the run
+    imported = true
+
     [experiments.mine]             # an experiment: whose demonstrations, in which phase-one order
     demonstrators = ["expert", "chaser", "logged"]
     ordering = ["chaser", "logged", "expert"]   # default: as listed
@@ -54,8 +57,9 @@ from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, bodies_from_tables
 from polymimic.policies import DECISION_RATES_HZ
 from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
 
-__all__ = ["ControllerDemonstrator", "DemonstratorSpec", "LogDemonstrator", "PolicyDemonstrator", "RosterError",
-           "demonstrators_from_tables", "experiments_from_tables", "read_bodies", "record_demonstrator", "spec_table"]
+__all__ = ["ControllerDemonstrator", "DemonstratorSpec", "ImportedDemonstrator", "LogDemonstrator",
+           "PolicyDemonstrator", "RosterError", "demonstrators_from_tables", "experiments_from_tables", "read_bodies",
+           "record_demonstrator", "spec_table"]
 
 
 class RosterError(ValueError):
@@ -94,10 +98,22 @@ class LogDemonstrator:
     columns: Mapping[str, str] = dataclasses.field(default_factory=dict)
 
 
-DemonstratorSpec = Union[ControllerDemonstrator, PolicyDemonstrator, LogDemonstrator]
+@dataclasses.dataclass(frozen=True)
+class ImportedDemonstrator:
+    """Demonstrations brought into the run with ``polymimic import-tracks FILE --as <name>``
+    (``imported = true``): the record stage finds them in the run's datasets."""
 
-_KINDS: dict[str, type[ControllerDemonstrator] | type[PolicyDemonstrator] | type[LogDemonstrator]] = {
-    "controller": ControllerDemonstrator, "policy": PolicyDemonstrator, "log": LogDemonstrator}
+    name: str
+    imported: bool
+    body: str
+
+
+DemonstratorSpec = Union[ControllerDemonstrator, PolicyDemonstrator, LogDemonstrator, ImportedDemonstrator]
+
+_KINDS: dict[str, type[ControllerDemonstrator] | type[PolicyDemonstrator] | type[LogDemonstrator]
+             | type[ImportedDemonstrator]] = {
+    "controller": ControllerDemonstrator, "policy": PolicyDemonstrator, "log": LogDemonstrator,
+    "imported": ImportedDemonstrator}
 
 
 def demonstrators_from_tables(tables: Mapping[str, Any], *, bodies: Mapping[str, WheeledBody],
@@ -119,7 +135,7 @@ def _demonstrator(name: str, table: Any, bodies: Mapping[str, WheeledBody], base
                           f"({', '.join(DEMONSTRATORS)}) or 'imitator'")
     kinds = [k for k in _KINDS if k in table]
     if len(kinds) != 1:
-        raise RosterError(f"{where} needs exactly one of controller, policy or log; got "
+        raise RosterError(f"{where} needs exactly one of controller, policy, log or imported; got "
                           f"{', '.join(kinds) if kinds else 'none'}")
     kind = _KINDS[kinds[0]]
     known = [f.name for f in dataclasses.fields(kind) if f.name != "name"]
@@ -163,6 +179,10 @@ def _check_kind(where: str, kind: str, values: dict[str, Any]) -> None:
         if rate is not None and rate not in DECISION_RATES_HZ:
             raise RosterError(f"{where}: decision_hz must be one of {', '.join(map(str, DECISION_RATES_HZ))}, "
                               f"got {rate!r}")
+    elif kind == "imported":
+        if values["imported"] is not True:
+            raise RosterError(f"{where}: imported must be true (the demonstrations polymimic import-tracks put in "
+                              f"the run), got {values['imported']!r}")
     else:
         text("log")
         for key in ("units", "columns"):
@@ -233,6 +253,9 @@ def record_demonstrator(spec: DemonstratorSpec, *, n: int, seed: int, field_conf
                         bodies: Mapping[str, WheeledBody]) -> tuple[list[field.Demonstration], str]:
     """A demonstrator's demonstrations (``n`` per configuration, a log's every valid episode) and
     a line saying what was done."""
+    if isinstance(spec, ImportedDemonstrator):
+        raise RosterError(f"[demonstrators.{spec.name}] is imported: bring its log in with `polymimic import-tracks "
+                          f"FILE --as {spec.name} --run-dir <this run>` before recording")
     body: str | WheeledBody = bodies.get(spec.body, spec.body)
     if isinstance(spec, LogDemonstrator):
         imported = tracks.import_tracks(spec.log, demonstrator=spec.name, body=body, rate_hz=spec.rate_hz,

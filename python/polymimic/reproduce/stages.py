@@ -37,8 +37,8 @@ from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.experiments import evaluate_imitators, learn
 from polymimic.reproduce.report import write_report
 from polymimic.reproduce.roster import DEMONSTRATORS, HETEROGENEOUS, RECORDED
-from polymimic.reproduce.roster_config import LogDemonstrator, record_demonstrator
-from polymimic.reproduce.rundir import RunDir, RunError
+from polymimic.reproduce.roster_config import ImportedDemonstrator, LogDemonstrator, record_demonstrator
+from polymimic.reproduce.rundir import MissingInputError, RunDir, RunError
 from polymimic.segments import load_segments, save_segments, segment_demonstrations
 
 __all__ = ["STAGES", "Context", "reproduce", "run_stage"]
@@ -93,8 +93,11 @@ def _record(ctx: Context) -> int:
     for name, spec in ctx.config.demonstrators.items():
         path = ctx.run.demonstrations_path(name)
         # A log holds as many valid episodes as it holds; a recorded demonstrator n per configuration.
-        count = None if isinstance(spec, LogDemonstrator) else 2 * n
+        count = None if isinstance(spec, (LogDemonstrator, ImportedDemonstrator)) else 2 * n
         if not ctx.finished(path, load_demonstrations, count=count):
+            if isinstance(spec, ImportedDemonstrator):
+                raise MissingInputError(f"{path} is missing: [demonstrators.{name}] is imported; bring its log in "
+                                        f"with `polymimic import-tracks FILE --as {name} --run-dir {ctx.run.path}`")
             try:
                 demos, said = record_demonstrator(spec, n=n, seed=ctx.config.seeds.demonstrations,
                                                   field_config=ctx.config.field, bodies=ctx.config.bodies)
@@ -154,8 +157,9 @@ def _segment(ctx: Context) -> int:
     for who in (*DEMONSTRATORS, *ctx.config.demonstrators):
         path = ctx.run.segments_path(who)
         recorded = ctx.run.demonstrations_path(who)
-        count = (len(load_demonstrations(recorded)) if isinstance(ctx.config.demonstrators.get(who), LogDemonstrator)
-                 and recorded.exists() else 2 * ctx.config.experiments.demonstrations_per_configuration)
+        fixed = not isinstance(ctx.config.demonstrators.get(who), (LogDemonstrator, ImportedDemonstrator))
+        count = (2 * ctx.config.experiments.demonstrations_per_configuration if fixed or not recorded.exists()
+                 else len(load_demonstrations(recorded)))
         if not ctx.finished(path, load_segments, count=count):
             demos = load_demonstrations(ctx.run.require(recorded, "record"))
             save_segments(segment_demonstrations(demos, recognizer, **segmenter), path)

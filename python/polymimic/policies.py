@@ -9,7 +9,9 @@ the ball), ``ball_seen``, ``frame``, ``field_length_mm``, ``field_width_mm``). A
 primitive's name (``"forward"``, ``"backward"``, ``"left"``, ``"right"``, ``"stop"``), a command
 of the body's language by name or id (on the Lego body the Expert's named wheel-speed pairs,
 such as ``"arc_left_tight_fast"``; on the humanoid ``"Walk Forward"``, ``"Kick Left"``, …; see
-:func:`polymimic.command_table`).
+:func:`polymimic.command_table`), or on a wheeled body a ``(left_mm_s, right_mm_s)`` pair of
+wheel speeds within its top speed (kept to the micrometre per second; the frames record it by
+the primitive it resembles, ``wheels_forward`` … ``wheels_stop``).
 
 The policy decides ``decision_hz`` times a second (an argument of ``record``, else the policy's
 own ``decision_hz`` attribute, else 30: every tracker frame), and each command is held until

@@ -203,3 +203,26 @@ def test_neither_a_name_nor_a_policy_is_refused():
         record("poor", decision_hz=10, configuration=1, n=1)
     with pytest.raises(ValueError, match=r"unknown demonstrator 'expret'"):
         record("expret", configuration=1, n=1)
+
+
+def test_wheel_speeds_drive_as_the_experts_named_pair_of_the_same_speeds():
+    table = {row["name"]: row["id"] for row in polymimic.command_table()}
+    named = record(lambda r: "arc_left_medium_fast", body="lego", name="named", configuration=1, n=2, seed=6)
+    pairs = record(lambda r: (55.0, 100.0), body="lego", name="pairs", configuration=1, n=2, seed=6)
+    for a, b in zip(named, pairs):
+        for column in ("robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm"):
+            np.testing.assert_array_equal(a.frames[column], b.frames[column], err_msg=column)
+        # Frames record wheel speeds by the primitive they resemble: an arc this wide is Forward.
+        assert set(b.frames["command"]) == {table["wheels_forward"]}
+        assert set(a.frames["command"]) == {table["arc_left_medium_fast"]}
+    assert polymimic.field.command_primitives()[table["wheels_left"]] == "left"
+
+
+def test_wheel_speeds_beyond_the_bodys_top_speed_are_refused():
+    with pytest.raises(PolicyError, match=r"'fast' in attempt 0 .*: wheel speeds \(140, 140\) mm/s exceed the lego "
+                                          r"body's top speed of 130 mm/s"):
+        record(lambda r: [140, 140], body="lego", name="fast", configuration=1, n=1)
+    with pytest.raises(PolicyError, match=r"'flag' .*command id 300 stands for wheel speeds"):
+        record(lambda r: "wheels_forward", body="lego", name="flag", configuration=1, n=1)
+    with pytest.raises(PolicyError, match=r"got \(1.0, 'a'\) \(tuple\)"):
+        record(lambda r: (1.0, "a"), body="lego", name="half", configuration=1, n=1)

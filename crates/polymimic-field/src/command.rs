@@ -4,7 +4,7 @@
 use polymimic_types::{Primitive, capitalised};
 use serde::{Deserialize, Serialize};
 
-use crate::error::FieldParamError;
+use crate::error::{FieldParamError, check_range};
 
 /// The Lego body's wheel base, mm: the Expert's wheel speeds are written for it, and its
 /// equivalent primitives are read through it.
@@ -224,6 +224,37 @@ impl HumanoidCommand {
     }
 }
 
+/// Wheel speeds of a policy's own choosing (left, right), kept to the micrometre per second so
+/// that two commands compare exactly (a command held is not a new one).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+pub struct WheelSpeeds {
+    left_um_s: i32,
+    right_um_s: i32,
+}
+
+impl WheelSpeeds {
+    /// Fastest wheel speed a command may name, mm/s (a body's top speed is checked when it runs).
+    pub const LIMIT_MM_S: f64 = 10_000.0;
+
+    /// `(left, right)` wheel speeds, mm/s.
+    ///
+    /// # Errors
+    /// `OutOfRange` for a speed that is not finite or beyond ±[`WheelSpeeds::LIMIT_MM_S`].
+    pub fn new(left_mm_s: f64, right_mm_s: f64) -> Result<Self, FieldParamError> {
+        let um = |name, v: f64| {
+            check_range(name, v, -Self::LIMIT_MM_S, Self::LIMIT_MM_S, "a finite wheel speed within ±10 000 mm/s")
+                .map(|()| (v * 1000.0).round() as i32)
+        };
+        Ok(Self { left_um_s: um("left_mm_s", left_mm_s)?, right_um_s: um("right_mm_s", right_mm_s)? })
+    }
+
+    /// `(left, right)`, mm/s.
+    #[must_use]
+    pub fn mm_s(self) -> (f64, f64) {
+        (f64::from(self.left_um_s) / 1000.0, f64::from(self.right_um_s) / 1000.0)
+    }
+}
+
 /// Which language a command belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Language {
@@ -233,6 +264,8 @@ pub enum Language {
     Expert,
     /// The humanoid's language.
     Humanoid,
+    /// Wheel speeds of a policy's own choosing (any wheeled body).
+    Wheels,
 }
 
 /// A command sent by a controller for one tracker frame.
@@ -244,29 +277,38 @@ pub enum Command {
     Expert(ExpertCommand),
     /// A command of the humanoid's language (humanoid body only).
     Humanoid(HumanoidCommand),
+    /// Wheel speeds of a policy's own choosing (any wheeled body, within its top speed).
+    Wheels(WheelSpeeds),
 }
 
 const EXPERT_ID_BASE: u16 = 100;
 const HUMANOID_ID_BASE: u16 = 200;
+/// Frames record wheel speeds by the primitive they resemble: ids 300–304 (F B L R S).
+const WHEELS_ID_BASE: u16 = 300;
+const WHEELS_NAMES: [&str; 5] = ["wheels_forward", "wheels_backward", "wheels_left", "wheels_right", "wheels_stop"];
 
 impl Command {
-    /// Stable numeric id: primitives 0–4, Expert 100–134, humanoid 200–216.
+    /// Stable numeric id: primitives 0–4, Expert 100–134, humanoid 200–216, wheel speeds 300–304
+    /// by the primitive they resemble (the speeds themselves have no id).
     #[must_use]
     pub fn id(self) -> u16 {
         match self {
             Command::Primitive(p) => p as u16,
             Command::Expert(e) => EXPERT_ID_BASE + u16::from(e.0),
             Command::Humanoid(h) => HUMANOID_ID_BASE + h as u16,
+            Command::Wheels(_) => WHEELS_ID_BASE + self.primitive() as u16,
         }
     }
 
     /// The command with this id.
     ///
     /// # Errors
-    /// `UnknownCommand` if no language defines the id.
+    /// `UnknownCommand` if no language defines the id; `WheelSpeedsHaveNoId` for the ids frames
+    /// record wheel speeds by.
     pub fn from_id(id: u16) -> Result<Self, FieldParamError> {
         let unknown = FieldParamError::UnknownCommand(id);
         match id {
+            WHEELS_ID_BASE..=304 => Err(FieldParamError::WheelSpeedsHaveNoId(id)),
             0..=4 => Primitive::from_index(usize::from(id)).map(Command::Primitive).ok_or(unknown),
             EXPERT_ID_BASE..HUMANOID_ID_BASE => {
                 ExpertCommand::from_index(usize::from(id - 100)).map(Command::Expert).map_err(|_| unknown)
@@ -286,6 +328,7 @@ impl Command {
             Command::Primitive(p) => p.name(),
             Command::Expert(e) => e.name(),
             Command::Humanoid(h) => h.name(),
+            Command::Wheels(_) => WHEELS_NAMES[self.primitive().index()],
         }
     }
 
@@ -296,6 +339,7 @@ impl Command {
             Command::Primitive(_) => Language::Primitive,
             Command::Expert(_) => Language::Expert,
             Command::Humanoid(_) => Language::Humanoid,
+            Command::Wheels(_) => Language::Wheels,
         }
     }
 
@@ -309,6 +353,10 @@ impl Command {
                 primitive_of_wheels(l, r)
             }
             Command::Humanoid(h) => h.primitive(),
+            Command::Wheels(w) => {
+                let (l, r) = w.mm_s();
+                primitive_of_wheels(l, r)
+            }
         }
     }
 }
@@ -363,15 +411,23 @@ pub struct CommandInfo {
     pub primitive: Primitive,
 }
 
-/// Every command of every language with its id and equivalent primitive, in id order.
+/// Every command of every language with its id and equivalent primitive, in id order; the
+/// wheel-speed rows stand for every pair of speeds that resembles their primitive.
 #[must_use]
 pub fn command_table() -> Vec<CommandInfo> {
+    let wheels = Primitive::ALL.iter().map(|p| CommandInfo {
+        id: WHEELS_ID_BASE + *p as u16,
+        name: WHEELS_NAMES[p.index()],
+        language: Language::Wheels,
+        primitive: *p,
+    });
     Primitive::ALL
         .iter()
         .map(|p| Command::Primitive(*p))
         .chain(ExpertCommand::all().map(Command::Expert))
         .chain(HumanoidCommand::ALL.iter().map(|h| Command::Humanoid(*h)))
         .map(|c| CommandInfo { id: c.id(), name: c.name(), language: c.language(), primitive: c.primitive() })
+        .chain(wheels)
         .collect()
 }
 
@@ -382,11 +438,14 @@ mod tests {
     #[test]
     fn ids_round_trip_for_every_command() {
         let table = command_table();
-        assert_eq!(table.len(), 5 + ExpertCommand::COUNT + HumanoidCommand::ALL.len());
-        for row in &table {
+        assert_eq!(table.len(), 5 + ExpertCommand::COUNT + HumanoidCommand::ALL.len() + 5);
+        for row in table.iter().filter(|r| r.language != Language::Wheels) {
             let c = Command::from_id(row.id).expect("known id");
             assert_eq!(c.id(), row.id);
             assert_eq!(c.name(), row.name);
+        }
+        for id in 300..=304 {
+            assert_eq!(Command::from_id(id), Err(FieldParamError::WheelSpeedsHaveNoId(id)));
         }
         for bad in [5, 99, 100 + ExpertCommand::COUNT as u16, 199, 217, u16::MAX] {
             assert_eq!(Command::from_id(bad), Err(FieldParamError::UnknownCommand(bad)));
@@ -407,6 +466,22 @@ mod tests {
         assert_eq!(serde_json::from_str::<Command>(&text).expect("valid"), Command::Primitive(Primitive::Forward));
         let row = serde_json::to_string(&command_table()[3]).expect("plain data");
         assert_eq!(row, r#"{"id":3,"name":"right","language":"Primitive","primitive":"Right"}"#);
+    }
+
+    #[test]
+    fn wheel_speeds_are_recorded_by_the_primitive_they_resemble() {
+        let w = |l, r| Command::Wheels(WheelSpeeds::new(l, r).expect("finite"));
+        assert_eq!((w(60.0, 60.0).id(), w(60.0, 60.0).name()), (300, "wheels_forward"));
+        assert_eq!(w(-50.0, -49.0).primitive(), Primitive::Backward);
+        assert_eq!(w(-40.0, 40.0).primitive(), Primitive::Left);
+        assert_eq!(w(0.5, -0.5).primitive(), Primitive::Stop);
+        // The Expert's named pairs and the same speeds as numbers resemble the same primitive.
+        for e in ExpertCommand::all() {
+            let (l, r) = e.wheels_mm_s();
+            assert_eq!(w(l, r).primitive(), Command::Expert(e).primitive(), "{}", e.name());
+        }
+        assert_eq!(WheelSpeeds::new(12.3456, -7.0).expect("finite").mm_s(), (12.346, -7.0));
+        assert!(WheelSpeeds::new(f64::NAN, 0.0).is_err() && WheelSpeeds::new(0.0, 2e4).is_err());
     }
 
     #[test]

@@ -18,6 +18,23 @@ pub enum FieldParamError {
     /// A command id that no command language defines.
     #[error("unknown command id {0}")]
     UnknownCommand(u16),
+    /// The id frames record wheel speeds by: it names no speeds.
+    #[error(
+        "command id {0} stands for wheel speeds, not for a command: send the speeds themselves, (left_mm_s, right_mm_s)"
+    )]
+    WheelSpeedsHaveNoId(u16),
+    /// Wheel speeds beyond what the body's wheels reach.
+    #[error("wheel speeds ({left_mm_s}, {right_mm_s}) mm/s exceed the {body} body's top speed of {top_mm_s} mm/s")]
+    BeyondTopSpeed {
+        /// Left wheel, mm/s.
+        left_mm_s: f64,
+        /// Right wheel, mm/s.
+        right_mm_s: f64,
+        /// The body's top wheel speed, mm/s.
+        top_mm_s: f64,
+        /// Body name.
+        body: &'static str,
+    },
     /// A command the body cannot execute (a humanoid kick sent to a wheeled robot, …).
     #[error("command `{command}` cannot drive the {body} body")]
     CommandNotSupported {

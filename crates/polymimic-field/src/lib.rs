@@ -60,7 +60,7 @@ mod tracker;
 
 pub use batch::EpisodeBatch;
 pub use body::BodyKind;
-pub use command::{Command, CommandInfo, ExpertCommand, HumanoidCommand, Language, command_table};
+pub use command::{Command, CommandInfo, ExpertCommand, HumanoidCommand, Language, WheelSpeeds, command_table};
 pub use controller::{Controller, LapseRate};
 pub use demonstrate::{Demonstration, Demonstrator, demonstrate, demonstrate_on, record, record_all, record_on};
 pub use episode::{Episode, Observation, Outcome, StepResult};

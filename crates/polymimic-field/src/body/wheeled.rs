@@ -245,6 +245,19 @@ impl WheeledBody {
         let (left, right) = match command {
             Command::Primitive(p) => self.params.primitive_wheels_mm_s[p.index()],
             Command::Expert(e) if self.params.accepts_expert_commands => e.wheels_mm_s(),
+            Command::Wheels(w) => {
+                let (left, right) = w.mm_s();
+                let top = self.params.top_wheel_speed_mm_s;
+                if left.abs() > top || right.abs() > top {
+                    return Err(FieldParamError::BeyondTopSpeed {
+                        left_mm_s: left,
+                        right_mm_s: right,
+                        top_mm_s: top,
+                        body: self.params.name,
+                    });
+                }
+                (left, right)
+            }
             _ => {
                 return Err(FieldParamError::CommandNotSupported { command: command.name(), body: self.params.name });
             }

@@ -22,6 +22,7 @@ from polymimic._native import PolymimicError
 from polymimic.benchmark.config import METHODS, BenchmarkConfig
 from polymimic.benchmark.driver import Benchmark
 from polymimic.benchmark.rundir import BenchmarkDir
+from polymimic.bodies import WheeledBody
 from polymimic.datasets import load_demonstrations, save_demonstrations
 from polymimic.export import ACTIONS
 from polymimic.field import BODY_NAMES
@@ -30,6 +31,7 @@ from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.config import ConfigError, RunConfig
 from polymimic.reproduce.export import export_run
 from polymimic.reproduce.roster import CONTROLS, DEMONSTRATORS, EXPERIMENTS
+from polymimic.reproduce.roster_config import ImportedDemonstrator
 from polymimic.reproduce.rundir import MissingInputError, RunDir, RunError, latest_run_path, new_run_path
 from polymimic.reproduce.stages import Context, reproduce, run_stage
 from polymimic.tracks import LostTrackingWarning, TrackLogError, import_tracks
@@ -155,7 +157,8 @@ def _add_import_tracks(commands: Any) -> None:
     tracks = commands.add_parser("import-tracks", help=text, description=text)
     tracks.add_argument("file", type=pathlib.Path, help="the log: .csv or .parquet, one row per reading")
     tracks.add_argument("--as", dest="name", required=True, help="the demonstrator's name (letters, digits and _)")
-    tracks.add_argument("--body", choices=BODY_NAMES, default="lego", help="the demonstrator's body (default lego)")
+    tracks.add_argument("--body", help=f"the demonstrator's body: {', '.join(BODY_NAMES)} or one of the run's "
+                                       "[bodies] (default: the body the run's config gives it, else lego)")
     for quantity, option in (("length", "--length-unit"), ("angle", "--angle-unit"), ("time", "--time-unit")):
         tracks.add_argument(option, dest=f"{quantity}_unit", choices=list(UNITS[quantity]),
                             help=f"the log's {quantity} unit (default {next(iter(UNITS[quantity]))})")
@@ -312,7 +315,10 @@ def _import_tracks(args: argparse.Namespace) -> int:
             raise RunError(f"--column {item!r}: expected polymimic_name=file_column, e.g. --column t=time")
         columns[name] = file_column
     units = {q: u for q in UNITS if (u := getattr(args, f"{q}_unit")) is not None}
+    body: str | WheeledBody = args.body or "lego"
     if args.out is not None:
+        if body not in BODY_NAMES:
+            raise RunError(f"--body {body!r}: without a run, one of {', '.join(BODY_NAMES)}")
         out = pathlib.Path(args.out)
         if not out.parent.is_dir():
             raise RunError(f"--out {out}: directory {out.parent} does not exist")
@@ -323,11 +329,12 @@ def _import_tracks(args: argparse.Namespace) -> int:
         if not pathlib.Path(run).is_dir():
             raise MissingInputError(f"--run-dir {run}: no such directory")
         out = RunDir(run).demonstrations_path(args.name)
+        body = _declared_body(RunDir(run), args.name, args.body)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", LostTrackingWarning)  # the summary line says which were invalid
             imported = import_tracks(args.file, demonstrator=args.name, columns=columns, units=units,
-                                     rate_hz=args.rate_hz, body=args.body, configuration=args.configuration,
+                                     rate_hz=args.rate_hz, body=body, configuration=args.configuration,
                                      ignore=args.ignore)
     except (TrackLogError, OSError, ValueError, TypeError) as error:  # the log or the options: bad input, named
         raise RunError(str(error)) from error
@@ -337,6 +344,26 @@ def _import_tracks(args: argparse.Namespace) -> int:
     save_demonstrations(imported.demonstrations, out)
     print(f"{imported.summary()}; written to {out}")
     return 0
+
+
+def _declared_body(run: RunDir, name: str, asked: str | None) -> str | WheeledBody:
+    """The body the run's config gives demonstrator ``name`` (``[demonstrators.<name>]``), checked
+    against ``--body``; without such a table, ``--body`` (a thesis body or one of the run's)."""
+    config = run.open(None)
+    spec = config.demonstrators.get(name)
+    if spec is not None and not isinstance(spec, ImportedDemonstrator):
+        raise RunError(f"--as {name}: the run's [demonstrators.{name}] is not imported (it says "
+                       f"{type(spec).__name__}); choose another name")
+    if spec is None:
+        print(f"note: the run's config has no [demonstrators.{name}] with imported = true, so no experiment of the "
+              f"run reads these demonstrations", file=sys.stderr)
+    if spec is not None and asked is not None and asked != spec.body:
+        raise RunError(f"--body {asked!r}: the run's [demonstrators.{name}] says body = {spec.body!r}")
+    body = spec.body if spec is not None else (asked or "lego")
+    if body not in BODY_NAMES and body not in config.bodies:
+        raise RunError(f"--body {body!r}: one of {', '.join(BODY_NAMES)} or of the run's [bodies] "
+                       f"({', '.join(config.bodies) or 'none'})")
+    return config.bodies.get(body, body)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -39,9 +39,11 @@ def test_import_tracks_writes_the_runs_demonstrations_and_says_how_many(tmp_path
 
     log = tmp_path / "log.csv"
     demos = _tracker_log(log, units={"length": "m", "angle": "deg"}, rate_hz=60, include=())
+    from polymimic.reproduce.config import RunConfig
+    from polymimic.reproduce.rundir import RunDir
+
     run = tmp_path / "runs" / "20260101-000000"
-    run.mkdir(parents=True)
-    (run / "manifest.json").write_text("{}")
+    RunDir(run).open(RunConfig.from_toml('[demonstrators.alice]\nimported = true\n'))
     monkeypatch.chdir(tmp_path)  # the newest run under runs/ is the default
     argv = ["import-tracks", str(log), "--as", "alice", "--length-unit", "m", "--angle-unit", "deg", "--rate-hz", "60"]
     assert cli.main(argv) == 0

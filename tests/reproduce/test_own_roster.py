@@ -170,3 +170,20 @@ def test_a_log_brought_in_with_import_tracks_is_the_runs_demonstrator(tiny_run_t
     assert set(results["experiments"]["with_alice"]["final_lp"]) == {"alice", "expert"}
     assert cli.main(["import-tracks", str(tmp_path / "alice.csv"), "--as", "expert", "--run-dir", str(run.path)]) == 2
     assert "not one of the thesis's" in capsys.readouterr().err
+
+
+def test_import_tracks_takes_the_body_the_runs_config_gives(tmp_path, capsys):
+    from polymimic import cli
+
+    roster = ('[bodies.cart]\nlength_mm = 160\nwidth_mm = 150\nwheel_base_mm = 140\ntop_wheel_speed_mm_s = 140\n'
+              '[demonstrators.bob]\nimported = true\nbody = "cart"\n')
+    run = RunDir(tmp_path / "run")
+    run.open(RunConfig.from_toml(roster))
+    write_tracks(record("poor", configuration=1, n=2, seed=3), tmp_path / "bob.csv", include=("episode",))
+    base = ["import-tracks", str(tmp_path / "bob.csv"), "--run-dir", str(run.path)]
+    assert cli.main([*base, "--as", "bob", "--body", "tiny"]) == 2
+    assert "--body 'tiny': the run's [demonstrators.bob] says body = 'cart'" in capsys.readouterr().err
+    assert cli.main([*base, "--as", "bob"]) == 0
+    assert {d.body for d in load_demonstrations(run.demonstrations_path("bob"))} == {"cart"}
+    assert cli.main([*base, "--as", "carol", "--body", "kart"]) == 2
+    assert "--body 'kart': one of lego, tiny, humanoid or of the run's [bodies] (cart)" in capsys.readouterr().err

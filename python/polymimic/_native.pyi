@@ -237,6 +237,7 @@ class Reading:
     ball_y_mm: float
     field_length_mm: float
     field_width_mm: float
+    goal_mouth_mm: float
     @property
     def ball_seen(self) -> bool: ...
 

@@ -39,7 +39,8 @@ from typing import Any, Union
 
 from polymimic import _native
 
-__all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Slip", "WheeledBody", "bodies_from_tables", "field_of"]
+__all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Field", "Slip", "WheeledBody", "bodies_from_tables",
+           "field_length_mm", "field_of", "pitch_of"]
 
 PRIMITIVE_NAMES = ("forward", "backward", "left", "right", "stop")
 FIELDS = ("large", "small")
@@ -64,7 +65,10 @@ def _known_keys(what: str, mapping: Mapping[str, Any], known: tuple[str, ...]) -
 def _number_in(name: str, value: Any, low: float, high: float, *, open_low: bool = False) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or \
             value > high or value < low or (open_low and value <= low):
-        allowed = "a positive number" if open_low and low == 0 else f"a number in [{low:g}, {high:g}]"
+        if open_low and low == 0:
+            allowed = "a positive number" if high >= 1e6 else f"a positive number at most {high:g}"
+        else:
+            allowed = f"a number in [{low:g}, {high:g}]"
         raise ValueError(f"{name} must be {allowed}, got {value!r}")
     return float(value)
 
@@ -85,6 +89,58 @@ class Slip:
 
 
 SlipSpec = Union[Slip, Mapping[str, Slip]]
+
+
+@dataclasses.dataclass(frozen=True)
+class Field:
+    """A field of your own: its length (goal line to goal line) and width, the width of each goal
+    mouth (centred on its line; half the field's width unless given) and the ball's diameter,
+    mm. Checked when made: sizes positive, the ball narrower than the mouth, the mouth no wider
+    than the field.
+
+    >>> Field(1500, 1000).goal_mouth_mm
+    500.0
+    """
+
+    length_mm: float
+    width_mm: float
+    goal_mouth_mm: float | None = None
+    ball_diameter_mm: float = 100.0
+
+    def __post_init__(self) -> None:
+        length = _number_in("field.length_mm", self.length_mm, 0.0, 1e6, open_low=True)
+        width = _number_in("field.width_mm", self.width_mm, 0.0, 1e6, open_low=True)
+        mouth = width / 2 if self.goal_mouth_mm is None else _number_in("field.goal_mouth_mm", self.goal_mouth_mm,
+                                                                         0.0, width, open_low=True)
+        ball = _number_in("field.ball_diameter_mm", self.ball_diameter_mm, 0.0, mouth, open_low=True)
+        if ball >= mouth:
+            raise ValueError(f"field.ball_diameter_mm must be below the goal mouth ({mouth:g} mm), got {ball:g}")
+        for name, value in (("length_mm", length), ("width_mm", width), ("goal_mouth_mm", mouth),
+                            ("ball_diameter_mm", ball)):
+            object.__setattr__(self, name, value)
+
+    @property
+    def half_length_mm(self) -> float:
+        """Where the goal lines are: x = ± this."""
+        return self.length_mm / 2
+
+    @property
+    def half_width_mm(self) -> float:
+        """Where the side lines are: y = ± this."""
+        return self.width_mm / 2
+
+    @property
+    def goal_half_mouth_mm(self) -> float:
+        """How far from the centre line a goal mouth reaches."""
+        return float(self.goal_mouth_mm or 0) / 2
+
+    def sizes(self) -> dict[str, float]:
+        """The four sizes by name."""
+        return {"length_mm": self.length_mm, "width_mm": self.width_mm, "goal_mouth_mm": float(self.goal_mouth_mm or 0),
+                "ball_diameter_mm": self.ball_diameter_mm}
+
+
+FieldSpec = Union[str, Field]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -117,7 +173,7 @@ class WheeledBody:
     turn_lag_s: float = 0.03
     slip: SlipSpec = Slip()
     primitives_mm_s: Mapping[str, tuple[float, float]] = dataclasses.field(default_factory=dict)
-    field: str = "large"
+    field: FieldSpec = "large"
     expert_commands: bool = False
     fresh_slip_frames: int = 30
 
@@ -128,8 +184,9 @@ class WheeledBody:
             for key in ("length_mm", "width_mm", "wheel_base_mm", "top_wheel_speed_mm_s", "motor_lag_s",
                         "turn_lag_s"):
                 _number_in(key, getattr(self, key), 0.0, 1e6, open_low=True)
-            if self.field not in FIELDS:
-                raise ValueError(f"field must be one of {', '.join(FIELDS)}, got {self.field!r}")
+            if not isinstance(self.field, Field) and self.field not in FIELDS:
+                raise ValueError(f"field must be one of {', '.join(FIELDS)} or a polymimic.bodies.Field, got "
+                                 f"{self.field!r}")
             if not isinstance(self.expert_commands, bool):
                 raise ValueError(f"expert_commands must be true or false, got {self.expert_commands!r}")
             if self.expert_commands and self.top_wheel_speed_mm_s < 130:
@@ -196,7 +253,8 @@ class WheeledBody:
             "accepts_expert_commands": self.expert_commands,
             "top_wheel_speed_mm_s": float(self.top_wheel_speed_mm_s),
         }
-        return json.dumps(constants), self.field
+        field = self.field if isinstance(self.field, str) else json.dumps(self.field.sizes())
+        return json.dumps(constants), field
 
     def to_table(self) -> dict[str, Any]:
         """The body as a TOML table (:meth:`from_table` reads it back equal).
@@ -209,6 +267,8 @@ class WheeledBody:
                      else {p: dataclasses.asdict(s) for p, s in self.slip.items()})
         table = {f.name: getattr(self, f.name) for f in dataclasses.fields(self) if f.name not in ("name", "slip",
                                                                                                    "primitives_mm_s")}
+        if isinstance(self.field, Field):
+            table["field"] = self.field.sizes()
         return {**table, "slip": slip, "primitives_mm_s": {p: list(w) for p, w in self.primitives_mm_s.items()}}
 
     @classmethod
@@ -234,6 +294,16 @@ class WheeledBody:
         values = dict(table)
         if "slip" in values:
             values["slip"] = _slip_from(values["slip"], where)
+        if isinstance(values.get("field"), Mapping):
+            sizes = values["field"]
+            unknown = [k for k in sizes if k not in ("length_mm", "width_mm", "goal_mouth_mm", "ball_diameter_mm")]
+            if unknown:
+                raise ValueError(f"{where}: unknown key field.{unknown[0]!r}; known keys: length_mm, width_mm, "
+                                 f"goal_mouth_mm, ball_diameter_mm")
+            try:
+                values["field"] = Field(**sizes)
+            except (TypeError, ValueError) as error:
+                raise ValueError(f"{where}: {error}") from None
         if "primitives_mm_s" in values:
             primitives = values["primitives_mm_s"]
             if not isinstance(primitives, Mapping):
@@ -312,9 +382,9 @@ THESIS_BODIES: dict[str, WheeledBody] = _thesis_bodies()
 _building_thesis_bodies = False
 
 
-def field_of(body: str) -> str:
-    """The field (``"large"`` or ``"small"``) a body plays on: a thesis body's, or a
-    :class:`WheeledBody` made in this process.
+def field_of(body: str) -> FieldSpec:
+    """The field a body plays on (``"large"``, ``"small"`` or a :class:`Field`): a thesis
+    body's, or a :class:`WheeledBody`'s made in this process.
 
     >>> field_of("tiny"), field_of("humanoid")
     ('small', 'large')
@@ -327,6 +397,26 @@ def field_of(body: str) -> str:
         raise ValueError(f"unknown body {body!r}: describe it (polymimic.bodies.WheeledBody, or its [bodies.{body}] "
                          f"table) before learning from its demonstrations")
     return known.field
+
+
+def pitch_of(body: str) -> str:
+    """The field a body plays on as the learner reads it: ``"large"``, ``"small"``, or the
+    sizes of a :class:`Field` as JSON.
+
+    >>> pitch_of("tiny")
+    'small'
+    """
+    field = field_of(body)
+    if isinstance(field, str):
+        return field
+    sizes = field.sizes()
+    return json.dumps({k: sizes[k] for k in ("length_mm", "width_mm", "goal_mouth_mm")})
+
+
+def field_length_mm(body: str) -> float:
+    """The length of the field a body plays on, mm."""
+    field = field_of(body)
+    return {"large": 1020.0, "small": 560.0}[field] if isinstance(field, str) else field.length_mm
 
 
 def resolve(body: str | WheeledBody) -> str | WheeledBody:

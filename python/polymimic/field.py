@@ -19,6 +19,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
+import numbers
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -292,9 +293,8 @@ def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse:
     _check_body(body)
     if lapse != 0.0:
         raise ValueError("lapse= is for the built-in demonstrators; a Python policy lapses as it is written to")
-    if timeout_s is not None and (isinstance(timeout_s, bool) or not isinstance(timeout_s, (int, float))
-                                  or not 0 < timeout_s < math.inf):
-        raise ValueError(f"timeout_s must be a positive number of seconds or None, got {timeout_s!r}")
+    if timeout_s is not None and (isinstance(timeout_s, bool) or not isinstance(timeout_s, numbers.Real)):
+        raise TypeError(f"timeout_s must be a number of seconds or None, got {timeout_s!r}")
     raw = _native.record_python_policy(parts.act, parts.reset, name=parts.name, body=native_body(body),
                                        configuration=configuration,
                                        n=n, seed=seed, decision_hz=parts.decision_hz,

@@ -24,7 +24,7 @@ from polymimic._arguments import integer
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelResult, SegmentedDemonstrations, TrialResult
 from polymimic._toml import loads, write_value
-from polymimic.bodies import field_of
+from polymimic.bodies import pitch_of
 from polymimic.field import Demonstration, _field_config, as_frames, record
 
 __all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
@@ -131,7 +131,7 @@ def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.Primi
     segments = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
     return SegmentedDemonstrations(
         [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
-          "pitch": field_of(d.body)}
+          "pitch": pitch_of(d.body)}
          for d, s in zip(demonstrations, segments)],
         frame_counts=[len(d.frames) for d in demonstrations])
 

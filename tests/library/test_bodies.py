@@ -128,7 +128,13 @@ stop = { common_sd = 0.0, differential_sd = 0.0 }
     ({"top_wheel_speed_mm_s": math.inf}, r"top_wheel_speed_mm_s must be a positive number, got inf"),
     ({"motor_lag_s": "fast"}, r"motor_lag_s must be a positive number, got 'fast'"),
     ({"colour": "red"}, r"unknown key 'colour'; known keys: length_mm"),
-    ({"field": "huge"}, r"field must be one of large, small, got 'huge'"),
+    ({"field": "huge"}, r"field must be one of large, small or a polymimic.bodies.Field, got 'huge'"),
+    ({"field": {"length_mm": 900}}, r"missing 1 required positional argument: 'width_mm'"),
+    ({"field": {"length_mm": 900, "width_mm": 600, "goal_mouth_mm": 700}},
+     r"field.goal_mouth_mm must be a positive number at most 600, got 700"),
+    ({"field": {"length_mm": 900, "width_mm": 600, "ball_diameter_mm": 400}},
+     r"field.ball_diameter_mm must be a positive number at most 300, got 400"),
+    ({"field": {"length_mm": 900, "width_mm": 600, "goals": 2}}, r"unknown key field.'goals'"),
     ({"primitives_mm_s": {"forward": [100, 30]}}, r"primitives_mm_s.forward must be a number in \[-60, 60\], got 100"),
     ({"primitives_mm_s": {"jump": [1, 1]}}, r"unknown key primitives_mm_s.jump"),
     ({"primitives_mm_s": {"stop": [1, 0]}}, r"primitives_mm_s.stop must be \(0, 0\)"),
@@ -161,3 +167,42 @@ def test_a_name_is_its_latest_body_and_the_thesis_names_are_the_thesis_bodies():
         WheeledBody("my bot", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
     with pytest.raises(ValueError, match=r"unknown body 'never_made': describe it"):
         field_of("never_made")
+
+
+def test_a_field_of_ones_own_sets_where_the_goals_are():
+    """On a 1500 × 1000 mm field with a 300 mm mouth, a kick that scores on the thesis's large
+    field goes wide when it crosses more than 150 mm off the centre line."""
+    from polymimic.bodies import Field
+
+    pitch = Field(1500, 1000, goal_mouth_mm=300, ball_diameter_mm=80)
+    wide = WheeledBody("wide_field_rover", length_mm=150, width_mm=150, wheel_base_mm=130,
+                       top_wheel_speed_mm_s=150, field=pitch)
+    seen = polymimic.Episode(wide).observation()
+    assert (seen["field"], seen["goal_mouth_mm"], seen["ball_diameter_mm"]) == ((1500.0, 1000.0), 300.0, 80.0)
+    # Configuration 1 puts the robot a sixth of the length behind the centre, the ball a sixth ahead.
+    assert seen["robot"][0] == pytest.approx(-250.0, abs=2) and seen["ball"][0] == pytest.approx(250.0, abs=2)
+    demos = record("poor", body=wide, configuration=1, n=3, seed=1)
+    for d in demos:
+        last = d.frames[-1]
+        if d.outcome == "goal":
+            assert last["ball_x_mm"] > 750 - 5 and abs(last["ball_y_mm"]) <= 150 + 5
+    assert polymimic.bodies.pitch_of("wide_field_rover") == \
+        '{"length_mm": 1500.0, "width_mm": 1000.0, "goal_mouth_mm": 300.0}'
+    assert WheeledBody.from_table("wide_field_rover", wide.to_table()) == wide
+
+
+def test_the_learner_reads_a_field_of_ones_own():
+    from polymimic import recognition
+    from polymimic.bodies import Field
+    from polymimic.learning import segmented
+
+    small_goals = WheeledBody("small_goals", length_mm=150, width_mm=150, wheel_base_mm=130,
+                              top_wheel_speed_mm_s=150, field=Field(1200, 900, goal_mouth_mm=250))
+    recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=16)
+    batch = segmented(record("poor", body=small_goals, configuration=1, n=2, seed=0), recognizer)
+    assert batch.pitches == ['{"length_mm": 1200.0, "width_mm": 900.0, "goal_mouth_mm": 250.0}'] * 2
+    again = polymimic.SegmentedDemonstrations([batch[0]])
+    assert again.pitches == batch.pitches[:1]
+    bad = dict(batch[0], pitch='{"length_mm": 1200.0, "width_mm": 900.0, "goal_mouth_mm": 1000.0}')
+    with pytest.raises(ValueError, match="pitch .* is not one of 'large', 'small' nor a field's sizes as JSON"):
+        polymimic.SegmentedDemonstrations([bad])

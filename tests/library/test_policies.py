@@ -186,8 +186,10 @@ def test_a_policy_that_hangs_is_interrupted_after_its_timeout():
     ({"name": "x", "body": "lego", "decision_hz": 7}, ValueError, r"decision_hz must divide .* got 7"),
     ({"name": "x", "body": "lego", "decision_hz": 60}, ValueError, r"got 60"),
     ({"name": "x", "body": "lego", "lapse": 0.2}, ValueError, r"lapse= is for the built-in demonstrators"),
-    ({"name": "x", "body": "lego", "timeout_s": 0}, ValueError, r"timeout_s must be a positive number"),
-    ({"name": "x", "body": "lego", "timeout_s": math.nan}, ValueError, r"timeout_s must be a positive number"),
+    ({"name": "x", "body": "lego", "timeout_s": 0}, ValueError, r"timeout_s must be between 0.001 s and 86400 s"),
+    ({"name": "x", "body": "lego", "timeout_s": math.nan}, ValueError, r"timeout_s must be between .* got NaN"),
+    ({"name": "x", "body": "lego", "timeout_s": 1e300}, ValueError, r"timeout_s must be between .* got 1e300"),
+    ({"name": "x", "body": "lego", "timeout_s": "1"}, TypeError, r"timeout_s must be a number of seconds or None"),
 ])
 def test_bad_policy_arguments_are_refused_by_name(kwargs, error, message):
     with pytest.raises(error, match=message):
@@ -226,3 +228,46 @@ def test_wheel_speeds_beyond_the_bodys_top_speed_are_refused():
         record(lambda r: "wheels_forward", body="lego", name="flag", configuration=1, n=1)
     with pytest.raises(PolicyError, match=r"got \(1.0, 'a'\) \(tuple\)"):
         record(lambda r: (1.0, "a"), body="lego", name="half", configuration=1, n=1)
+
+
+def test_a_policy_that_swallows_its_timeout_is_interrupted_again():
+    def stubborn(reading):
+        if reading.t_s > 0.2:
+            while True:
+                try:
+                    while True:
+                        pass
+                except TimeoutError:
+                    if reading.t_s > 1e9:  # never: it goes on after the first one
+                        break
+                    raise
+        return "forward"
+
+    with pytest.raises(PolicyError, match="did not answer within 0.1 s") as caught:
+        record(stubborn, body="lego", name="stubborn", configuration=1, n=1, timeout_s=0.1)
+    assert isinstance(caught.value.__cause__, TimeoutError)
+
+    def swallows(reading):
+        caught = 0
+        while caught < 2:
+            try:
+                while True:
+                    pass
+            except TimeoutError:
+                caught += 1
+        raise RuntimeError(f"caught {caught} timeouts")
+
+    with pytest.raises(PolicyError, match="did not answer within 0.1 s"):
+        record(swallows, body="lego", name="swallows", configuration=1, n=1, timeout_s=0.1)
+
+
+def test_ctrl_c_in_a_policy_is_not_the_policys_failure():
+    def interrupted(reading):
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        record(interrupted, body="lego", name="ctrl_c", configuration=1, n=1)
+
+
+def test_no_limit_means_no_watchdog():
+    assert len(record(chase, body="lego", name="unlimited", configuration=1, n=1, timeout_s=None)) == 1

@@ -280,7 +280,7 @@ mod tests {
         let json = crate::body::LEGO.to_json().replace("\"lego\"", "\"lego_as_data\"");
         let params = crate::body::WheeledParams::from_json(&json).expect("the Lego's constants are valid");
         assert_eq!(params.name, "lego_as_data");
-        let as_data = BodyKind::Wheeled(params, crate::FieldSize::Large);
+        let as_data = BodyKind::Wheeled(params, crate::FieldGeometry::of(crate::FieldSize::Large));
         for who in [Demonstrator::Expert, Demonstrator::Poor] {
             let ours = record_on(who, as_data, Configuration::Two, 2, 5, LapseRate::NONE, &config).expect("records");
             let theirs = record(who, Configuration::Two, 2, 5, LapseRate::NONE, &config).expect("records");
@@ -298,7 +298,7 @@ mod tests {
         let config = FieldConfig::default();
         let mut slow = crate::body::TINY;
         slow.name = "slow";
-        let slow = BodyKind::Wheeled(slow, crate::FieldSize::Small);
+        let slow = BodyKind::Wheeled(slow, crate::FieldGeometry::of(crate::FieldSize::Small));
         for (who, body) in [
             (Demonstrator::Expert, slow),
             (Demonstrator::Expert, BodyKind::Tiny),

@@ -97,7 +97,8 @@ impl Episode {
     /// A parameter error for an invalid config, or a robot or ball placed off the field.
     pub fn new(setup: &EpisodeSetup, config: &FieldConfig, seed: u64) -> Result<Self, FieldError> {
         config.check()?;
-        let field = FieldGeometry::of(setup.body.field_size());
+        let field = setup.body.field();
+        field.check()?;
         check_on_field(&field, "robot", setup.robot.point(), setup.robot.is_finite())?;
         if let Some(b) = setup.ball {
             check_on_field(&field, "ball", b, b.is_finite())?;

@@ -4,6 +4,8 @@
 use polymimic_types::Point;
 use serde::{Deserialize, Serialize};
 
+use crate::error::{FieldParamError, check_range};
+
 /// The two field sizes of the thesis (§4.1).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum FieldSize {
@@ -13,8 +15,9 @@ pub enum FieldSize {
     Small,
 }
 
-/// Field dimensions and the derived goal geometry.
+/// Field dimensions and the goal mouths (centred on the goal lines at x = ±length/2).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct FieldGeometry {
     /// Length along x (goal to goal), mm.
     pub length_mm: f64,
@@ -22,6 +25,8 @@ pub struct FieldGeometry {
     pub width_mm: f64,
     /// Ball diameter, mm.
     pub ball_diameter_mm: f64,
+    /// Width of each goal mouth, mm (the thesis's fields: half the field's width).
+    pub goal_mouth_mm: f64,
 }
 
 impl FieldGeometry {
@@ -29,9 +34,48 @@ impl FieldGeometry {
     #[must_use]
     pub const fn of(size: FieldSize) -> Self {
         match size {
-            FieldSize::Large => Self { length_mm: 1020.0, width_mm: 810.0, ball_diameter_mm: 100.0 },
-            FieldSize::Small => Self { length_mm: 560.0, width_mm: 345.0, ball_diameter_mm: 25.0 },
+            FieldSize::Large => {
+                Self { length_mm: 1020.0, width_mm: 810.0, ball_diameter_mm: 100.0, goal_mouth_mm: 405.0 }
+            }
+            FieldSize::Small => {
+                Self { length_mm: 560.0, width_mm: 345.0, ball_diameter_mm: 25.0, goal_mouth_mm: 172.5 }
+            }
         }
+    }
+
+    /// Check a field of the user's: every size positive, the ball narrower than the mouth, the
+    /// mouth no wider than the field.
+    ///
+    /// # Errors
+    /// `OutOfRange` naming the first size that is not.
+    pub fn check(&self) -> Result<(), FieldParamError> {
+        check_range("field.length_mm", self.length_mm, f64::MIN_POSITIVE, 1e6, "positive")?;
+        check_range("field.width_mm", self.width_mm, f64::MIN_POSITIVE, 1e6, "positive")?;
+        check_range(
+            "field.goal_mouth_mm",
+            self.goal_mouth_mm,
+            f64::MIN_POSITIVE,
+            self.width_mm,
+            "positive, at most the width",
+        )?;
+        check_range(
+            "field.ball_diameter_mm",
+            self.ball_diameter_mm,
+            f64::MIN_POSITIVE,
+            self.goal_mouth_mm,
+            "positive, below the goal mouth",
+        )
+    }
+
+    /// A field from JSON (its four sizes by name), checked.
+    ///
+    /// # Errors
+    /// `Json` for malformed JSON or an unknown or missing size; `OutOfRange` as
+    /// [`FieldGeometry::check`].
+    pub fn from_json(json: &str) -> Result<Self, FieldParamError> {
+        let field: Self = serde_json::from_str(json).map_err(|e| FieldParamError::Json(e.to_string()))?;
+        field.check()?;
+        Ok(field)
     }
 
     /// Half the length: the goal lines are at x = ±this, mm.
@@ -46,10 +90,10 @@ impl FieldGeometry {
         self.width_mm / 2.0
     }
 
-    /// Half the goal mouth (the mouth is half the field width, centred), mm.
+    /// Half the goal mouth, mm.
     #[must_use]
     pub fn goal_half_mouth_mm(&self) -> f64 {
-        self.width_mm / 4.0
+        self.goal_mouth_mm / 2.0
     }
 
     /// Centre of the target goal's mouth (+x).

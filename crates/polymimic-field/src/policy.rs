@@ -224,7 +224,9 @@ pub fn record_policy<P: Policy>(
         return Ok(out);
     }
     let exhausted = FieldError::RetriesExhausted { valid: out.len(), requested: n_valid, attempts: max_attempts };
-    Err(PolicyFailure { attempt: max_attempts - 1, seed, t_s: 0.0, cause: PolicyFault::Field(exhausted) })
+    let last = max_attempts - 1;
+    let last_seed = policy_episode_seed(seed, configuration, last);
+    Err(PolicyFailure { attempt: last, seed: last_seed, t_s: 0.0, cause: PolicyFault::Field(exhausted) })
 }
 
 #[cfg(test)]

@@ -114,7 +114,7 @@ impl EpisodeSetup {
     /// A configuration of Fig 4.4 on the body's own field, with the config's time limit.
     #[must_use]
     pub fn configuration(body: BodyKind, configuration: Configuration, config: &FieldConfig) -> Self {
-        let field = FieldGeometry::of(body.field_size());
+        let field = body.field();
         let (robot, ball) = configuration.start(&field);
         Self { body, robot, ball: Some(ball), time_limit_s: config.time_limit_s }
     }

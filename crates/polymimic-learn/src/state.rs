@@ -4,16 +4,36 @@ use polymimic_types::{Pose, TrackedFrame, wrap_angle_euclid_rad};
 use serde::{Deserialize, Serialize};
 
 /// The size of the field a demonstration was played on; the target goal's centre is at
-/// (+length/2, 0) and the own goal's at (−length/2, 0).
+/// (+length/2, 0) and the own goal's at (−length/2, 0), each mouth `goal_mouth_mm` wide.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Pitch {
     pub length_mm: f64,
     pub width_mm: f64,
+    pub goal_mouth_mm: f64,
 }
 
 impl Pitch {
-    pub const LARGE: Self = Self { length_mm: 1020.0, width_mm: 810.0 };
-    pub const SMALL: Self = Self { length_mm: 560.0, width_mm: 345.0 };
+    /// The thesis's fields: their mouths are half their width.
+    pub const LARGE: Self = Self { length_mm: 1020.0, width_mm: 810.0, goal_mouth_mm: 405.0 };
+    pub const SMALL: Self = Self { length_mm: 560.0, width_mm: 345.0, goal_mouth_mm: 172.5 };
+
+    /// A pitch from its sizes as JSON (`{"length_mm", "width_mm", "goal_mouth_mm"}`), if they
+    /// are all there, nothing else is, and they are valid.
+    #[must_use]
+    pub fn from_json(text: &str) -> Option<Self> {
+        serde_json::from_str::<Self>(text).ok().filter(Self::is_valid)
+    }
+
+    /// Whether every size is a positive number and the mouth no wider than the field.
+    #[must_use]
+    pub fn is_valid(&self) -> bool {
+        let positive = |v: f64| v.is_finite() && v > 0.0;
+        positive(self.length_mm)
+            && positive(self.width_mm)
+            && positive(self.goal_mouth_mm)
+            && self.goal_mouth_mm <= self.width_mm
+    }
 
     #[must_use]
     pub fn target_goal(&self) -> (f64, f64) {
@@ -30,16 +50,16 @@ impl Pitch {
         x_mm.abs() <= self.length_mm / 2.0 && y_mm.abs() <= self.width_mm / 2.0
     }
 
-    /// Whether a ball at (x, y) is past the target goal line inside the mouth (half the width).
+    /// Whether a ball at (x, y) is past the target goal line inside the mouth.
     #[must_use]
     pub fn in_target_goal(&self, x_mm: f64, y_mm: f64) -> bool {
-        x_mm >= self.length_mm / 2.0 && y_mm.abs() <= self.width_mm / 4.0
+        x_mm >= self.length_mm / 2.0 && y_mm.abs() <= self.goal_mouth_mm / 2.0
     }
 
     /// Whether a ball at (x, y) is past the own goal line inside the mouth.
     #[must_use]
     pub fn in_own_goal(&self, x_mm: f64, y_mm: f64) -> bool {
-        x_mm <= -self.length_mm / 2.0 && y_mm.abs() <= self.width_mm / 4.0
+        x_mm <= -self.length_mm / 2.0 && y_mm.abs() <= self.goal_mouth_mm / 2.0
     }
 }
 

@@ -2,7 +2,7 @@
 //! (`polymimic.bodies.WheeledBody`, which hands over its constants as JSON).
 
 use polymimic_field::body::WheeledParams;
-use polymimic_field::{BodyKind, FieldSize};
+use polymimic_field::{BodyKind, FieldGeometry, FieldSize};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyString;
@@ -10,7 +10,7 @@ use pyo3::types::PyString;
 use crate::errors::field_param_error;
 
 /// A body argument: "lego", "tiny", "humanoid", or an object with `_native_body()` returning
-/// `(constants as JSON, "large" | "small")`.
+/// `(constants as JSON, "large" | "small" | the field's sizes as JSON)`.
 #[derive(Debug, Clone, Copy)]
 pub struct Body(pub BodyKind);
 
@@ -37,9 +37,9 @@ impl<'a, 'py> FromPyObject<'a, 'py> for Body {
         let (json, field): (String, String) = native.call0()?.extract()?;
         let params = WheeledParams::from_json(&json).map_err(field_param_error)?;
         let field = match field.as_str() {
-            "large" => FieldSize::Large,
-            "small" => FieldSize::Small,
-            other => return Err(PyValueError::new_err(format!("field must be \"large\" or \"small\", got {other:?}"))),
+            "large" => FieldGeometry::of(FieldSize::Large),
+            "small" => FieldGeometry::of(FieldSize::Small),
+            sizes => FieldGeometry::from_json(sizes).map_err(field_param_error)?,
         };
         Ok(Self(BodyKind::Wheeled(params, field)))
     }

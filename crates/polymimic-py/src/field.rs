@@ -242,7 +242,8 @@ impl PyEpisode {
         frames_array(py, &frames)
     }
 
-    /// What the robot's controller sees now: time, robot pose, ball (None if not seen).
+    /// What the robot's controller sees now: time, robot pose, ball (None if not seen), and
+    /// the field: its (length, width), goal mouth and ball, mm.
     fn observation<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let seen = self.with(|e| e.observation());
         let out = PyDict::new(py);
@@ -250,6 +251,8 @@ impl PyEpisode {
         out.set_item("robot", (seen.robot.x_mm(), seen.robot.y_mm(), seen.robot.theta_rad()))?;
         out.set_item("ball", seen.ball.map(|b| (b.x_mm(), b.y_mm())))?;
         out.set_item("field", (seen.field.length_mm, seen.field.width_mm))?;
+        out.set_item("goal_mouth_mm", seen.field.goal_mouth_mm)?;
+        out.set_item("ball_diameter_mm", seen.field.ball_diameter_mm)?;
         Ok(out)
     }
 

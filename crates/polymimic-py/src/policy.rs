@@ -7,7 +7,7 @@ use polymimic_field::{
     BodyKind, Command, ControllerPolicy, DecisionRate, Demonstrator, EpisodeStart, FieldConfig, FieldError,
     Observation, Policy, PolicyFailure, PolicyFault, record_policy,
 };
-use pyo3::exceptions::{PyTimeoutError, PyValueError};
+use pyo3::exceptions::{PyException, PyTimeoutError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
@@ -17,6 +17,10 @@ use crate::convert::Seed;
 use crate::errors::{PolicyError, field_error, field_param_error};
 use crate::field::{configuration, configuration_number, field_config, frames_array, positive};
 use crate::watchdog::Watchdog;
+
+/// The shortest and longest a policy may be given to answer, s.
+const MIN_TIMEOUT_S: f64 = 0.001;
+const MAX_TIMEOUT_S: f64 = 86_400.0;
 
 /// The tracker's latest reading, as a Python policy gets it.
 #[pyclass(name = "Reading", module = "polymimic", frozen, get_all)]
@@ -32,9 +36,10 @@ pub struct PyReading {
     /// The tracked ball, mm (NaN when the robot cannot see it: a humanoid sees only ahead).
     ball_x_mm: f64,
     ball_y_mm: f64,
-    /// The field's size, mm.
+    /// The field's size and its goal mouths' width, mm.
     field_length_mm: f64,
     field_width_mm: f64,
+    goal_mouth_mm: f64,
 }
 
 #[pymethods]
@@ -66,6 +71,7 @@ impl From<&Observation> for PyReading {
             ball_y_mm,
             field_length_mm: o.field.length_mm,
             field_width_mm: o.field.width_mm,
+            goal_mouth_mm: o.field.goal_mouth_mm,
         }
     }
 }
@@ -83,9 +89,12 @@ impl PythonPolicy {
     fn call<T>(&self, f: impl FnOnce(Python<'_>) -> PyResult<T>) -> PyResult<T> {
         Python::attach(|py| match &self.watchdog {
             None => f(py),
-            Some(w) => {
-                w.run(py, || f(py)).unwrap_or_else(|()| Err(PyTimeoutError::new_err("the call did not return in time")))
-            }
+            Some(w) => match w.run(py, || f(py)) {
+                (result, false) => result,
+                // The TimeoutError that struck, with its traceback, shows where the policy hung.
+                (Err(e), true) if e.is_instance_of::<PyTimeoutError>(py) => Err(e),
+                (_, true) => Err(PyTimeoutError::new_err("the call did not return in time")),
+            },
         })
     }
 }
@@ -128,6 +137,8 @@ fn policy_error(
         failure.attempt, failure.seed, failure.t_s
     );
     match failure.cause {
+        // Ctrl-C and exits are not the policy's failures: they go on as they were raised.
+        PolicyFault::Policy(cause) if !cause.is_instance_of::<PyException>(py) => cause,
         PolicyFault::Policy(cause) => {
             let what = if cause.is_instance_of::<PyTimeoutError>(py) {
                 format!("did not answer within {timeout_s} s")
@@ -174,10 +185,10 @@ pub fn record_python_policy<'py>(
     let config = field_config(config)?;
     let timeout = match timeout_s {
         None => None,
-        Some(t) if t.is_finite() && t > 0.0 => Some(Duration::from_secs_f64(t)),
+        Some(t) if (MIN_TIMEOUT_S..=MAX_TIMEOUT_S).contains(&t) => Some(Duration::from_secs_f64(t)),
         Some(t) => {
             return Err(PyValueError::new_err(format!(
-                "timeout_s must be a positive number of seconds or None, got {t}"
+                "timeout_s must be between {MIN_TIMEOUT_S} s and {MAX_TIMEOUT_S} s (a day), or None; got {t:?}"
             )));
         }
     };

@@ -52,24 +52,26 @@ impl Watchdog {
         Ok(Self { shared, timeout, thread: Some(thread) })
     }
 
-    /// Run `call` (under the GIL) against the deadline; `Err(())` if it was interrupted.
-    pub fn run<T>(&self, gil: Python<'_>, call: impl FnOnce() -> T) -> Result<T, ()> {
+    /// Run `call` (under the GIL) against the deadline: what it returned, and whether it was
+    /// interrupted.
+    pub fn run<T>(&self, gil: Python<'_>, call: impl FnOnce() -> T) -> (T, bool) {
         let number = {
             let mut w = lock(&self.shared);
             w.call += 1;
-            w.deadline = Some(Instant::now() + self.timeout);
+            // The timeout is bounded (see `MAX_TIMEOUT`), so the deadline cannot overflow.
+            w.deadline = Instant::now().checked_add(self.timeout);
             w.call
         };
         let result = call();
         let mut w = lock(&self.shared);
         w.deadline = None;
-        if w.interrupted == Some(number) {
+        let interrupted = w.interrupted == Some(number);
+        if interrupted {
             // The call may have returned before the exception reached it: withdraw it.
             // Withdrawing cannot fail in a way the caller could act on.
             let _ = set_async_exception(gil, w.thread_ident, None);
-            return Err(());
         }
-        Ok(result)
+        (result, interrupted)
     }
 }
 
@@ -95,17 +97,19 @@ fn watch(shared: &Shared, timeout: Duration) {
         let now = Instant::now();
         match w.deadline {
             Some(deadline) if deadline <= now => {
-                let (call, ident) = (w.call, w.thread_ident);
+                let (call, ident, timeout_again) = (w.call, w.thread_ident, timeout);
                 drop(w);
                 // The GIL before the lock, as the calling thread takes them.
                 Python::attach(|py| {
                     let mut w = lock(shared);
                     if w.deadline.is_some() && w.call == call {
                         let timeout = PyTimeoutError::type_object(py);
-                        if set_async_exception(py, ident, Some(timeout.as_any())).is_ok() {
+                        // One thread must have taken it (the interpreter counts them).
+                        if set_async_exception(py, ident, Some(timeout.as_any())).is_ok_and(|n| n == 1) {
                             w.interrupted = Some(call);
                         }
-                        w.deadline = None;
+                        // Again after another timeout, should the policy catch this one and go on.
+                        w.deadline = Instant::now().checked_add(timeout_again);
                     }
                 });
                 w = lock(shared);
@@ -117,14 +121,14 @@ fn watch(shared: &Shared, timeout: Duration) {
 }
 
 /// Raise `exception` in the thread `ident` when it next runs Python code (None withdraws a
-/// pending one), through `ctypes`, so that the crate needs no `unsafe`.
-fn set_async_exception(py: Python<'_>, ident: c_ulong, exception: Option<&Bound<'_, PyAny>>) -> PyResult<()> {
+/// pending one), through `ctypes`, so that the crate needs no `unsafe`; how many threads it
+/// reached.
+fn set_async_exception(py: Python<'_>, ident: c_ulong, exception: Option<&Bound<'_, PyAny>>) -> PyResult<i64> {
     let ctypes = py.import("ctypes")?;
     let thread = ctypes.getattr("c_ulong")?.call1((ident,))?;
     let exception = match exception {
         Some(e) => ctypes.getattr("py_object")?.call1((e,))?,
         None => py.None().into_bound(py),
     };
-    ctypes.getattr("pythonapi")?.getattr("PyThreadState_SetAsyncExc")?.call1((thread, exception))?;
-    Ok(())
+    ctypes.getattr("pythonapi")?.getattr("PyThreadState_SetAsyncExc")?.call1((thread, exception))?.extract()
 }

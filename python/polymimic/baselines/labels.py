@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.bodies import field_of
+from polymimic.bodies import Field, field_of
 from polymimic.field import PRIMITIVES, Demonstration, command_primitives, primitives_sent
 
 __all__ = ["NO_LABEL", "Labelled", "check_demonstrations", "check_weights", "command_labels", "segment_labels"]
@@ -39,6 +39,7 @@ NO_LABEL = -1
 """The label of a frame that gives no training sample (a gap, or no segment)."""
 
 _SMALL_TO_LARGE = np.array([1020.0 / 560.0, 810.0 / 345.0])
+_LARGE_LENGTH_MM = 1020.0
 _SEGMENT_LABELS = {"F": 0, "B": 1, "L": 2, "R": 3, "S": 4, **{p: i for i, p in enumerate(PRIMITIVES)}}
 
 
@@ -98,9 +99,13 @@ def observations_of(demo: Demonstration) -> np.ndarray:
                                                 "ball_x_mm", "ball_y_mm")]).astype(np.float64)
     for column in range(obs.shape[1]):
         obs[:, column] = _repeat_last_good(obs[:, column])
-    if field_of(demo.body) == "small":
+    field = field_of(demo.body)
+    if field == "small":
         obs[:, [0, 1]] *= _SMALL_TO_LARGE
         obs[:, [3, 4]] *= _SMALL_TO_LARGE
+    elif isinstance(field, Field):
+        # A field of the user's: to the large field's scale, along its length (goal to goal).
+        obs[:, [0, 1, 3, 4]] *= _LARGE_LENGTH_MM / field.length_mm
     return obs
 
 

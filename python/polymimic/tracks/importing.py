@@ -14,11 +14,11 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import Episode
-from polymimic.bodies import WheeledBody, body_name, resolve
+from polymimic.bodies import Field, WheeledBody, body_name, resolve
 from polymimic.field import FRAME_DTYPE, OUTCOMES, UNKNOWN_COMMAND, Demonstration, command_table
 from polymimic.tracks.episodes import Stretch, lost_tracking, nominal_period_s, split_episodes
 from polymimic.tracks.errors import LostTrackingWarning, TrackLogError
-from polymimic.tracks.outcomes import LINE_TOLERANCE_MM, Field, configuration_of, outcome_of
+from polymimic.tracks.outcomes import LINE_TOLERANCE_MM, configuration_of, outcome_of
 from polymimic.tracks.reading import Log, read_log
 from polymimic.tracks.resampling import grid, heading, held, linear
 from polymimic.tracks.scale import check_scale
@@ -64,10 +64,11 @@ def playing_field(body: str | WheeledBody) -> Field:
     ``tiny``: 560 × 345 mm; a :class:`polymimic.bodies.WheeledBody`, its own field's).
 
     >>> playing_field("tiny")
-    Field(length_mm=560.0, width_mm=345.0)
+    Field(length_mm=560.0, width_mm=345.0, goal_mouth_mm=172.5, ball_diameter_mm=25.0)
     """
-    length_mm, width_mm = Episode(resolve(body)).observation()["field"]
-    return Field(float(length_mm), float(width_mm))
+    seen = Episode(resolve(body)).observation()
+    length_mm, width_mm = seen["field"]
+    return Field(float(length_mm), float(width_mm), float(seen["goal_mouth_mm"]), float(seen["ball_diameter_mm"]))
 
 
 def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: Mapping[str, str] | None = None,

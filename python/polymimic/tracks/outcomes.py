@@ -2,8 +2,9 @@
 
 An outcome missing from the log is read off the frames, as the simulated field decides it:
 
-- the ball's centre crossing the target goal line (x = +L/2) inside the mouth (|y| ≤ W/4, at
-  the point where it crosses) is a ``goal``; the own goal line (x = −L/2) inside the mouth an
+- the ball's centre crossing the target goal line (x = +L/2) inside the mouth (|y| at most
+  half the mouth's width, at the point where it crosses; the thesis's mouths are half the field's
+  width) is a ``goal``; the own goal line (x = −L/2) inside the mouth an
   ``own_goal``; either goal line outside the mouth, or a side line (|y| > W/2), ``ball_out``;
 - the robot's centre leaving the field is ``robot_out``;
 - a reading is beyond a line when it is more than the tolerance (:data:`LINE_TOLERANCE_MM`)
@@ -24,36 +25,16 @@ robot at −L/6 and the ball at +L/6; configuration 2 mirrors it).
 
 from __future__ import annotations
 
-import dataclasses
-
 import numpy as np
 
-__all__ = ["LINE_TOLERANCE_MM", "Field", "configuration_of", "outcome_of"]
+from polymimic.bodies import Field
+
+__all__ = ["LINE_TOLERANCE_MM", "configuration_of", "outcome_of"]
 
 LINE_TOLERANCE_MM = 1.0
 """A reading counts as beyond a line once more than this past it, and a log ending with the ball
 or the robot this close to a line ended because it crossed it: about three times the simulated
 tracker's jitter."""
-
-
-@dataclasses.dataclass(frozen=True)
-class Field:
-    """A field's size, mm; the goal mouths are half its width."""
-
-    length_mm: float
-    width_mm: float
-
-    @property
-    def half_length_mm(self) -> float:
-        return self.length_mm / 2
-
-    @property
-    def half_width_mm(self) -> float:
-        return self.width_mm / 2
-
-    @property
-    def goal_half_mouth_mm(self) -> float:
-        return self.width_mm / 4
 
 
 def outcome_of(frames: np.ndarray, field: Field, *, tolerance_mm: float = LINE_TOLERANCE_MM) -> tuple[str, int]:

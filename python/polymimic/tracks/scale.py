@@ -14,7 +14,7 @@ import math
 import numpy as np
 
 from polymimic.tracks.errors import TrackLogError
-from polymimic.tracks.outcomes import Field
+from polymimic.bodies import Field
 from polymimic.tracks.reading import Log
 from polymimic.tracks.units import UNITS, Units, unit_hint
 

@@ -14,7 +14,7 @@ pub(crate) use wheeled::WheeledBody;
 
 use crate::command::Command;
 use crate::error::FieldParamError;
-use crate::geometry::FieldSize;
+use crate::geometry::{FieldGeometry, FieldSize};
 use crate::math::Rng;
 
 /// The robots of the thesis, and wheeled robots described as data (SPEC §6.4).
@@ -26,17 +26,17 @@ pub enum BodyKind {
     Tiny,
     /// The humanoid, with a head camera.
     Humanoid,
-    /// A two-wheeled robot of the user's, on one of the two fields.
-    Wheeled(WheeledParams, FieldSize),
+    /// A two-wheeled robot of the user's, on a field of the user's (or one of the thesis's).
+    Wheeled(WheeledParams, FieldGeometry),
 }
 
 impl BodyKind {
     /// The field this body plays on.
     #[must_use]
-    pub const fn field_size(self) -> FieldSize {
+    pub const fn field(self) -> FieldGeometry {
         match self {
-            BodyKind::Tiny => FieldSize::Small,
-            BodyKind::Lego | BodyKind::Humanoid => FieldSize::Large,
+            BodyKind::Tiny => FieldGeometry::of(FieldSize::Small),
+            BodyKind::Lego | BodyKind::Humanoid => FieldGeometry::of(FieldSize::Large),
             BodyKind::Wheeled(_, field) => field,
         }
     }

@@ -54,8 +54,31 @@ pub struct PySegmentedDemonstrations {
     outcomes: Arc<[Outcome]>,
 }
 
-fn pitch_name(pitch: &Pitch) -> &'static str {
-    PITCHES.iter().find(|(_, p)| p == pitch).map_or("large", |(name, _)| name)
+/// A pitch as the Python side writes it: a thesis field's name, or its sizes as JSON.
+fn pitch_name(pitch: &Pitch) -> String {
+    PITCHES.iter().find(|(_, p)| p == pitch).map_or_else(
+        || {
+            format!(
+                "{{\"length_mm\": {:?}, \"width_mm\": {:?}, \"goal_mouth_mm\": {:?}}}",
+                pitch.length_mm, pitch.width_mm, pitch.goal_mouth_mm
+            )
+        },
+        |(name, _)| (*name).to_owned(),
+    )
+}
+
+/// A pitch from its name or its sizes as JSON (`{"length_mm", "width_mm", "goal_mouth_mm"}`).
+fn pitch_from(text: &str, what: &str) -> PyResult<Pitch> {
+    if let Some((_, p)) = PITCHES.iter().find(|(n, _)| *n == text) {
+        return Ok(*p);
+    }
+    Pitch::from_json(text).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "{what}: pitch '{text}' is not one of {} nor a field's sizes as JSON {{\"length_mm\": …, \"width_mm\": …, \
+             \"goal_mouth_mm\": …}} (positive, the mouth no wider than the field)",
+            quoted(PITCHES.map(|(n, _)| n))
+        ))
+    })
 }
 
 fn quoted(names: impl IntoIterator<Item = &'static str>) -> String {
@@ -88,10 +111,7 @@ fn demonstration(
             quoted(OUTCOMES.map(Outcome::name))
         ))
     })?;
-    let pitch_text = text("pitch")?;
-    let pitch = PITCHES.iter().find(|(n, _)| *n == pitch_text).map(|(_, p)| *p).ok_or_else(|| {
-        PyValueError::new_err(format!("{what}: pitch '{pitch_text}' is not one of {}", quoted(PITCHES.map(|(n, _)| n))))
-    })?;
+    let pitch = pitch_from(&text("pitch")?, what)?;
     let segments = segments(&get("segments")?, what, frame_count)?;
     Ok((SegmentedDemonstration { demonstrator, pitch, ending: Ending::from(outcome), segments }, outcome))
 }
@@ -294,9 +314,9 @@ impl PySegmentedDemonstrations {
         self.outcomes.iter().map(|o| o.name()).collect()
     }
 
-    /// The field each was played on: ``"large"`` or ``"small"``.
+    /// The field each was played on: ``"large"``, ``"small"`` or its sizes as JSON.
     #[getter]
-    fn pitches(&self) -> Vec<&'static str> {
+    fn pitches(&self) -> Vec<String> {
         self.demonstrations.iter().map(|d| pitch_name(&d.pitch)).collect()
     }
 

@@ -265,7 +265,7 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse,
                                         config=_field_config(config),
                                         body=None if body is None else native_body(body))
-    who = demonstrator if name is None else _own_name(name)
+    who = demonstrator if name is None else _own_name(name, demonstrator)
     return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=who,
                           configuration=d["configuration"], seed=d["seed"],
                           body="" if body is None else body_name(body)) for d in raw]
@@ -277,9 +277,13 @@ def _check_body(body: Any) -> None:
                          f"got {body!r}")
 
 
-def _own_name(name: Any) -> str:
+def _own_name(name: Any, demonstrator: str) -> str:
+    """A name for a built-in's demonstrations: a word, and no other built-in's."""
     if not isinstance(name, str) or not name.isidentifier():
         raise ValueError(f"name must be a word of letters, digits and _, got {name!r}")
+    if name != demonstrator and name in BODIES:
+        raise ValueError(f"name {name!r} is another demonstrator's; the {demonstrator}'s demonstrations need a name "
+                         f"of their own")
     return name
 
 

@@ -81,9 +81,11 @@ def _rate(value: Any) -> float:
 
 
 def _name(value: Any, reserved: tuple[str, ...]) -> str:
-    if not isinstance(value, str) or not value:
-        raise ValueError(f"a Python demonstrator needs a name: record(policy, name=...) or a name attribute on the "
-                         f"policy; got {value!r}")
+    if value is None:
+        raise ValueError("a Python demonstrator needs a name: record(policy, name=...) or a name attribute on the "
+                         "policy")
+    if not isinstance(value, str) or not value.isidentifier():
+        raise ValueError(f"a demonstrator's name must be a word of letters, digits and _, got {value!r}")
     if value in reserved:
         raise ValueError(f"name {value!r} is a built-in demonstrator's; give your policy a name of its own")
     return value

@@ -181,6 +181,8 @@ def test_a_policy_that_hangs_is_interrupted_after_its_timeout():
 @pytest.mark.parametrize(("kwargs", "error", "message"), [
     ({"body": "lego"}, ValueError, r"needs a name: record\(policy, name=\.\.\.\)"),
     ({"body": "lego", "name": "expert"}, ValueError, r"name 'expert' is a built-in demonstrator's"),
+    ({"body": "lego", "name": "a/b"}, ValueError, r"a demonstrator's name must be a word .* got 'a/b'"),
+    ({"body": "lego", "name": "average"}, ValueError, r"name 'average' is a built-in demonstrator's"),
     ({"name": "x"}, ValueError, r"needs its body: body= one of lego, tiny, humanoid or a polymimic.bodies.WheeledBody"),
     ({"name": "x", "body": "wheelie"}, ValueError, r"body must be one of .* got 'wheelie'"),
     ({"name": "x", "body": "lego", "decision_hz": 7}, ValueError, r"decision_hz must divide .* got 7"),
@@ -203,6 +205,8 @@ def test_neither_a_name_nor_a_policy_is_refused():
         record("expert", body="tiny", configuration=1, n=1)
     with pytest.raises(ValueError, match=r"decision_hz= is for a Python policy; the built-in 'poor' decides every"):
         record("poor", decision_hz=10, configuration=1, n=1)
+    with pytest.raises(ValueError, match=r"name 'expert' is another demonstrator's"):
+        record("poor", name="expert", configuration=1, n=1)
     with pytest.raises(ValueError, match=r"unknown demonstrator 'expret'"):
         record("expret", configuration=1, n=1)
 

@@ -129,6 +129,12 @@ def test_the_own_experiment_is_learned_evaluated_and_reported(own_run):
     ('[demonstrators.x]\npolicy = "nocolon"\n', r"policy must be \"module:name\""),
     ('[demonstrators.x]\npolicy = "a:b"\ndecision_hz = 7\n', r"decision_hz must be one of 30, 15"),
     ('[demonstrators.x]\nimported = false\n', r"imported must be true"),
+    ('[demonstrators.x]\ncontroller = "humanoid"\nbody = "lego"\n', r"the humanoid controller cannot drive the lego"),
+    ('[demonstrators.x]\ncontroller = "expert"\nbody = "tiny"\n', r"the expert controller cannot drive the tiny"),
+    ('[demonstrators.x]\npolicy = "a:b"\ndecision_hz = true\n', r"decision_hz must be one of"),
+    ('[demonstrators.x]\nlog = "a.csv"\nrate_hz = -3\n', r"rate_hz must be a positive number .* got -3"),
+    ('[demonstrators.x]\nlog = "a.csv"\nunits = { length = "furlong" }\n', r"units.length = 'furlong' is not a unit"),
+    ('[own_experiments]\nx = 1\n', r"unknown section: own_experiments"),
     ('[experiments.varying_skill]\ndemonstrators = ["expert"]\n', r"an experiment's name must be a word of its own"),
     ('[experiments.e]\ndemonstrators = ["expert", "nobody"]\n', r"demonstrator 'nobody' is neither the thesis's"),
     ('[experiments.e]\ndemonstrators = ["expert", "poor"]\nordering = ["poor"]\n', r"ordering .* must list"),
@@ -187,3 +193,24 @@ def test_import_tracks_takes_the_body_the_runs_config_gives(tmp_path, capsys):
     assert {d.body for d in load_demonstrations(run.demonstrations_path("bob"))} == {"cart"}
     assert cli.main([*base, "--as", "carol", "--body", "kart"]) == 2
     assert "--body 'kart': one of lego, tiny, humanoid or of the run's [bodies] (cart)" in capsys.readouterr().err
+
+
+def test_a_controller_drives_its_own_body_unless_told(tmp_path):
+    config = RunConfig.from_toml('[demonstrators.small_tiny]\ncontroller = "tiny"\n'
+                                 '[demonstrators.walker]\ncontroller = "humanoid"\n')
+    assert config.demonstrators["small_tiny"].body == "tiny" and config.demonstrators["walker"].body == "humanoid"
+
+
+def test_a_policy_file_that_fails_to_load_is_named(tmp_path):
+    from polymimic.reproduce.roster_config import RosterError, record_demonstrator
+
+    (tmp_path / "broken.py").write_text("def act(reading:\n")
+    (tmp_path / "typed.py").write_text("from __future__ import annotations\nimport dataclasses\n\n"
+                                       "@dataclasses.dataclass\nclass Still:\n    decision_hz: int = 10\n\n"
+                                       "    def act(self, reading) -> str:\n        return 'stop'\n")
+    config = RunConfig.from_toml('[demonstrators.broken]\npolicy = "broken.py:act"\n'
+                                 '[demonstrators.typed]\npolicy = "typed.py:Still"\n', base_dir=tmp_path)
+    with pytest.raises(RosterError, match=r"\[demonstrators.broken\] policy .*broken.py:act': SyntaxError"):
+        record_demonstrator(config.demonstrators["broken"], n=1, seed=0, field_config=config.field, bodies={})
+    demos, _ = record_demonstrator(config.demonstrators["typed"], n=1, seed=0, field_config=config.field, bodies={})
+    assert {d.demonstrator for d in demos} == {"typed"}

@@ -212,7 +212,7 @@ class RunConfig:
         """A config from plain data; what ``data`` leaves out comes from ``base`` (the thesis's).
         Files a demonstrator names (a log, a policy's file) are found relative to ``base_dir``."""
         base = base or cls()
-        unknown = sorted(set(data) - {f.name for f in dataclasses.fields(cls)} - {"own_experiments"})
+        unknown = sorted(set(data) - {f.name for f in dataclasses.fields(cls) if f.name != "own_experiments"})
         if unknown:
             raise ConfigError(f"unknown section{'s' if len(unknown) > 1 else ''}: {', '.join(unknown)}")
         changes: dict[str, Any] = {}

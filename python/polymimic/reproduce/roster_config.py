@@ -49,6 +49,7 @@ import importlib
 import importlib.util
 import os
 import pathlib
+import sys
 from collections.abc import Mapping, Sequence
 from typing import Any, Union
 
@@ -56,6 +57,7 @@ from polymimic import field, tracks
 from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, bodies_from_tables
 from polymimic.policies import DECISION_RATES_HZ
 from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
+from polymimic.tracks.units import UNITS
 
 __all__ = ["ControllerDemonstrator", "DemonstratorSpec", "ImportedDemonstrator", "LogDemonstrator",
            "PolicyDemonstrator", "RosterError", "demonstrators_from_tables", "experiments_from_tables", "read_bodies",
@@ -143,12 +145,14 @@ def _demonstrator(name: str, table: Any, bodies: Mapping[str, WheeledBody], base
         if key not in known:
             raise RosterError(f"{where}: unknown key {key!r} for a {kinds[0]} demonstrator; known keys: "
                               f"{', '.join(known)}")
-    values = {"body": "lego", **table}
+    # A built-in controller drives its own body unless told otherwise; anything else the Lego.
+    own_body = field.BODIES.get(table.get("controller", ""), "lego") if kinds[0] == "controller" else "lego"
+    values = {"body": own_body, **table}
     body = values["body"]
     if body not in THESIS_BODY_FIELDS and body not in bodies:
         raise RosterError(f"{where}: body {body!r} is neither a thesis body ({', '.join(THESIS_BODY_FIELDS)}) nor one "
                           f"of [bodies] ({', '.join(bodies) or 'none given'})")
-    _check_kind(where, kinds[0], values)
+    _check_kind(where, kinds[0], values, bodies)
     if kinds[0] == "log":
         values["log"] = os.fspath((base_dir / values["log"]).resolve())
     if kinds[0] == "policy" and values["policy"].rsplit(":", 1)[0].endswith(".py"):
@@ -158,7 +162,7 @@ def _demonstrator(name: str, table: Any, bodies: Mapping[str, WheeledBody], base
     return made
 
 
-def _check_kind(where: str, kind: str, values: dict[str, Any]) -> None:
+def _check_kind(where: str, kind: str, values: dict[str, Any], bodies: Mapping[str, WheeledBody]) -> None:
     def text(key: str) -> None:
         if not isinstance(values[key], str) or not values[key]:
             raise RosterError(f"{where}: {key} must be a non-empty string, got {values[key]!r}")
@@ -167,6 +171,10 @@ def _check_kind(where: str, kind: str, values: dict[str, Any]) -> None:
         if values["controller"] not in field.DEMONSTRATORS:
             raise RosterError(f"{where}: controller {values['controller']!r} is not one of "
                               f"{', '.join(field.DEMONSTRATORS)}")
+        if not _can_drive(values["controller"], values["body"], bodies):
+            raise RosterError(f"{where}: the {values['controller']} controller cannot drive the {values['body']} body "
+                              f"(the humanoid's drives only the humanoid, the Expert's a wheeled body that takes its "
+                              f"wheel speeds, Poor's and Tiny's any wheeled body)")
         lapse = values.get("lapse", 0.0)
         if isinstance(lapse, bool) or not isinstance(lapse, (int, float)) or not 0.0 <= lapse <= 1.0:
             raise RosterError(f"{where}: lapse must be a number in [0, 1], got {lapse!r}")
@@ -176,7 +184,7 @@ def _check_kind(where: str, kind: str, values: dict[str, Any]) -> None:
         if ":" not in values["policy"]:
             raise RosterError(f"{where}: policy must be \"module:name\" or \"file.py:name\", got {values['policy']!r}")
         rate = values.get("decision_hz")
-        if rate is not None and rate not in DECISION_RATES_HZ:
+        if rate is not None and (isinstance(rate, bool) or rate not in DECISION_RATES_HZ):
             raise RosterError(f"{where}: decision_hz must be one of {', '.join(map(str, DECISION_RATES_HZ))}, "
                               f"got {rate!r}")
     elif kind == "imported":
@@ -188,6 +196,23 @@ def _check_kind(where: str, kind: str, values: dict[str, Any]) -> None:
         for key in ("units", "columns"):
             if not isinstance(values.get(key, {}), Mapping):
                 raise RosterError(f"{where}: {key} must be a table, got {values[key]!r}")
+        for quantity, unit in values.get("units", {}).items():
+            if quantity not in UNITS or unit not in UNITS[quantity]:
+                allowed = "; ".join(f"{q}: {', '.join(u)}" for q, u in UNITS.items())
+                raise RosterError(f"{where}: units.{quantity} = {unit!r} is not a unit polymimic reads ({allowed})")
+        rate_hz = values.get("rate_hz")
+        if rate_hz is not None and (isinstance(rate_hz, bool) or not isinstance(rate_hz, (int, float))
+                                    or not 0 < rate_hz < 1e6):
+            raise RosterError(f"{where}: rate_hz must be a positive number of readings a second, got {rate_hz!r}")
+
+
+def _can_drive(controller: str, body: str, bodies: Mapping[str, WheeledBody]) -> bool:
+    """Whether a built-in controller has commands for the body (as the field decides it)."""
+    if controller == "humanoid" or body == "humanoid":
+        return controller == body
+    if controller == "expert":
+        return body == "lego" or (body in bodies and bodies[body].expert_commands)
+    return True
 
 
 def experiments_from_tables(tables: Mapping[str, Any], *, demonstrators: Sequence[str]) -> dict[str, Experiment]:
@@ -271,18 +296,24 @@ def record_demonstrator(spec: DemonstratorSpec, *, n: int, seed: int, field_conf
 
 
 def _policy(spec: PolicyDemonstrator) -> Any:
-    """The policy ``module:name`` or ``file.py:name`` names (a class made once)."""
+    """The policy ``module:name`` or ``file.py:name`` names (a class made once). A file is
+    loaded afresh for each demonstrator, so that two share no module-level state; whatever
+    loading it raises (a syntax error, an exception at import) is named with the file."""
     where, attribute = spec.policy.rsplit(":", 1)
     try:
         if where.endswith(".py"):
-            location = importlib.util.spec_from_file_location(pathlib.Path(where).stem, where)
+            # Registered while it runs, as an import would be: dataclasses and pickling look it up.
+            module_name = f"polymimic_policy_{spec.name}"
+            location = importlib.util.spec_from_file_location(module_name, where)
             if location is None or location.loader is None:
                 raise ImportError(f"no Python file at {where}")
             module = importlib.util.module_from_spec(location)
+            sys.modules[module_name] = module
             location.loader.exec_module(module)
         else:
             module = importlib.import_module(where)
         found = getattr(module, attribute)
-    except (ImportError, AttributeError, OSError) as error:
-        raise RosterError(f"[demonstrators.{spec.name}] policy {spec.policy!r}: {error}") from error
-    return found() if isinstance(found, type) else found
+        return found() if isinstance(found, type) else found
+    except Exception as error:  # the user's code: anything it raises is named, not a traceback
+        raise RosterError(f"[demonstrators.{spec.name}] policy {spec.policy!r}: {type(error).__name__}: "
+                          f"{error}") from error

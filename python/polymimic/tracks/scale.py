@@ -13,8 +13,8 @@ import math
 
 import numpy as np
 
-from polymimic.tracks.errors import TrackLogError
 from polymimic.bodies import Field
+from polymimic.tracks.errors import TrackLogError
 from polymimic.tracks.reading import Log
 from polymimic.tracks.units import UNITS, Units, unit_hint
 

@@ -3,8 +3,8 @@ log of a tracker you run, learned from together with polymimic's Expert.
 
 Three demonstrators take penalty kicks:
 
-- ``rover_chaser``: a Python controller of the user's own (``Chaser``), driving a new wheeled
-  body (``ROVER``: bigger and faster than the thesis's Lego robot, with more motor lag);
+- ``buggy_chaser``: a Python controller of the user's own (``Chaser``), driving a new wheeled
+  body (``BUGGY``: bigger and faster than the thesis's Lego robot, with more motor lag);
 - ``logged``: a robot watched by another program's overhead tracker, whose log is a CSV in
   metres and degrees at 15 readings a second, with the program's own column names
   (``overhead_camera_log`` stands in for that program);
@@ -31,7 +31,7 @@ import polymimic
 from polymimic import recognition
 from polymimic.bodies import Slip, WheeledBody
 
-ROVER = WheeledBody("rover", length_mm=180, width_mm=170, wheel_base_mm=150, top_wheel_speed_mm_s=140,
+BUGGY = WheeledBody("buggy", length_mm=180, width_mm=170, wheel_base_mm=150, top_wheel_speed_mm_s=140,
                     motor_lag_s=0.2, turn_lag_s=0.04, slip=Slip(common_sd=0.15, differential_sd=0.03))
 """The user's robot: a body described by its constants (see polymimic.bodies)."""
 
@@ -87,7 +87,7 @@ def overhead_camera_log(path: pathlib.Path, *, episodes: int, seed: int) -> None
 def gather(folder: pathlib.Path, *, seed: int) -> dict[str, list[polymimic.Demonstration]]:
     """Every demonstrator's demonstrations: recorded, imported, built in."""
     n = DEMONSTRATIONS_PER_CONFIGURATION
-    chaser = [d for c in (1, 2) for d in polymimic.record(Chaser(), body=ROVER, name="rover_chaser",
+    chaser = [d for c in (1, 2) for d in polymimic.record(Chaser(), body=BUGGY, name="buggy_chaser",
                                                           configuration=c, n=n, seed=seed)]
     log = folder / "overhead_camera.csv"
     overhead_camera_log(log, episodes=2 * n, seed=seed)
@@ -97,7 +97,7 @@ def gather(folder: pathlib.Path, *, seed: int) -> dict[str, list[polymimic.Demon
                  "ball_x": "ball_x", "ball_y": "ball_y"})
     print(imported.summary())
     expert = [d for c in (1, 2) for d in polymimic.record("expert", configuration=c, n=n, seed=seed)]
-    return {"expert": expert, "rover_chaser": chaser, "logged": imported.demonstrations}
+    return {"expert": expert, "buggy_chaser": chaser, "logged": imported.demonstrations}
 
 
 def learn_and_play(demonstrations: dict[str, list[polymimic.Demonstration]], *, seed: int):

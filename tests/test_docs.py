@@ -66,6 +66,6 @@ def test_readme_roster_is_a_run_config():
     rosters = [b for b in blocks if "[experiments." in b]
     assert rosters, "the README shows an own experiment"
     config = RunConfig.from_toml(rosters[0], base_dir=README.parent)
-    assert list(config.demonstrators) == ["rover_poor", "chaser", "logged", "alice"]
+    assert list(config.demonstrators) == ["wanderer_poor", "chaser", "logged", "alice"]
     assert config.own_experiments["mine"].skill_order[0] == "expert"
     assert config.demonstrators["logged"].log == str(README.parent / "logs" / "overhead.csv")

@@ -26,8 +26,8 @@ def test_own_data_learns_from_a_python_controller_a_new_body_and_a_tracker_log(t
     assert abs(float(first.split(",")[2])) < 1.0, "metres"
     rows = {line.split("|")[1].strip(): [c.strip() for c in line.split("|")[2:-1]]
             for line in text.splitlines() if line.startswith("| ") and "---" not in line and "demonstrator" not in line}
-    assert set(rows) == {"expert", "rover_chaser", "logged"}
-    assert rows["rover_chaser"][0] == "rover" and rows["logged"][0] == "lego"
+    assert set(rows) == {"expert", "buggy_chaser", "logged"}
+    assert rows["buggy_chaser"][0] == "buggy" and rows["logged"][0] == "lego"
     assert all(row[1] == "20" for row in rows.values())
     lps = {who: float(row[4]) for who, row in rows.items()}
     assert all(0.0 <= lp <= 1.0 for lp in lps.values())

@@ -368,11 +368,15 @@ _building_thesis_bodies = True
 
 
 def _describe(body: WheeledBody) -> None:
-    """Remember the body by its name, so that what is learned from its demonstrations is read on
-    its field; a later body of the same name replaces it (as redefining it in a notebook
-    should), but a thesis body's name stays the thesis body's."""
+    """Remember which field a body plays on, so that what is learned from its demonstrations is
+    read on the right field. One name, one body: were a name to stand for whichever body was
+    made last, what a run learns would depend on the order things were made in."""
     with _lock:
-        if body.name in THESIS_BODY_FIELDS and not _building_thesis_bodies and _described.get(body.name) != body:
+        known = _described.get(body.name)
+        if known is not None and known != body:
+            raise ValueError(f"body {body.name!r} is already described with other constants; give this one "
+                             f"another name")
+        if known is None and body.name in THESIS_BODY_FIELDS and not _building_thesis_bodies:
             raise ValueError(f"body name {body.name!r} is the thesis's; give your body a name of its own")
         _described[body.name] = body
 

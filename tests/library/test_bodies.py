@@ -90,7 +90,7 @@ def test_a_small_field_body_plays_on_the_small_field():
 
 def test_bodies_read_from_toml_tables():
     text = """
-[bodies.cart]
+[bodies.trolley]
 length_mm = 90
 width_mm = 80
 wheel_base_mm = 70
@@ -114,7 +114,7 @@ right = { common_sd = 0.5, differential_sd = 0.05 }
 stop = { common_sd = 0.0, differential_sd = 0.0 }
 """
     bodies = bodies_from_tables(loads(text)["bodies"])
-    cart, skid = bodies["cart"], bodies["skid"]
+    cart, skid = bodies["trolley"], bodies["skid"]
     assert cart.primitives_mm_s["forward"] == (30.0, 28.0) and cart.primitives_mm_s["backward"] == (-24.0, -24.0)
     assert cart.slip == Slip(0.1, 0.02) and cart.field == "small" and cart.motor_lag_s == 0.08
     assert skid.slip_of("backward") == Slip(0.3, 0.3) and skid.expert_commands
@@ -153,13 +153,14 @@ def test_bad_body_tables_are_refused_naming_the_table_and_key(table, message):
         WheeledBody.from_table("bad", {**base, **table})
 
 
-def test_a_name_is_its_latest_body_and_the_thesis_names_are_the_thesis_bodies():
+def test_names_are_one_body_each_and_the_thesis_names_are_the_thesis_bodies():
     WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
-    assert field_of("twin") == "large"
-    WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50, field="small")
-    assert field_of("twin") == "small", "described again, the body is its latest description"
+    WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)  # the same: fine
+    with pytest.raises(ValueError, match="body 'twin' is already described with other constants"):
+        WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50, field="small")
+    assert field_of("twin") == "large", "the first description stands"
     assert dataclasses.replace(THESIS_BODIES["lego"]) == THESIS_BODIES["lego"]
-    with pytest.raises(ValueError, match="body name 'lego' is the thesis's"):
+    with pytest.raises(ValueError, match="body 'lego' is already described with other constants"):
         dataclasses.replace(THESIS_BODIES["lego"], wheel_base_mm=100)
     with pytest.raises(ValueError, match="body name 'humanoid' is the thesis's"):
         WheeledBody("humanoid", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)

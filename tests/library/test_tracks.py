@@ -383,3 +383,35 @@ def test_parquet_logs_are_checked_the_same_way(tmp_path):
                       "robot_theta_rad": [0.0, 0, 0], "ball_x_mm": [170.0, None, 170], "ball_y_mm": ["0", "0", "x"]})
     pq.write_table(table, tmp_path / "log.parquet")
     _refused(tmp_path / "log.parquet", r"log.parquet: data row 3, column 'ball_y_mm': 'x' is not a number")
+
+
+def test_review_cases_nan_ids_one_reading_episodes_ms_times_and_infinite_configurations(tmp_path):
+    """A NaN episode id is no id; an episode of one reading is counted invalid, not kept; times
+    written to the millisecond reach their last frame; an infinite configuration is named."""
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    import polymimic
+    from polymimic.tracks import TrackLogError
+
+    def log(rows, path, **extra):
+        columns = {k: [r[i] for r in rows] for i, k in enumerate(
+            ("t_s", "robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm"))}
+        pq.write_table(pa.table({**columns, **extra}), path)
+        return path
+
+    rows = [(0.0, -170.0, 0.0, 0.0, 170.0, 0.0), (0.0333, -169.0, 0.0, 0.0, 170.0, 0.0),
+            (0.0667, -168.0, 0.0, 0.0, 170.0, 0.0)]
+    with pytest.raises(TrackLogError, match="no episode id"):
+        polymimic.import_tracks(log(rows, tmp_path / "nan.parquet", episode=[1.0, float("nan"), 1.0]),
+                                demonstrator="x")
+    with pytest.warns(polymimic.tracks.LostTrackingWarning):
+        short = polymimic.import_tracks(log(rows, tmp_path / "short.parquet", episode=[1.0, 1.0, 2.0]),
+                                        demonstrator="x")
+    assert [len(d.frames) for d in short.demonstrations] == [2]
+    assert short.invalid == [(2.0, "1 reading: too short to be an attempt")]
+    whole = polymimic.import_tracks(log(rows, tmp_path / "ms.parquet"), demonstrator="x")
+    assert [len(d.frames) for d in whole.demonstrations] == [3], "0.0667 s is the frame at 2/30 s"
+    with pytest.raises(TrackLogError, match=r"configuration inf; expected 1 or 2"):
+        polymimic.import_tracks(log(rows, tmp_path / "inf.parquet", configuration=[float("inf")] * 3),
+                                demonstrator="x")

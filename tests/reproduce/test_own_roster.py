@@ -31,7 +31,7 @@ class Straight:
 '''
 
 ROSTER = '''
-[bodies.cart]
+[bodies.wagon]
 length_mm = 160
 width_mm = 150
 wheel_base_mm = 140
@@ -39,12 +39,12 @@ top_wheel_speed_mm_s = 140
 
 [demonstrators.cart_poor]
 controller = "poor"
-body = "cart"
+body = "wagon"
 lapse = 0.2
 
 [demonstrators.straight]
 policy = "policies.py:Straight"
-body = "cart"
+body = "wagon"
 
 [demonstrators.logged]
 log = "logs/overhead.csv"
@@ -78,7 +78,7 @@ def own_run(tiny_run_toml, tmp_path_factory):
 def test_the_config_reads_and_round_trips(own_run):
     _, config, _ = own_run
     assert list(config.demonstrators) == ["cart_poor", "straight", "logged"]
-    assert config.bodies["cart"].primitives_mm_s["forward"] == (56.0, 56.0)
+    assert config.bodies["wagon"].primitives_mm_s["forward"] == (56.0, 56.0)
     assert config.own_experiments["mine"].ordering == ("straight", "logged", "cart_poor", "expert")
     assert RunConfig.from_toml(config.to_toml()) == config
     assert RunConfig.from_dict(json.loads(json.dumps(config.to_dict()))) == config
@@ -91,7 +91,7 @@ def test_every_own_demonstrator_is_recorded_and_segmented(own_run):
     straight = load_demonstrations(run.demonstrations_path("straight"))
     imported = load_demonstrations(run.demonstrations_path("logged"))
     assert len(cart) == len(straight) == 2 * n and len(imported) == len(logged)
-    assert {d.body for d in cart + straight} == {"cart"} and {d.demonstrator for d in imported} == {"logged"}
+    assert {d.body for d in cart + straight} == {"wagon"} and {d.demonstrator for d in imported} == {"logged"}
     assert [d.outcome for d in imported] == [d.outcome for d in logged]
     for who in ("cart_poor", "straight", "logged"):
         assert run.segments_path(who).exists()
@@ -181,18 +181,18 @@ def test_a_log_brought_in_with_import_tracks_is_the_runs_demonstrator(tiny_run_t
 def test_import_tracks_takes_the_body_the_runs_config_gives(tmp_path, capsys):
     from polymimic import cli
 
-    roster = ('[bodies.cart]\nlength_mm = 160\nwidth_mm = 150\nwheel_base_mm = 140\ntop_wheel_speed_mm_s = 140\n'
-              '[demonstrators.bob]\nimported = true\nbody = "cart"\n')
+    roster = ('[bodies.wagon]\nlength_mm = 160\nwidth_mm = 150\nwheel_base_mm = 140\ntop_wheel_speed_mm_s = 140\n'
+              '[demonstrators.bob]\nimported = true\nbody = "wagon"\n')
     run = RunDir(tmp_path / "run")
     run.open(RunConfig.from_toml(roster))
     write_tracks(record("poor", configuration=1, n=2, seed=3), tmp_path / "bob.csv", include=("episode",))
     base = ["import-tracks", str(tmp_path / "bob.csv"), "--run-dir", str(run.path)]
     assert cli.main([*base, "--as", "bob", "--body", "tiny"]) == 2
-    assert "--body 'tiny': the run's [demonstrators.bob] says body = 'cart'" in capsys.readouterr().err
+    assert "--body 'tiny': the run's [demonstrators.bob] says body = 'wagon'" in capsys.readouterr().err
     assert cli.main([*base, "--as", "bob"]) == 0
-    assert {d.body for d in load_demonstrations(run.demonstrations_path("bob"))} == {"cart"}
+    assert {d.body for d in load_demonstrations(run.demonstrations_path("bob"))} == {"wagon"}
     assert cli.main([*base, "--as", "carol", "--body", "kart"]) == 2
-    assert "--body 'kart': one of lego, tiny, humanoid or of the run's [bodies] (cart)" in capsys.readouterr().err
+    assert "--body 'kart': one of lego, tiny, humanoid or of the run's [bodies] (wagon)" in capsys.readouterr().err
 
 
 def test_a_controller_drives_its_own_body_unless_told(tmp_path):

@@ -11,6 +11,7 @@ periods, is lost tracking: the episode is invalid (SPEC §3.2.1).
 from __future__ import annotations
 
 import dataclasses
+import math
 from typing import Any
 
 import numpy as np
@@ -129,7 +130,7 @@ def _by_column(log: Log) -> list[Stretch]:
     seen: dict[Any, int] = {}
     start = 0
     for row, episode in enumerate(ids):
-        if episode is None:
+        if episode is None or (isinstance(episode, float) and math.isnan(episode)):
             raise TrackLogError(f"{log.where(row, 'episode')}: no episode id")
         if row > 0 and episode != ids[row - 1]:
             stretches.append(Stretch(ids[row - 1], start, row))

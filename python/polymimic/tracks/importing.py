@@ -59,6 +59,10 @@ class ImportedTracks:
         return self.summary()
 
 
+MIN_READINGS = 2
+"""An episode of fewer readings shows no motion: it is left out, and counted, as invalid."""
+
+
 def playing_field(body: str | WheeledBody) -> Field:
     """The size of the field ``body`` plays on (``lego`` and ``humanoid``: 1020 × 810 mm;
     ``tiny``: 560 × 345 mm; a :class:`polymimic.bodies.WheeledBody`, its own field's).
@@ -167,6 +171,8 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
         logged_outcome = _per_episode(log, stretch, "outcome")
         logged_configuration = _configuration(log, stretch, configuration)
         reason = lost_tracking(log, stretch, period_s)
+        if reason is None and stretch.stop - stretch.start < MIN_READINGS:
+            reason = f"{stretch.stop - stretch.start} reading: too short to be an attempt"
         if reason is not None:
             invalid.append((stretch.episode, reason))
             continue
@@ -238,7 +244,7 @@ def _configuration(log: Log, stretch: Stretch, given: int | None) -> int | None:
         return given
     try:
         number = int(logged) if float(logged) == int(float(logged)) else None
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):  # not a number, or an infinite one
         number = None
     if number not in (1, 2):
         row = log.labels["configuration"].index(logged, stretch.start)

@@ -17,8 +17,9 @@ __all__ = ["FRAME_RATE_HZ", "grid", "heading", "held", "linear", "wrap_angle"]
 
 FRAME_RATE_HZ = 30.0
 """polymimic's tracker rate: frames at 0, 1/30, 2/30, … s."""
-TIME_SLACK_S = 1e-6
-"""A reading this close to a grid time is at it (timestamps written in ms or rounded)."""
+TIME_SLACK_S = 5e-4
+"""A reading this close to a grid time is at it: half a millisecond, so that timestamps written
+to the millisecond (0.0333 for 1/30 s) still reach their frame."""
 
 
 def grid(duration_s: float, rate_hz: float = FRAME_RATE_HZ) -> np.ndarray:

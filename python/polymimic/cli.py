@@ -172,6 +172,8 @@ def _add_import_tracks(commands: Any) -> None:
     tracks.add_argument("--run-dir", type=pathlib.Path, help="the run to add the demonstrations to (default: the "
                                                              "newest run under runs/)")
     tracks.add_argument("--out", type=pathlib.Path, help="write the demonstrations to this Parquet file instead")
+    tracks.add_argument("--replace", action="store_true",
+                        help="replace the run's demonstrations of this name, and what it made from them")
     tracks.set_defaults(handler=_import_tracks)
 
 
@@ -328,8 +330,12 @@ def _import_tracks(args: argparse.Namespace) -> int:
             raise MissingInputError("no run under runs/: name one with --run-dir, or write to a file with --out")
         if not pathlib.Path(run).is_dir():
             raise MissingInputError(f"--run-dir {run}: no such directory")
-        out = RunDir(run).demonstrations_path(args.name)
-        body = _declared_body(RunDir(run), args.name, args.body)
+        target = _existing(RunDir(run))
+        out = target.demonstrations_path(args.name)
+        body = _declared_body(target, args.name, args.body)
+        if out.exists() and not args.replace:
+            raise RunError(f"{out} exists: the run has {args.name}'s demonstrations already (and may have learned "
+                           f"from them); import into a new run, or give --replace")
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", LostTrackingWarning)  # the summary line says which were invalid
@@ -341,9 +347,26 @@ def _import_tracks(args: argparse.Namespace) -> int:
     if not imported.demonstrations:
         raise RunError(f"{imported.summary()}: no demonstration to write")
     out.parent.mkdir(exist_ok=True)
-    save_demonstrations(imported.demonstrations, out)
+    if args.out is not None:
+        save_demonstrations(imported.demonstrations, out)
+    else:
+        with target.lock(f"polymimic import-tracks --as {args.name}"):
+            _replace_downstream(target, args.name)
+            save_demonstrations(imported.demonstrations, out)
     print(f"{imported.summary()}; written to {out}")
     return 0
+
+
+def _replace_downstream(run: RunDir, name: str) -> None:
+    """What the run made from ``name``'s earlier demonstrations: its segments, and the trials
+    and evaluations of every experiment that learns from it, so that the next stages redo them."""
+    run.segments_path(name).unlink(missing_ok=True)
+    for experiment in run.open(None).all_experiments().values():
+        if name in experiment.demonstrators:
+            for made in run.experiment_dir(experiment.name).glob("*.json"):
+                made.unlink()
+            for control in CONTROLS:
+                run.attempts_path(experiment.name, control).unlink(missing_ok=True)
 
 
 def _declared_body(run: RunDir, name: str, asked: str | None) -> str | WheeledBody:

@@ -4,6 +4,7 @@ evaluated and reported like the thesis's, while the thesis's part of the run sta
 from __future__ import annotations
 
 import json
+import pathlib
 
 import pytest
 
@@ -214,3 +215,47 @@ def test_a_policy_file_that_fails_to_load_is_named(tmp_path):
         record_demonstrator(config.demonstrators["broken"], n=1, seed=0, field_config=config.field, bodies={})
     demos, _ = record_demonstrator(config.demonstrators["typed"], n=1, seed=0, field_config=config.field, bodies={})
     assert {d.demonstrator for d in demos} == {"typed"}
+
+
+def test_a_rerun_makes_nothing_new_and_a_changed_log_is_refused(own_run):
+    from polymimic.reproduce.rundir import RunError
+
+    run, config, logged = own_run
+    ctx = Context(run=run, config=config, runner=TaskRunner(workers=1), quiet=True)
+    made = {p: p.stat().st_mtime_ns for p in (run.demonstrations_path("logged"), run.demonstrations_path("straight"),
+                                              run.trial_path("mine", config.seeds.first_trial))}
+    before = run.results_path.read_bytes()
+    reproduce(ctx)
+    assert {p: p.stat().st_mtime_ns for p in made} == made
+    assert run.results_path.read_bytes() == before
+    log = pathlib.Path(config.demonstrators["logged"].log)
+    original = log.read_bytes()
+    try:
+        log.write_bytes(original)  # rewritten with the same bytes: the content, not the time, counts
+        reproduce(ctx)
+        write_tracks(logged[:4], log, units={"length": "m", "angle": "deg"}, rate_hz=20, include=("episode",))
+        with pytest.raises(RunError, match=r"overhead.csv has changed since demonstrations_logged.parquet was made"):
+            reproduce(ctx)
+    finally:
+        log.write_bytes(original)
+
+
+def test_import_tracks_again_needs_replace_and_redoes_what_was_made_from_it(tiny_run_toml, tmp_path, capsys):
+    from polymimic import cli
+
+    roster = '[demonstrators.dora]\nimported = true\n\n[experiments.with_dora]\ndemonstrators = ["dora", "expert"]\n'
+    run = RunDir(tmp_path / "run")
+    config = run.open(RunConfig.from_toml(tiny_run_toml(trials=1, evaluated_imitators=1) + roster))
+    write_tracks([d for c in (1, 2) for d in record("poor", configuration=c, n=2, seed=5)], tmp_path / "dora.csv",
+                 include=("episode",))
+    base = ["import-tracks", str(tmp_path / "dora.csv"), "--as", "dora", "--run-dir", str(run.path)]
+    assert cli.main(base) == 0
+    reproduce(Context(run=run, config=config, runner=TaskRunner(workers=1), quiet=True))
+    trial = run.trial_path("with_dora", config.seeds.first_trial)
+    assert trial.exists() and run.segments_path("dora").exists()
+    capsys.readouterr()
+    assert cli.main(base) == 2
+    assert "exists: the run has dora's demonstrations already" in capsys.readouterr().err
+    assert cli.main([*base, "--replace"]) == 0
+    assert not trial.exists() and not run.segments_path("dora").exists()
+    assert run.trial_path("varying_skill", config.seeds.first_trial).exists(), "what did not learn from dora stays"

@@ -45,6 +45,7 @@ ControllerDemonstrator(name='slow_poor', controller='poor', body='lego', lapse=0
 from __future__ import annotations
 
 import dataclasses
+import hashlib
 import importlib
 import importlib.util
 import os
@@ -61,7 +62,7 @@ from polymimic.tracks.units import UNITS
 
 __all__ = ["ControllerDemonstrator", "DemonstratorSpec", "ImportedDemonstrator", "LogDemonstrator",
            "PolicyDemonstrator", "RosterError", "demonstrators_from_tables", "experiments_from_tables", "read_bodies",
-           "record_demonstrator", "spec_table"]
+           "file_digest", "record_demonstrator", "source_file", "spec_table"]
 
 
 class RosterError(ValueError):
@@ -293,6 +294,21 @@ def record_demonstrator(spec: DemonstratorSpec, *, n: int, seed: int, field_conf
              for d in field.record(who, configuration=configuration, n=n, seed=seed, config=dict(field_config),
                                    body=body, name=spec.name, **extra)]
     return demos, f"{spec.name}: {len(demos)} demonstrations"
+
+
+def source_file(spec: DemonstratorSpec) -> pathlib.Path | None:
+    """The file a demonstrator's demonstrations come from, where it has one: a log, or a
+    policy's ``.py`` file (a module on the path is not followed)."""
+    if isinstance(spec, LogDemonstrator):
+        return pathlib.Path(spec.log)
+    if isinstance(spec, PolicyDemonstrator) and spec.policy.rsplit(":", 1)[0].endswith(".py"):
+        return pathlib.Path(spec.policy.rsplit(":", 1)[0])
+    return None
+
+
+def file_digest(path: pathlib.Path) -> str:
+    """The SHA-256 of a file's bytes, hex."""
+    return hashlib.sha256(path.read_bytes()).hexdigest()
 
 
 def _policy(spec: PolicyDemonstrator) -> Any:

@@ -21,6 +21,7 @@ the recogniser: ``record`` records it when the recogniser exists, ``segment`` ot
 from __future__ import annotations
 
 import dataclasses
+import json
 import pathlib
 import sys
 import time
@@ -28,6 +29,7 @@ from collections.abc import Callable, Sequence, Sized
 from typing import cast
 
 from polymimic import _native
+from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
 from polymimic.field import PRIMITIVES, record, self_observation
@@ -37,7 +39,14 @@ from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.experiments import evaluate_imitators, learn
 from polymimic.reproduce.report import write_report
 from polymimic.reproduce.roster import DEMONSTRATORS, HETEROGENEOUS, RECORDED
-from polymimic.reproduce.roster_config import ImportedDemonstrator, LogDemonstrator, record_demonstrator
+from polymimic.reproduce.roster_config import (
+    DemonstratorSpec,
+    ImportedDemonstrator,
+    LogDemonstrator,
+    file_digest,
+    record_demonstrator,
+    source_file,
+)
 from polymimic.reproduce.rundir import MissingInputError, RunDir, RunError
 from polymimic.segments import load_segments, save_segments, segment_demonstrations
 
@@ -91,26 +100,42 @@ def _record(ctx: Context) -> int:
             save_demonstrations(demos, path)
             made += 1
     for name, spec in ctx.config.demonstrators.items():
-        path = ctx.run.demonstrations_path(name)
-        # A log holds as many valid episodes as it holds; a recorded demonstrator n per configuration.
-        count = None if isinstance(spec, (LogDemonstrator, ImportedDemonstrator)) else 2 * n
-        if not ctx.finished(path, load_demonstrations, count=count):
-            if isinstance(spec, ImportedDemonstrator):
-                raise MissingInputError(f"{path} is missing: [demonstrators.{name}] is imported; bring its log in "
-                                        f"with `polymimic import-tracks FILE --as {name} --run-dir {ctx.run.path}`")
-            try:
-                demos, said = record_demonstrator(spec, n=n, seed=ctx.config.seeds.demonstrations,
-                                                  field_config=ctx.config.field, bodies=ctx.config.bodies)
-            except (ValueError, TypeError, OSError) as error:
-                raise RunError(f"[demonstrators.{name}]: {error}") from error
-            if not demos:
-                raise RunError(f"[demonstrators.{name}]: no valid demonstration ({said})")
-            save_demonstrations(demos, path)
-            ctx.say(f"  {said}")
-            made += 1
+        made += _record_own(ctx, name, spec)
     if ctx.run.recognizer_path.exists():
         made += _record_average(ctx)
     return made
+
+
+def _record_own(ctx: Context, name: str, spec: DemonstratorSpec) -> int:
+    """A demonstrator of the run config's. A log or a policy file is fingerprinted when its
+    demonstrations are made, so that a rerun after it changed says so rather than going on with
+    demonstrations of another file."""
+    n, path = ctx.config.experiments.demonstrations_per_configuration, ctx.run.demonstrations_path(name)
+    source, fingerprint = source_file(spec), path.with_name(f"{path.stem}.source.json")
+    # A log holds as many valid episodes as it holds; a recorded demonstrator n per configuration.
+    count = None if isinstance(spec, (LogDemonstrator, ImportedDemonstrator)) else 2 * n
+    if ctx.finished(path, load_demonstrations, count=count):
+        if source is not None and source.exists() and fingerprint.exists():
+            recorded = json.loads(fingerprint.read_text(encoding="utf-8")).get("sha256")
+            if recorded != file_digest(source):
+                raise RunError(f"{source} has changed since {path.name} was made from it: start a new run (or remove "
+                               f"{path} and what was made from it)")
+        return 0
+    if isinstance(spec, ImportedDemonstrator):
+        raise MissingInputError(f"{path} is missing: [demonstrators.{name}] is imported; bring its log in with "
+                                f"`polymimic import-tracks FILE --as {name} --run-dir {ctx.run.path}`")
+    try:
+        demos, said = record_demonstrator(spec, n=n, seed=ctx.config.seeds.demonstrations,
+                                          field_config=ctx.config.field, bodies=ctx.config.bodies)
+    except (ValueError, TypeError, OSError) as error:
+        raise RunError(f"[demonstrators.{name}]: {error}") from error
+    if not demos:
+        raise RunError(f"[demonstrators.{name}]: no valid demonstration ({said})")
+    if source is not None:
+        atomic_write_text(fingerprint, json.dumps({"file": str(source), "sha256": file_digest(source)}) + "\n")
+    save_demonstrations(demos, path)
+    ctx.say(f"  {said}")
+    return 1
 
 
 def _record_average(ctx: Context) -> int:

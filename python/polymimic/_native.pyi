@@ -227,6 +227,7 @@ def record_builtin_at_rate(
     demonstrator: str, *, configuration: int, n: int, seed: int = 0, decision_hz: float = 30.0
 ) -> list[int]: ...
 
+@final
 class Reading:
     t_s: float
     frame: int

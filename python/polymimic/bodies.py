@@ -33,6 +33,7 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
+import numbers
 import threading
 from collections.abc import Mapping
 from typing import Any, Union
@@ -53,6 +54,7 @@ SPIN_FRACTION = 0.35
 calibrated primitives run at 0.37–0.47 and 0.33–0.41 of its top speed)."""
 
 THESIS_BODY_FIELDS = {"lego": "large", "tiny": "small", "humanoid": "large"}
+_THESIS_FIELD_SIZES = {"large": (1020.0, 810.0, 405.0, 100.0), "small": (560.0, 345.0, 172.5, 25.0)}
 """The thesis's bodies and the fields they play on."""
 
 
@@ -63,14 +65,14 @@ def _known_keys(what: str, mapping: Mapping[str, Any], known: tuple[str, ...]) -
 
 
 def _number_in(name: str, value: Any, low: float, high: float, *, open_low: bool = False) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or \
-            value > high or value < low or (open_low and value <= low):
+    number = float(value) if isinstance(value, numbers.Real) and not isinstance(value, bool) else math.nan
+    if not math.isfinite(number) or number > high or number < low or (open_low and number <= low):
         if open_low and low == 0:
             allowed = "a positive number" if high >= 1e6 else f"a positive number at most {high:g}"
         else:
             allowed = f"a number in [{low:g}, {high:g}]"
         raise ValueError(f"{name} must be {allowed}, got {value!r}")
-    return float(value)
+    return number
 
 
 @dataclasses.dataclass(frozen=True)
@@ -195,11 +197,25 @@ class WheeledBody:
             if isinstance(self.fresh_slip_frames, bool) or not isinstance(self.fresh_slip_frames, int) or \
                     self.fresh_slip_frames < 1:
                 raise ValueError(f"fresh_slip_frames must be a whole number ≥ 1, got {self.fresh_slip_frames!r}")
+            self._check_fits_its_field()
             object.__setattr__(self, "primitives_mm_s", self._checked_primitives())
             object.__setattr__(self, "slip", self._checked_slip())
         except ValueError as error:
             raise ValueError(f"body {self.name!r}: {error}") from None
         _describe(self)
+
+    def _check_fits_its_field(self) -> None:
+        """The robot must fit between its start and the ball: a third of the field's length
+        apart in both configurations."""
+        field = self.field if isinstance(self.field, Field) else Field(*_THESIS_FIELD_SIZES[self.field])
+        room_mm = field.length_mm / 3 - field.ball_diameter_mm / 2
+        if self.length_mm / 2 >= room_mm or self.width_mm >= field.width_mm:
+            raise ValueError(f"a {self.length_mm:g} × {self.width_mm:g} mm body does not fit the {field.length_mm:g} × "
+                             f"{field.width_mm:g} mm field: half its length must be under {room_mm:g} mm (a third of "
+                             f"the field's length, less the ball's radius) and its width under the field's")
+
+    def __hash__(self) -> int:
+        return hash(self._native_body())
 
     def _checked_primitives(self) -> dict[str, tuple[float, float]]:
         given = dict(self.primitives_mm_s)

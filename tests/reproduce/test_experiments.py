@@ -12,6 +12,7 @@ from polymimic.learning import ModelResult, TrialResult
 from polymimic.reproduce import experiments, results
 from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.config import RunConfig
+from polymimic.reproduce.roster import EXPERIMENTS
 from polymimic.reproduce.rundir import MissingInputError, RunDir
 from polymimic.reproduce.stages import Context, run_stage
 
@@ -118,7 +119,7 @@ def test_the_policy_helper_drives_by_either_control(segmented):
     run = RunDir(segmented)
     trial = TrialResult.load(run.average_trial_path)
     recognizer = PrimitiveRecognizer.load(run.recognizer_path)
-    watched = experiments.experiment_items(run, experiments.EXPERIMENTS["heterogeneous_rcb"])
+    watched = experiments.experiment_items(run, EXPERIMENTS["heterogeneous_rcb"])
     for control in experiments.CONTROLS:
         policy = experiments.imitator_policy(trial, recognizer=recognizer, config=RunConfig().learning,
                                              control=control, demonstrations=watched)
@@ -146,7 +147,7 @@ def test_experiment_summary_known_answers():
     trials = [_trial(0, (0.2, 0.5, 0.9), (0.5, 0.6, 0.7), (10, 20, 30)),
               _trial(1, (0.6, 0.5, 0.9), (0.7, 0.6, 0.9), (12, 20, 34)),
               _trial(2, (0.1, 0.4, 0.95), (0.6, 0.6, 0.8), (14, 20, 32))]
-    summary = results.summarize_experiment(experiments.EXPERIMENTS["varying_skill"], trials, lp_stride=1)
+    summary = results.summarize_experiment(EXPERIMENTS["varying_skill"], trials, lp_stride=1)
     assert summary["trials"] == 3
     assert summary["lp_order_hits"] == 2                      # trial 1 has Poor above Average
     assert summary["match_rate"]["expert"] == pytest.approx({"mean": 0.8, "sd": 0.1})
@@ -156,7 +157,7 @@ def test_experiment_summary_known_answers():
     assert "imitator" not in summary["final_lp"]
     assert summary["lp_over_time"]["trials"]["expert"] == [[0.5, 0.9], [0.5, 0.9], [0.5, 0.95]]  # stride 1
     heterogeneous = results.summarize_experiment(
-        experiments.EXPERIMENTS["heterogeneous_rcb"],
+        EXPERIMENTS["heterogeneous_rcb"],
         [TrialResult(models={n: _model(n, lp=1.0, match_rate=1.0) for n in ("expert", "tiny", "humanoid")},
                      imitator=_model("imitator", lp=0.9, match_rate=1.0), seed=0)])
     assert heterogeneous["lp_order_hits"] is None

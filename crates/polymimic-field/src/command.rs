@@ -4,7 +4,9 @@
 use polymimic_types::{Primitive, capitalised};
 use serde::{Deserialize, Serialize};
 
-use crate::error::{FieldParamError, check_range};
+use crate::error::FieldParamError;
+pub use crate::wheels::WheelSpeeds;
+use crate::wheels::primitive_of_wheels;
 
 /// The Lego body's wheel base, mm: the Expert's wheel speeds are written for it, and its
 /// equivalent primitives are read through it.
@@ -224,37 +226,6 @@ impl HumanoidCommand {
     }
 }
 
-/// Wheel speeds of a policy's own choosing (left, right), kept to the micrometre per second so
-/// that two commands compare exactly (a command held is not a new one).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-pub struct WheelSpeeds {
-    left_um_s: i32,
-    right_um_s: i32,
-}
-
-impl WheelSpeeds {
-    /// Fastest wheel speed a command may name, mm/s (a body's top speed is checked when it runs).
-    pub const LIMIT_MM_S: f64 = 10_000.0;
-
-    /// `(left, right)` wheel speeds, mm/s.
-    ///
-    /// # Errors
-    /// `OutOfRange` for a speed that is not finite or beyond ±[`WheelSpeeds::LIMIT_MM_S`].
-    pub fn new(left_mm_s: f64, right_mm_s: f64) -> Result<Self, FieldParamError> {
-        let um = |name, v: f64| {
-            check_range(name, v, -Self::LIMIT_MM_S, Self::LIMIT_MM_S, "a finite wheel speed within ±10 000 mm/s")
-                .map(|()| (v * 1000.0).round() as i32)
-        };
-        Ok(Self { left_um_s: um("left_mm_s", left_mm_s)?, right_um_s: um("right_mm_s", right_mm_s)? })
-    }
-
-    /// `(left, right)`, mm/s.
-    #[must_use]
-    pub fn mm_s(self) -> (f64, f64) {
-        (f64::from(self.left_um_s) / 1000.0, f64::from(self.right_um_s) / 1000.0)
-    }
-}
-
 /// Which language a command belongs to.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Language {
@@ -285,6 +256,7 @@ const EXPERT_ID_BASE: u16 = 100;
 const HUMANOID_ID_BASE: u16 = 200;
 /// Frames record wheel speeds by the primitive they resemble: ids 300–304 (F B L R S).
 const WHEELS_ID_BASE: u16 = 300;
+const WHEELS_ID_LAST: u16 = WHEELS_ID_BASE + 4;
 const WHEELS_NAMES: [&str; 5] = ["wheels_forward", "wheels_backward", "wheels_left", "wheels_right", "wheels_stop"];
 
 impl Command {
@@ -308,7 +280,7 @@ impl Command {
     pub fn from_id(id: u16) -> Result<Self, FieldParamError> {
         let unknown = FieldParamError::UnknownCommand(id);
         match id {
-            WHEELS_ID_BASE..=304 => Err(FieldParamError::WheelSpeedsHaveNoId(id)),
+            WHEELS_ID_BASE..=WHEELS_ID_LAST => Err(FieldParamError::WheelSpeedsHaveNoId(id)),
             0..=4 => Primitive::from_index(usize::from(id)).map(Command::Primitive).ok_or(unknown),
             EXPERT_ID_BASE..HUMANOID_ID_BASE => {
                 ExpertCommand::from_index(usize::from(id - 100)).map(Command::Expert).map_err(|_| unknown)
@@ -376,24 +348,6 @@ impl From<HumanoidCommand> for Command {
 impl From<ExpertCommand> for Command {
     fn from(e: ExpertCommand) -> Self {
         Command::Expert(e)
-    }
-}
-
-/// The primitive a wheel-speed pair resembles over one second on the Lego body: stop if it
-/// barely moves, else whichever of distance and rotation is larger relative to the primitives'
-/// own (Table 3.1: about 45 mm and 30° per second).
-fn primitive_of_wheels(left_mm_s: f64, right_mm_s: f64) -> Primitive {
-    let v_mm_s = 0.5 * (left_mm_s + right_mm_s);
-    let omega_deg_s = (right_mm_s - left_mm_s) / LEGO_WHEEL_BASE_MM * 180.0 / std::f64::consts::PI;
-    let (lin, rot) = (v_mm_s.abs() / 45.0, omega_deg_s.abs() / 30.0);
-    if lin < 0.1 && rot < 0.1 {
-        Primitive::Stop
-    } else if rot > lin {
-        if omega_deg_s > 0.0 { Primitive::Left } else { Primitive::Right }
-    } else if v_mm_s > 0.0 {
-        Primitive::Forward
-    } else {
-        Primitive::Backward
     }
 }
 

@@ -198,7 +198,7 @@ pub fn record_on(
         );
     }
     let stream = demonstrator.stream(configuration);
-    let max_attempts = 4 * n_valid + 20;
+    let max_attempts = attempts_for(n_valid);
     let mut out = Vec::with_capacity(n_valid);
     let mut next = 0;
     while out.len() < n_valid {
@@ -222,6 +222,12 @@ pub fn record_on(
         }
     }
     Ok(out)
+}
+
+/// How many attempts a recording of `n_valid` valid demonstrations may make before it gives up:
+/// dropouts are rare, so four times as many and a few more mean tracking cannot be had.
+pub(crate) const fn attempts_for(n_valid: usize) -> usize {
+    4 * n_valid + 20
 }
 
 /// [`record`] for several demonstrators, `n_valid` per configuration each, all lapsing at

@@ -57,6 +57,7 @@ mod record;
 mod setup;
 mod stats;
 mod tracker;
+mod wheels;
 
 pub use batch::EpisodeBatch;
 pub use body::BodyKind;

@@ -5,7 +5,7 @@
 use crate::body::BodyKind;
 use crate::command::Command;
 use crate::controller::Controller;
-use crate::demonstrate::Demonstrator;
+use crate::demonstrate::{Demonstrator, attempts_for};
 use crate::episode::{Episode, Observation, Outcome};
 use crate::error::{FieldError, FieldParamError};
 use crate::math::derive_seed;
@@ -207,7 +207,7 @@ pub fn record_policy<P: Policy>(
     rate: DecisionRate,
     config: &FieldConfig,
 ) -> Result<Vec<PolicyRecording>, PolicyFailure<P::Error>> {
-    let max_attempts = 4 * n_valid + 20;
+    let max_attempts = attempts_for(n_valid);
     let mut out = Vec::with_capacity(n_valid);
     for attempt in 0..max_attempts {
         if out.len() == n_valid {

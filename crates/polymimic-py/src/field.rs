@@ -3,8 +3,8 @@
 
 use numpy::{PyArray1, PyArray2};
 use polymimic_field::{
-    BodyKind, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, LapseRate, THESIS_TABLE_3_1,
-    command_table, record_on, self_observation,
+    BodyKind, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, LapseRate, Outcome,
+    THESIS_TABLE_3_1, command_table, record_on, self_observation,
 };
 use polymimic_types::Pose;
 use pyo3::exceptions::PyValueError;
@@ -84,15 +84,27 @@ pub fn record_demonstrations<'py>(
         py.detach(|| record_on(who, body, configuration, n, seed.0, lapse, &config)).map_err(field_error)?;
     let out = PyList::empty(py);
     for d in &demonstrations {
-        let item = PyDict::new(py);
-        item.set_item("frames", frames_array(py, &d.frames)?)?;
-        item.set_item("outcome", d.outcome.name())?;
+        let item = recording(py, &d.frames, d.outcome, d.configuration, d.seed)?;
         item.set_item("demonstrator", d.demonstrator.name())?;
-        item.set_item("configuration", configuration_number(d.configuration))?;
-        item.set_item("seed", d.seed)?;
         out.append(item)?;
     }
     Ok(out)
+}
+
+/// One recorded episode as Python gets it: its frames, outcome, configuration and seed.
+pub(crate) fn recording<'py>(
+    py: Python<'py>,
+    frames: &[Frame],
+    outcome: Outcome,
+    configuration: Configuration,
+    seed: u64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let item = PyDict::new(py);
+    item.set_item("frames", frames_array(py, frames)?)?;
+    item.set_item("outcome", outcome.name())?;
+    item.set_item("configuration", configuration_number(configuration))?;
+    item.set_item("seed", seed)?;
+    Ok(item)
 }
 
 /// One-second primitives of the imitator alone on the field: `(frames, primitive names)`.

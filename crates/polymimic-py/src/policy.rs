@@ -15,7 +15,7 @@ use crate::bodies::Body;
 use crate::command::parse_command;
 use crate::convert::Seed;
 use crate::errors::{PolicyError, field_error, field_param_error};
-use crate::field::{configuration, configuration_number, field_config, frames_array, positive};
+use crate::field::{configuration, configuration_number, field_config, positive, recording};
 use crate::watchdog::Watchdog;
 
 /// The shortest and longest a policy may be given to answer, s.
@@ -204,12 +204,7 @@ pub fn record_python_policy<'py>(
         .map_err(|f| policy_error(py, name, body, asked_configuration, f, timeout_s.unwrap_or(f64::INFINITY)))?;
     let out = PyList::empty(py);
     for r in &recordings {
-        let item = PyDict::new(py);
-        item.set_item("frames", frames_array(py, &r.frames)?)?;
-        item.set_item("outcome", r.outcome.name())?;
-        item.set_item("configuration", configuration_number(r.configuration))?;
-        item.set_item("seed", r.seed)?;
-        out.append(item)?;
+        out.append(recording(py, &r.frames, r.outcome, r.configuration, r.seed)?)?;
     }
     Ok(out)
 }

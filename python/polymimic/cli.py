@@ -384,8 +384,8 @@ def _declared_body(run: RunDir, name: str, asked: str | None) -> str | WheeledBo
         raise RunError(f"--body {asked!r}: the run's [demonstrators.{name}] says body = {spec.body!r}")
     body = spec.body if spec is not None else (asked or "lego")
     if body not in BODY_NAMES and body not in config.bodies:
-        raise RunError(f"--body {body!r}: one of {', '.join(BODY_NAMES)} or of the run's [bodies] "
-                       f"({', '.join(config.bodies) or 'none'})")
+        known = dict.fromkeys([*BODY_NAMES, *config.bodies])
+        raise RunError(f"--body {body!r}: one of {', '.join(known)} (the thesis's and the run's [bodies])")
     return config.bodies.get(body, body)
 
 

@@ -79,7 +79,8 @@ def own_run(tiny_run_toml, tmp_path_factory):
 def test_the_config_reads_and_round_trips(own_run):
     _, config, _ = own_run
     assert list(config.demonstrators) == ["cart_poor", "straight", "logged"]
-    assert config.bodies["wagon"].primitives_mm_s["forward"] == (56.0, 56.0)
+    assert config.bodies["wagon"].primitives_mm_s["forward"] == (56.0, 56.0) and set(config.bodies) == {
+        "lego", "tiny", "wagon"}
     assert config.own_experiments["mine"].ordering == ("straight", "logged", "cart_poor", "expert")
     assert RunConfig.from_toml(config.to_toml()) == config
     assert RunConfig.from_dict(json.loads(json.dumps(config.to_dict()))) == config
@@ -149,8 +150,19 @@ def test_bad_roster_tables_are_refused_by_table_and_key(extra, message):
         RunConfig.from_toml(extra)
 
 
-def test_a_thesis_config_keeps_its_manifest_as_it_was():
-    assert set(RunConfig().to_dict()) == {"seeds", "field", "recognizer", "segmenter", "learning", "experiments"}
+def test_the_thesis_bodies_are_two_entries_of_the_bodies_table():
+    from polymimic.bodies import THESIS_BODIES
+
+    thesis = RunConfig()
+    assert set(thesis.to_dict()) == {"seeds", "field", "recognizer", "segmenter", "learning", "experiments", "bodies"}
+    assert thesis.bodies == THESIS_BODIES and set(thesis.bodies) == {"lego", "tiny"}
+    assert "[bodies.lego]" in thesis.to_toml() and RunConfig.from_toml(thesis.to_toml()) == thesis
+    # An older manifest, which had no [bodies], reads as the same config.
+    older = {k: v for k, v in thesis.to_dict().items() if k != "bodies"}
+    assert RunConfig.from_dict(older) == thesis
+    with pytest.raises(ConfigError, match="body 'lego' is already described with other constants"):
+        RunConfig.from_toml("[bodies.lego]\nlength_mm = 141\nwidth_mm = 150\nwheel_base_mm = 175\n"
+                            "top_wheel_speed_mm_s = 130\n")
     assert RunConfig.from_toml("[experiments]\ntrials = 3\n").own_experiments == {}
 
 
@@ -193,7 +205,7 @@ def test_import_tracks_takes_the_body_the_runs_config_gives(tmp_path, capsys):
     assert cli.main([*base, "--as", "bob"]) == 0
     assert {d.body for d in load_demonstrations(run.demonstrations_path("bob"))} == {"wagon"}
     assert cli.main([*base, "--as", "carol", "--body", "kart"]) == 2
-    assert "--body 'kart': one of lego, tiny, humanoid or of the run's [bodies] (wagon)" in capsys.readouterr().err
+    assert "--body 'kart': one of lego, tiny, humanoid, wagon (the thesis's and the run's [bodies])" in capsys.readouterr().err
 
 
 def test_a_controller_drives_its_own_body_unless_told(tmp_path):

@@ -29,7 +29,7 @@ from typing import Any, TypeVar
 
 from polymimic._tables import Path, merged
 from polymimic._toml import loads, write_table
-from polymimic.bodies import WheeledBody
+from polymimic.bodies import THESIS_BODIES, WheeledBody
 from polymimic.field import check_config, default_config
 from polymimic.learning import LearningConfig
 from polymimic.reproduce.roster import EXPERIMENTS, Experiment
@@ -165,8 +165,10 @@ class RunConfig:
     segmenter: SegmenterSettings = dataclasses.field(default_factory=SegmenterSettings)
     learning: LearningConfig = dataclasses.field(default_factory=LearningConfig)
     experiments: ExperimentSettings = dataclasses.field(default_factory=ExperimentSettings)
-    bodies: dict[str, WheeledBody] = dataclasses.field(default_factory=dict)
-    """``[bodies.<name>]``: wheeled bodies of the user's (see :mod:`polymimic.reproduce.roster_config`)."""
+    bodies: dict[str, WheeledBody] = dataclasses.field(default_factory=lambda: dict(THESIS_BODIES))
+    """``[bodies.<name>]``: the wheeled bodies, the thesis's ``lego`` and ``tiny`` (as the field
+    was calibrated; a table of either must hold the same constants) and the user's (see
+    :mod:`polymimic.reproduce.roster_config`)."""
     demonstrators: dict[str, DemonstratorSpec] = dataclasses.field(default_factory=dict)
     """``[demonstrators.<name>]``: demonstrators of the user's, recorded or imported with the thesis's."""
     own_experiments: dict[str, Experiment] = dataclasses.field(default_factory=dict)
@@ -193,15 +195,14 @@ class RunConfig:
                                             evaluated_imitators=2))
 
     def to_dict(self) -> dict[str, Any]:
-        """Plain data, section by section (what ``manifest.json`` keeps); the user's bodies,
+        """Plain data, section by section (what ``manifest.json`` keeps); the user's
         demonstrators and experiments only where there are some."""
         data = {"seeds": dataclasses.asdict(self.seeds), "field": json.loads(json.dumps(self.field)),
                 "recognizer": dataclasses.asdict(self.recognizer), "segmenter": dataclasses.asdict(self.segmenter),
                 "learning": self.learning.to_dict(),
                 "experiments": {**dataclasses.asdict(self.experiments),
                                 **{n: _experiment_table(e) for n, e in self.own_experiments.items()}}}
-        if self.bodies:
-            data["bodies"] = {name: body.to_table() for name, body in self.bodies.items()}
+        data["bodies"] = {name: body.to_table() for name, body in self.bodies.items()}
         if self.demonstrators:
             data["demonstrators"] = {name: spec_table(spec) for name, spec in self.demonstrators.items()}
         return data
@@ -227,7 +228,7 @@ class RunConfig:
                 values = _checked(name, _table(name, data[name]), dataclasses.asdict(current))
                 changes[name] = dataclasses.replace(current, **values)
         try:
-            bodies = read_bodies(data["bodies"]) if "bodies" in data else base.bodies
+            bodies = {**base.bodies, **read_bodies(data["bodies"])} if "bodies" in data else base.bodies
             demonstrators = (demonstrators_from_tables(data["demonstrators"], bodies=bodies, base_dir=base_dir)
                              if "demonstrators" in data else base.demonstrators)
             own = (experiments_from_tables(own_tables, demonstrators=list(demonstrators)) if own_tables

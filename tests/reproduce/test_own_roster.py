@@ -205,7 +205,8 @@ def test_import_tracks_takes_the_body_the_runs_config_gives(tmp_path, capsys):
     assert cli.main([*base, "--as", "bob"]) == 0
     assert {d.body for d in load_demonstrations(run.demonstrations_path("bob"))} == {"wagon"}
     assert cli.main([*base, "--as", "carol", "--body", "kart"]) == 2
-    assert "--body 'kart': one of lego, tiny, humanoid, wagon (the thesis's and the run's [bodies])" in capsys.readouterr().err
+    error = capsys.readouterr().err
+    assert "--body 'kart': one of lego, tiny, humanoid, wagon (the thesis's and the run's [bodies])" in error
 
 
 def test_a_controller_drives_its_own_body_unless_told(tmp_path):

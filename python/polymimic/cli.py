@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import importlib.util
 import pathlib
 import sys
 import time
@@ -20,7 +21,6 @@ from typing import Any
 from polymimic import __version__, demo
 from polymimic._native import PolymimicError
 from polymimic.benchmark.config import METHODS, BenchmarkConfig
-from polymimic.benchmark.driver import Benchmark
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.bodies import WheeledBody
 from polymimic.datasets import load_demonstrations, save_demonstrations
@@ -294,6 +294,12 @@ def _requested_benchmark(args: argparse.Namespace) -> BenchmarkConfig | None:
 
 
 def _benchmark(args: argparse.Namespace) -> int:
+    # The baselines need the optional scikit-learn: the rest of the command must not.
+    if importlib.util.find_spec("sklearn") is None:
+        raise ConfigError("polymimic benchmark compares with baselines that need scikit-learn: "
+                          "pip install \"polymimic[baselines]\"")
+    from polymimic.benchmark.driver import Benchmark
+
     run = BenchmarkDir(args.run_dir if args.run_dir is not None else new_run_path(pathlib.Path("runs") / "benchmark"))
     requested = _requested_benchmark(args)  # read before the run directory is touched
     with run.lock("polymimic benchmark"), TaskRunner(backend=args.backend, workers=args.workers,

@@ -93,3 +93,23 @@ def test_import_tracks_refuses_bad_logs_in_one_line(tmp_path, capsys, monkeypatc
         assert captured.err.startswith("polymimic import-tracks: error: ") and message in captured.err
         assert "Traceback" not in captured.err
     assert not (tmp_path / "a.parquet").exists()
+
+
+def test_the_command_needs_no_optional_extra(tmp_path):
+    """`pip install .` then `polymimic reproduce`: without scikit-learn, gymnasium or minari the
+    command runs; only `polymimic benchmark` asks for the baselines extra, in one line."""
+    blocked = ("import sys\n"
+               "for name in ('sklearn', 'gymnasium', 'minari', 'ray', 'stable_baselines3', 'torch'):\n"
+               "    sys.modules[name] = None\n"
+               "from polymimic import cli\n"
+               "sys.exit(cli.main(sys.argv[1:]))\n")
+    script = tmp_path / "bare.py"
+    script.write_text(blocked)
+    config = subprocess.run([sys.executable, str(script), "config", "--quick"], capture_output=True, text=True,
+                            check=False)
+    assert config.returncode == 0, config.stderr
+    assert "[experiments]" in config.stdout
+    bench = subprocess.run([sys.executable, str(script), "benchmark", "--quick", "--run-dir", str(tmp_path / "b")],
+                           capture_output=True, text=True, check=False)
+    assert bench.returncode == 2
+    assert bench.stderr.strip().splitlines()[-1].endswith("pip install \"polymimic[baselines]\"")

@@ -36,17 +36,6 @@ def errors(a, b):
     return position_mm, float(np.degrees(np.abs(turn).max()))
 
 
-def same_segments(recognizer, originals, imported):
-    same = total = 0
-    for a, b in zip(recognizer.segment_many([d.frames for d in originals]),
-                    recognizer.segment_many([d.frames for d in imported])):
-        theirs = set(zip(b["label"], b["first_frame"].tolist(), b["last_frame"].tolist()))
-        ours = list(zip(a["label"], a["first_frame"].tolist(), a["last_frame"].tolist()))
-        same += sum(s in theirs for s in ours)
-        total += len(ours)
-    return same, total
-
-
 def frame_labels(recognizer, demos):
     """Each frame's segment label ("" outside every segment)."""
     out = []
@@ -82,7 +71,7 @@ def main():
                 found.append(errors(a, b))
         e = np.array(found)
         imported = round_trip(experts, folder / f"expert_{rate_hz}.csv", rate_hz)
-        same, total = same_segments(recognizer, experts, imported)
+        same, total = recognition.matching_segments(recognizer, experts, imported)
         labels_same = float(np.mean(frame_labels(recognizer, experts) == frame_labels(recognizer, imported)))
         print(f"{rate_hz:7d}  {e[:, 0].max():6.3g}  {np.percentile(e[:, 0], 95):6.3g}  {e[:, 1].max():7.3g}  "
               f"{np.percentile(e[:, 1], 95):7.3g}  {frames_same:5d}/{len(demos)}  {outcome_same:6d}/{len(demos)}  "

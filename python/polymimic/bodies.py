@@ -31,6 +31,7 @@ In a TOML file, each body is a table (see :func:`bodies_from_tables`)::
 from __future__ import annotations
 
 import dataclasses
+import functools
 import json
 import math
 import numbers
@@ -41,7 +42,7 @@ from typing import Any, Union
 from polymimic import _native
 
 __all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Field", "Slip", "WheeledBody", "bodies_from_tables",
-           "field_length_mm", "field_of", "pitch_of"]
+           "field_of", "pitch_of"]
 
 PRIMITIVE_NAMES = ("forward", "backward", "left", "right", "stop")
 FIELDS = ("large", "small")
@@ -54,7 +55,6 @@ SPIN_FRACTION = 0.35
 calibrated primitives run at 0.37–0.47 and 0.33–0.41 of its top speed)."""
 
 THESIS_BODY_FIELDS = {"lego": "large", "tiny": "small", "humanoid": "large"}
-_THESIS_FIELD_SIZES = {"large": (1020.0, 810.0, 405.0, 100.0), "small": (560.0, 345.0, 172.5, 25.0)}
 """The thesis's bodies and the fields they play on."""
 
 
@@ -207,7 +207,7 @@ class WheeledBody:
     def _check_fits_its_field(self) -> None:
         """The robot must fit between its start and the ball: a third of the field's length
         apart in both configurations."""
-        field = self.field if isinstance(self.field, Field) else Field(*_THESIS_FIELD_SIZES[self.field])
+        field = self.field if isinstance(self.field, Field) else _thesis_field(self.field)
         room_mm = field.length_mm / 3 - field.ball_diameter_mm / 2
         if self.length_mm / 2 >= room_mm or self.width_mm >= field.width_mm:
             raise ValueError(f"a {self.length_mm:g} × {self.width_mm:g} mm body does not fit the {field.length_mm:g} × "
@@ -333,6 +333,14 @@ class WheeledBody:
             raise ValueError(f"{where}: {error}") from None
 
 
+@functools.cache
+def _thesis_field(name: str) -> Field:
+    """A thesis field's sizes, as the simulated field has them (its bodies play on it)."""
+    seen = _native.Episode("lego" if name == "large" else "tiny").observation()
+    length_mm, width_mm = seen["field"]
+    return Field(length_mm, width_mm, seen["goal_mouth_mm"], seen["ball_diameter_mm"])
+
+
 def _slip_from(value: Any, where: str) -> SlipSpec:
     def one(table: Any, key: str) -> Slip:
         if not isinstance(table, Mapping):
@@ -432,11 +440,6 @@ def pitch_of(body: str) -> str:
     sizes = field.sizes()
     return json.dumps({k: sizes[k] for k in ("length_mm", "width_mm", "goal_mouth_mm")})
 
-
-def field_length_mm(body: str) -> float:
-    """The length of the field a body plays on, mm."""
-    field = field_of(body)
-    return {"large": 1020.0, "small": 560.0}[field] if isinstance(field, str) else field.length_mm
 
 
 def resolve(body: str | WheeledBody) -> str | WheeledBody:

@@ -337,8 +337,9 @@ def _import_tracks(args: argparse.Namespace) -> int:
         if not pathlib.Path(run).is_dir():
             raise MissingInputError(f"--run-dir {run}: no such directory")
         target = _existing(RunDir(run))
+        config = target.open(None)
         out = target.demonstrations_path(args.name)
-        body = _declared_body(target, args.name, args.body)
+        body = _declared_body(config, args.name, args.body)
         if out.exists() and not args.replace:
             raise RunError(f"{out} exists: the run has {args.name}'s demonstrations already (and may have learned "
                            f"from them); import into a new run, or give --replace")
@@ -357,17 +358,17 @@ def _import_tracks(args: argparse.Namespace) -> int:
         save_demonstrations(imported.demonstrations, out)
     else:
         with target.lock(f"polymimic import-tracks --as {args.name}"):
-            _replace_downstream(target, args.name)
+            _replace_downstream(target, config, args.name)
             save_demonstrations(imported.demonstrations, out)
     print(f"{imported.summary()}; written to {out}")
     return 0
 
 
-def _replace_downstream(run: RunDir, name: str) -> None:
+def _replace_downstream(run: RunDir, config: RunConfig, name: str) -> None:
     """What the run made from ``name``'s earlier demonstrations: its segments, and the trials
     and evaluations of every experiment that learns from it, so that the next stages redo them."""
     run.segments_path(name).unlink(missing_ok=True)
-    for experiment in run.open(None).all_experiments().values():
+    for experiment in config.all_experiments().values():
         if name in experiment.demonstrators:
             for made in run.experiment_dir(experiment.name).glob("*.json"):
                 made.unlink()
@@ -375,10 +376,9 @@ def _replace_downstream(run: RunDir, name: str) -> None:
                 run.attempts_path(experiment.name, control).unlink(missing_ok=True)
 
 
-def _declared_body(run: RunDir, name: str, asked: str | None) -> str | WheeledBody:
+def _declared_body(config: RunConfig, name: str, asked: str | None) -> str | WheeledBody:
     """The body the run's config gives demonstrator ``name`` (``[demonstrators.<name>]``), checked
     against ``--body``; without such a table, ``--body`` (a thesis body or one of the run's)."""
-    config = run.open(None)
     spec = config.demonstrators.get(name)
     if spec is not None and not isinstance(spec, ImportedDemonstrator):
         raise RunError(f"--as {name}: the run's [demonstrators.{name}] is not imported (it says "

@@ -266,9 +266,13 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
                                         config=_field_config(config),
                                         body=None if body is None else native_body(body))
     who = demonstrator if name is None else _own_name(name, demonstrator)
-    return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=who,
-                          configuration=d["configuration"], seed=d["seed"],
-                          body="" if body is None else body_name(body)) for d in raw]
+    return _demonstrations(raw, who, "" if body is None else body_name(body))
+
+
+def _demonstrations(raw: list[dict[str, Any]], demonstrator: str, body: str) -> list[Demonstration]:
+    """What the native recorders return, as demonstrations of ``demonstrator`` on ``body``."""
+    return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=demonstrator,
+                          configuration=d["configuration"], seed=d["seed"], body=body) for d in raw]
 
 
 def _check_body(body: Any) -> None:
@@ -304,8 +308,7 @@ def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse:
                                        n=n, seed=seed, decision_hz=parts.decision_hz,
                                        timeout_s=None if timeout_s is None else float(timeout_s),
                                        config=_field_config(config))
-    return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=parts.name,
-                          configuration=d["configuration"], seed=d["seed"], body=body_name(body)) for d in raw]
+    return _demonstrations(raw, parts.name, body_name(body))
 
 
 def self_observation(n_per_primitive: int, *, seed: int = 0,
@@ -340,6 +343,12 @@ def default_config() -> dict[str, Any]:
     return config
 
 
+def commands_recorded(demonstration: Demonstration) -> bool:
+    """Whether every frame of ``demonstration`` records the command sent (a tracker log without
+    a command column records none: :data:`UNKNOWN_COMMAND`)."""
+    return not bool((demonstration.frames["command"] == UNKNOWN_COMMAND).any())
+
+
 def primitives_sent(demonstration: Demonstration) -> np.ndarray:
     """The equivalent primitive of the command sent in each of ``demonstration``'s frames; a
     ``ValueError`` for a demonstration whose commands were not recorded (:data:`UNKNOWN_COMMAND`,
@@ -356,8 +365,8 @@ def primitives_sent(demonstration: Demonstration) -> np.ndarray:
     ValueError: demonstration of 'poor' (seed ...) has no recorded commands ...
     """
     commands = demonstration.frames["command"].astype(np.int64)
-    unknown = np.flatnonzero(commands == UNKNOWN_COMMAND)
-    if unknown.size:
+    if not commands_recorded(demonstration):
+        unknown = np.flatnonzero(commands == UNKNOWN_COMMAND)
         raise ValueError(f"demonstration of {demonstration.demonstrator!r} (seed {demonstration.seed}) has no "
                          f"recorded commands (frame {int(unknown[0])} on, {unknown.size} frames in all): it was "
                          "imported without a command column; measures against the commands sent (command "

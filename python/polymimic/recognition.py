@@ -158,6 +158,29 @@ VARIANTS: tuple[Variant, ...] = (
 """The recogniser variants measured side by side: the thesis's way first."""
 
 
+def matching_segments(recognizer: PrimitiveRecognizer, originals: Sequence[Demonstration],
+                      others: Sequence[Demonstration], **segmenter: Any) -> tuple[int, int]:
+    """How many of the originals' segments the others have too, with the same label, first and
+    last frame (the others taken pairwise: the same episodes another way, say a tracker log's
+    round trip), and how many segments the originals have.
+
+    >>> import polymimic
+    >>> recognizer = train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=16)
+    >>> demos = polymimic.record("poor", configuration=1, n=2, seed=0)
+    >>> same, total = matching_segments(recognizer, demos, demos)
+    >>> same == total > 0
+    True
+    """
+    same = total = 0
+    for a, b in zip(recognizer.segment_many([d.frames for d in originals], **segmenter),
+                    recognizer.segment_many([d.frames for d in others], **segmenter)):
+        theirs = set(zip(b["label"], b["first_frame"].tolist(), b["last_frame"].tolist()))
+        ours = list(zip(a["label"], a["first_frame"].tolist(), a["last_frame"].tolist()))
+        same += sum(s in theirs for s in ours)
+        total += len(ours)
+    return same, total
+
+
 def variant_comparison(train: Sequence[PrimitiveSequence], test: Sequence[PrimitiveSequence], *,
                        n_states: int = 1, codebook_size: int = 512, seed: int = 0) -> list[dict[str, Any]]:
     """Accuracy per primitive, training time and scoring time (s) of every variant in

@@ -106,23 +106,12 @@ def recognizer():
     return recognition.train_recognizer(polymimic.self_observation(40, seed=1), codebook_size=32)
 
 
-def _same_segments(recognizer, originals, imported):
-    """The share of the originals' segments found in the imported with the same frames and label."""
-    same = total = 0
-    for a, b in zip(recognizer.segment_many([d.frames for d in originals]),
-                    recognizer.segment_many([d.frames for d in imported])):
-        theirs = set(zip(b["label"], b["first_frame"].tolist(), b["last_frame"].tolist()))
-        ours = list(zip(a["label"], a["first_frame"].tolist(), a["last_frame"].tolist()))
-        same += sum(s in theirs for s in ours)
-        total += len(ours)
-    return same / total
-
-
 def test_segmenting_the_imported_expert_gives_the_originals_labels(recognizer, tmp_path):
     experts = (polymimic.record("expert", configuration=1, n=10, seed=8)
                + polymimic.record("expert", configuration=2, n=10, seed=9))
     imported = _round_trip(experts, tmp_path / "expert.parquet", 60).demonstrations
-    assert _same_segments(recognizer, experts, imported) >= 0.99  # measured: 1.0
+    same, total = recognition.matching_segments(recognizer, experts, imported)
+    assert same / total >= 0.99  # measured: 1.0
     # The logged outcomes and commands come back too, so the command match is the same.
     assert recognition.segment_table(recognizer, imported)["tracked"]["command_match"] == pytest.approx(
         recognition.segment_table(recognizer, experts)["expert"]["command_match"])

@@ -24,7 +24,7 @@ import numpy as np
 from polymimic import __version__, recognition
 from polymimic._native import PrimitiveRecognizer, lp_order_hits
 from polymimic.datasets import load_demonstrations, load_self_observation
-from polymimic.field import UNKNOWN_COMMAND, Demonstration
+from polymimic.field import Demonstration, commands_recorded
 from polymimic.learning import LearningConfig, ModelResult, TrialResult
 from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.experiments import evaluated_seeds, load_evaluation, trial_seeds
@@ -205,7 +205,7 @@ def gather(run: RunDir, config: RunConfig) -> Results:
                                                   else "segment"))
              for who in (*DEMONSTRATORS, *config.demonstrators)}
     # Table 4.5 measures segments against the commands sent: not for a log that recorded none.
-    to_segment = [d for who in demos for d in demos[who] if not (d.frames["command"] == UNKNOWN_COMMAND).any()]
+    to_segment = [d for who in demos for d in demos[who] if commands_recorded(d)]
     imitator_attempts = run.attempts_path("varying_skill", "thesis")
     if imitator_attempts.exists():  # the thesis's VaryingSkillTrained row of Table 4.5
         # As for every demonstrator, only attempts the tracker followed throughout.

@@ -62,7 +62,7 @@ from polymimic.tracks.units import UNITS
 
 __all__ = ["ControllerDemonstrator", "DemonstratorSpec", "ImportedDemonstrator", "LogDemonstrator",
            "PolicyDemonstrator", "RosterError", "demonstrators_from_tables", "experiments_from_tables", "read_bodies",
-           "file_digest", "record_demonstrator", "source_file", "spec_table"]
+           "demonstrations_expected", "file_digest", "record_demonstrator", "source_file", "spec_table"]
 
 
 class RosterError(ValueError):
@@ -294,6 +294,15 @@ def record_demonstrator(spec: DemonstratorSpec, *, n: int, seed: int, field_conf
              for d in field.record(who, configuration=configuration, n=n, seed=seed, config=dict(field_config),
                                    body=body, name=spec.name, **extra)]
     return demos, f"{spec.name}: {len(demos)} demonstrations"
+
+
+def demonstrations_expected(spec: DemonstratorSpec | None, per_configuration: int) -> int | None:
+    """How many demonstrations a demonstrator has: ``per_configuration`` from each field
+    configuration where it is recorded (a thesis demonstrator, for None, too), or, for a log or
+    an import, as many as its file held (None)."""
+    if isinstance(spec, (LogDemonstrator, ImportedDemonstrator)):
+        return None
+    return 2 * per_configuration
 
 
 def source_file(spec: DemonstratorSpec) -> pathlib.Path | None:

@@ -42,7 +42,7 @@ from polymimic.reproduce.roster import DEMONSTRATORS, HETEROGENEOUS, RECORDED
 from polymimic.reproduce.roster_config import (
     DemonstratorSpec,
     ImportedDemonstrator,
-    LogDemonstrator,
+    demonstrations_expected,
     file_digest,
     record_demonstrator,
     source_file,
@@ -112,9 +112,7 @@ def _record_own(ctx: Context, name: str, spec: DemonstratorSpec) -> int:
     demonstrations of another file."""
     n, path = ctx.config.experiments.demonstrations_per_configuration, ctx.run.demonstrations_path(name)
     source, fingerprint = source_file(spec), path.with_name(f"{path.stem}.source.json")
-    # A log holds as many valid episodes as it holds; a recorded demonstrator n per configuration.
-    count = None if isinstance(spec, (LogDemonstrator, ImportedDemonstrator)) else 2 * n
-    if ctx.finished(path, load_demonstrations, count=count):
+    if ctx.finished(path, load_demonstrations, count=demonstrations_expected(spec, n)):
         if source is not None and source.exists() and fingerprint.exists():
             recorded = json.loads(fingerprint.read_text(encoding="utf-8")).get("sha256")
             if recorded != file_digest(source):
@@ -179,14 +177,15 @@ def _segment(ctx: Context) -> int:
     recognizer = PrimitiveRecognizer.load(ctx.run.require(ctx.run.recognizer_path, "train"))
     made = _record_average(ctx)
     segmenter = dataclasses.asdict(ctx.config.segmenter)
+    n = ctx.config.experiments.demonstrations_per_configuration
     for who in (*DEMONSTRATORS, *ctx.config.demonstrators):
-        path = ctx.run.segments_path(who)
-        recorded = ctx.run.demonstrations_path(who)
-        fixed = not isinstance(ctx.config.demonstrators.get(who), (LogDemonstrator, ImportedDemonstrator))
-        count = (2 * ctx.config.experiments.demonstrations_per_configuration if fixed or not recorded.exists()
-                 else len(load_demonstrations(recorded)))
-        if not ctx.finished(path, load_segments, count=count):
+        path, recorded = ctx.run.segments_path(who), ctx.run.demonstrations_path(who)
+        count, demos = demonstrations_expected(ctx.config.demonstrators.get(who), n), None
+        if count is None:  # as many segmented as there are demonstrations, read once for both
             demos = load_demonstrations(ctx.run.require(recorded, "record"))
+            count = len(demos)
+        if not ctx.finished(path, load_segments, count=count):
+            demos = demos if demos is not None else load_demonstrations(ctx.run.require(recorded, "record"))
             save_segments(segment_demonstrations(demos, recognizer, **segmenter), path)
             made += 1
     return made

@@ -146,3 +146,23 @@ def test_improved_control_learns_from_the_demonstrations_and_avoids_own_goals(re
     assert all(len(step) == 1 for attempt in improved.behaviours for step in attempt)
     again = polymimic.evaluate(policy, attempts_per_configuration=10)
     assert [a.frames.tobytes() for a in again.attempts] == [a.frames.tobytes() for a in improved.attempts]
+
+
+def test_a_policy_for_another_trial_shares_what_was_learned_and_plays_as_a_new_one(recognizer, expert_and_poor):
+    first, second = (polymimic.run_trial(expert_and_poor, recognizer=recognizer, ordering=["poor", "expert"],
+                                         phase_one="interleaved", seed=seed) for seed in (0, 1))
+    assert first.imitator.behaviours != second.imitator.behaviours
+    for control in ("improved", "thesis"):
+        policy = polymimic.ImitatorPolicy(first, recognizer=recognizer, control=control,
+                                          demonstrations=expert_and_poor)
+        shared = policy.for_trial(second)
+        fresh = polymimic.ImitatorPolicy(second, recognizer=recognizer, control=control,
+                                         demonstrations=expert_and_poor)
+        assert (shared.control, len(shared)) == (control, len(fresh))
+        played, expected = (polymimic.evaluate(p, attempts_per_configuration=4, seed=5) for p in (shared, fresh))
+        assert [a.frames.tobytes() for a in played.attempts] == [a.frames.tobytes() for a in expected.attempts]
+        assert played.behaviours == expected.behaviours
+    by_lp = polymimic.ImitatorPolicy(first, recognizer=recognizer, control="improved", demonstrations=expert_and_poor,
+                                     config=polymimic.LearningConfig(imitator_weighting="lp"))
+    with pytest.raises(ValueError, match="trial's LPs"):
+        by_lp.for_trial(second)

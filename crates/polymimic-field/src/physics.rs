@@ -71,9 +71,10 @@ pub(crate) struct Scene {
     pub foot_size_mm: Option<(f64, f64)>,
 }
 
-/// Farther apart than this, the robot and the ball cannot touch within one step: it covers
-/// the robot's and a kicked ball's travel in 1/240 s several times over, mm.
-const REACH_MARGIN_MM: f64 = 10.0;
+/// Faster than the robot and a kicked ball ever close on each other, several times over, mm/s:
+/// farther apart than this speed × one step, they cannot touch within the step (10 mm at
+/// 240 steps a second).
+const REACH_SPEED_MM_S: f64 = 2400.0;
 
 /// A free ball slower than this is put to sleep, mm/s.
 const SLEEP_SPEED_MM_S: f32 = 1.0;
@@ -91,6 +92,8 @@ pub(crate) struct Physics {
     robot_stale: bool,
     /// Direction noise per step, rad (wobble × √dt).
     wobble_rad: f64,
+    /// Farther apart than this, the robot and the ball cannot touch within a step, mm.
+    reach_margin_mm: f64,
     rng: Rng,
 }
 
@@ -142,6 +145,7 @@ impl Physics {
             ball_radius_mm: ball_diameter_mm / 2.0,
             robot_stale: false,
             wobble_rad: ball_params.wobble_rad_per_sqrt_s * dt_s.sqrt(),
+            reach_margin_mm: REACH_SPEED_MM_S * dt_s,
             rng,
         }
     }
@@ -154,7 +158,7 @@ impl Physics {
     pub(crate) fn advance(&mut self, robot: Pose, foot: Option<(Pose, bool)>) {
         let foot_active = foot.is_some_and(|(_, active)| active);
         let ball_asleep = self.world.bodies.get(self.ball).is_some_and(RigidBody::is_sleeping);
-        let far = self.gap_mm(robot) > REACH_MARGIN_MM;
+        let far = self.gap_mm(robot) > self.reach_margin_mm;
         if far && !foot_active {
             if !ball_asleep {
                 self.roll_free();

@@ -90,17 +90,33 @@ impl ApproachPlan {
     #[must_use]
     pub fn new(push_region: PushRegion, motion: &MotionTable) -> Self {
         let states = CELLS * CELLS * HEADING_BINS as usize;
-        // Predecessors of every state, with the cost of the move into it.
-        let mut into: Vec<Vec<(u32, u32)>> = vec![Vec::new(); states];
+        // Every move between two states, then grouped by the state it leads into (a counting
+        // sort, so each state's predecessors are one run of `from` and `cost`).
+        let mut moves: Vec<(u32, u32, u32)> = Vec::with_capacity(states * MOVES.len());
         for from in 0..states {
             let pose = centre(from);
             for primitive in MOVES {
                 let after = from_pose(motion.mean_step(as_pose(&pose), primitive));
                 match index(&after) {
-                    Some(to) if to != from => into[to].push((from as u32, move_cost(&pose, &after, &push_region))),
+                    Some(to) if to != from => {
+                        moves.push((to as u32, from as u32, move_cost(&pose, &after, &push_region)));
+                    }
                     _ => {}
                 }
             }
+        }
+        let mut first_into = vec![0_usize; states + 1];
+        for &(to, ..) in &moves {
+            first_into[to as usize + 1] += 1;
+        }
+        for i in 0..states {
+            first_into[i + 1] += first_into[i];
+        }
+        let mut into = vec![(0_u32, 0_u32); moves.len()];
+        let mut filled = first_into.clone();
+        for &(to, from, cost) in &moves {
+            into[filled[to as usize]] = (from, cost);
+            filled[to as usize] += 1;
         }
         let mut steps = vec![UNREACHABLE; states];
         let mut queue = BinaryHeap::new();
@@ -114,7 +130,7 @@ impl ApproachPlan {
             if cost > steps[state] {
                 continue;
             }
-            for &(from, step) in &into[state] {
+            for &(from, step) in &into[first_into[state]..first_into[state + 1]] {
                 let via = cost + step;
                 if via < steps[from as usize] {
                     steps[from as usize] = via;

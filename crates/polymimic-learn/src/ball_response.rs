@@ -5,14 +5,12 @@
 //! moved, in the robot's frame. A prediction averages the samples whose ball lay nearest,
 //! each weighing what its demonstration weighs.
 
-use polymimic_perceive::Label;
-use polymimic_types::{Pose, Primitive, TrackedFrame};
-use serde::{Deserialize, Serialize};
-
-use crate::nearest::nearest;
+use crate::nearest::NearestIndex;
 use crate::round::SegmentedDemonstration;
 use crate::state::Pitch;
 use crate::weighting::weighted;
+use polymimic_perceive::Label;
+use polymimic_types::{Pose, Primitive, TrackedFrame};
 
 /// Samples averaged by one prediction…
 const NEIGHBOURS: usize = 8;
@@ -32,11 +30,13 @@ fn to_field_frame(robot: &Pose, local: [f64; 2]) -> (f64, f64) {
 }
 
 /// The ball's response to each primitive, as samples.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct BallResponse {
     /// Per primitive (in [`Primitive::ALL`] order): the ball's start and its displacement, both
     /// in the robot's frame at the start, mm, and the sample's weight.
     samples: Vec<Vec<[f64; 5]>>,
+    /// Per primitive, the samples' ball starts, to find the nearest.
+    starts: Vec<NearestIndex<2>>,
 }
 
 impl BallResponse {
@@ -82,7 +82,8 @@ impl BallResponse {
                 }
             }
         }
-        Self { samples }
+        let starts = samples.iter().map(|s| NearestIndex::new(s.iter().map(|s| [s[0], s[1]]))).collect();
+        Self { samples, starts }
     }
 
     /// Samples behind the predictions for `primitive`.
@@ -102,7 +103,7 @@ impl BallResponse {
         let Some(samples) = self.samples.get(primitive as usize).filter(|s| !s.is_empty()) else {
             return (state.ball_x_mm, state.ball_y_mm);
         };
-        let nearest = nearest(samples.iter().map(|s| [s[0], s[1]]), &here, NEIGHBOURS);
+        let nearest = self.starts[primitive as usize].nearest(&here, NEIGHBOURS);
         let near: Vec<&[f64; 5]> = nearest
             .iter()
             .filter(|(d2, _)| *d2 <= NEIGHBOURHOOD_MM * NEIGHBOURHOOD_MM)
@@ -126,6 +127,7 @@ mod tests {
     use polymimic_perceive::Segment;
 
     use super::*;
+    use crate::nearest::brute_force_nearest;
     use crate::round::Ending;
 
     fn frame(robot: Pose, ball: (f64, f64)) -> TrackedFrame {
@@ -210,7 +212,7 @@ mod tests {
             let here = to_robot_frame(robot, state.ball_x_mm - robot.x_mm(), state.ball_y_mm - robot.y_mm());
             let samples = &response.samples[Primitive::Forward as usize];
             let mut mean = [0.0; 2];
-            for &(d2, i) in &nearest(samples.iter().map(|s| [s[0], s[1]]), &here, NEIGHBOURS) {
+            for &(d2, i) in &brute_force_nearest(samples.iter().map(|s| [s[0], s[1]]), &here, NEIGHBOURS) {
                 if d2 <= NEIGHBOURHOOD_MM * NEIGHBOURHOOD_MM {
                     mean[0] += samples[i][2] / NEIGHBOURS as f64;
                     mean[1] += samples[i][3] / NEIGHBOURS as f64;

@@ -20,6 +20,7 @@ use serde::{Deserialize, Serialize};
 use crate::config::LearningConfig;
 use crate::model::ForwardModel;
 use crate::prediction::{MotionTable, predict};
+use crate::prefix_tree::PrefixTree;
 use crate::shaping::approach_shaping;
 use crate::state::{Pitch, ball_to_goal_mm, robot_to_ball_mm};
 use crate::world::WorldModel;
@@ -124,44 +125,82 @@ impl ImitatorPolicy<'_> {
     /// behaviour predicts a goal, or no route is known): the first primitive of the behaviour
     /// whose predicted outcome rates best. Elsewhere: the next primitive of the route there.
     /// `None` if every behaviour would leave the field at once.
-    fn choose_primitive(&self, state: &TrackedFrame) -> Option<Primitive> {
+    fn choose_primitive(&self, tree: &PrefixTree, state: &TrackedFrame) -> Option<Primitive> {
         let behaviours = &self.model.behaviours;
-        let (rating, best) = (0..behaviours.len())
-            .filter_map(|i| self.outcome(i, state).map(|rating| (rating, i)))
-            .max_by(|(a, i), (b, j)| {
-                a.total_cmp(b)
-                    .then(behaviours[*j].primitives.len().cmp(&behaviours[*i].primitives.len()))
-                    .then(behaviours[*j].age.cmp(&behaviours[*i].age))
-            })?;
+        let ratings = self.outcomes(tree, state);
+        let (rating, best) =
+            ratings.iter().enumerate().filter_map(|(i, rating)| rating.map(|rating| (rating, i))).max_by(
+                |(a, i), (b, j)| {
+                    a.total_cmp(b)
+                        .then(behaviours[*j].primitives.len().cmp(&behaviours[*i].primitives.len()))
+                        .then(behaviours[*j].age.cmp(&behaviours[*i].age))
+                },
+            )?;
         let approach = self.world.and_then(|w| w.approach.as_ref()).filter(|_| rating.goal <= 0.0);
         approach.and_then(|plan| plan.next(state, self.motion, &self.pitch)).or(Some(behaviours[best].primitives[0]))
     }
 
-    /// Chains behaviour `index` from `state` with the mean motion of each primitive and the
-    /// learned ball response, stopping where the robot would leave the field, and rates the
-    /// end: a goal, then a state the demonstrations do not tie to own goals, then millimetres
-    /// the ball comes nearer the goal (beyond the dead band), then millimetres the robot comes
-    /// nearer the ball. `None` if the first primitive leaves the field.
-    fn outcome(&self, index: usize, state: &TrackedFrame) -> Option<Rating> {
-        let no_noise = f64::INFINITY;
-        let mut rng = ChaCha8Rng::seed_from_u64(0);
-        let mut now = *state;
-        for (k, &primitive) in self.model.behaviours[index].primitives.iter().enumerate() {
-            let robot = self.motion.step(now.robot, primitive, no_noise, &mut rng);
-            if !self.pitch.contains(robot.x_mm(), robot.y_mm()) {
-                if k == 0 {
-                    return None;
-                }
-                break;
-            }
-            let ball = self.world.map_or((now.ball_x_mm, now.ball_y_mm), |w| w.ball_response.predict(&now, primitive));
-            now = TrackedFrame { robot, ball_x_mm: ball.0, ball_y_mm: ball.1 };
-            if self.pitch.in_target_goal(ball.0, ball.1) || self.pitch.in_own_goal(ball.0, ball.1) {
-                break;
-            }
+    /// Every behaviour's rated outcome from `state` (see [`Self::walk`]), by index; `tree` holds
+    /// the behaviours' sequences, so each beginning they share is predicted once.
+    fn outcomes(&self, tree: &PrefixTree, state: &TrackedFrame) -> Vec<Option<Rating>> {
+        let mut ratings = vec![None; self.model.behaviours.len()];
+        let root = &tree.nodes[0];
+        if !root.ending.is_empty() {
+            let rating = Some(self.rate_end(state, state));
+            root.ending.iter().for_each(|&b| ratings[b] = rating);
         }
-        let value = self.world.map_or(0.0, |w| w.state_value.estimate(&now));
-        Some(Rating::of(state, &now, value, &self.pitch, self.config))
+        let rng = ChaCha8Rng::seed_from_u64(0);
+        for &child in &root.children {
+            self.walk(tree, child, state, *state, 0, rng.clone(), &mut ratings);
+        }
+        ratings
+    }
+
+    /// Chains the behaviours below `node` from `now` (reached after `depth` primitives from
+    /// `start`) with the mean motion of each primitive and the learned ball response, stopping
+    /// where the robot would leave the field or the ball reaches a goal, and rates where each
+    /// ends (see [`Self::rate_end`]). A behaviour whose first primitive leaves the field gets no
+    /// rating.
+    #[allow(clippy::too_many_arguments)]
+    fn walk(
+        &self,
+        tree: &PrefixTree,
+        node: usize,
+        start: &TrackedFrame,
+        now: TrackedFrame,
+        depth: usize,
+        mut rng: ChaCha8Rng,
+        ratings: &mut [Option<Rating>],
+    ) {
+        let here = &tree.nodes[node];
+        let Some(primitive) = here.primitive else { return };
+        let mut settle =
+            |behaviours: &[usize], rating: Option<Rating>| behaviours.iter().for_each(|&b| ratings[b] = rating);
+        let robot = self.motion.step(now.robot, primitive, f64::INFINITY, &mut rng);
+        if !self.pitch.contains(robot.x_mm(), robot.y_mm()) {
+            settle(&here.below, (depth > 0).then(|| self.rate_end(start, &now)));
+            return;
+        }
+        let ball = self.world.map_or((now.ball_x_mm, now.ball_y_mm), |w| w.ball_response.predict(&now, primitive));
+        let next = TrackedFrame { robot, ball_x_mm: ball.0, ball_y_mm: ball.1 };
+        if self.pitch.in_target_goal(ball.0, ball.1) || self.pitch.in_own_goal(ball.0, ball.1) {
+            settle(&here.below, Some(self.rate_end(start, &next)));
+            return;
+        }
+        if !here.ending.is_empty() {
+            settle(&here.ending, Some(self.rate_end(start, &next)));
+        }
+        for &child in &here.children {
+            self.walk(tree, child, start, next, depth + 1, rng.clone(), ratings);
+        }
+    }
+
+    /// The rating of a chain from `start` that ended at `end`: a goal, then a state the
+    /// demonstrations do not tie to own goals, then millimetres the ball comes nearer the goal
+    /// (beyond the dead band), then millimetres the robot comes nearer the ball.
+    fn rate_end(&self, start: &TrackedFrame, end: &TrackedFrame) -> Rating {
+        let value = self.world.map_or(0.0, |w| w.state_value.estimate(end));
+        Rating::of(start, end, value, &self.pitch, self.config)
     }
 }
 
@@ -223,10 +262,11 @@ impl ImitatorPolicy<'_> {
         let mut rng = ChaCha8Rng::seed_from_u64(derive_seed(seed, 7, 0));
         let mut last_ball = setup.ball.map_or((0.0, 0.0), |b| (b.x_mm(), b.y_mm()));
         let mut executed = Vec::new();
+        let tree = PrefixTree::new(self.model.behaviours.iter().map(|b| b.primitives.as_slice()));
         while !episode.is_finished() {
             let state = tracked(&episode, &mut last_ball);
             if self.mode == ControlMode::Improved {
-                let primitive = self.choose_primitive(&state).unwrap_or(Primitive::Stop);
+                let primitive = self.choose_primitive(&tree, &state).unwrap_or(Primitive::Stop);
                 executed.push(primitive.letter().to_string());
                 run_primitive(&mut episode, primitive)?;
                 continue;
@@ -293,4 +333,73 @@ fn run_primitive(episode: &mut Episode, primitive: Primitive) -> Result<(), Fiel
         episode.step(Command::Primitive(primitive))?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use polymimic_field::Demonstrator;
+
+    use super::*;
+    use crate::{Laboratory, PhaseOne};
+
+    impl ImitatorPolicy<'_> {
+        /// Behaviour `index`'s rated outcome chained on its own, primitive by primitive: what
+        /// [`Self::outcomes`] must give every behaviour, sharing beginnings or not.
+        fn outcome_by_chaining(&self, index: usize, state: &TrackedFrame) -> Option<Rating> {
+            let mut rng = ChaCha8Rng::seed_from_u64(0);
+            let mut now = *state;
+            for (k, &primitive) in self.model.behaviours[index].primitives.iter().enumerate() {
+                let robot = self.motion.step(now.robot, primitive, f64::INFINITY, &mut rng);
+                if !self.pitch.contains(robot.x_mm(), robot.y_mm()) {
+                    if k == 0 {
+                        return None;
+                    }
+                    break;
+                }
+                let ball =
+                    self.world.map_or((now.ball_x_mm, now.ball_y_mm), |w| w.ball_response.predict(&now, primitive));
+                now = TrackedFrame { robot, ball_x_mm: ball.0, ball_y_mm: ball.1 };
+                if self.pitch.in_target_goal(ball.0, ball.1) || self.pitch.in_own_goal(ball.0, ball.1) {
+                    break;
+                }
+            }
+            Some(self.rate_end(state, &now))
+        }
+    }
+
+    /// A trial's imitator (behaviours grown from each other, so sharing beginnings) rates every
+    /// state the Expert passed through the same, bit for bit, by the tree as by chaining each
+    /// behaviour alone.
+    #[test]
+    fn the_tree_of_shared_beginnings_rates_every_behaviour_as_chaining_it_alone_does() {
+        let lab = Laboratory::new(200, 3, LearningConfig::default()).expect("the recogniser trains");
+        let demos = lab.record(&[Demonstrator::Expert, Demonstrator::Poor], 4, 2).expect("demonstrations record");
+        let trial = &lab.trials(&demos, &["expert", "poor"], PhaseOne::ByModel, 1).expect("a trial runs")[0];
+        let world = WorldModel::learn(&demos, &Pitch::LARGE, &lab.motion, &lab.config);
+        let policy = ImitatorPolicy {
+            model: &trial.imitator,
+            motion: &lab.motion,
+            config: &lab.config,
+            pitch: Pitch::LARGE,
+            mode: ControlMode::Improved,
+            world: Some(&world),
+        };
+        let behaviours = &trial.imitator.behaviours;
+        let tree = PrefixTree::new(behaviours.iter().map(|b| b.primitives.as_slice()));
+        let primitives: usize = behaviours.iter().map(|b| b.primitives.len()).sum();
+        assert!(
+            tree.nodes.len() - 1 < primitives,
+            "no beginning shared: {} nodes, {primitives} primitives",
+            tree.nodes.len()
+        );
+        let mut compared = 0;
+        for segment in demos.iter().flat_map(|d| &d.segments) {
+            let together = policy.outcomes(&tree, &segment.start);
+            for (i, rating) in together.iter().enumerate() {
+                assert_eq!(format!("{rating:?}"), format!("{:?}", policy.outcome_by_chaining(i, &segment.start)));
+                compared += 1;
+            }
+        }
+        assert!(compared > 1000, "{compared} ratings compared");
+    }
 }

@@ -13,6 +13,7 @@ mod laboratory;
 mod model;
 mod nearest;
 mod prediction;
+mod prefix_tree;
 mod push_region;
 mod record;
 mod round;

@@ -4,14 +4,12 @@
 //! ball); a value learned from whole demonstrations can also see that going round the ball
 //! leads to a goal later, as the skilled demonstrators showed.
 
-use polymimic_field::FRAME_DT_S;
-use polymimic_types::TrackedFrame;
-use serde::{Deserialize, Serialize};
-
-use crate::nearest::nearest;
+use crate::nearest::NearestIndex;
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::state::Pitch;
 use crate::weighting::weighted;
+use polymimic_field::FRAME_DT_S;
+use polymimic_types::TrackedFrame;
 
 /// What an outcome one second further ahead is worth, relative to one now.
 const DISCOUNT_PER_S: f64 = 0.95;
@@ -34,9 +32,11 @@ fn features(state: &TrackedFrame) -> [f64; 6] {
 }
 
 /// States seen in demonstrations, each with its discounted outcome and its weight.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct StateValue {
     samples: Vec<([f64; 6], f64, f64)>,
+    /// The samples' points, to find the nearest.
+    points: NearestIndex<6>,
 }
 
 impl StateValue {
@@ -68,7 +68,8 @@ impl StateValue {
                 }
             }
         }
-        Self { samples }
+        let points = NearestIndex::new(samples.iter().map(|(point, ..)| *point));
+        Self { samples, points }
     }
 
     #[must_use]
@@ -85,7 +86,7 @@ impl StateValue {
     /// Σ w·v / Σ w (0 with none).
     #[must_use]
     pub fn estimate(&self, state: &TrackedFrame) -> f64 {
-        let nearest = nearest(self.samples.iter().map(|(point, ..)| *point), &features(state), NEIGHBOURS);
+        let nearest = self.points.nearest(&features(state), NEIGHBOURS);
         let total: f64 = nearest.iter().map(|&(_, i)| self.samples[i].2).sum();
         if total <= 0.0 {
             return 0.0;
@@ -101,6 +102,7 @@ mod tests {
     use polymimic_types::{Pose, Primitive};
 
     use super::*;
+    use crate::nearest::brute_force_nearest;
 
     /// One forward segment of 30 frames (1 s) from x to x + 50 with the ball at 0, ending as told.
     fn demo(x_mm: f64, ending: Ending, pitch: Pitch) -> SegmentedDemonstration {
@@ -170,7 +172,8 @@ mod tests {
         assert_eq!(value, StateValue::learn(&demos, &Pitch::LARGE));
         for k in 0..50 {
             let state = at(-350.0 + 17.3 * f64::from(k));
-            let near = nearest(value.samples.iter().map(|(point, ..)| *point), &features(&state), NEIGHBOURS);
+            let near =
+                brute_force_nearest(value.samples.iter().map(|(point, ..)| *point), &features(&state), NEIGHBOURS);
             let plain = near.iter().map(|&(_, i)| value.samples[i].1).sum::<f64>() / near.len() as f64;
             assert_eq!(value.estimate(&state).to_bits(), plain.to_bits(), "state {k}");
         }

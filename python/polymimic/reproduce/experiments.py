@@ -22,6 +22,7 @@ from collections.abc import Sequence
 from typing import Any, TypedDict
 
 from polymimic._atomic import atomic_write_text
+from polymimic._native import ImitatorPolicy as CompiledPolicy
 from polymimic._native import ModelFileError, PrimitiveRecognizer
 from polymimic.datasets import load_demonstrations, save_demonstrations
 from polymimic.field import OUTCOMES
@@ -97,12 +98,32 @@ class EvaluationInputs:
     """The field the imitators play on (the run's)."""
 
 
+_first_policies: dict[str, tuple[EvaluationInputs, ImitatorPolicy]] = {}
+"""In each process, by control: the first policy made for the inputs it was made from, whose
+learning from the demonstrations the policies of every other trial share."""
+
+
+def _policy(inputs: EvaluationInputs, trial: TrialResult, control: str) -> CompiledPolicy:
+    """The trial's imitator driven by ``control``; what the improved control learns from the
+    demonstrations is learned once per process and experiment where it does not depend on the
+    trial (every weighting but ``"lp"``)."""
+    if inputs.learning.imitator_weighting == "lp":
+        return imitator_policy(trial, recognizer=inputs.recognizer, config=inputs.learning, control=control,
+                               demonstrations=inputs.items)
+    first = _first_policies.get(control)
+    if first is None or first[0] is not inputs:
+        policy = imitator_policy(trial, recognizer=inputs.recognizer, config=inputs.learning, control=control,
+                                 demonstrations=inputs.items)
+        _first_policies[control] = (inputs, policy)
+        return policy
+    return first[1].for_trial(trial)
+
+
 def evaluation_task(inputs: EvaluationInputs, job: tuple[int, str, str, bool]) -> dict[str, Any]:
     """Goals and own goals of one trial's imitator; ``job`` is ``(trial seed, trial JSON,
     control, keep the attempts)``."""
     trial_seed, trial_json, control, keep = job
-    policy = imitator_policy(TrialResult.from_json(trial_json), recognizer=inputs.recognizer,
-                             config=inputs.learning, control=control, demonstrations=inputs.items)
+    policy = _policy(inputs, TrialResult.from_json(trial_json), control)
     evaluation = evaluate(policy, attempts_per_configuration=inputs.attempts_per_configuration, seed=inputs.seed,
                           field_config=inputs.field)
     return {"trial_seed": trial_seed, "control": control, "seed": inputs.seed,

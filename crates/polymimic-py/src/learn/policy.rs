@@ -50,7 +50,8 @@ pub struct PyImitatorPolicy {
     motion: MotionTable,
     config: LearningConfig,
     mode: ControlMode,
-    world: Option<WorldModel>,
+    /// Shared by the policies [`Self::for_trial`] makes from this one.
+    world: Option<Arc<WorldModel>>,
 }
 
 #[pymethods]
@@ -92,7 +93,9 @@ impl PyImitatorPolicy {
                         demonstration_weights(&demos, &lps).map_err(crate::errors::learn_params_error)?
                     }
                 };
-                Some(py.detach(|| WorldModel::learn_weighted(&demos, &weights, &Pitch::LARGE, &motion, &config)))
+                Some(Arc::new(
+                    py.detach(|| WorldModel::learn_weighted(&demos, &weights, &Pitch::LARGE, &motion, &config)),
+                ))
             }
         };
         Ok(Self { model, motion, config, mode, world })
@@ -116,11 +119,31 @@ impl PyImitatorPolicy {
             config: &self.config,
             pitch: Pitch::LARGE,
             mode: self.mode,
-            world: self.world.as_ref(),
+            world: self.world.as_deref(),
         };
         let seed = non_negative("seed", seed)? as u64;
         let results = py.detach(|| policy.evaluate(attempts, &field, seed)).map_err(crate::errors::field_error)?;
         attempt_list(py, &results)
+    }
+
+    /// The same control driving ``trial``'s imitator, with what this one learned from the
+    /// demonstrations (the improved control's ball response, state values and routes) shared
+    /// rather than learned again: the policy ``ImitatorPolicy(trial, ...)`` with this one's
+    /// arguments would make, sooner. Under ``imitator_weighting="lp"`` what the improved control
+    /// learns depends on the trial's LPs, so that is a ``ValueError``: make a new policy.
+    fn for_trial(&self, trial: &PyTrialResult) -> PyResult<Self> {
+        if self.world.is_some() && self.config.imitator_weighting == ImitatorWeighting::Lp {
+            return Err(PyValueError::new_err(
+                "for_trial: under imitator_weighting=\"lp\" the improved control learns from the demonstrations by the trial's LPs; make a new ImitatorPolicy for each trial",
+            ));
+        }
+        Ok(Self {
+            model: trial.imitator_forward_model()?,
+            motion: self.motion.clone(),
+            config: self.config.clone(),
+            mode: self.mode,
+            world: self.world.clone(),
+        })
     }
 
     /// `"thesis"` or `"improved"`.

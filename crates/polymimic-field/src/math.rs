@@ -67,10 +67,28 @@ pub(crate) fn uniform(rng: &mut Rng) -> f64 {
 
 /// Standard normal draw (Box–Muller; one value per call keeps the stream easy to reason about).
 pub(crate) fn gaussian(rng: &mut Rng) -> f64 {
-    // 1 − u lies in (0, 1], so the logarithm is finite.
-    let u1 = 1.0 - uniform(rng);
-    let u2 = uniform(rng);
-    (-2.0 * libm::log(u1)).sqrt() * cos(TAU * u2)
+    GaussianDraw::take(rng).value()
+}
+
+/// The two uniforms of a [`gaussian`] draw, taken from the stream now; the value costs a
+/// logarithm and a cosine, so a caller that may not need it can leave it uncomputed while the
+/// stream advances as if it had been.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct GaussianDraw {
+    u1: f64,
+    u2: f64,
+}
+
+impl GaussianDraw {
+    pub(crate) fn take(rng: &mut Rng) -> Self {
+        // 1 − u lies in (0, 1], so the logarithm is finite.
+        let u1 = 1.0 - uniform(rng);
+        Self { u1, u2: uniform(rng) }
+    }
+
+    pub(crate) fn value(self) -> f64 {
+        (-2.0 * libm::log(self.u1)).sqrt() * cos(TAU * self.u2)
+    }
 }
 
 #[cfg(test)]

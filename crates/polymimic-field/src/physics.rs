@@ -12,7 +12,7 @@ use rapier2d::prelude::{
 use serde::{Deserialize, Serialize};
 
 use crate::error::{FieldParamError, check_range};
-use crate::math::{Rng, gaussian};
+use crate::math::{GaussianDraw, Rng};
 
 /// Ball material and rolling resistance.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -207,11 +207,11 @@ impl Physics {
     /// Turn the rolling ball's velocity by a small random angle (drawn every step, rolling or
     /// not, so the random stream does not depend on the motion).
     fn wobble(&mut self) {
-        let turn = self.wobble_rad * gaussian(&mut self.rng);
+        let draw = GaussianDraw::take(&mut self.rng);
         if let Some(b) = self.world.bodies.get_mut(self.ball) {
             let v = b.linvel();
             if v.length() > 1.0 && !b.is_sleeping() {
-                b.set_linvel(turned(v, turn), false);
+                b.set_linvel(turned(v, self.wobble_rad * draw.value()), false);
             }
         }
     }

@@ -209,6 +209,10 @@ pub(crate) struct WheeledBody {
     target_omega_rad_s: f64,
     command: Option<Command>,
     frames_held: u32,
+    /// The motor lags' share of the gap closed per substep, (linear, angular), for the step
+    /// they were worked out for: every substep of an episode is as long, so two exponentials
+    /// per episode do instead of two per substep.
+    lag_shares: Option<(f64, f64, f64)>,
 }
 
 impl WheeledBody {
@@ -222,6 +226,7 @@ impl WheeledBody {
             target_omega_rad_s: 0.0,
             command: None,
             frames_held: 0,
+            lag_shares: None,
         }
     }
 
@@ -281,8 +286,15 @@ impl WheeledBody {
 
     /// Advance by `dt_s`: velocities relax toward the wheels, the pose integrates at mid-step.
     pub(crate) fn substep(&mut self, dt_s: f64) {
-        let a_v = 1.0 - exp(-dt_s / self.params.tau_linear_s);
-        let a_w = 1.0 - exp(-dt_s / self.params.tau_angular_s);
+        let (a_v, a_w) = match self.lag_shares {
+            Some((dt, a_v, a_w)) if dt.to_bits() == dt_s.to_bits() => (a_v, a_w),
+            _ => {
+                let shares =
+                    (1.0 - exp(-dt_s / self.params.tau_linear_s), 1.0 - exp(-dt_s / self.params.tau_angular_s));
+                self.lag_shares = Some((dt_s, shares.0, shares.1));
+                shares
+            }
+        };
         self.v_mm_s += a_v * (self.target_v_mm_s - self.v_mm_s);
         self.omega_rad_s += a_w * (self.target_omega_rad_s - self.omega_rad_s);
         let theta_mid = self.pose.theta_rad() + 0.5 * self.omega_rad_s * dt_s;

@@ -42,6 +42,20 @@ def _init_worker(fn: Callable[[Any, Any], Any], shared: Any, rayon_threads: int)
     _worker_fn, _worker_shared = fn, shared
 
 
+def _worker_context(fn: Callable[..., Any]) -> multiprocessing.context.BaseContext:
+    """How workers start. Never forked from this process: forking a process whose Rust thread
+    pools are running can deadlock. Where it can, a fork server (started once, with no Rust
+    threads, having imported polymimic and the task's module) forks them, which takes
+    milliseconds where starting a fresh interpreter and importing polymimic takes about a
+    second; elsewhere they are spawned."""
+    if "forkserver" not in multiprocessing.get_all_start_methods():
+        return multiprocessing.get_context("spawn")
+    context = multiprocessing.get_context("forkserver")
+    # Only heard before the server first starts; later pools reuse the server.
+    context.set_forkserver_preload(["polymimic", fn.__module__])
+    return context
+
+
 def _run_in_worker(arg: Any) -> tuple[Any, Any]:
     assert _worker_fn is not None
     return arg, _worker_fn(_worker_shared, arg)
@@ -89,9 +103,7 @@ class TaskRunner:
     def _map_pool(self, fn: Callable[[Any, A], R], shared: Any, args: Sequence[A]) -> Iterator[tuple[A, R]]:
         workers = min(self.workers, len(args))
         rayon_threads = max(1, (os.cpu_count() or 1) // workers)
-        # Spawned, not forked: forking a process whose Rust thread pools are running can deadlock.
-        pool = concurrent.futures.ProcessPoolExecutor(max_workers=workers,
-                                                      mp_context=multiprocessing.get_context("spawn"),
+        pool = concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=_worker_context(fn),
                                                       initializer=_init_worker,
                                                       initargs=(fn, shared, rayon_threads))
         try:

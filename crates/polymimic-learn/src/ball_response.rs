@@ -95,7 +95,8 @@ impl BallResponse {
     /// Where the ball will be after `primitive` starts from `state`, in field coordinates: the
     /// mean displacement of the samples whose ball lay nearest to where it lies now, counting
     /// the ball as staying put for every one of the [`NEIGHBOURS`] missing nearby. Samples
-    /// weigh their weights and each missing one 1: Σ wᵢ·dᵢ / (Σ wᵢ + missing).
+    /// weigh their weights and each missing one 1: Σ wᵢ·dᵢ / (Σ wᵢ + missing), summed nearest
+    /// first.
     #[must_use]
     pub fn predict(&self, state: &TrackedFrame, primitive: Primitive) -> (f64, f64) {
         let robot = &state.robot;

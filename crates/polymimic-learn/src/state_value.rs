@@ -83,7 +83,7 @@ impl StateValue {
     }
 
     /// The mean value of the demonstrated states nearest `state`, weighted by their weights:
-    /// Σ w·v / Σ w (0 with none).
+    /// Σ w·v / Σ w (0 with none), summed nearest first.
     #[must_use]
     pub fn estimate(&self, state: &TrackedFrame) -> f64 {
         let nearest = self.points.nearest(&features(state), NEIGHBOURS);

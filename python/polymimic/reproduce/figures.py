@@ -16,10 +16,11 @@ import os
 import pathlib
 
 from polymimic.plots import plot_log_likelihoods, plot_lp_over_time, plot_metric_bars
+from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.progress import progress
 from polymimic.reproduce.schema import Results
 
-__all__ = ["FIGURES", "METRIC_LABELS", "draw_figures"]
+__all__ = ["FIGURES", "METRIC_LABELS", "draw_figure", "draw_figures"]
 
 METRIC_LABELS = {
     "created": "behaviours created",
@@ -61,40 +62,47 @@ def figure_file(number: str) -> str:
     return f"plots/fig_{number.replace('.', '_')}.png"
 
 
-def draw_figures(results: Results, run_path: str | os.PathLike[str], *,
-                 quiet: bool = False) -> dict[str, str]:
-    """Draw every figure; return each one's path relative to ``run_path``, by figure number
-    (``"final_lp_heterogeneous"`` for the extra one)."""
-
-    root = pathlib.Path(run_path)
-    (root / "plots").mkdir(exist_ok=True)
+def draw_figure(inputs: tuple[Results, str], number: str) -> str:
+    """Draw figure ``number`` (a key of :data:`FIGURES`, or ``"final_lp_heterogeneous"``) of
+    ``inputs = (results, run path)``; return its path relative to the run. A task, so that the
+    figures can be drawn side by side."""
+    results, run_path = inputs
     experiments = results["experiments"]
+    spec = FIGURES.get(number, ("final_lp", "heterogeneous"))
+    relative = figure_file(number) if number in FIGURES else f"plots/{number}.png"
+    path = pathlib.Path(run_path) / relative
+    title = f"Fig {number}: " if number in FIGURES else ""
+    if spec[0] == "log_likelihoods":
+        plot_log_likelihoods(results["hmm_log_likelihood"], path=path)
+    elif spec[0] == "bars":
+        _, group, metric = spec
+        table = {label: {m: v[metric] for m, v in experiments[e]["behaviours"].items()}
+                 for label, e in _GROUPS[group].items()}
+        plot_metric_bars(table, ylabel=METRIC_LABELS[metric], path=path,
+                         title=f"{title}{METRIC_LABELS[metric]}, mean (sd) over trials")
+    elif spec[0] == "final_lp":
+        table = {label: experiments[e]["final_lp"] for label, e in _GROUPS[spec[1]].items()}
+        plot_metric_bars(table, ylabel="final learning preference", path=path,
+                         title=f"{title}final LP of each demonstrator's model, mean (sd)")
+    else:
+        _, experiment, who = spec
+        over_time = experiments[experiment]["lp_over_time"]
+        plot_lp_over_time(over_time["trials"][who], stride=over_time["stride"], path=path,
+                          title=f"{title}LP of the {who} model, {experiments[experiment]['title']}")
+    # Each figure is saved as it is drawn; none is kept in memory.
+    return relative
+
+
+def draw_figures(results: Results, run_path: str | os.PathLike[str], *,
+                 runner: TaskRunner | None = None, quiet: bool = False) -> dict[str, str]:
+    """Draw every figure, on ``runner``'s workers if given; return each one's path relative to
+    ``run_path``, by figure number (``"final_lp_heterogeneous"`` for the extra one)."""
+    (pathlib.Path(run_path) / "plots").mkdir(exist_ok=True)
     todo = [*FIGURES, "final_lp_heterogeneous"]
+    runner = runner or TaskRunner(workers=1)
     drawn: dict[str, str] = {}
     with progress(total=len(todo), desc="figures", quiet=quiet) as bar:
-        for number in todo:
-            spec = FIGURES.get(number, ("final_lp", "heterogeneous"))
-            relative = figure_file(number) if number in FIGURES else f"plots/{number}.png"
-            path = root / relative
-            title = f"Fig {number}: " if number in FIGURES else ""
-            if spec[0] == "log_likelihoods":
-                figure = plot_log_likelihoods(results["hmm_log_likelihood"], path=path)
-            elif spec[0] == "bars":
-                _, group, metric = spec
-                table = {label: {m: v[metric] for m, v in experiments[e]["behaviours"].items()}
-                         for label, e in _GROUPS[group].items()}
-                figure = plot_metric_bars(table, ylabel=METRIC_LABELS[metric], path=path,
-                                          title=f"{title}{METRIC_LABELS[metric]}, mean (sd) over trials")
-            elif spec[0] == "final_lp":
-                table = {label: experiments[e]["final_lp"] for label, e in _GROUPS[spec[1]].items()}
-                figure = plot_metric_bars(table, ylabel="final learning preference", path=path,
-                                          title=f"{title}final LP of each demonstrator's model, mean (sd)")
-            else:
-                _, experiment, who = spec
-                over_time = experiments[experiment]["lp_over_time"]
-                figure = plot_lp_over_time(over_time["trials"][who], stride=over_time["stride"], path=path,
-                                           title=f"{title}LP of the {who} model, {experiments[experiment]['title']}")
-            del figure  # each figure is saved as it is drawn; keep no more than one in memory
+        for number, relative in runner.map(draw_figure, (results, str(run_path)), todo):
             drawn[number] = relative
             bar.update(1)
-    return drawn
+    return {number: drawn[number] for number in todo}

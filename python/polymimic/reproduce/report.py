@@ -19,6 +19,7 @@ from typing import Any, Literal
 from polymimic._atomic import atomic_write_text
 from polymimic.recognition import MOVING
 from polymimic.reproduce import thesis
+from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.figures import METRIC_LABELS, draw_figures
 from polymimic.reproduce.markdown import to_html
@@ -450,11 +451,13 @@ def _behaviour_cells(row: Mapping[str, Any] | None, models: int) -> tuple[str, s
             pct(row["predicting_ball"] / models, 0))
 
 
-def write_report(run: RunDir, config: RunConfig, *, quiet: bool = False) -> Results:
-    """Gather ``results.json``, draw the figures, and write ``report.md`` and ``report.html``."""
+def write_report(run: RunDir, config: RunConfig, *, runner: TaskRunner | None = None,
+                 quiet: bool = False) -> Results:
+    """Gather ``results.json``, draw the figures (on ``runner``'s workers if given), and write
+    ``report.md`` and ``report.html``."""
     results = gather(run, config)
     atomic_write_text(run.results_path, json.dumps(results, indent=1, allow_nan=False) + "\n")
-    figures = draw_figures(results, run.path, quiet=quiet)
+    figures = draw_figures(results, run.path, runner=runner, quiet=quiet)
     markdown = render(results, figures, manifest=run.manifest())
     atomic_write_text(run.report_md_path, markdown)
     atomic_write_text(run.report_html_path, to_html(markdown, title="polymimic: the thesis reproduced",

@@ -204,7 +204,7 @@ def _evaluate(ctx: Context, experiments: Sequence[str] | None = None) -> int:
 
 
 def _report(ctx: Context) -> int:
-    write_report(ctx.run, ctx.config, quiet=ctx.quiet)
+    write_report(ctx.run, ctx.config, runner=ctx.runner, quiet=ctx.quiet)
     return 1
 
 

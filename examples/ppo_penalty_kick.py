@@ -15,7 +15,7 @@ Written to ``--out`` after every checkpoint (an interrupted run keeps its curve 
 - ``curve.csv`` and ``curve.json``: env steps, goals, own goals, net goals, attempts, wall time;
 - ``curve.png``: goals, own goals and net goals against environment steps;
 - at the end, ``ppo.pmp`` (the final policy, for :func:`polymimic.baselines.load_policy`) and
-  ``play.png`` (one of its evaluation attempts, a goal if it scored one).
+  ``play.png`` (one of its evaluation attempts, a goal from configuration 2 if it scored one).
 
 Run: ``pip install "polymimic[rl]"``, then
 ``python examples/ppo_penalty_kick.py [--timesteps N] [--eval-every N] [--attempts N] [--out DIR]``
@@ -145,6 +145,7 @@ def write_curve(curve: Sequence[Checkpoint], folder: pathlib.Path, settings: dic
 def plot_curve(curve: Sequence[Checkpoint], path: pathlib.Path, *, attempts: int, seed: int) -> None:
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
+    from matplotlib.ticker import StrMethodFormatter
 
     figure = Figure(figsize=(7.0, 4.2), layout="constrained")
     FigureCanvasAgg(figure)
@@ -154,6 +155,7 @@ def plot_curve(curve: Sequence[Checkpoint], path: pathlib.Path, *, attempts: int
     ax.plot(steps, [c.own_goals for c in curve], marker="o", markersize=3, color="tab:red", label="own goals")
     ax.plot(steps, [c.net_goals for c in curve], linestyle="--", color="0.3", label="net goals")
     ax.set_ylim(min(0, *(c.net_goals for c in curve)) - 1, attempts + 1)
+    ax.xaxis.set_major_formatter(StrMethodFormatter("{x:,.0f}"))
     ax.set_xlabel("environment steps (one primitive each)")
     ax.set_ylabel(f"out of {attempts} attempts")
     ax.set_title(f"PPO on PenaltyKick-v0 (training seed {seed}), the imitator's evaluation attempts",
@@ -199,7 +201,10 @@ def main(argv: Sequence[str] | None = None) -> dict[str, Any]:
     policy, curve, final = learn(timesteps=args.timesteps, seed=args.seed, eval_every=args.eval_every,
                                  attempts=args.attempts, eval_seed=args.eval_seed, on_checkpoint=report)
     policy.save(folder / "ppo.pmp")
-    shown = next((a for a in final.attempts if a.outcome == "goal"), final.attempts[0])
+    # A goal from configuration 2 if there is one: there the robot starts between the ball and the
+    # target goal and has to come round behind the ball.
+    goals = sorted((a for a in final.attempts if a.outcome == "goal"), key=lambda a: -a.configuration)
+    shown = goals[0] if goals else final.attempts[0]
     plot_demonstration(shown, path=folder / "play.png")
     print(f"written to {folder}: curve.csv, curve.json, curve.png, ppo.pmp, play.png")
     result: dict[str, Any] = json.loads((folder / "curve.json").read_text())

@@ -5,7 +5,8 @@ stated budget of environment steps (``total_timesteps``; one step is one primiti
 ``frames_per_action`` frames). Two environments run side by side, one per field configuration.
 The network sees the ``feature_set`` features of the observation, scaled to about ±1
 (:data:`FEATURE_SCALE`). stable-baselines3 and torch are needed to fit and to load a PPO
-policy (``pip install stable-baselines3``), not to import this module.
+policy (``pip install "polymimic[rl]"``), not to import this module. ``examples/ppo_penalty_kick.py``
+fits one and evaluates it as it learns.
 
 >>> from polymimic.baselines import ppo
 >>> ppo.available() in (True, False)
@@ -87,10 +88,12 @@ class PPOPolicy:
 
 
 def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_set: str = "goal_relative",
-        seed: int = 0, field_config: dict[str, Any] | str | None = None, **ppo_kwargs: Any) -> PPOPolicy:
+        seed: int = 0, field_config: dict[str, Any] | str | None = None, callback: Any = None,
+        **ppo_kwargs: Any) -> PPOPolicy:
     """PPO (``stable_baselines3.PPO("MlpPolicy", …)``) trained for ``total_timesteps`` steps.
 
-    ``ppo_kwargs`` go to ``PPO`` (``n_steps``, ``learning_rate``, …).
+    ``ppo_kwargs`` go to ``PPO`` (``n_steps``, ``learning_rate``, …); ``callback`` (a
+    stable-baselines3 callback) to ``PPO.learn``, to look at the model while it learns.
 
     Raises
     ------
@@ -100,7 +103,7 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
         If ``total_timesteps`` is not a positive integer.
     """
     if not available():
-        raise ModuleNotFoundError("the ppo baseline needs stable-baselines3: pip install stable-baselines3")
+        raise ModuleNotFoundError("the ppo baseline needs stable-baselines3: pip install \"polymimic[rl]\"")
     if isinstance(total_timesteps, bool) or not isinstance(total_timesteps, (int, np.integer)) or total_timesteps < 1:
         raise ValueError(f"total_timesteps must be an integer ≥ 1 (environment steps), got {total_timesteps!r}")
     import gymnasium
@@ -125,6 +128,6 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
     env = DummyVecEnv([make(1), make(2)])
     env.seed(seed)
     model = PPO("MlpPolicy", env, seed=seed, verbose=0, device="cpu", **ppo_kwargs)
-    model.learn(total_timesteps=int(total_timesteps))
+    model.learn(total_timesteps=int(total_timesteps), callback=callback)
     return PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
                      total_timesteps=total_timesteps)

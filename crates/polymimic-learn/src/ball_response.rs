@@ -5,12 +5,13 @@
 //! moved, in the robot's frame. A prediction averages the samples whose ball lay nearest,
 //! each weighing what its demonstration weighs.
 
+use polymimic_perceive::Label;
+use polymimic_types::{Pose, Primitive, TrackedFrame};
+
 use crate::nearest::NearestIndex;
 use crate::round::SegmentedDemonstration;
 use crate::state::Pitch;
 use crate::weighting::weighted;
-use polymimic_perceive::Label;
-use polymimic_types::{Pose, Primitive, TrackedFrame};
 
 /// Samples averaged by one prediction…
 const NEIGHBOURS: usize = 8;

@@ -262,11 +262,13 @@ impl ImitatorPolicy<'_> {
         let mut rng = ChaCha8Rng::seed_from_u64(derive_seed(seed, 7, 0));
         let mut last_ball = setup.ball.map_or((0.0, 0.0), |b| (b.x_mm(), b.y_mm()));
         let mut executed = Vec::new();
-        let tree = PrefixTree::new(self.model.behaviours.iter().map(|b| b.primitives.as_slice()));
+        // Only the improved mode chains every behaviour at each decision.
+        let tree = (self.mode == ControlMode::Improved)
+            .then(|| PrefixTree::new(self.model.behaviours.iter().map(|b| b.primitives.as_slice())));
         while !episode.is_finished() {
             let state = tracked(&episode, &mut last_ball);
-            if self.mode == ControlMode::Improved {
-                let primitive = self.choose_primitive(&tree, &state).unwrap_or(Primitive::Stop);
+            if let Some(tree) = &tree {
+                let primitive = self.choose_primitive(tree, &state).unwrap_or(Primitive::Stop);
                 executed.push(primitive.letter().to_string());
                 run_primitive(&mut episode, primitive)?;
                 continue;

@@ -4,12 +4,13 @@
 //! ball); a value learned from whole demonstrations can also see that going round the ball
 //! leads to a goal later, as the skilled demonstrators showed.
 
+use polymimic_field::FRAME_DT_S;
+use polymimic_types::TrackedFrame;
+
 use crate::nearest::NearestIndex;
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::state::Pitch;
 use crate::weighting::weighted;
-use polymimic_field::FRAME_DT_S;
-use polymimic_types::TrackedFrame;
 
 /// What an outcome one second further ahead is worth, relative to one now.
 const DISCOUNT_PER_S: f64 = 0.95;

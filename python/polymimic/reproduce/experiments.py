@@ -107,16 +107,13 @@ def _policy(inputs: EvaluationInputs, trial: TrialResult, control: str) -> Compi
     """The trial's imitator driven by ``control``; what the improved control learns from the
     demonstrations is learned once per process and experiment where it does not depend on the
     trial (every weighting but ``"lp"``)."""
-    if inputs.learning.imitator_weighting == "lp":
-        return imitator_policy(trial, recognizer=inputs.recognizer, config=inputs.learning, control=control,
-                               demonstrations=inputs.items)
     first = _first_policies.get(control)
-    if first is None or first[0] is not inputs:
-        policy = imitator_policy(trial, recognizer=inputs.recognizer, config=inputs.learning, control=control,
-                                 demonstrations=inputs.items)
-        _first_policies[control] = (inputs, policy)
-        return policy
-    return first[1].for_trial(trial)
+    if first is not None and first[0] is inputs and inputs.learning.imitator_weighting != "lp":
+        return first[1].for_trial(trial)
+    policy = imitator_policy(trial, recognizer=inputs.recognizer, config=inputs.learning, control=control,
+                             demonstrations=inputs.items)
+    _first_policies[control] = (inputs, policy)
+    return policy
 
 
 def evaluation_task(inputs: EvaluationInputs, job: tuple[int, str, str, bool]) -> dict[str, Any]:

@@ -139,3 +139,23 @@ def test_markdown_converter(tmp_path):
     assert 'src="data:image/png;base64,iVBORyBmYWtl"' in body
     assert 'src="plots/missing.png"' in body
     assert "<tr><td>a</td><td>b</td></tr>" in body and "<thead>" not in body  # no separator: no header
+
+
+def test_table_3_1_holds_within_the_thesiss_spreads_and_our_standard_errors():
+    backward = thesis.TABLE_3_1["backward"]
+    _like_table_3_1 = reports._like_table_3_1
+
+    def row(**change):
+        base = {"distance_mean_mm": backward["distance_mean_mm"], "distance_sd_mm": backward["distance_sd_mm"],
+                "rotation_mean_deg": backward["rotation_mean_deg"], "rotation_sd_deg": backward["rotation_sd_deg"],
+                "count": 1000}
+        return {**base, **change}
+
+    assert _like_table_3_1(row(), backward)
+    # Two standard errors of a 12.6° spread over 1000 sequences: 0.797°, more than 10 % of 2.29°.
+    assert _like_table_3_1(row(rotation_mean_deg=backward["rotation_mean_deg"] + 0.79), backward)
+    assert not _like_table_3_1(row(rotation_mean_deg=backward["rotation_mean_deg"] + 0.80), backward)
+    assert not _like_table_3_1(row(rotation_mean_deg=backward["rotation_mean_deg"] + 0.79, count=4000), backward)
+    # A spread 36 % too wide, as the default tracker's forward turn is sevenfold.
+    assert not _like_table_3_1(row(rotation_sd_deg=1.36 * backward["rotation_sd_deg"]), backward)
+    assert not _like_table_3_1(row(distance_mean_mm=0.85 * backward["distance_mean_mm"]), backward)

@@ -54,6 +54,27 @@ fn lego_primitives_reproduce_table_3_1() {
 }
 
 #[test]
+fn a_tracker_as_steady_as_the_thesiss_reproduces_table_3_1_as_tracked() {
+    // docs/configs/tracker_table_3_1.toml: σ 0.15° and a 2.7°–8° spike on 0.1 % of frames.
+    let tracker = TrackerConfig {
+        heading_sigma_rad: 0.15_f64.to_radians(),
+        spike_probability: 0.001,
+        spike_max_rad: 8.0_f64.to_radians(),
+        ..TrackerConfig::default()
+    };
+    let stats = table(&FieldConfig { tracker, ..FieldConfig::default() }, 1..21);
+    report("Table 3.1's tracker, 20 sessions pooled (seeds 1-20)", &stats);
+    for t in THESIS_TABLE_3_1 {
+        let s = stats[t.primitive.index()];
+        let name = t.primitive.name();
+        assert!(within(s.distance_mean_mm, t.distance_mean_mm, 0.10), "{name} distance mean {s:?}");
+        assert!(within(s.distance_sd_mm, t.distance_sd_mm, 0.35), "{name} distance sd {s:?}");
+        assert!(within(s.rotation_mean_deg, t.rotation_mean_deg, 0.10), "{name} rotation mean {s:?}");
+        assert!(within(s.rotation_sd_deg, t.rotation_sd_deg, 0.35), "{name} rotation sd {s:?}");
+    }
+}
+
+#[test]
 fn default_tracker_keeps_distances_and_adds_only_jitter_to_rotations() {
     let stats = table(&FieldConfig::default(), 100..101);
     report("default tracker, one session (seed 100)", &stats);

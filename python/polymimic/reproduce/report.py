@@ -13,6 +13,7 @@ plain checks on the numbers, collected at the top of the report.
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Mapping, Sequence
 from typing import Any, Literal
 
@@ -26,7 +27,7 @@ from polymimic.reproduce.markdown import to_html
 from polymimic.reproduce.results import BEHAVIOUR_COUNTS, gather
 from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, HETEROGENEOUS, VARYING_SKILL
 from polymimic.reproduce.rundir import RunDir
-from polymimic.reproduce.schema import ExperimentResults, MeanSd, Outcomes, Results
+from polymimic.reproduce.schema import ExperimentResults, MeanSd, Outcomes, PrimitiveStats, Results
 
 __all__ = ["render", "verdict", "write_report"]
 
@@ -163,9 +164,11 @@ def _recognition(report: _Report) -> None:
                      f"{theirs.get('rotation_mean_deg', float('nan')):.2f} ({theirs.get('rotation_sd_deg', 0):.2f})"))
     report.table(["primitive", "distance, ours", "distance, thesis", "rotation, ours", "rotation, thesis"], rows)
     stats = r["primitive_stats"]
-    report.check("forward and backward travel that way, left turns positive, right negative",
+    report.check("forward and backward travel that way, left turns positive, right negative, and every mean "
+                 "and spread is the thesis's (means within 10 % or two standard errors, spreads within 35 %)",
                  stats["forward"]["distance_mean_mm"] > 0 > stats["backward"]["distance_mean_mm"]
-                 and stats["left"]["rotation_mean_deg"] > 0 > stats["right"]["rotation_mean_deg"])
+                 and stats["left"]["rotation_mean_deg"] > 0 > stats["right"]["rotation_mean_deg"]
+                 and all(_like_table_3_1(stats[p], thesis.TABLE_3_1[p]) for p in MOVING))
 
     report.heading("Fig 4.5: each HMM on each primitive's held-out sequences")
     report.figure("4.5", "mean log-likelihood of each HMM on each primitive's test set")
@@ -180,6 +183,21 @@ def _recognition(report: _Report) -> None:
     report.table(["HMM", "ours", "thesis"], [(p, pct(accuracy[p], 2), pct(thesis.ACCURACY[p], 2)) for p in MOVING])
     report.check("every primitive recognised more than 90 % of the time",
                  all((share := accuracy[p]) is not None and share > 0.9 for p in MOVING))
+
+
+def _like_table_3_1(ours: PrimitiveStats, theirs: Mapping[str, float]) -> bool:
+    """Whether one primitive's row is the thesis's: each spread within 35 % of its spread, each
+    mean within 10 % of its mean or within two standard errors of ours (a thousand sequences
+    cannot pin backward's 2.29° turn, sd 12.6°, to 10 %)."""
+    two_errors_per_sd = 2.0 / math.sqrt(max(ours["count"], 1))
+    rows = [(ours["distance_mean_mm"], ours["distance_sd_mm"], theirs["distance_mean_mm"], theirs["distance_sd_mm"]),
+            (ours["rotation_mean_deg"], ours["rotation_sd_deg"], theirs["rotation_mean_deg"],
+             theirs["rotation_sd_deg"])]
+    ok = True
+    for mean, sd, their_mean, their_sd in rows:
+        ok &= abs(sd - their_sd) <= 0.35 * their_sd
+        ok &= abs(mean - their_mean) <= max(0.10 * abs(their_mean), two_errors_per_sd * sd)
+    return bool(ok)
 
 
 def _segments(report: _Report) -> None:

@@ -177,8 +177,14 @@ def _not_a_table(path: Path, value: Any) -> Exception:
 
 
 def _number(path: Path, value: Any, default: Any) -> Any:
-    """A finite number, an integer where the default is one."""
+    """A finite number, an integer where the default is one; as many numbers where the default
+    is a list (the humanoid's windows and sizes)."""
     name = ".".join(path)
+    if isinstance(default, list):
+        if not isinstance(value, (list, tuple)) or len(value) != len(default):
+            raise TypeError(f"field config {name!r} must be {len(default)} numbers, like the default {default!r}; "
+                            f"got {value!r}")
+        return [_number((*path[:-1], f"{path[-1]}[{i}]"), v, d) for i, (v, d) in enumerate(zip(value, default))]
     if isinstance(value, bool) or not isinstance(value, (int, float)) or (
             isinstance(default, int) and not isinstance(value, int)):
         kind = "an integer" if isinstance(default, int) else "a number"

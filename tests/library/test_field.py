@@ -180,3 +180,46 @@ def test_bad_episode_arguments_are_named():
         polymimic.Episode("wheelbarrow")
     with pytest.raises(ValueError, match="field config"):
         polymimic.Episode(config='{"time_limit_s": 1.0}')
+
+
+def test_the_humanoid_is_configured_by_its_own_table():
+    config = default_config()
+    assert config["humanoid"]["look_after_s"] == 0.0 and config["humanoid"]["foot_window_s"] == [0.3, 0.55]
+    default = polymimic.record("humanoid", configuration=2, n=1, seed=5)[0]
+    # Saying the defaults again changes nothing, bit for bit.
+    same = polymimic.record("humanoid", configuration=2, n=1, seed=5, config={"humanoid": {"turn_pivot_mm": 0.0}})[0]
+    assert same.frames.tobytes() == default.frames.tobytes()
+    pivoting = polymimic.record("humanoid", configuration=2, n=1, seed=5,
+                                config={"humanoid": {"turn_pivot_mm": 28.0}})[0]
+    assert pivoting.frames.tobytes() != default.frames.tobytes()
+    # The wheeled robots do not read it.
+    expert = polymimic.record("expert", configuration=2, n=1, seed=5)[0]
+    again = polymimic.record("expert", configuration=2, n=1, seed=5, config={"humanoid": {"turn_pivot_mm": 28.0}})[0]
+    assert again.frames.tobytes() == expert.frames.tobytes()
+
+
+@pytest.mark.parametrize(("humanoid", "error", "match"), [
+    ({"look_s": -2.0}, ValueError, r"humanoid\.look_s.*0 ≤ s ≤ 3600"),
+    ({"foot_window_s": [0.6, 0.3]}, ValueError, r"humanoid\.foot_window_s.*start < end"),
+    ({"foot_window_s": [0.3]}, TypeError, r"'humanoid\.foot_window_s' must be 2 numbers"),
+    ({"foot_window_s": ["a", 0.3]}, TypeError, r"'humanoid\.foot_window_s\[0\]' must be a number"),
+    ({"step_s": 0.0}, ValueError, r"humanoid\.step_s.*positive"),
+    ({"look_sec": 1.0}, ValueError, r"unknown key 'humanoid\.look_sec'"),
+])
+def test_bad_humanoid_constants_are_named(humanoid, error, match):
+    with pytest.raises(error, match=match):
+        polymimic.field.check_config({"humanoid": humanoid})
+
+
+def test_the_presets_in_the_docs_are_valid_run_configs():
+    import pathlib
+
+    from polymimic.reproduce.config import RunConfig
+
+    configs = pathlib.Path(__file__).parents[2] / "docs" / "configs"
+    tracker = RunConfig.load(configs / "tracker_table_3_1.toml").field["tracker"]
+    assert tracker["spike_probability"] == 0.001 and tracker["position_sigma_mm"] == 0.3
+    config = RunConfig.load(configs / "humanoid_thesis_like.toml")
+    assert config.field["humanoid"]["turn_pivot_mm"] == 28.0
+    assert config.field["humanoid"]["foot_window_s"] == [0.3, 0.9]
+    assert config.field["humanoid"]["walk_mm_s"] == default_config()["humanoid"]["walk_mm_s"]

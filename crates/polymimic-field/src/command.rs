@@ -181,6 +181,22 @@ impl HumanoidCommand {
         HumanoidCommand::TurnRight,
     ];
 
+    /// Whether the body steps to carry it out (walks, turns or side-steps).
+    #[must_use]
+    pub const fn steps(self) -> bool {
+        matches!(
+            self,
+            HumanoidCommand::WalkForward
+                | HumanoidCommand::WalkForwardLeft
+                | HumanoidCommand::WalkForwardRight
+                | HumanoidCommand::WalkBackward
+                | HumanoidCommand::TurnLeft
+                | HumanoidCommand::TurnRight
+                | HumanoidCommand::ShuffleLeft
+                | HumanoidCommand::ShuffleRight
+        )
+    }
+
     /// Name as the thesis writes it.
     #[must_use]
     pub const fn name(self) -> &'static str {

@@ -4,7 +4,7 @@
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
-use crate::body::BodyKind;
+use crate::body::{BodyKind, HumanoidParams};
 use crate::controller::{Controller, Expert, HumanoidController, LapseRate, Lapsing, Poor, TinyController};
 use crate::episode::{Episode, Outcome};
 use crate::error::{FieldError, FieldParamError};
@@ -64,14 +64,14 @@ impl Demonstrator {
         }
     }
 
-    /// A fresh controller.
+    /// A fresh controller; the humanoid's plays as `humanoid` says.
     #[must_use]
-    pub fn controller(self) -> Box<dyn Controller> {
+    pub fn controller(self, humanoid: &HumanoidParams) -> Box<dyn Controller> {
         match self {
             Demonstrator::Expert => Box::new(Expert::new()),
             Demonstrator::Poor => Box::new(Poor::new()),
             Demonstrator::Tiny => Box::new(TinyController::new()),
-            Demonstrator::Humanoid => Box::new(HumanoidController::new()),
+            Demonstrator::Humanoid => Box::new(HumanoidController::new(*humanoid)),
         }
     }
 
@@ -150,7 +150,7 @@ pub fn demonstrate_on(
     }
     let setup = EpisodeSetup::configuration(body, configuration, config);
     let mut episode = Episode::new(&setup, config, seed)?;
-    let mut controller = Lapsing::new(demonstrator.controller(), lapse, seed);
+    let mut controller = Lapsing::new(demonstrator.controller(&config.humanoid), lapse, seed);
     let max_frames = (config.time_limit_s * f64::from(FRAME_RATE_HZ)).ceil() as usize + 1;
     run_controller(&mut episode, &mut controller, max_frames)?;
     let outcome = episode.outcome().unwrap_or(Outcome::TimeUp);

@@ -111,7 +111,7 @@ impl Episode {
             }
             .into());
         }
-        let body = Body::new(setup.body, setup.robot);
+        let body = Body::new(setup.body, setup.robot, &config.humanoid);
         let dt_s = FRAME_DT_S / f64::from(config.substeps_per_frame);
         let physics = setup.ball.map(|ball| {
             let scene = Scene {

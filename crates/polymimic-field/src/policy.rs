@@ -2,7 +2,7 @@
 //! fail (a Python callable, a network peer) decides at a rate it declares, each command held
 //! until its next decision; a failure ends the recording with the attempt and time it struck.
 
-use crate::body::BodyKind;
+use crate::body::{BodyKind, HumanoidParams};
 use crate::command::Command;
 use crate::controller::Controller;
 use crate::demonstrate::{Demonstrator, attempts_for};
@@ -34,14 +34,15 @@ pub trait Policy {
 /// episode): the same controller in Rust, to compare a policy written elsewhere against.
 pub struct ControllerPolicy {
     demonstrator: Demonstrator,
+    humanoid: HumanoidParams,
     controller: Box<dyn Controller>,
 }
 
 impl ControllerPolicy {
     /// `demonstrator`'s controller as a policy.
     #[must_use]
-    pub fn new(demonstrator: Demonstrator) -> Self {
-        Self { demonstrator, controller: demonstrator.controller() }
+    pub fn new(demonstrator: Demonstrator, humanoid: HumanoidParams) -> Self {
+        Self { demonstrator, humanoid, controller: demonstrator.controller(&humanoid) }
     }
 }
 
@@ -49,7 +50,7 @@ impl Policy for ControllerPolicy {
     type Error = std::convert::Infallible;
 
     fn reset(&mut self, _start: &EpisodeStart) -> Result<(), Self::Error> {
-        self.controller = self.demonstrator.controller();
+        self.controller = self.demonstrator.controller(&self.humanoid);
         Ok(())
     }
 
@@ -239,7 +240,7 @@ mod tests {
     #[test]
     fn a_policy_deciding_every_frame_is_the_controller_bit_for_bit() {
         let config = FieldConfig::default();
-        let mut policy = ControllerPolicy::new(Demonstrator::Poor);
+        let mut policy = ControllerPolicy::new(Demonstrator::Poor, crate::body::HUMANOID);
         let start = EpisodeStart { attempt: 0, configuration: Configuration::Two, seed: 42, body: BodyKind::Lego };
         let ours =
             demonstrate_policy(&mut policy, BodyKind::Lego, start, DecisionRate::EVERY_FRAME, &config).expect("runs");

@@ -4,7 +4,7 @@
 use polymimic_types::{Point, Pose};
 use serde::{Deserialize, Serialize};
 
-use crate::body::BodyKind;
+use crate::body::{BodyKind, HUMANOID, HumanoidParams};
 use crate::error::{FieldParamError, check_range};
 use crate::geometry::FieldGeometry;
 use crate::physics::BallParams;
@@ -21,6 +21,10 @@ pub struct FieldConfig {
     pub time_limit_s: f64,
     /// Ball material.
     pub ball: BallParams,
+    /// The humanoid's body and how its controller plays (absent from a config saved before it
+    /// was configurable: the thesis's humanoid).
+    #[serde(default)]
+    pub humanoid: HumanoidParams,
 }
 
 impl Default for FieldConfig {
@@ -30,6 +34,7 @@ impl Default for FieldConfig {
             substeps_per_frame: 8,
             time_limit_s: 60.0,
             ball: BallParams::default(),
+            humanoid: HUMANOID,
         }
     }
 }
@@ -42,6 +47,7 @@ impl FieldConfig {
     pub fn check(&self) -> Result<(), FieldParamError> {
         self.tracker.check()?;
         self.ball.check()?;
+        self.humanoid.check()?;
         check_range("substeps_per_frame", f64::from(self.substeps_per_frame), 1.0, 64.0, "1 ≤ substeps ≤ 64")?;
         check_range("time_limit_s", self.time_limit_s, 1.0 / 30.0, 86_400.0, "1/30 s ≤ limit ≤ 1 day")
     }
@@ -159,6 +165,15 @@ mod tests {
         let c = FieldConfig::default();
         assert_eq!(FieldConfig::from_json(&c.to_json()), Ok(c));
         assert!(matches!(FieldConfig::from_json("{"), Err(FieldParamError::Json(_))));
+        // A config saved before the humanoid was configurable has the thesis's humanoid.
+        let mut old: serde_json::Value = serde_json::from_str(&c.to_json()).expect("json");
+        old.as_object_mut().expect("object").remove("humanoid");
+        assert_eq!(FieldConfig::from_json(&old.to_string()), Ok(c));
+        let shy = c.to_json().replace("\"look_s\":0.4", "\"look_s\":-1.0");
+        assert!(matches!(
+            FieldConfig::from_json(&shy),
+            Err(FieldParamError::OutOfRange { name: "humanoid.look_s", .. })
+        ));
         let bad = c.to_json().replace("\"substeps_per_frame\":8", "\"substeps_per_frame\":0");
         assert!(matches!(FieldConfig::from_json(&bad), Err(FieldParamError::OutOfRange { .. })));
     }

@@ -21,7 +21,7 @@ fn bits(frames: &[Frame]) -> Vec<[u64; 7]> {
 fn unwrapped(d: Demonstrator, c: Configuration, seed: u64, config: &FieldConfig) -> Vec<Frame> {
     let setup = EpisodeSetup::configuration(d.body(), c, config);
     let mut episode = Episode::new(&setup, config, seed).expect("starts");
-    let mut controller = d.controller();
+    let mut controller = d.controller(&polymimic_field::body::HUMANOID);
     let max_frames = (config.time_limit_s * 30.0).ceil() as usize + 1;
     run_controller(&mut episode, controller.as_mut(), max_frames).expect("runs");
     episode.into_frames()

@@ -226,8 +226,17 @@ pub fn record_builtin_at_rate(
     let (configuration, n) = (self::configuration(configuration)?, positive("n", n)?);
     let rate = DecisionRate::from_hz(decision_hz).map_err(field_param_error)?;
     let config = FieldConfig::default();
-    let recorded = py
-        .detach(|| record_policy(&mut ControllerPolicy::new(who), who.body(), configuration, n, seed.0, rate, &config));
+    let recorded = py.detach(|| {
+        record_policy(
+            &mut ControllerPolicy::new(who, config.humanoid),
+            who.body(),
+            configuration,
+            n,
+            seed.0,
+            rate,
+            &config,
+        )
+    });
     let recordings = recorded.map_err(|f| match f.cause {
         PolicyFault::Field(e) => field_error(e),
         PolicyFault::Policy(never) => match never {},

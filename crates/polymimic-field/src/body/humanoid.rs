@@ -3,13 +3,16 @@
 //! side-step (shuffle), turn on the spot, and kick: it leans back while one foot swings forward
 //! (the foot is a short-lived kinematic collider, so its contact with the ball is physical).
 //! It sees through a head camera: a forward cone that the head can pan left, right or down.
+//! Every constant is configurable (`FieldConfig::humanoid`); some choices beyond the default,
+//! each off unless asked for, make it walk more like a biped: turning about the stance foot,
+//! landing the kicking foot off its aim, and a camera that sees nothing while it walks.
 
 use nalgebra::Vector2;
 use polymimic_types::{Point, Pose, rotation_by_rad};
 use serde::{Deserialize, Serialize};
 
 use crate::command::{Command, HumanoidCommand};
-use crate::error::FieldParamError;
+use crate::error::{FieldParamError, check_range};
 use crate::math::{PI, Rng, cos, deg, exp, gaussian, sin, wrap_angle_rad};
 
 /// Constants of the humanoid body.
@@ -41,6 +44,9 @@ pub struct HumanoidParams {
     pub step_length_sd: f64,
     /// Lag of the walking velocities behind the command, s.
     pub tau_s: f64,
+    /// Distance to the side of the body centre of the foot it pivots on while turning, mm
+    /// (the stance foot, alternating step by step; 0 turns about the centre).
+    pub turn_pivot_mm: f64,
     /// Whole kick, s.
     pub kick_s: f64,
     /// How far the body leans back during a kick, mm.
@@ -55,8 +61,14 @@ pub struct HumanoidParams {
     pub foot_side_mm: f64,
     /// Foot size (length, width), mm.
     pub foot_size_mm: (f64, f64),
+    /// sd of where the swinging foot lands to the side of where it was aimed, drawn once per
+    /// kick, mm: balancing on one leg, the humanoid places its foot only roughly.
+    pub foot_aim_sd_mm: f64,
     /// Camera half field of view, rad.
     pub camera_half_fov_rad: f64,
+    /// Gait (0 standing, 1 stepping) above which the bobbing camera sees nothing; 1 or more
+    /// sees while walking.
+    pub blind_gait: f64,
     /// Camera range, mm.
     pub camera_range_mm: f64,
     /// Head pan while scanning left or right, rad.
@@ -65,6 +77,22 @@ pub struct HumanoidParams {
     pub head_pan_rate_rad_s: f64,
     /// Range of the downward look, mm (half field of view twice the forward one).
     pub scan_down_range_mm: f64,
+    /// How its controller plays: the ball may be this far ahead of the body centre, mm…
+    pub lineup_ahead_mm: f64,
+    /// …and this far to its side for it to line a foot up with side-steps rather than walk
+    /// round, mm.
+    pub lineup_side_mm: f64,
+    /// It side-steps until the ball is this close in line with the kicking foot, mm.
+    pub lineup_tolerance_mm: f64,
+    /// Farther than this from its spot behind the ball, it walks to the spot, mm.
+    pub spot_tolerance_mm: f64,
+    /// Gap it leaves between its front and the ball at that spot, mm.
+    pub spot_gap_mm: f64,
+    /// After walking blind this long it stands still to look, s (0: never; only a camera that
+    /// is blind while walking needs it).
+    pub look_after_s: f64,
+    /// How long it stands still to look, s.
+    pub look_s: f64,
 }
 
 /// The Bioloid-like humanoid.
@@ -82,6 +110,7 @@ pub const HUMANOID: HumanoidParams = HumanoidParams {
     step_yaw_sd_rad: deg(1.5),
     step_length_sd: 0.15,
     tau_s: 0.1,
+    turn_pivot_mm: 0.0,
     kick_s: 1.0,
     kick_lean_mm: 15.0,
     kick_net_back_mm: 10.0,
@@ -89,18 +118,104 @@ pub const HUMANOID: HumanoidParams = HumanoidParams {
     foot_reach_mm: (20.0, 110.0),
     foot_side_mm: 28.0,
     foot_size_mm: (40.0, 30.0),
+    foot_aim_sd_mm: 0.0,
     camera_half_fov_rad: deg(35.0),
+    blind_gait: 1.0,
     camera_range_mm: 1400.0,
     head_pan_rad: deg(60.0),
     head_pan_rate_rad_s: deg(180.0),
     scan_down_range_mm: 350.0,
+    lineup_ahead_mm: 260.0,
+    lineup_side_mm: 90.0,
+    lineup_tolerance_mm: 10.0,
+    spot_tolerance_mm: 35.0,
+    spot_gap_mm: 70.0,
+    look_after_s: 0.0,
+    look_s: 0.4,
 };
+
+impl Default for HumanoidParams {
+    fn default() -> Self {
+        HUMANOID
+    }
+}
+
+impl HumanoidParams {
+    /// Validate: every length, time and rate finite and in a sensible range.
+    ///
+    /// # Errors
+    /// `OutOfRange` naming the first parameter (as `humanoid.<name>`) outside its range.
+    pub fn check(&self) -> Result<(), FieldParamError> {
+        const MM: (f64, &str) = (1e4, "0 ≤ mm ≤ 10000");
+        const MM_S: (f64, &str) = (1e4, "0 ≤ mm/s ≤ 10000");
+        const RAD: (f64, &str) = (PI, "0 ≤ rad ≤ π");
+        const RAD_S: (f64, &str) = (100.0, "0 ≤ rad/s ≤ 100");
+        const S: (f64, &str) = (3600.0, "0 ≤ s ≤ 3600");
+        let p = self;
+        // (name, value, whether 0 is allowed, (largest, what is allowed))
+        let ranges = [
+            ("humanoid.length_mm", p.length_mm, false, MM),
+            ("humanoid.width_mm", p.width_mm, false, MM),
+            ("humanoid.walk_mm_s", p.walk_mm_s, true, MM_S),
+            ("humanoid.backward_mm_s", p.backward_mm_s, true, MM_S),
+            ("humanoid.shuffle_mm_s", p.shuffle_mm_s, true, MM_S),
+            ("humanoid.turn_rad_s", p.turn_rad_s, true, RAD_S),
+            ("humanoid.arc_rad_s", p.arc_rad_s, true, RAD_S),
+            ("humanoid.scan_twist_rad_s", p.scan_twist_rad_s, true, RAD_S),
+            ("humanoid.step_s", p.step_s, false, S),
+            ("humanoid.sway_rad", p.sway_rad, true, RAD),
+            ("humanoid.step_yaw_sd_rad", p.step_yaw_sd_rad, true, RAD),
+            ("humanoid.step_length_sd", p.step_length_sd, true, (10.0, "0 ≤ sd ≤ 10")),
+            ("humanoid.tau_s", p.tau_s, false, S),
+            ("humanoid.turn_pivot_mm", p.turn_pivot_mm, true, MM),
+            ("humanoid.kick_s", p.kick_s, false, S),
+            ("humanoid.kick_lean_mm", p.kick_lean_mm, true, MM),
+            ("humanoid.kick_net_back_mm", p.kick_net_back_mm, true, MM),
+            ("humanoid.foot_reach_mm[0]", p.foot_reach_mm.0, true, MM),
+            ("humanoid.foot_reach_mm[1]", p.foot_reach_mm.1, true, MM),
+            ("humanoid.foot_side_mm", p.foot_side_mm, true, MM),
+            ("humanoid.foot_size_mm[0]", p.foot_size_mm.0, false, MM),
+            ("humanoid.foot_size_mm[1]", p.foot_size_mm.1, false, MM),
+            ("humanoid.foot_aim_sd_mm", p.foot_aim_sd_mm, true, MM),
+            ("humanoid.camera_half_fov_rad", p.camera_half_fov_rad, false, RAD),
+            ("humanoid.blind_gait", p.blind_gait, true, (1.0, "0 ≤ gait ≤ 1")),
+            ("humanoid.camera_range_mm", p.camera_range_mm, false, MM),
+            ("humanoid.head_pan_rad", p.head_pan_rad, true, RAD),
+            ("humanoid.head_pan_rate_rad_s", p.head_pan_rate_rad_s, false, RAD_S),
+            ("humanoid.scan_down_range_mm", p.scan_down_range_mm, false, MM),
+            ("humanoid.lineup_ahead_mm", p.lineup_ahead_mm, true, MM),
+            ("humanoid.lineup_side_mm", p.lineup_side_mm, true, MM),
+            ("humanoid.lineup_tolerance_mm", p.lineup_tolerance_mm, true, MM),
+            ("humanoid.spot_tolerance_mm", p.spot_tolerance_mm, true, MM),
+            ("humanoid.spot_gap_mm", p.spot_gap_mm, true, MM),
+            ("humanoid.look_after_s", p.look_after_s, true, S),
+            ("humanoid.look_s", p.look_s, true, S),
+        ];
+        for (name, value, zero_allowed, (high, expected)) in ranges {
+            check_range(name, value, 0.0, high, expected)?;
+            if value == 0.0 && !zero_allowed {
+                return Err(FieldParamError::OutOfRange { name, value, expected: "a positive number" });
+            }
+        }
+        let (swing_start, swing_end) = p.foot_window_s;
+        if !(swing_start >= 0.0 && swing_start < swing_end && swing_end <= p.kick_s) {
+            return Err(FieldParamError::OutOfRange {
+                name: "humanoid.foot_window_s",
+                value: if swing_start >= 0.0 && swing_start < swing_end { swing_end } else { swing_start },
+                expected: "0 ≤ start < end ≤ kick_s",
+            });
+        }
+        Ok(())
+    }
+}
 
 #[derive(Debug, Clone, Copy)]
 struct Kick {
     /// +1 left foot, −1 right foot.
     side: f64,
     t_s: f64,
+    /// Where the foot lands to the side of its aim, mm.
+    aim_error_mm: f64,
 }
 
 /// The kicking foot, in field coordinates.
@@ -167,7 +282,7 @@ impl HumanoidBody {
         self.kick.is_some()
     }
 
-    pub(crate) fn command(&mut self, command: Command) -> Result<(), FieldParamError> {
+    pub(crate) fn command(&mut self, command: Command, rng: &mut Rng) -> Result<(), FieldParamError> {
         use HumanoidCommand as H;
         let Command::Humanoid(h) = command else {
             return Err(FieldParamError::CommandNotSupported { command: command.name(), body: "humanoid" });
@@ -196,20 +311,11 @@ impl HumanoidBody {
             H::ScanRight => (0.0, 0.0, -p.scan_twist_rad_s),
             H::KickLeft | H::KickRight | H::Wait | H::Go | H::ScanForward | H::ScanDown | H::Lost => (0.0, 0.0, 0.0),
         };
-        self.stepping = matches!(
-            h,
-            H::WalkForward
-                | H::WalkForwardLeft
-                | H::WalkForwardRight
-                | H::WalkBackward
-                | H::TurnLeft
-                | H::TurnRight
-                | H::ShuffleLeft
-                | H::ShuffleRight
-        );
+        self.stepping = h.steps();
         if matches!(h, H::KickLeft | H::KickRight) {
             let side = if h == H::KickLeft { 1.0 } else { -1.0 };
-            self.kick = Some(Kick { side, t_s: 0.0 });
+            let aim_error_mm = if p.foot_aim_sd_mm > 0.0 { p.foot_aim_sd_mm * gaussian(rng) } else { 0.0 };
+            self.kick = Some(Kick { side, t_s: 0.0, aim_error_mm });
             self.stepping = false;
         }
         Ok(())
@@ -260,11 +366,15 @@ impl HumanoidBody {
         let theta_mid = self.base.theta_rad() + 0.5 * turn * dt_s;
         // The body's velocity turned into field axes at mid-step.
         let velocity = rotation_by_rad(theta_mid) * Vector2::new(fwd, left);
-        self.base = Pose::new(
-            self.base.x_mm() + velocity.x * dt_s,
-            self.base.y_mm() + velocity.y * dt_s,
-            wrap_angle_rad(self.base.theta_rad() + turn * dt_s),
-        );
+        let (mut x, mut y) = (self.base.x_mm() + velocity.x * dt_s, self.base.y_mm() + velocity.y * dt_s);
+        if self.stepping && p.turn_pivot_mm > 0.0 && turn != 0.0 {
+            // Turning about the stance foot, which alternates sides from step to step.
+            let side = if (self.step_phase.floor() as i64) % 2 == 0 { 1.0 } else { -1.0 };
+            let pivot = self.base.field_from_robot(Point::new(0.0, side * p.turn_pivot_mm));
+            let offset = rotation_by_rad(turn * dt_s) * Vector2::new(x - pivot.x_mm(), y - pivot.y_mm());
+            (x, y) = (pivot.x_mm() + offset.x, pivot.y_mm() + offset.y);
+        }
+        self.base = Pose::new(x, y, wrap_angle_rad(self.base.theta_rad() + turn * dt_s));
     }
 
     /// The kicking foot (inactive outside the swing window).
@@ -275,7 +385,7 @@ impl HumanoidBody {
             Some(k) if k.t_s >= p.foot_window_s.0 && k.t_s < p.foot_window_s.1 => {
                 let f = (k.t_s - p.foot_window_s.0) / (p.foot_window_s.1 - p.foot_window_s.0);
                 let x = p.foot_reach_mm.0 + f * (p.foot_reach_mm.1 - p.foot_reach_mm.0);
-                let at = pose.field_from_robot(Point::new(x, k.side * p.foot_side_mm));
+                let at = pose.field_from_robot(Point::new(x, k.side * p.foot_side_mm + k.aim_error_mm));
                 Foot { pose: Pose::new(at.x_mm(), at.y_mm(), pose.theta_rad()), active: true }
             }
             _ => Foot { pose: Pose::new(pose.x_mm(), pose.y_mm(), pose.theta_rad()), active: false },
@@ -285,6 +395,9 @@ impl HumanoidBody {
     /// Can the head camera see a ball at `ball`?
     pub(crate) fn sees(&self, ball: Point) -> bool {
         let p = &self.params;
+        if self.stance > p.blind_gait {
+            return false;
+        }
         let pose = self.pose();
         let dist = pose.point().dist_mm(ball);
         let rel = wrap_angle_rad(pose.relative_bearing_rad(ball) - self.head_pan_rad);
@@ -303,7 +416,7 @@ mod tests {
 
     fn run(b: &mut HumanoidBody, h: HumanoidCommand, frames: u32, r: &mut Rng) {
         for _ in 0..frames {
-            b.command(Command::Humanoid(h)).expect("humanoid command");
+            b.command(Command::Humanoid(h), r).expect("humanoid command");
             for _ in 0..8 {
                 b.substep(1.0 / 240.0, r);
             }
@@ -350,6 +463,64 @@ mod tests {
     }
 
     #[test]
+    fn turning_about_a_foot_moves_the_centre_on_a_circle_round_it() {
+        let params = HumanoidParams { turn_pivot_mm: 28.0, step_yaw_sd_rad: 0.0, ..HUMANOID };
+        let mut r = rng(5, 0);
+        let mut b = HumanoidBody::new(params, Pose::default());
+        let mut c = HumanoidBody::new(HumanoidParams { step_yaw_sd_rad: 0.0, ..HUMANOID }, Pose::default());
+        // Within the first step it pivots about the left foot, (0, 28) mm.
+        run(&mut b, HumanoidCommand::TurnLeft, 10, &mut r);
+        run(&mut c, HumanoidCommand::TurnLeft, 10, &mut r);
+        let (moved, still) = (b.base.point().dist_mm(Point::new(0.0, 28.0)), c.base.point().dist_mm(Point::default()));
+        assert!((moved - 28.0).abs() < 1e-9, "{:?}", b.base);
+        assert!(b.base.point().dist_mm(Point::default()) > 1.0 && still < 1e-9, "{:?} {:?}", b.base, c.base);
+        assert!((b.base.theta_rad() - c.base.theta_rad()).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_foot_lands_off_its_aim_by_a_fresh_error_every_kick() {
+        let params = HumanoidParams { foot_aim_sd_mm: 15.0, ..HUMANOID };
+        let mut r = rng(6, 0);
+        let mut sides = Vec::new();
+        for _ in 0..4 {
+            let mut b = HumanoidBody::new(params, Pose::default());
+            b.command(Command::Humanoid(HumanoidCommand::KickLeft), &mut r).expect("humanoid command");
+            while !b.foot().active {
+                b.substep(1.0 / 240.0, &mut r);
+            }
+            sides.push(b.foot().pose.y_mm());
+        }
+        assert!(sides.iter().all(|y| (y - HUMANOID.foot_side_mm).abs() > 1e-6), "{sides:?}");
+        assert!(sides.windows(2).all(|w| w[0] != w[1]), "{sides:?}");
+    }
+
+    #[test]
+    fn a_camera_blind_while_walking_sees_only_standing() {
+        let mut r = rng(7, 0);
+        let mut b = HumanoidBody::new(HumanoidParams { blind_gait: 0.5, ..HUMANOID }, Pose::default());
+        let ahead = Point::new(300.0, 0.0);
+        assert!(b.sees(ahead));
+        run(&mut b, HumanoidCommand::WalkForward, 10, &mut r);
+        assert!(!b.sees(ahead));
+        run(&mut b, HumanoidCommand::Wait, 10, &mut r);
+        assert!(b.sees(ahead));
+    }
+
+    #[test]
+    fn bad_constants_are_refused_by_name() {
+        assert!(HUMANOID.check().is_ok());
+        let bad = |p: HumanoidParams| match p.check() {
+            Err(FieldParamError::OutOfRange { name, .. }) => name,
+            other => panic!("{other:?}"),
+        };
+        assert_eq!(bad(HumanoidParams { walk_mm_s: -1.0, ..HUMANOID }), "humanoid.walk_mm_s");
+        assert_eq!(bad(HumanoidParams { step_s: 0.0, ..HUMANOID }), "humanoid.step_s");
+        assert_eq!(bad(HumanoidParams { blind_gait: f64::NAN, ..HUMANOID }), "humanoid.blind_gait");
+        assert_eq!(bad(HumanoidParams { foot_window_s: (0.3, 1.5), ..HUMANOID }), "humanoid.foot_window_s");
+        assert_eq!(bad(HumanoidParams { foot_window_s: (0.6, 0.3), ..HUMANOID }), "humanoid.foot_window_s");
+    }
+
+    #[test]
     fn camera_sees_ahead_and_pans() {
         let mut r = rng(4, 0);
         let mut b = HumanoidBody::new(HUMANOID, Pose::default());
@@ -357,6 +528,6 @@ mod tests {
         assert!(!b.sees(Point::new(0.0, 300.0)));
         run(&mut b, HumanoidCommand::ScanLeft, 15, &mut r);
         assert!(b.sees(Point::new(150.0, 300.0)));
-        assert!(b.command(Command::Primitive(crate::Primitive::Forward)).is_err());
+        assert!(b.command(Command::Primitive(crate::Primitive::Forward), &mut r).is_err());
     }
 }

@@ -78,11 +78,11 @@ pub(crate) enum Body {
 }
 
 impl Body {
-    pub(crate) fn new(kind: BodyKind, pose: Pose) -> Self {
+    pub(crate) fn new(kind: BodyKind, pose: Pose, humanoid: &HumanoidParams) -> Self {
         match kind {
             BodyKind::Lego => Body::Wheeled(WheeledBody::new(LEGO, pose)),
             BodyKind::Tiny => Body::Wheeled(WheeledBody::new(TINY, pose)),
-            BodyKind::Humanoid => Body::Humanoid(HumanoidBody::new(HUMANOID, pose)),
+            BodyKind::Humanoid => Body::Humanoid(HumanoidBody::new(*humanoid, pose)),
             BodyKind::Wheeled(params, _) => Body::Wheeled(WheeledBody::new(params, pose)),
         }
     }
@@ -90,7 +90,7 @@ impl Body {
     pub(crate) fn command(&mut self, command: Command, rng: &mut Rng) -> Result<(), FieldParamError> {
         match self {
             Body::Wheeled(b) => b.command(command, rng),
-            Body::Humanoid(b) => b.command(command),
+            Body::Humanoid(b) => b.command(command, rng),
         }
     }
 

@@ -7,7 +7,7 @@ use std::collections::VecDeque;
 
 use polymimic_types::{Point, Pose};
 
-use crate::body::HUMANOID;
+use crate::body::HumanoidParams;
 use crate::command::{Command, HumanoidCommand as H};
 use crate::episode::Observation;
 use crate::math::{deg, wrap_angle_rad};
@@ -50,18 +50,21 @@ pub struct HumanoidController {
     turning: bool,
     /// Side the ball was last seen on (+1 left): the search turns that way.
     last_side: f64,
+    /// Whether the last command made it step (its camera may see nothing then).
+    stepping: bool,
+    params: HumanoidParams,
 }
 
 impl Default for HumanoidController {
     fn default() -> Self {
-        Self::new()
+        Self::new(HumanoidParams::default())
     }
 }
 
 impl HumanoidController {
-    /// A fresh controller.
+    /// A fresh controller of a humanoid built and playing as `params` say.
     #[must_use]
-    pub fn new() -> Self {
+    pub fn new(params: HumanoidParams) -> Self {
         Self {
             memory: None,
             mode: Mode::Play,
@@ -69,22 +72,24 @@ impl HumanoidController {
             queue: VecDeque::new(),
             sizes: Sizes {
                 ball_r: 50.0,
-                front: HUMANOID.length_mm / 2.0,
-                reach: 0.5 * HUMANOID.length_mm.hypot(HUMANOID.width_mm),
-                gap: 70.0,
-                spot_tol: 35.0,
+                front: params.length_mm / 2.0,
+                reach: 0.5 * params.length_mm.hypot(params.width_mm),
+                gap: params.spot_gap_mm,
+                spot_tol: params.spot_tolerance_mm,
                 face_tol_rad: deg(15.0),
             },
             turning: false,
             last_side: 1.0,
+            stepping: false,
+            params,
         }
     }
 
     /// Did the camera look where the remembered ball should be, without seeing it?
-    fn expected_but_missing(robot: Pose, remembered: Point) -> bool {
+    fn expected_but_missing(&self, robot: Pose, remembered: Point) -> bool {
         let rel = robot.relative_bearing_rad(remembered).abs();
         let dist = robot.point().dist_mm(remembered);
-        rel < 0.7 * HUMANOID.camera_half_fov_rad && dist < 0.8 * HUMANOID.camera_range_mm && dist > 150.0
+        rel < 0.7 * self.params.camera_half_fov_rad && dist < 0.8 * self.params.camera_range_mm && dist > 150.0
     }
 
     fn walk_to(&mut self, robot: Pose, target: Point) -> H {
@@ -110,13 +115,18 @@ impl HumanoidController {
         let b = robot.robot_from_field(ball);
         let behind = robot.point().dist_mm(aim) > ball.dist_mm(aim);
         // Close behind the ball and roughly facing the goal: line up a foot and kick.
-        if behind && b.x_mm() > 40.0 && b.x_mm() < 260.0 && b.y_mm().abs() < 90.0 && heading_err.abs() < deg(30.0) {
+        if behind
+            && b.x_mm() > 40.0
+            && b.x_mm() < self.params.lineup_ahead_mm
+            && b.y_mm().abs() < self.params.lineup_side_mm
+            && heading_err.abs() < deg(30.0)
+        {
             if heading_err.abs() > deg(10.0) {
                 return if heading_err > 0.0 { H::TurnLeft } else { H::TurnRight };
             }
             let side = if b.y_mm() >= 0.0 { 1.0 } else { -1.0 };
-            let lateral_err = b.y_mm() - side * HUMANOID.foot_side_mm;
-            if lateral_err.abs() > 10.0 {
+            let lateral_err = b.y_mm() - side * self.params.foot_side_mm;
+            if lateral_err.abs() > self.params.lineup_tolerance_mm {
                 return if lateral_err > 0.0 { H::ShuffleLeft } else { H::ShuffleRight };
             }
             if b.x_mm() > KICK_RANGE_MM.1 {
@@ -143,25 +153,40 @@ impl HumanoidController {
 
 impl Controller for HumanoidController {
     fn command(&mut self, obs: &Observation) -> Command {
+        let h = self.decide(obs);
+        self.stepping = h.steps();
+        Command::Humanoid(h)
+    }
+}
+
+impl HumanoidController {
+    fn decide(&mut self, obs: &Observation) -> H {
         let t = obs.t_s;
         if let Some(ball) = obs.ball {
             self.memory = Some((ball, t));
             self.last_side = if obs.robot.relative_bearing_rad(ball) >= 0.0 { 1.0 } else { -1.0 };
         } else if let Some((remembered, seen_s)) = self.memory {
-            // Its self-localisation drifts, so memory is trusted only briefly.
-            if Self::expected_but_missing(obs.robot, remembered) || t - seen_s > MEMORY_S {
+            // Its self-localisation drifts, so memory is trusted only briefly; a camera that
+            // bobs with the gait missing the ball is no news.
+            let blind = self.stepping && self.params.blind_gait < 1.0;
+            let looked = !blind && self.expected_but_missing(obs.robot, remembered);
+            if looked || t - seen_s > MEMORY_S {
                 self.memory = None;
+            } else if blind && self.params.look_after_s > 0.0 && t - seen_s > self.params.look_after_s {
+                // Walked blind long enough: stand still and look.
+                self.holding = Some((H::Wait, t + self.params.look_s));
+                return H::Wait;
             }
         }
         if let Some((h, until)) = self.holding {
             if t < until - 1e-9 {
-                return Command::Humanoid(h);
+                return h;
             }
             self.holding = None;
         }
         if let Some((h, d)) = self.queue.pop_front() {
             self.holding = Some((h, t + d));
-            return Command::Humanoid(h);
+            return h;
         }
         let Some((ball, _)) = self.memory else {
             let (since, turn) = if let Mode::Search(since, turn) = self.mode {
@@ -175,26 +200,26 @@ impl Controller for HumanoidController {
             for (h, d) in SEARCH {
                 if phase < d {
                     let h = if h == H::TurnLeft && turn < 0.0 { H::TurnRight } else { h };
-                    return Command::Humanoid(h);
+                    return h;
                 }
                 phase -= d;
             }
-            return Command::Humanoid(H::Lost);
+            return H::Lost;
         };
         if let Mode::Search(..) = self.mode {
             // Found it: settle, then get ready to walk.
             self.mode = Mode::Play;
             self.holding = Some((H::Wait, t + 0.3));
             self.queue.push_back((H::Go, 0.3));
-            return Command::Humanoid(H::Wait);
+            return H::Wait;
         }
         let h = self.play(obs, ball);
         if matches!(h, H::KickLeft | H::KickRight) {
             // A kick runs its whole course; then the robot steadies itself and gets ready.
-            self.holding = Some((h, t + HUMANOID.kick_s));
+            self.holding = Some((h, t + self.params.kick_s));
             self.queue.extend([(H::Wait, 0.4), (H::Go, 0.3)]);
         }
-        Command::Humanoid(h)
+        h
     }
 }
 
@@ -217,7 +242,7 @@ mod tests {
 
     #[test]
     fn kicks_a_ball_lined_up_with_a_foot() {
-        let mut c = HumanoidController::new();
+        let mut c = HumanoidController::new(HumanoidParams::default());
         let robot = Pose::new(0.0, 0.0, 0.0);
         let ball = Point::new(110.0, 28.0);
         assert_eq!(c.command(&obs(0.0, robot, Some(ball))), Command::Humanoid(H::KickLeft));
@@ -227,10 +252,41 @@ mod tests {
 
     #[test]
     fn scans_when_the_ball_is_missing() {
-        let mut c = HumanoidController::new();
+        let mut c = HumanoidController::new(HumanoidParams::default());
         let robot = Pose::new(0.0, 0.0, 0.0);
         assert_eq!(c.command(&obs(0.0, robot, None)), Command::Humanoid(H::Lost));
         assert_eq!(c.command(&obs(0.7, robot, None)), Command::Humanoid(H::ScanForward));
         assert_eq!(c.command(&obs(1.8, robot, None)), Command::Humanoid(H::ScanLeft));
+    }
+
+    #[test]
+    fn a_camera_blind_while_walking_makes_it_stop_to_look() {
+        let blind = HumanoidParams { blind_gait: 0.5, look_after_s: 1.0, look_s: 0.4, ..HumanoidParams::default() };
+        let robot = Pose::new(-300.0, 0.0, 0.0);
+        let ball = Point::new(200.0, 0.0);
+        for (params, stops) in [(blind, true), (HumanoidParams::default(), false)] {
+            let mut c = HumanoidController::new(params);
+            assert_eq!(c.command(&obs(0.0, robot, Some(ball))), Command::Humanoid(H::WalkForward));
+            // Walking, it has not seen the ball for 1.2 s: a blind walker stands and looks,
+            // for look_s; one that sees while walking has lost the ball where it expected it.
+            let later = c.command(&obs(1.2, robot, None));
+            assert_eq!(later == Command::Humanoid(H::Wait), stops, "{later:?}");
+            if stops {
+                assert_eq!(c.command(&obs(1.5, robot, None)), Command::Humanoid(H::Wait));
+                assert_eq!(c.command(&obs(1.7, robot, Some(ball))), Command::Humanoid(H::WalkForward));
+            }
+        }
+    }
+
+    #[test]
+    fn lines_up_by_side_steps_as_far_to_the_side_as_it_is_told() {
+        // Facing the goal, the ball 150 mm ahead and 120 mm to the left.
+        let robot = Pose::new(0.0, -120.0, 0.0);
+        let ball = Point::new(150.0, 0.0);
+        let mut narrow = HumanoidController::new(HumanoidParams::default());
+        assert_ne!(narrow.command(&obs(0.0, robot, Some(ball))), Command::Humanoid(H::ShuffleLeft));
+        let wide = HumanoidParams { lineup_side_mm: 250.0, ..HumanoidParams::default() };
+        let mut wide = HumanoidController::new(wide);
+        assert_eq!(wide.command(&obs(0.0, robot, Some(ball))), Command::Humanoid(H::ShuffleLeft));
     }
 }

@@ -21,9 +21,9 @@ pub struct FieldConfig {
     pub time_limit_s: f64,
     /// Ball material.
     pub ball: BallParams,
-    /// The humanoid's body and how its controller plays (absent from a config saved before it
-    /// was configurable: the thesis's humanoid).
-    #[serde(default)]
+    /// The humanoid's body and how its controller plays. A saved config leaves out the thesis's
+    /// humanoid, so that configs saved before it was configurable read and save as they were.
+    #[serde(default, skip_serializing_if = "HumanoidParams::is_thesis")]
     pub humanoid: HumanoidParams,
 }
 
@@ -57,6 +57,20 @@ impl FieldConfig {
     pub fn to_json(&self) -> String {
         // Serialising plain numbers cannot fail.
         serde_json::to_string(self).unwrap_or_default()
+    }
+
+    /// The config as JSON with every key, the thesis's humanoid too (what a user is shown and
+    /// may change).
+    #[must_use]
+    pub fn to_json_in_full(&self) -> String {
+        let compact = self.to_json();
+        match compact.strip_suffix('}') {
+            // The humanoid goes last, where serde puts it when it is not the thesis's.
+            Some(open) if self.humanoid.is_thesis() => {
+                format!("{open},\"humanoid\":{}}}", serde_json::to_string(&self.humanoid).unwrap_or_default())
+            }
+            _ => compact,
+        }
     }
 
     /// A config from JSON, validated.
@@ -165,11 +179,15 @@ mod tests {
         let c = FieldConfig::default();
         assert_eq!(FieldConfig::from_json(&c.to_json()), Ok(c));
         assert!(matches!(FieldConfig::from_json("{"), Err(FieldParamError::Json(_))));
-        // A config saved before the humanoid was configurable has the thesis's humanoid.
-        let mut old: serde_json::Value = serde_json::from_str(&c.to_json()).expect("json");
-        old.as_object_mut().expect("object").remove("humanoid");
-        assert_eq!(FieldConfig::from_json(&old.to_string()), Ok(c));
-        let shy = c.to_json().replace("\"look_s\":0.4", "\"look_s\":-1.0");
+        // The thesis's humanoid is left out of what is saved and shown in full.
+        assert!(!c.to_json().contains("humanoid") && c.to_json_in_full().contains("\"look_s\":0.4"));
+        assert_eq!(FieldConfig::from_json(&c.to_json_in_full()), Ok(c));
+        let pivot = FieldConfig { humanoid: HumanoidParams { turn_pivot_mm: 1.0, ..HUMANOID }, ..c };
+        assert_eq!(c.to_json_in_full().replace("\"turn_pivot_mm\":0.0", "\"turn_pivot_mm\":1.0"), pivot.to_json());
+        let pivoting = FieldConfig { humanoid: HumanoidParams { turn_pivot_mm: 28.0, ..HUMANOID }, ..c };
+        assert!(pivoting.to_json().contains("\"turn_pivot_mm\":28.0"));
+        assert_eq!(FieldConfig::from_json(&pivoting.to_json()), Ok(pivoting));
+        let shy = c.to_json_in_full().replace("\"look_s\":0.4", "\"look_s\":-1.0");
         assert!(matches!(
             FieldConfig::from_json(&shy),
             Err(FieldParamError::OutOfRange { name: "humanoid.look_s", .. })

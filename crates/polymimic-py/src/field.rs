@@ -160,13 +160,13 @@ pub fn thesis_table_3_1(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
 /// The default field configuration, as JSON.
 #[pyfunction]
 pub fn default_field_config() -> String {
-    FieldConfig::default().to_json()
+    FieldConfig::default().to_json_in_full()
 }
 
 /// Checks a field configuration given as JSON (every value in range); returns it in full.
 #[pyfunction]
 pub fn check_field_config(config: &str) -> PyResult<String> {
-    Ok(field_config(Some(config))?.to_json())
+    Ok(field_config(Some(config))?.to_json_in_full())
 }
 
 /// An episode on the field, stepped one tracker frame at a time by a policy.

@@ -141,6 +141,12 @@ impl Default for HumanoidParams {
 }
 
 impl HumanoidParams {
+    /// Whether these are the thesis's humanoid's constants.
+    #[must_use]
+    pub fn is_thesis(&self) -> bool {
+        *self == HUMANOID
+    }
+
     /// Validate: every length, time and rate finite and in a sensible range.
     ///
     /// # Errors

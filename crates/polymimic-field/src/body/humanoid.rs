@@ -66,8 +66,8 @@ pub struct HumanoidParams {
     pub foot_aim_sd_mm: f64,
     /// Camera half field of view, rad.
     pub camera_half_fov_rad: f64,
-    /// Gait (0 standing, 1 stepping) above which the bobbing camera sees nothing; 1 or more
-    /// sees while walking.
+    /// Gait (0 standing, 1 stepping) above which the bobbing camera sees nothing; 1 sees
+    /// while walking.
     pub blind_gait: f64,
     /// Camera range, mm.
     pub camera_range_mm: f64,
@@ -141,6 +141,12 @@ impl Default for HumanoidParams {
 }
 
 impl HumanoidParams {
+    /// Whether its camera sees nothing while it walks (a gait below full stride blinds it).
+    #[must_use]
+    pub fn walks_blind(&self) -> bool {
+        self.blind_gait < 1.0
+    }
+
     /// Whether these are the thesis's humanoid's constants.
     #[must_use]
     pub fn is_thesis(&self) -> bool {
@@ -152,62 +158,64 @@ impl HumanoidParams {
     /// # Errors
     /// `OutOfRange` naming the first parameter (as `humanoid.<name>`) outside its range.
     pub fn check(&self) -> Result<(), FieldParamError> {
-        const MM: (f64, &str) = (1e4, "0 ≤ mm ≤ 10000");
-        const MM_S: (f64, &str) = (1e4, "0 ≤ mm/s ≤ 10000");
-        const RAD: (f64, &str) = (PI, "0 ≤ rad ≤ π");
-        const RAD_S: (f64, &str) = (100.0, "0 ≤ rad/s ≤ 100");
-        const S: (f64, &str) = (3600.0, "0 ≤ s ≤ 3600");
+        // (smallest, largest, what is allowed), as the wheeled bodies' check words it.
+        const MM: (f64, f64, &str) = (0.0, 1e4, "0 ≤ mm ≤ 10000");
+        const MM_POSITIVE: (f64, f64, &str) = (f64::MIN_POSITIVE, 1e4, "positive, at most 10000 mm");
+        const MM_S: (f64, f64, &str) = (0.0, 1e4, "0 ≤ mm/s ≤ 10000");
+        const RAD: (f64, f64, &str) = (0.0, PI, "0 ≤ rad ≤ π");
+        const RAD_POSITIVE: (f64, f64, &str) = (f64::MIN_POSITIVE, PI, "positive, at most π rad");
+        const RAD_S: (f64, f64, &str) = (0.0, 100.0, "0 ≤ rad/s ≤ 100");
+        const RAD_S_POSITIVE: (f64, f64, &str) = (f64::MIN_POSITIVE, 100.0, "positive, at most 100 rad/s");
+        const S: (f64, f64, &str) = (0.0, 3600.0, "0 ≤ s ≤ 3600");
+        const S_POSITIVE: (f64, f64, &str) = (f64::MIN_POSITIVE, 3600.0, "positive, at most 3600 s");
         let p = self;
-        // (name, value, whether 0 is allowed, (largest, what is allowed))
         let ranges = [
-            ("humanoid.length_mm", p.length_mm, false, MM),
-            ("humanoid.width_mm", p.width_mm, false, MM),
-            ("humanoid.walk_mm_s", p.walk_mm_s, true, MM_S),
-            ("humanoid.backward_mm_s", p.backward_mm_s, true, MM_S),
-            ("humanoid.shuffle_mm_s", p.shuffle_mm_s, true, MM_S),
-            ("humanoid.turn_rad_s", p.turn_rad_s, true, RAD_S),
-            ("humanoid.arc_rad_s", p.arc_rad_s, true, RAD_S),
-            ("humanoid.scan_twist_rad_s", p.scan_twist_rad_s, true, RAD_S),
-            ("humanoid.step_s", p.step_s, false, S),
-            ("humanoid.sway_rad", p.sway_rad, true, RAD),
-            ("humanoid.step_yaw_sd_rad", p.step_yaw_sd_rad, true, RAD),
-            ("humanoid.step_length_sd", p.step_length_sd, true, (10.0, "0 ≤ sd ≤ 10")),
-            ("humanoid.tau_s", p.tau_s, false, S),
-            ("humanoid.turn_pivot_mm", p.turn_pivot_mm, true, MM),
-            ("humanoid.kick_s", p.kick_s, false, S),
-            ("humanoid.kick_lean_mm", p.kick_lean_mm, true, MM),
-            ("humanoid.kick_net_back_mm", p.kick_net_back_mm, true, MM),
-            ("humanoid.foot_reach_mm[0]", p.foot_reach_mm.0, true, MM),
-            ("humanoid.foot_reach_mm[1]", p.foot_reach_mm.1, true, MM),
-            ("humanoid.foot_side_mm", p.foot_side_mm, true, MM),
-            ("humanoid.foot_size_mm[0]", p.foot_size_mm.0, false, MM),
-            ("humanoid.foot_size_mm[1]", p.foot_size_mm.1, false, MM),
-            ("humanoid.foot_aim_sd_mm", p.foot_aim_sd_mm, true, MM),
-            ("humanoid.camera_half_fov_rad", p.camera_half_fov_rad, false, RAD),
-            ("humanoid.blind_gait", p.blind_gait, true, (1.0, "0 ≤ gait ≤ 1")),
-            ("humanoid.camera_range_mm", p.camera_range_mm, false, MM),
-            ("humanoid.head_pan_rad", p.head_pan_rad, true, RAD),
-            ("humanoid.head_pan_rate_rad_s", p.head_pan_rate_rad_s, false, RAD_S),
-            ("humanoid.scan_down_range_mm", p.scan_down_range_mm, false, MM),
-            ("humanoid.lineup_ahead_mm", p.lineup_ahead_mm, true, MM),
-            ("humanoid.lineup_side_mm", p.lineup_side_mm, true, MM),
-            ("humanoid.lineup_tolerance_mm", p.lineup_tolerance_mm, true, MM),
-            ("humanoid.spot_tolerance_mm", p.spot_tolerance_mm, true, MM),
-            ("humanoid.spot_gap_mm", p.spot_gap_mm, true, MM),
-            ("humanoid.look_after_s", p.look_after_s, true, S),
-            ("humanoid.look_s", p.look_s, true, S),
+            ("humanoid.length_mm", p.length_mm, MM_POSITIVE),
+            ("humanoid.width_mm", p.width_mm, MM_POSITIVE),
+            ("humanoid.walk_mm_s", p.walk_mm_s, MM_S),
+            ("humanoid.backward_mm_s", p.backward_mm_s, MM_S),
+            ("humanoid.shuffle_mm_s", p.shuffle_mm_s, MM_S),
+            ("humanoid.turn_rad_s", p.turn_rad_s, RAD_S),
+            ("humanoid.arc_rad_s", p.arc_rad_s, RAD_S),
+            ("humanoid.scan_twist_rad_s", p.scan_twist_rad_s, RAD_S),
+            ("humanoid.step_s", p.step_s, S_POSITIVE),
+            ("humanoid.sway_rad", p.sway_rad, RAD),
+            ("humanoid.step_yaw_sd_rad", p.step_yaw_sd_rad, RAD),
+            ("humanoid.step_length_sd", p.step_length_sd, (0.0, 10.0, "0 ≤ sd ≤ 10")),
+            ("humanoid.tau_s", p.tau_s, S_POSITIVE),
+            ("humanoid.turn_pivot_mm", p.turn_pivot_mm, MM),
+            ("humanoid.kick_s", p.kick_s, S_POSITIVE),
+            ("humanoid.kick_lean_mm", p.kick_lean_mm, MM),
+            ("humanoid.kick_net_back_mm", p.kick_net_back_mm, MM),
+            ("humanoid.foot_reach_mm[0]", p.foot_reach_mm.0, MM),
+            ("humanoid.foot_reach_mm[1]", p.foot_reach_mm.1, MM),
+            ("humanoid.foot_side_mm", p.foot_side_mm, MM),
+            ("humanoid.foot_size_mm[0]", p.foot_size_mm.0, MM_POSITIVE),
+            ("humanoid.foot_size_mm[1]", p.foot_size_mm.1, MM_POSITIVE),
+            ("humanoid.foot_aim_sd_mm", p.foot_aim_sd_mm, MM),
+            ("humanoid.camera_half_fov_rad", p.camera_half_fov_rad, RAD_POSITIVE),
+            ("humanoid.blind_gait", p.blind_gait, (0.0, 1.0, "0 ≤ gait ≤ 1")),
+            ("humanoid.camera_range_mm", p.camera_range_mm, MM_POSITIVE),
+            ("humanoid.head_pan_rad", p.head_pan_rad, RAD),
+            ("humanoid.head_pan_rate_rad_s", p.head_pan_rate_rad_s, RAD_S_POSITIVE),
+            ("humanoid.scan_down_range_mm", p.scan_down_range_mm, MM_POSITIVE),
+            ("humanoid.lineup_ahead_mm", p.lineup_ahead_mm, MM),
+            ("humanoid.lineup_side_mm", p.lineup_side_mm, MM),
+            ("humanoid.lineup_tolerance_mm", p.lineup_tolerance_mm, MM),
+            ("humanoid.spot_tolerance_mm", p.spot_tolerance_mm, MM),
+            ("humanoid.spot_gap_mm", p.spot_gap_mm, MM),
+            ("humanoid.look_after_s", p.look_after_s, S),
+            ("humanoid.look_s", p.look_s, S),
         ];
-        for (name, value, zero_allowed, (high, expected)) in ranges {
-            check_range(name, value, 0.0, high, expected)?;
-            if value == 0.0 && !zero_allowed {
-                return Err(FieldParamError::OutOfRange { name, value, expected: "a positive number" });
-            }
+        for (name, value, (low, high, expected)) in ranges {
+            check_range(name, value, low, high, expected)?;
         }
         let (swing_start, swing_end) = p.foot_window_s;
-        if !(swing_start >= 0.0 && swing_start < swing_end && swing_end <= p.kick_s) {
+        let start_ok = swing_start >= 0.0 && swing_start < swing_end;
+        if !(start_ok && swing_end <= p.kick_s) {
             return Err(FieldParamError::OutOfRange {
                 name: "humanoid.foot_window_s",
-                value: if swing_start >= 0.0 && swing_start < swing_end { swing_end } else { swing_start },
+                value: if start_ok { swing_end } else { swing_start },
                 expected: "0 ≤ start < end ≤ kick_s",
             });
         }

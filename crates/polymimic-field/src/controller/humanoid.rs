@@ -168,7 +168,7 @@ impl HumanoidController {
         } else if let Some((remembered, seen_s)) = self.memory {
             // Its self-localisation drifts, so memory is trusted only briefly; a camera that
             // bobs with the gait missing the ball is no news.
-            let blind = self.stepping && self.params.blind_gait < 1.0;
+            let blind = self.stepping && self.params.walks_blind();
             let looked = !blind && self.expected_but_missing(obs.robot, remembered);
             if looked || t - seen_s > MEMORY_S {
                 self.memory = None;

@@ -317,7 +317,7 @@ def plot_log_likelihoods(table: Mapping[str, Mapping[str, float | None]], *, ax:
     >>> len(figure.axes[0].patches)
     4
     """
-    figure, ax = _figure_and_axes(ax, (7.0, 4.2))
+    figure, ax = _figure_and_axes(ax, (7.0, 4.2), chart=True)
     models = list(table)
     primitives = list(next(iter(table.values()), {}))
     width = 0.8 / max(len(models), 1)
@@ -358,7 +358,7 @@ def plot_metric_bars(table: Mapping[str, Mapping[str, MeanSd]], *, ylabel: str, 
     >>> len(figure.axes[0].patches)
     4
     """
-    figure, ax = _figure_and_axes(ax, (7.0, 4.2))
+    figure, ax = _figure_and_axes(ax, (7.0, 4.2), chart=True)
     groups = list(table)
     models: list[str] = []
     for group in groups:
@@ -406,7 +406,7 @@ def plot_lp_over_time(histories: list[list[float]], *, stride: int, title: str, 
     >>> len(figure.axes[0].lines)   # two trials, and the starting LP
     3
     """
-    figure, ax = _figure_and_axes(ax, (7.0, 3.6))
+    figure, ax = _figure_and_axes(ax, (7.0, 3.6), chart=True)
     alpha = max(0.08, min(0.8, 8.0 / max(len(histories), 1)))
     for history in histories:
         ax.plot(np.arange(len(history)) * stride, history, color="tab:blue", linewidth=0.8, alpha=alpha)
@@ -419,12 +419,27 @@ def plot_lp_over_time(histories: list[list[float]], *, stride: int, title: str, 
     return figure
 
 
-def _figure_and_axes(ax: Axes | None, size_in: tuple[float, float]) -> tuple[Figure, Axes]:
-    """The figure of ``ax``, or a new figure of ``size_in`` (inches) with one axes."""
+# A chart's margins, inches: room for a one-line title, tick labels of up to six characters and
+# the axis labels. Fixed margins cost nothing to lay out, where the constrained layout measures
+# every text twice and takes a third of a report's drawing time.
+_CHART_MARGINS_IN = {"left": 0.9, "right": 0.15, "bottom": 0.55, "top": 0.35}
+
+
+def _figure_and_axes(ax: Axes | None, size_in: tuple[float, float], *, chart: bool = False) -> tuple[Figure, Axes]:
+    """The figure of ``ax``, or a new figure of ``size_in`` (inches) with one axes: laid out by
+    matplotlib's constrained layout, or with fixed margins for a ``chart``."""
     from matplotlib.figure import Figure
 
     if ax is None:
-        ax = Figure(figsize=size_in, layout="constrained").add_subplot()
+        if chart:
+            width, height = size_in
+            m = _CHART_MARGINS_IN
+            figure = Figure(figsize=size_in)
+            figure.subplots_adjust(left=m["left"] / width, right=1 - m["right"] / width,
+                                   bottom=m["bottom"] / height, top=1 - m["top"] / height)
+            ax = figure.add_subplot()
+        else:
+            ax = Figure(figsize=size_in, layout="constrained").add_subplot()
     return cast("Figure", ax.figure), ax
 
 

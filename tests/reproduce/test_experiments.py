@@ -14,7 +14,7 @@ from polymimic.reproduce.backends import TaskRunner
 from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.roster import EXPERIMENTS
 from polymimic.reproduce.rundir import MissingInputError, RunDir
-from polymimic.reproduce.stages import Context, run_stage
+from polymimic.reproduce.stages import WORKER_MODULES, Context, run_stage
 
 
 def _context(path, runner=None, config=None):
@@ -57,7 +57,9 @@ def test_same_bits_in_process_on_a_pool_and_on_ray(segmented, tmp_path):
     """Each trial depends on its seed alone: the backend and the number of workers change nothing."""
     ray = pytest.importorskip("ray")
     inline = _context(_copy(segmented, tmp_path, "inline"))
-    pooled = _context(_copy(segmented, tmp_path, "pool"), TaskRunner(workers=2))
+    pool = TaskRunner(workers=2)
+    pool.start(WORKER_MODULES)  # workers forked from a server that imported the tasks' modules first
+    pooled = _context(_copy(segmented, tmp_path, "pool"), pool)
     for ctx in (inline, pooled):
         run_stage(ctx, "learn")
         run_stage(ctx, "evaluate", experiments=["varying_skill"])

@@ -42,17 +42,17 @@ def _init_worker(fn: Callable[[Any, Any], Any], shared: Any, rayon_threads: int)
     _worker_fn, _worker_shared = fn, shared
 
 
-def _worker_context(fn: Callable[..., Any]) -> multiprocessing.context.BaseContext:
+def _worker_context(modules: Sequence[str]) -> multiprocessing.context.BaseContext:
     """How workers start. Never forked from this process: forking a process whose Rust thread
     pools are running can deadlock. Where it can, a fork server (started once, with no Rust
-    threads, having imported polymimic and the task's module) forks them, which takes
-    milliseconds where starting a fresh interpreter and importing polymimic takes about a
-    second; elsewhere they are spawned."""
+    threads, having imported polymimic and ``modules``) forks them, which takes milliseconds
+    where starting a fresh interpreter and importing polymimic takes about a second; elsewhere
+    they are spawned."""
     if "forkserver" not in multiprocessing.get_all_start_methods():
         return multiprocessing.get_context("spawn")
     context = multiprocessing.get_context("forkserver")
     # Only heard before the server first starts; later pools reuse the server.
-    context.set_forkserver_preload(["polymimic", fn.__module__])
+    context.set_forkserver_preload(["polymimic", *modules])
     return context
 
 
@@ -76,6 +76,21 @@ class TaskRunner:
         self.backend, self.address = backend, address
         self.workers = workers or os.cpu_count() or 1
         self._started_ray = False
+        self._preload: tuple[str, ...] = ()
+
+    def start(self, modules: Sequence[str]) -> None:
+        """Start the local workers' fork server now, importing polymimic and ``modules`` (the
+        tasks' modules and what they import lazily) while this process goes on with its own work;
+        otherwise the first pool starts it and waits for the imports. Does nothing where workers
+        are not forked from a server, or the server is already running."""
+        self._preload = tuple(modules)
+        if self.backend != "local" or self.workers == 1:
+            return
+        context = _worker_context(self._preload)
+        if context.get_start_method() == "forkserver":
+            import multiprocessing.forkserver
+
+            multiprocessing.forkserver.ensure_running()
 
     def __repr__(self) -> str:
         return f"TaskRunner(backend={self.backend!r}, workers={self.workers}, address={self.address!r})"
@@ -103,7 +118,8 @@ class TaskRunner:
     def _map_pool(self, fn: Callable[[Any, A], R], shared: Any, args: Sequence[A]) -> Iterator[tuple[A, R]]:
         workers = min(self.workers, len(args))
         rayon_threads = max(1, (os.cpu_count() or 1) // workers)
-        pool = concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=_worker_context(fn),
+        context = _worker_context([*self._preload, fn.__module__])
+        pool = concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context,
                                                       initializer=_init_worker,
                                                       initargs=(fn, shared, rayon_threads))
         try:

@@ -1,5 +1,7 @@
 //! Shared geometry of a competition-style attacker: get behind the ball on the ball–goal line
-//! without touching it on the way, then push (or kick) it along that line.
+//! without touching it on the way, then push (or kick) it along that line. Where that line's
+//! spot behind the ball is off the field (the ball near a side line), the line runs from the
+//! nearest spot the robot can stand on through the ball instead.
 
 use polymimic_types::{Point, Pose};
 
@@ -87,12 +89,17 @@ fn detour_side(lateral: f64, line: Pose, s: &Sizes) -> f64 {
 /// pushing while roughly behind the ball).
 pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, pushing: bool) -> Plan {
     let aim = aim_point(field);
-    let line = line(ball, aim);
+    let on_goal_line = behind_spot(ball, aim, s, 0.0);
+    let spot = clamp_to_field(on_goal_line, field, s.reach);
+    // With the ball near a side line the spot on the ball–goal line can be off the field. Then
+    // push from the nearest spot the robot can stand on, through the ball: the ball runs along
+    // the side line toward the goal, where waiting to stand on the ball–goal line waits forever.
+    let line = if spot == on_goal_line { line(ball, aim) } else { Pose::at(ball, spot.bearing_rad(ball)) };
     // The robot in the line's frame: how far along it (negative: behind the ball), how far off.
     let in_line_frame = line.robot_from_field(robot.point());
     let (along, lateral) = (in_line_frame.x_mm(), in_line_frame.y_mm());
-    let goal_heading = line.theta_rad();
-    let heading_err = wrap_angle_rad(goal_heading - robot.theta_rad());
+    let push_heading = line.theta_rad();
+    let heading_err = wrap_angle_rad(push_heading - robot.theta_rad());
     let contact = s.ball_r + s.front;
     // Behind the ball, on the line, facing the goal: push; looser once already pushing.
     let k = if pushing { 1.6 } else { 1.0 };
@@ -102,9 +109,8 @@ pub(crate) fn plan(robot: Pose, ball: Point, field: &FieldGeometry, s: &Sizes, p
     if behind && on_line && facing {
         return Plan::Push(line.ahead(2.0 * contact));
     }
-    let spot = clamp_to_field(behind_spot(ball, aim, s, 0.0), field, s.reach);
     if robot.point().dist_mm(spot) < s.spot_tol {
-        return Plan::Face(goal_heading);
+        return Plan::Face(push_heading);
     }
     // Keep the spinning robot's corners off the ball on the way round.
     let clearance = s.ball_r + s.reach + 0.25 * s.gap;
@@ -155,6 +161,31 @@ mod tests {
             Plan::GoTo(w) => {
                 assert!(w.y_mm().abs() > 100.0, "{w:?}");
             }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn near_a_side_line_it_pushes_from_the_spot_it_can_reach() {
+        // The spot behind this ball on the ball–goal line is 42 mm beyond the side line; the
+        // nearest the robot may stand is 150 mm off that line.
+        let f = FieldGeometry::of(FieldSize::Large);
+        let ball = Point::new(300.0, 330.0);
+        let spot = clamp_to_field(behind_spot(ball, aim_point(&f), &S, 0.0), &f, S.reach);
+        assert!((spot.y_mm() - (f.half_width_mm() - S.reach - 5.0)).abs() < 1e-9, "{spot:?}");
+        let robot = Pose::at(spot, spot.bearing_rad(ball));
+        match plan(robot, ball, &f, &S, false) {
+            Plan::Push(target) => {
+                // Straight on through the ball, from the spot, ahead of it.
+                let off_line = Pose::at(spot, spot.bearing_rad(ball)).robot_from_field(target);
+                assert!(off_line.y_mm().abs() < 1e-6 && off_line.x_mm() > spot.dist_mm(ball), "{target:?}");
+            }
+            other => panic!("{other:?}"),
+        }
+        // Facing the goal from there instead, it turns toward the ball rather than wait.
+        let facing_goal = Pose::at(spot, ball.bearing_rad(aim_point(&f)));
+        match plan(facing_goal, ball, &f, &S, false) {
+            Plan::Face(h) => assert!((h - spot.bearing_rad(ball)).abs() < 1e-12),
             other => panic!("{other:?}"),
         }
     }

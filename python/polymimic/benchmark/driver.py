@@ -9,7 +9,8 @@ arrives, and a rerun redoes only what is missing or damaged):
    to ``datasets/crowd_<profile>.parquet``;
 3. **learn** — every trial of every profile, LP-weighted and with every LP held at 0.5;
 4. **tune** — every baseline's hyperparameters on validation attempts (``bco_lp`` weighs by
-   the first trial's LPs);
+   the first trial's LPs); the chosen candidate, fitted as the evaluation after the first
+   trial would fit it, is evaluated there and then;
 5. **evaluate** — every method after every trial, on the evaluation attempts;
 6. **report** — ``benchmark.json``, ``benchmark.md``, ``benchmark.html`` and the plots.
 """
@@ -162,6 +163,8 @@ class Benchmark:
                 if not self.run.finished(self.run.tuning_path(crowd.name, method), load_tuning)]
         with progress(total=len(jobs), desc="tune", quiet=self.quiet) as bar:
             for _, result in self.runner.map(tuning_task, shared, jobs):
+                # The evaluation first: a tuning on disk is done, and a lost evaluation is redone.
+                self._write_evaluation(result.pop("evaluation"))
                 atomic_write_text(self.run.tuning_path(result["profile"], result["method"]), dumps(result))
                 bar.update(1)
         return len(jobs)
@@ -196,10 +199,13 @@ class Benchmark:
         jobs = self.evaluation_jobs()
         with progress(total=len(jobs), desc="evaluate", quiet=self.quiet) as bar:
             for _, result in self.runner.map(evaluation_task, shared, jobs):
-                path = self.run.evaluation_path(result["profile"], result["method"], result["trial_seed"])
-                atomic_write_text(path, dumps(result))
+                self._write_evaluation(result)
                 bar.update(1)
         return len(jobs)
+
+    def _write_evaluation(self, result: dict[str, Any]) -> None:
+        path = self.run.evaluation_path(result["profile"], result["method"], result["trial_seed"])
+        atomic_write_text(path, dumps(result))
 
 
     # 6. The summary and the report.

@@ -76,7 +76,10 @@ def _baseline_inputs(shared: Shared, profile: str, method: str, trial_json: str 
 
 def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, Any]:
     """``(profile, method, the first trial's JSON for bco_lp)`` → the hyperparameters chosen on
-    validation attempts, and every candidate's score there."""
+    validation attempts, every candidate's score there, and (``"evaluation"``) the chosen
+    policy's evaluation after the first trial. That policy is the fit the evaluation would make
+    again (the same demonstrations, hyperparameters and the first trial's seed), so it is
+    evaluated here rather than fitted twice; the choice was made before, on validation alone."""
     profile, method, trial_json = job
     settings, seeds = shared.config.benchmark, shared.config.seeds
     tuning = baselines.tune(method, shared.profiles[profile].demonstrations, budget=settings.tuning_budget,
@@ -88,7 +91,8 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
                             **_baseline_inputs(shared, profile, method, trial_json))
     return {"profile": profile, "method": method, "chosen": tuning.chosen,
             "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
-            "validation_attempts": len(tuning.validation_attempts)}
+            "validation_attempts": len(tuning.validation_attempts),
+            "evaluation": _evaluated(shared, profile, method, seeds.first_trial, tuning.policy)}
 
 
 def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[str, Any] | None]) -> dict[str, Any]:
@@ -104,16 +108,28 @@ def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[s
                                 demonstrations=inputs.segmented if control == "improved" else None)
         result = evaluate(policy, attempts_per_configuration=settings.attempts_per_configuration,
                           seed=seeds.evaluation, field_config=shared.config.field)
-    else:
-        assert hyperparameters is not None
-        chosen = baselines.Hyperparameters.from_dict(hyperparameters)
-        demos = inputs.demonstrations if method != "random" else []
-        fitted = baselines.fit(method, demos, hyperparameters=chosen, seed=trial_seed,
-                               **(_baseline_inputs(shared, profile, method, trial_json) if method != "random" else {}))
-        result = baselines.evaluate_policy(fitted, attempts_per_configuration=settings.attempts_per_configuration,
-                                           seed=seeds.evaluation, field_config=shared.config.field)
+        return _evaluation(shared, profile, method, trial_seed, result)
+    assert hyperparameters is not None
+    chosen = baselines.Hyperparameters.from_dict(hyperparameters)
+    demos = inputs.demonstrations if method != "random" else []
+    fitted = baselines.fit(method, demos, hyperparameters=chosen, seed=trial_seed,
+                           **(_baseline_inputs(shared, profile, method, trial_json) if method != "random" else {}))
+    return _evaluated(shared, profile, method, trial_seed, fitted)
+
+
+def _evaluated(shared: Shared, profile: str, method: str, trial_seed: int,
+               policy: baselines.ClonedPolicy | baselines.RandomPolicy) -> dict[str, Any]:
+    """A fitted baseline's evaluation after trial ``trial_seed``."""
+    settings, seeds = shared.config.benchmark, shared.config.seeds
+    result = baselines.evaluate_policy(policy, attempts_per_configuration=settings.attempts_per_configuration,
+                                       seed=seeds.evaluation, field_config=shared.config.field)
+    return _evaluation(shared, profile, method, trial_seed, result)
+
+
+def _evaluation(shared: Shared, profile: str, method: str, trial_seed: int, result: Any) -> dict[str, Any]:
+    """An evaluation as the run directory keeps it."""
     outcomes = [a.outcome for a in result.attempts]
-    return {"profile": profile, "method": method, "trial_seed": trial_seed, "seed": seeds.evaluation,
+    return {"profile": profile, "method": method, "trial_seed": trial_seed, "seed": shared.config.seeds.evaluation,
             "goals": result.goals, "own_goals": result.own_goals, "attempts": len(outcomes), "outcomes": outcomes}
 
 

@@ -33,12 +33,24 @@ _worker_fn: Callable[[Any, Any], Any] | None = None
 _worker_shared: Any = None
 
 
-def _init_worker(fn: Callable[[Any, Any], Any], shared: Any, rayon_threads: int) -> None:
+_ONE_THREAD_EACH = {"RAYON_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1",
+                    "MKL_NUM_THREADS": "1"}
+"""The environment of a Ray task: Ray already spreads tasks over the cores."""
+
+
+def _init_worker(fn: Callable[[Any, Any], Any], shared: Any, threads: int) -> None:
     global _worker_fn, _worker_shared
     # The parent handles Ctrl-C and cancels what is left; workers just stop with it.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    # Workers already split the machine between them; more Rust threads each would oversubscribe it.
-    os.environ.setdefault("RAYON_NUM_THREADS", str(rayon_threads))
+    # Workers already split the machine between them; more threads each would oversubscribe it:
+    # two scikit-learn fits side by side, each with a BLAS thread per core, take 4× as long.
+    os.environ.setdefault("RAYON_NUM_THREADS", str(threads))
+    try:
+        from threadpoolctl import threadpool_limits  # type: ignore[import-untyped, unused-ignore]
+    except ImportError:  # no BLAS-heavy library installed: only Rust's threads to limit
+        pass
+    else:
+        threadpool_limits(limits=threads)  # in force from now on, in this process
     _worker_fn, _worker_shared = fn, shared
 
 
@@ -117,11 +129,11 @@ class TaskRunner:
 
     def _map_pool(self, fn: Callable[[Any, A], R], shared: Any, args: Sequence[A]) -> Iterator[tuple[A, R]]:
         workers = min(self.workers, len(args))
-        rayon_threads = max(1, (os.cpu_count() or 1) // workers)
+        threads = max(1, (os.cpu_count() or 1) // workers)
         context = _worker_context([*self._preload, fn.__module__])
         pool = concurrent.futures.ProcessPoolExecutor(max_workers=workers, mp_context=context,
                                                       initializer=_init_worker,
-                                                      initargs=(fn, shared, rayon_threads))
+                                                      initargs=(fn, shared, threads))
         try:
             futures = [pool.submit(_run_in_worker, arg) for arg in args]
             for future in concurrent.futures.as_completed(futures):
@@ -139,8 +151,8 @@ class TaskRunner:
             else:
                 ray.init(address=self.address, log_to_driver=False, logging_level=logging.WARNING)
             self._started_ray = True
-        # One task per CPU, each on one Rust thread: Ray already spreads tasks over the cores.
-        remote = ray.remote(num_cpus=1, runtime_env={"env_vars": {"RAYON_NUM_THREADS": "1"}})(fn)
+        # One task per CPU, each on one thread: Ray already spreads tasks over the cores.
+        remote = ray.remote(num_cpus=1, runtime_env={"env_vars": _ONE_THREAD_EACH})(fn)
         shared_ref = ray.put(shared)
         pending = {remote.remote(shared_ref, arg): arg for arg in args}
         try:

@@ -58,7 +58,7 @@ def test_the_run_holds_every_file(benchmarked):
 def test_the_summary_follows_its_schema(benchmarked):
     summary = _summary(benchmarked)
     assert (summary["format"], summary["version"]) == ("polymimic.benchmark", 1)
-    assert set(summary["sizes"]) >= {"trials", "attempts_per_configuration", "tuning_budget"}
+    assert set(summary["sizes"]) >= {"trials", "attempts_per_configuration", "tuning_budget", "max_decision_samples"}
     pair = summary["profiles"]["pair"]
     assert set(pair) == {"demonstrators", "trials", "skill_recovery", "skill_by_outcomes", "methods",
                          "lp_over_training"}
@@ -147,6 +147,7 @@ def test_bad_names_are_one_line_usage_errors(argv, message, tiny_toml, tmp_path,
     ('[profiles.wild]\nmembers = [{ controller = "expert", lapse = 1.2 }, { controller = "poor", lapse = 0 }]\n',
      "lapse 1.2"),
     ("[benchmark]\ntrials = 0\n", "trials = 0"),
+    ("[benchmark]\nmax_decision_samples = 0\n", "max_decision_samples = 0"),
 ])
 def test_bad_crowds_and_sizes_are_named(extra, message, tmp_path, capsys):
     path = tmp_path / "bad.toml"

@@ -278,6 +278,28 @@ def test_a_missing_recognizer_or_member_is_refused(mixed_demos):
         baselines.fit("bc_best", mixed_demos)
 
 
+def test_max_samples_widens_the_stride_evenly():
+    from polymimic.baselines.labels import Labelled
+    from polymimic.baselines.training import MAX_DECISION_SAMPLES, decision_samples
+
+    items = [Labelled(f"d{i}", np.full((900, 5), float(i)), np.zeros(900, dtype=np.int64)) for i in range(10)]
+    X, _, _ = decision_samples(items)  # every third frame
+    assert len(X) == 3000
+    X, y, w = decision_samples(items, max_samples=1000)  # every ninth, from every item alike
+    assert len(X) == len(y) == len(w) == 1000
+    assert [int((X[:, 0] == i).sum()) for i in range(10)] == [100] * 10
+    from polymimic.benchmark.config import BenchmarkSettings
+    assert BenchmarkSettings().max_decision_samples == MAX_DECISION_SAMPLES
+
+
+@pytest.mark.parametrize("bad", [0, -5, 2.5, True, "1000"])
+def test_a_bad_sample_cap_is_refused_before_any_work(mixed_demos, bad):
+    with pytest.raises(ValueError, match=r"max_samples must be an integer ≥ 1 .*got"):
+        baselines.fit("bc", mixed_demos, max_samples=bad)
+    with pytest.raises(ValueError, match=r"max_samples must be an integer ≥ 1"):
+        baselines.tune("bc", mixed_demos, budget=1, attempts_per_configuration=1, max_samples=bad)
+
+
 def test_bad_hyperparameters_are_refused_by_name():
     with pytest.raises(ValueError, match="unknown classifier 'svm'"):
         baselines.Hyperparameters("svm", (), "raw", 10, True)

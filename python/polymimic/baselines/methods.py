@@ -24,7 +24,7 @@ from polymimic.baselines.bco import labelled as bco_labelled
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import Labelled, check_demonstrations, check_weights
 from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
-from polymimic.baselines.training import train
+from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples, train
 from polymimic.field import Demonstration
 
 __all__ = ["METHODS", "Prepared", "check_method", "fit", "fit_prepared", "prepare"]
@@ -78,32 +78,38 @@ def prepare(method: str, demonstrations: Sequence[Demonstration], *,
 
 
 def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None = None,
-                 seed: int = 0) -> ClonedPolicy | RandomPolicy:
+                 seed: int = 0, max_samples: int = MAX_DECISION_SAMPLES) -> ClonedPolicy | RandomPolicy:
     """The policy ``prepared.method`` learns with ``hyperparameters`` (default
-    :data:`~polymimic.baselines.hyperparameters.DEFAULT`); ``random`` takes only their step
-    length, and without them holds each primitive for the environment's one second."""
+    :data:`~polymimic.baselines.hyperparameters.DEFAULT`) from at most about ``max_samples``
+    decision samples; ``random`` takes only their step length, and without them holds each
+    primitive for the environment's one second."""
+    check_max_samples(max_samples)
     if prepared.method == "random":
         return RandomPolicy(seed=seed, frames_per_action=30 if hyperparameters is None
                             else hyperparameters.frames_per_action)
     return train(prepared.method, prepared.labelled, hyperparameters=hyperparameters or DEFAULT, seed=seed,
-                 weights=prepared.weights)
+                 weights=prepared.weights, max_samples=max_samples)
 
 
 def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters: Hyperparameters | None = None,
         seed: int = 0, recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
-        member: str | Sequence[str] | None = None,
-        segmenter: Mapping[str, Any] | None = None) -> ClonedPolicy | RandomPolicy:
+        member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
+        max_samples: int = MAX_DECISION_SAMPLES) -> ClonedPolicy | RandomPolicy:
     """Fit baseline ``method`` (one of :data:`METHODS`) on ``demonstrations``.
 
     The same as the method's own ``fit`` (:func:`polymimic.baselines.bc.fit`, …), by name.
     ``hyperparameters`` default to :data:`~polymimic.baselines.hyperparameters.DEFAULT` (for
-    ``random``: one primitive a second, the environment's step).
+    ``random``: one primitive a second, the environment's step). ``max_samples`` caps the
+    decision samples (:data:`~polymimic.baselines.training.MAX_DECISION_SAMPLES`: the sample
+    stride widens evenly to stay under it).
 
     Raises
     ------
     ValueError
-        If ``method`` is unknown, or the method's input is missing or bad (see :func:`prepare`).
+        If ``method`` is unknown, the method's input is missing or bad (see :func:`prepare`), or
+        ``max_samples`` is not an integer ≥ 1.
     """
+    check_max_samples(max_samples)
     prepared = prepare(method, demonstrations, recognizer=recognizer, weights=weights, member=member,
                        segmenter=segmenter)
-    return fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed)
+    return fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed, max_samples=max_samples)

@@ -23,6 +23,7 @@ before fitting, so that a member weighted 0 is exactly a member left out.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -32,7 +33,8 @@ from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import NO_LABEL, Labelled
 from polymimic.baselines.policy import ClonedPolicy
 
-__all__ = ["DEFAULT", "MAX_DECISION_SAMPLES", "SAMPLE_STRIDE_FRAMES", "decision_samples", "train"]
+__all__ = ["DEFAULT", "MAX_DECISION_SAMPLES", "SAMPLE_STRIDE_FRAMES", "check_max_samples", "decision_samples",
+           "train"]
 
 SAMPLE_STRIDE_FRAMES = 3
 """Frames between decision samples (every 0.1 s): consecutive frames differ by tracker noise
@@ -42,24 +44,34 @@ MAX_DECISION_SAMPLES = 30_000
 """The most decision samples one fit takes (before dropping unlabelled frames)."""
 
 
+def check_max_samples(max_samples: Any) -> int:
+    """``max_samples`` if it is an integer ≥ 1, else a ``ValueError`` naming it."""
+    if isinstance(max_samples, bool) or not isinstance(max_samples, (int, np.integer)) or max_samples < 1:
+        raise ValueError(f"max_samples must be an integer ≥ 1 (decision samples a fit takes at most), "
+                         f"got {max_samples!r}")
+    return int(max_samples)
+
+
 def sample_stride(labelled: Sequence[Labelled], *, max_samples: int = MAX_DECISION_SAMPLES) -> int:
     """:data:`SAMPLE_STRIDE_FRAMES`, widened so that ``labelled`` gives at most ``max_samples``.
 
     >>> import numpy as np
     >>> from polymimic.baselines.labels import Labelled
     >>> item = Labelled("d", np.zeros((900, 5)), np.zeros(900, dtype=np.int64))
-    >>> sample_stride([item] * 10), sample_stride([item] * 200)
-    (3, 6)
+    >>> sample_stride([item] * 10), sample_stride([item] * 200), sample_stride([item] * 10, max_samples=1000)
+    (3, 6, 9)
     """
     frames = sum(len(item.labels) for item in labelled)
-    return max(SAMPLE_STRIDE_FRAMES, -(-frames // max_samples))
+    return max(SAMPLE_STRIDE_FRAMES, -(-frames // check_max_samples(max_samples)))
 
 
 def decision_samples(labelled: Sequence[Labelled], *, weights: Mapping[str, float] | None = None,
-                     balanced: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Observations ``(n, 5)``, labels ``(n,)`` and weights ``(n,)`` of every decision sample."""
+                     balanced: bool = False,
+                     max_samples: int = MAX_DECISION_SAMPLES) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Observations ``(n, 5)``, labels ``(n,)`` and weights ``(n,)`` of every decision sample,
+    at most about ``max_samples`` of them."""
     observations, labels, sample_weight = [], [], []
-    stride = sample_stride(labelled)
+    stride = sample_stride(labelled, max_samples=max_samples)
     for item in labelled:
         rows = np.arange(0, len(item.labels), stride)
         rows = rows[item.labels[rows] != NO_LABEL]
@@ -80,15 +92,17 @@ def decision_samples(labelled: Sequence[Labelled], *, weights: Mapping[str, floa
 
 
 def train(method: str, labelled: Sequence[Labelled], *, hyperparameters: Hyperparameters, seed: int = 0,
-          weights: Mapping[str, float] | None = None) -> ClonedPolicy:
-    """A :class:`ClonedPolicy` fitted on the decision samples of ``labelled``.
+          weights: Mapping[str, float] | None = None, max_samples: int = MAX_DECISION_SAMPLES) -> ClonedPolicy:
+    """A :class:`ClonedPolicy` fitted on the decision samples of ``labelled`` (at most about
+    ``max_samples``).
 
     Raises
     ------
     ValueError
-        If no sample has a positive weight (nothing labelled, or every weight 0).
+        If no sample has a positive weight (nothing labelled, or every weight 0), or
+        ``max_samples`` is not an integer ≥ 1.
     """
-    X, y, w = decision_samples(labelled, weights=weights, balanced=hyperparameters.balanced)
+    X, y, w = decision_samples(labelled, weights=weights, balanced=hyperparameters.balanced, max_samples=max_samples)
     if not (w > 0).any():
         raise ValueError(f"{method}: no decision sample to learn from (no labelled frame, or every weight 0)")
     model = make_classifier(hyperparameters.classifier, dict(hyperparameters.params), seed=seed)

@@ -35,6 +35,7 @@ from polymimic.baselines.hyperparameters import Hyperparameters
 from polymimic.baselines.hyperparameters import candidates as draw_candidates
 from polymimic.baselines.methods import check_method, fit_prepared, prepare
 from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
+from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples
 from polymimic.field import Demonstration
 
 __all__ = ["Tuning", "tune", "validation_attempts"]
@@ -77,7 +78,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
          evaluation_seed: int = 0, evaluation_attempts_per_configuration: int = 25, seed: int = 0,
          recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
          member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
-         field_config: dict[str, Any] | str | None = None) -> Tuning:
+         field_config: dict[str, Any] | str | None = None, max_samples: int = MAX_DECISION_SAMPLES) -> Tuning:
     """Choose ``method``'s hyperparameters on validation attempts.
 
     Parameters
@@ -101,14 +102,17 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         What the method needs (see :func:`polymimic.baselines.fit`).
     field_config : dict or str, optional
         The field of the validation attempts.
+    max_samples : int, default :data:`~polymimic.baselines.training.MAX_DECISION_SAMPLES`
+        The most decision samples each fit takes.
 
     Raises
     ------
     ValueError
-        On an unknown method, missing or bad input for it, an empty candidate list, or a
-        validation attempt that is also an evaluation attempt.
+        On an unknown method, missing or bad input for it, an empty candidate list, a
+        ``max_samples`` below 1, or a validation attempt that is also an evaluation attempt.
     """
     method = check_method(method)
+    check_max_samples(max_samples)
     attempts = validation_attempts(attempts_per_configuration, validation_seed=validation_seed)
     evaluation = {s for _, s in attempts_of(
         evaluation_attempts_per_configuration,
@@ -128,7 +132,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
     scores: list[dict[str, Any]] = []
     best: tuple[tuple[int, int], int, ClonedPolicy | RandomPolicy] | None = None
     for index, hyperparameters in enumerate(tried):
-        policy = fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed)
+        policy = fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed, max_samples=max_samples)
         result = play(policy, attempts, field_config=field_config)
         scores.append({"hyperparameters": _chosen(method, hyperparameters), "goals": result.goals,
                        "own_goals": result.own_goals})

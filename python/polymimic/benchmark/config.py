@@ -59,12 +59,16 @@ class BenchmarkSettings:
     validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
     lp_plugin_trials: int = _doc("trials after which bco_lp, refitted with each trial's LPs, is evaluated: the "
                                  "first ones", 5)
+    # polymimic.baselines.training.MAX_DECISION_SAMPLES, not imported: that would import scikit-learn.
+    max_decision_samples: int = _doc("the most decision samples a baseline's fit takes (its sample stride widens "
+                                     "evenly to stay under it)", 30_000)
     refit_baselines: bool = _doc("fit bc, bco, bc_best and random again for every trial's seed (their data are "
                                  "the same in every trial: by default they are fitted and evaluated once)", False)
 
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
-                     "validation_attempts_per_configuration", "tuning_budget", "lp_plugin_trials"):
+                     "validation_attempts_per_configuration", "tuning_budget", "lp_plugin_trials",
+                     "max_decision_samples"):
             _in_range("benchmark", name, getattr(self, name), 1)
         _in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
         for name in ("profiles", "methods"):
@@ -134,15 +138,15 @@ class BenchmarkConfig:
 
     @classmethod
     def quick(cls) -> BenchmarkConfig:
-        """A benchmark of about a minute: 2 trials per profile, 5 demonstrations per member and
-        configuration, 5 attempts per configuration, 3 tuning candidates on 3 attempts each, and
-        the quick reproduction's recogniser."""
+        """A small benchmark: 2 trials per profile, 5 demonstrations per member and configuration,
+        5 attempts per configuration, 3 tuning candidates on 3 attempts each, fits of at most
+        3000 decision samples, and the quick reproduction's recogniser."""
         full = cls()
         return dataclasses.replace(
             full, run=_with_lp_weighting(dataclasses.replace(RunConfig.quick(), experiments=full.run.experiments)),
             benchmark=dataclasses.replace(full.benchmark, trials=2, demonstrations_per_configuration=5,
                                           attempts_per_configuration=5, validation_attempts_per_configuration=3,
-                                          tuning_budget=3))
+                                          tuning_budget=3, max_decision_samples=3000))
 
     def to_dict(self) -> dict[str, Any]:
         run = self.run.to_dict()

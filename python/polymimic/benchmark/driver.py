@@ -97,11 +97,7 @@ class Benchmark:
             save_self_observation(self_observation(settings.train_per_primitive,
                                                    seed=self.config.seeds.self_observation_train,
                                                    config=self.config.field), path)
-        sequences = load_self_observation(path)
-        options = {k: v for k, v in dataclasses.asdict(settings).items()
-                   if k not in ("train_per_primitive", "test_per_primitive")}
-        PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences],
-                                  **options).save(self.run.recognizer_path)
+        settings.train(load_self_observation(path)).save(self.run.recognizer_path)
         return 1
 
     # 2. The crowds.

@@ -139,7 +139,8 @@ def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
     sizes = {"trials": settings.trials, "demonstrations_per_configuration": settings.demonstrations_per_configuration,
              "attempts_per_configuration": settings.attempts_per_configuration,
              "validation_attempts_per_configuration": settings.validation_attempts_per_configuration,
-             "tuning_budget": settings.tuning_budget, "lp_plugin_trials": settings.lp_plugin_trials,
+             "tuning_budget": settings.tuning_budget, "max_decision_samples": settings.max_decision_samples,
+             "lp_plugin_trials": settings.lp_plugin_trials,
              "refit_baselines": settings.refit_baselines, "evaluation_seed": config.seeds.evaluation,
              "validation_seed": settings.validation_seed}
     return {"format": FORMAT, "version": VERSION, "polymimic_version": __version__, "sizes": sizes,

@@ -88,6 +88,7 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
                             evaluation_seed=seeds.evaluation,
                             evaluation_attempts_per_configuration=settings.attempts_per_configuration,
                             seed=seeds.first_trial, field_config=shared.config.field,
+                            max_samples=settings.max_decision_samples,
                             **_baseline_inputs(shared, profile, method, trial_json))
     return {"profile": profile, "method": method, "chosen": tuning.chosen,
             "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
@@ -113,6 +114,7 @@ def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[s
     chosen = baselines.Hyperparameters.from_dict(hyperparameters)
     demos = inputs.demonstrations if method != "random" else []
     fitted = baselines.fit(method, demos, hyperparameters=chosen, seed=trial_seed,
+                           max_samples=settings.max_decision_samples,
                            **(_baseline_inputs(shared, profile, method, trial_json) if method != "random" else {}))
     return _evaluated(shared, profile, method, trial_seed, fitted)
 

@@ -27,10 +27,11 @@ import os
 from collections.abc import Callable, Sequence
 from typing import Any, TypeVar
 
+from polymimic._native import PrimitiveRecognizer
 from polymimic._tables import Path, merged
 from polymimic._toml import loads, write_table
 from polymimic.bodies import THESIS_BODIES, WheeledBody
-from polymimic.field import check_config, default_config
+from polymimic.field import PrimitiveSequence, check_config, default_config
 from polymimic.learning import LearningConfig
 from polymimic.reproduce.roster import EXPERIMENTS, Experiment
 from polymimic.reproduce.roster_config import (
@@ -112,6 +113,13 @@ class RecognizerSettings:
                               "\"egocentric\"")
         if self.emissions not in ("discrete", "gaussian"):
             raise ConfigError(f"[recognizer] emissions = {self.emissions!r} must be \"discrete\" or \"gaussian\"")
+
+    def train(self, sequences: Sequence[PrimitiveSequence]) -> PrimitiveRecognizer:
+        """The recogniser these settings make from self-observed ``sequences`` (the
+        reproduction's and the benchmark's alike)."""
+        options = {k: v for k, v in dataclasses.asdict(self).items()
+                   if k not in ("train_per_primitive", "test_per_primitive")}
+        return PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences], **options)
 
 
 @dataclasses.dataclass(frozen=True)

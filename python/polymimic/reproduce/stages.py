@@ -165,11 +165,7 @@ def _train(ctx: Context) -> int:
     if ctx.finished(ctx.run.recognizer_path, PrimitiveRecognizer.load):
         return 0
     sequences = load_self_observation(ctx.run.require(ctx.run.self_observation_path("train"), "self-observe"))
-    settings = dataclasses.asdict(ctx.config.recognizer)
-    del settings["train_per_primitive"], settings["test_per_primitive"]
-    recognizer = PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences],
-                                           **settings)
-    recognizer.save(ctx.run.recognizer_path)  # atomically
+    ctx.config.recognizer.train(sequences).save(ctx.run.recognizer_path)  # atomically
     return 1
 
 

@@ -330,3 +330,37 @@ def test_ppo_trains_evaluates_and_saves(tmp_path):
 
 def test_attempt_seeds_are_the_natives():
     assert attempts_of(2, seed=1) == [(int(c), int(s)) for c, s in _native.attempt_seeds(2, seed=1)]
+
+
+# The classifier families ----------------------------------------------------------------------
+
+def test_the_small_batch_forest_predicts_as_scikit_learns_forest_to_the_bit():
+    from sklearn.ensemble import RandomForestClassifier
+
+    from polymimic.baselines.classifiers import SmallBatchForest
+
+    rng = np.random.default_rng(0)
+    X = rng.normal(size=(2000, 6))
+    y = (X[:, 0] + rng.normal(size=2000) > 0).astype(int) + 2 * (X[:, 1] > 1)
+    for params in ({"max_features": "sqrt", "min_samples_leaf": 1}, {"max_features": None, "min_samples_leaf": 10}):
+        theirs = RandomForestClassifier(n_estimators=50, random_state=4, n_jobs=1, **params).fit(X, y)
+        ours = SmallBatchForest(n_estimators=50, random_state=4, n_jobs=1, **params).fit(X, y)
+        for rows in (1, 5, 500):
+            query = rng.normal(size=(rows, 6))
+            assert np.array_equal(ours.predict_proba(query), theirs.predict_proba(query))
+            assert np.array_equal(ours.predict(query), theirs.predict(query))
+
+
+def test_an_mlp_stops_on_held_out_samples_unless_a_class_is_too_rare_to_hold_any_out():
+    from polymimic.baselines.classifiers import MLP_HOLD_OUT_MIN_PER_CLASS, fit_weighted, make_classifier
+
+    rng = np.random.default_rng(1)
+    X = rng.normal(size=(3000, 2))
+    y = (X[:, 0] > 0).astype(int)
+    model = fit_weighted(make_classifier("mlp", {"hidden_layer_sizes": (8,)}, seed=0), X, y, np.ones(3000))
+    assert model[-1].early_stopping and model[-1].n_iter_ < 300 and model.score(X, y) > 0.98
+    # One sample of a third class: a stratified hold-out cannot be drawn, so the fit uses them all.
+    y[0] = 2
+    assert MLP_HOLD_OUT_MIN_PER_CLASS > 1
+    model = fit_weighted(make_classifier("mlp", {"hidden_layer_sizes": (8,)}, seed=0), X, y, np.ones(3000))
+    assert not model[-1].early_stopping and set(model.classes_) == {0, 1, 2}

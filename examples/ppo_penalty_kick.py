@@ -26,18 +26,15 @@ from __future__ import annotations
 
 import argparse
 import csv
-import dataclasses
 import io
 import json
 import pathlib
 import tempfile
-import time
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from typing import Any
 
-import polymimic
-from polymimic import baselines
 from polymimic.baselines import ppo
+from polymimic.baselines.ppo import Checkpoint
 from polymimic.plots import plot_demonstration, save_figure
 from polymimic.reproduce.config import SeedSettings
 
@@ -48,86 +45,10 @@ FRAMES_PER_ACTION = 30
 COLUMNS = ("env_steps", "goals", "own_goals", "net_goals", "attempts", "wall_s")
 
 
-@dataclasses.dataclass(frozen=True)
-class Checkpoint:
-    """What the policy scored after learning from ``env_steps`` environment steps."""
-
-    env_steps: int
-    goals: int
-    own_goals: int
-    attempts: int
-    wall_s: float
-    """Seconds since training started, evaluations included."""
-
-    @property
-    def net_goals(self) -> int:
-        return self.goals - self.own_goals
-
-    def row(self) -> dict[str, Any]:
-        return {"env_steps": self.env_steps, "goals": self.goals, "own_goals": self.own_goals,
-                "net_goals": self.net_goals, "attempts": self.attempts, "wall_s": round(self.wall_s, 1)}
-
-
 def require_rl() -> None:
     """Stop with the install line when stable-baselines3 (and so torch) is missing."""
     if not ppo.available():
         raise SystemExit("this example needs stable-baselines3 and torch: pip install \"polymimic[rl]\"")
-
-
-def checkpoint_callback(every: int, evaluate: Callable[[Any], None]) -> Any:
-    """A stable-baselines3 callback calling ``evaluate(model)`` before training, at the first
-    rollout at or past each multiple of ``every`` steps, and after training."""
-    from stable_baselines3.common.callbacks import BaseCallback
-
-    class Checkpoints(BaseCallback):
-        def __init__(self) -> None:
-            super().__init__()
-            self.last: int | None = None
-
-        def _evaluate(self) -> None:
-            self.last = self.model.num_timesteps
-            evaluate(self.model)
-
-        def _on_training_start(self) -> None:
-            self._evaluate()
-
-        def _on_rollout_start(self) -> None:
-            # At a rollout's start the policy has just been updated on every step so far.
-            assert self.last is not None
-            if self.model.num_timesteps >= (self.last // every + 1) * every:
-                self._evaluate()
-
-        def _on_step(self) -> bool:
-            return True
-
-        def _on_training_end(self) -> None:
-            if self.model.num_timesteps != self.last:
-                self._evaluate()
-
-    return Checkpoints()
-
-
-def learn(*, timesteps: int, seed: int, eval_every: int, attempts: int, eval_seed: int,
-          on_checkpoint: Callable[[list[Checkpoint]], None]) -> tuple[ppo.PPOPolicy, list[Checkpoint],
-                                                                         polymimic.Evaluation]:
-    """PPO for ``timesteps`` steps, evaluated on ``attempts`` attempts per configuration at each
-    checkpoint; the final policy, the curve and the final evaluation."""
-    start = time.perf_counter()
-    curve: list[Checkpoint] = []
-    latest: list[polymimic.Evaluation] = []  # only the last one's attempts are kept
-
-    def evaluate(model: Any) -> None:
-        policy = ppo.PPOPolicy(model, feature_set=FEATURE_SET, frames_per_action=FRAMES_PER_ACTION,
-                               total_timesteps=model.num_timesteps)
-        played = baselines.evaluate_policy(policy, attempts_per_configuration=attempts, seed=eval_seed)
-        latest[:] = [played]
-        curve.append(Checkpoint(env_steps=int(model.num_timesteps), goals=played.goals, own_goals=played.own_goals,
-                                attempts=len(played.attempts), wall_s=time.perf_counter() - start))
-        on_checkpoint(curve)
-
-    policy = ppo.fit(total_timesteps=timesteps, frames_per_action=FRAMES_PER_ACTION, feature_set=FEATURE_SET,
-                     seed=seed, callback=checkpoint_callback(eval_every, evaluate))
-    return policy, curve, latest[0]
 
 
 def write_curve(curve: Sequence[Checkpoint], folder: pathlib.Path, settings: dict[str, Any]) -> None:
@@ -135,9 +56,9 @@ def write_curve(curve: Sequence[Checkpoint], folder: pathlib.Path, settings: dic
     text = io.StringIO()
     writer = csv.DictWriter(text, fieldnames=COLUMNS, lineterminator="\n")
     writer.writeheader()
-    writer.writerows(c.row() for c in curve)
+    writer.writerows(c.to_dict() for c in curve)
     (folder / "curve.csv").write_text(text.getvalue())
-    (folder / "curve.json").write_text(json.dumps({"settings": settings, "checkpoints": [c.row() for c in curve]},
+    (folder / "curve.json").write_text(json.dumps({"settings": settings, "checkpoints": [c.to_dict() for c in curve]},
                                                   indent=2) + "\n")
     plot_curve(curve, folder / "curve.png", attempts=curve[-1].attempts, seed=settings["seed"])
 
@@ -198,8 +119,11 @@ def main(argv: Sequence[str] | None = None) -> dict[str, Any]:
 
     print(f"PPO on PenaltyKick-v0 for {args.timesteps:,} env steps, checkpoints every {args.eval_every:,}, "
           f"{2 * args.attempts} evaluation attempts (seed {args.eval_seed})", flush=True)
-    policy, curve, final = learn(timesteps=args.timesteps, seed=args.seed, eval_every=args.eval_every,
-                                 attempts=args.attempts, eval_seed=args.eval_seed, on_checkpoint=report)
+    policy, curve, final = ppo.learning_curve(total_timesteps=args.timesteps, eval_every=args.eval_every,
+                                              attempts_per_configuration=args.attempts,
+                                              evaluation_seed=args.eval_seed, seed=args.seed,
+                                              frames_per_action=FRAMES_PER_ACTION, feature_set=FEATURE_SET,
+                                              on_checkpoint=report)
     policy.save(folder / "ppo.pmp")
     # A goal from configuration 2 if there is one: there the robot starts between the ball and the
     # target goal and has to come round behind the ball.

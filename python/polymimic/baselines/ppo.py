@@ -5,8 +5,11 @@ stated budget of environment steps (``total_timesteps``; one step is one primiti
 ``frames_per_action`` frames). Two environments run side by side, one per field configuration.
 The network sees the ``feature_set`` features of the observation, scaled to about ±1
 (:data:`FEATURE_SCALE`). stable-baselines3 and torch are needed to fit and to load a PPO
-policy (``pip install "polymimic[rl]"``), not to import this module. ``examples/ppo_penalty_kick.py``
-fits one and evaluates it as it learns.
+policy (``pip install "polymimic[rl]"``), not to import this module.
+
+:func:`learning_curve` trains one and plays the imitator's evaluation attempts with it as it
+learns (the same starts and noise at every checkpoint, so the curve shows learning, not the luck
+of the draw); ``polymimic benchmark --methods … ppo`` and ``examples/ppo_penalty_kick.py`` use it.
 
 >>> from polymimic.baselines import ppo
 >>> ppo.available() in (True, False)
@@ -15,9 +18,12 @@ True
 
 from __future__ import annotations
 
+import dataclasses
 import importlib.util
 import io
 import os
+import time
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -25,7 +31,7 @@ import numpy as np
 from polymimic.baselines.features import FEATURE_NAMES, check_observations, features
 from polymimic.baselines.files import write_policy_file
 
-__all__ = ["FEATURE_SCALE", "PPOPolicy", "available", "fit"]
+__all__ = ["FEATURE_SCALE", "Checkpoint", "PPOPolicy", "available", "fit", "learning_curve", "steps_to_reach"]
 
 FEATURE_SCALE = 500.0
 """Millimetre features are divided by this (angles' sines and cosines are left as they are)."""
@@ -34,6 +40,45 @@ FEATURE_SCALE = 500.0
 def available() -> bool:
     """Whether stable-baselines3 (and so torch) is installed."""
     return importlib.util.find_spec("stable_baselines3") is not None
+
+
+def _require() -> None:
+    if not available():
+        raise ModuleNotFoundError("the ppo baseline needs stable-baselines3: pip install \"polymimic[rl]\"")
+
+
+@dataclasses.dataclass(frozen=True)
+class Checkpoint:
+    """What the policy scored on the evaluation attempts after learning from ``env_steps`` steps."""
+
+    env_steps: int
+    goals: int
+    own_goals: int
+    attempts: int
+    wall_s: float
+    """Seconds since training started, evaluations included."""
+
+    @property
+    def net_goals(self) -> int:
+        return self.goals - self.own_goals
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"env_steps": self.env_steps, "goals": self.goals, "own_goals": self.own_goals,
+                "net_goals": self.net_goals, "attempts": self.attempts, "wall_s": round(self.wall_s, 1)}
+
+
+def steps_to_reach(curve: list[Checkpoint] | list[dict[str, Any]], net_goals: float) -> int | None:
+    """The environment steps of the first checkpoint scoring at least ``net_goals``, or None.
+
+    >>> curve = [Checkpoint(0, 0, 3, 50, 0.0), Checkpoint(4096, 30, 0, 50, 9.0), Checkpoint(8192, 41, 0, 50, 18.0)]
+    >>> steps_to_reach(curve, 38.4), steps_to_reach(curve, 45)
+    (8192, None)
+    """
+    for point in curve:
+        row = point.to_dict() if isinstance(point, Checkpoint) else point
+        if row["net_goals"] >= net_goals:
+            return int(row["env_steps"])
+    return None
 
 
 def _scaled(observations: np.ndarray, feature_set: str) -> np.ndarray:
@@ -102,8 +147,7 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
     ValueError
         If ``total_timesteps`` is not a positive integer.
     """
-    if not available():
-        raise ModuleNotFoundError("the ppo baseline needs stable-baselines3: pip install \"polymimic[rl]\"")
+    _require()
     if isinstance(total_timesteps, bool) or not isinstance(total_timesteps, (int, np.integer)) or total_timesteps < 1:
         raise ValueError(f"total_timesteps must be an integer ≥ 1 (environment steps), got {total_timesteps!r}")
     import gymnasium
@@ -131,3 +175,86 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
     model.learn(total_timesteps=int(total_timesteps), callback=callback)
     return PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
                      total_timesteps=total_timesteps)
+
+
+def _checkpoints(every: int, evaluate: Callable[[Any], None]) -> Any:
+    """A stable-baselines3 callback calling ``evaluate(model)`` before training, at the first
+    rollout at or past each multiple of ``every`` steps, and after training."""
+    from stable_baselines3.common.callbacks import BaseCallback  # type: ignore[import-not-found, unused-ignore]
+
+    class Checkpoints(BaseCallback):  # type: ignore[misc, unused-ignore]
+        def __init__(self) -> None:
+            super().__init__()
+            self.last: int | None = None
+
+        def _evaluate(self) -> None:
+            self.last = self.model.num_timesteps
+            evaluate(self.model)
+
+        def _on_training_start(self) -> None:
+            self._evaluate()
+
+        def _on_rollout_start(self) -> None:
+            # At a rollout's start the policy has just been updated on every step so far.
+            assert self.last is not None
+            if self.model.num_timesteps >= (self.last // every + 1) * every:
+                self._evaluate()
+
+        def _on_step(self) -> bool:
+            return True
+
+        def _on_training_end(self) -> None:
+            if self.model.num_timesteps != self.last:
+                self._evaluate()
+
+    return Checkpoints()
+
+
+def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_configuration: int = 25,
+                   evaluation_seed: int = 0, seed: int = 0, frames_per_action: int = 30,
+                   feature_set: str = "goal_relative", field_config: dict[str, Any] | str | None = None,
+                   on_checkpoint: Callable[[list[Checkpoint]], None] | None = None,
+                   **ppo_kwargs: Any) -> tuple[PPOPolicy, list[Checkpoint], Any]:
+    """PPO trained as :func:`fit` trains it, and played on the evaluation attempts of
+    ``evaluation_seed`` (:func:`polymimic.baselines.evaluate_policy`) before training, at the
+    first policy update at or past every multiple of ``eval_every`` steps and at the end.
+
+    PPO updates its policy once every ``n_steps × 2`` steps (4096 by default), so a checkpoint
+    records the steps the policy has learned from. ``on_checkpoint`` sees the curve so far after
+    every checkpoint (to write it down as it grows).
+
+    Returns
+    -------
+    (PPOPolicy, list of Checkpoint, polymimic.Evaluation)
+        The final policy, the curve, and the final policy's evaluation (its attempts).
+
+    Raises
+    ------
+    ModuleNotFoundError
+        If stable-baselines3 is not installed.
+    ValueError
+        If ``total_timesteps`` or ``eval_every`` is not a positive integer.
+    """
+    _require()
+    if isinstance(eval_every, bool) or not isinstance(eval_every, (int, np.integer)) or eval_every < 1:
+        raise ValueError(f"eval_every must be an integer ≥ 1 (environment steps), got {eval_every!r}")
+    from polymimic.baselines.evaluation import evaluate_policy
+
+    start = time.perf_counter()
+    curve: list[Checkpoint] = []
+    latest: list[Any] = []  # only the last evaluation's attempts are kept
+
+    def evaluate(model: Any) -> None:
+        policy = PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
+                           total_timesteps=model.num_timesteps)
+        played = evaluate_policy(policy, attempts_per_configuration=attempts_per_configuration,
+                                 seed=evaluation_seed, field_config=field_config)
+        latest[:] = [played]
+        curve.append(Checkpoint(env_steps=int(model.num_timesteps), goals=played.goals, own_goals=played.own_goals,
+                                attempts=len(played.attempts), wall_s=time.perf_counter() - start))
+        if on_checkpoint is not None:
+            on_checkpoint(curve)
+
+    policy = fit(total_timesteps=total_timesteps, frames_per_action=frames_per_action, feature_set=feature_set,
+                 seed=seed, field_config=field_config, callback=_checkpoints(int(eval_every), evaluate), **ppo_kwargs)
+    return policy, curve, latest[0]

@@ -302,6 +302,8 @@ def _benchmark(args: argparse.Namespace) -> int:
 
     run = BenchmarkDir(args.run_dir if args.run_dir is not None else new_run_path(pathlib.Path("runs") / "benchmark"))
     requested = _requested_benchmark(args)  # read before the run directory is touched
+    if requested is not None:
+        Benchmark.check_extras(requested)
     with run.lock("polymimic benchmark"), TaskRunner(backend=args.backend, workers=args.workers,
                                                      address=args.address) as runner:
         bench = Benchmark(run=run, config=run.open(requested), runner=runner, quiet=args.quiet)

@@ -172,3 +172,59 @@ def test_ray_gives_the_same_bits(benchmarked, tiny_toml, tmp_path):
     for profile in ours:
         assert {m: ours[profile]["methods"][m] for m in methods} == theirs[profile]["methods"]
         assert ours[profile]["skill_recovery"] == theirs[profile]["skill_recovery"]
+
+
+PPO = """
+[benchmark]
+methods = ["polymimic", "random", "ppo"]
+ppo_timesteps = 4096
+ppo_eval_every = 2048
+ppo_runs = 2
+"""
+
+
+def test_ppo_runs_once_for_every_profile_and_reports_the_steps_it_took(tiny_toml, tmp_path, capsys):
+    pytest.importorskip("stable_baselines3")
+    path = tmp_path / "ppo.toml"
+    path.write_text(tiny_toml.read_text().replace("[benchmark]\n", PPO.strip() + "\n", 1))
+    one, two = tmp_path / "one", tmp_path / "two"
+    for run, workers in ((one, "1"), (two, "2")):
+        assert main(["benchmark", "--config", str(path), "--run-dir", str(run), "--quiet", "--workers", workers]) == 0
+    assert (one / "benchmark.json").read_bytes() == (two / "benchmark.json").read_bytes()
+    summary = _summary(one)
+    runs = summary["ppo"]["runs"]
+    assert [r["seed"] for r in runs] == [0, 1]
+    for r in runs:
+        # Before training, then at each policy update (every 2048 × 2 steps here) past 2048, 4096, …
+        assert [c["env_steps"] for c in r["checkpoints"]] == [0, 4096]
+    for profile in summary["profiles"].values():
+        ours, ppo = profile["methods"]["polymimic"]["net_goals"]["mean"], profile["methods"]["ppo"]
+        assert ppo["evaluated"] == 2 and ppo["attempts"] == 4
+        assert ppo["net_goals"]["mean"] == sum(r["checkpoints"][-1]["net_goals"] for r in runs) / 2
+        expected = [next((c["env_steps"] for c in r["checkpoints"] if c["net_goals"] >= ours), None) for r in runs]
+        assert ppo["env_steps_to_polymimic"] == expected
+    text = (one / "benchmark.md").read_text()
+    assert "## Reinforcement learning: ppo" in text and "ppo seed 1" in text
+    assert (one / "plots" / "benchmark_ppo_curve.png").read_bytes()[:4] == b"\x89PNG"
+    # A lost curve and a damaged one are the only things redone, to the same bits.
+    run = BenchmarkDir(one)
+    run.ppo_curve_path(1).unlink()
+    damaged = json.loads(run.ppo_curve_path(0).read_text())
+    damaged["checkpoints"][-1]["net_goals"] += 1
+    run.ppo_curve_path(0).write_text(json.dumps(damaged))
+    assert main(["benchmark", "--run-dir", str(one), "--quiet", "--workers", "1"]) == 0
+    stages = run.manifest()["stages"]
+    assert (stages["ppo"]["made"], stages["evaluate"]["made"], stages["tune"]["made"]) == (2, 0, 0)
+    assert "curve_0.json is damaged" in capsys.readouterr().err
+    assert _summary(one) == summary
+
+
+def test_ppo_without_stable_baselines3_is_refused_before_the_run_starts(tiny_toml, tmp_path, capsys, monkeypatch):
+    from polymimic.baselines import ppo
+
+    monkeypatch.setattr(ppo, "available", lambda: False)
+    run = tmp_path / "r"
+    assert main(["benchmark", "--config", str(tiny_toml), "--run-dir", str(run), "--methods", "polymimic", "ppo"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert 'pip install "polymimic[rl]"' in err and len(err.splitlines()) == 1
+    assert not run.exists()

@@ -30,12 +30,16 @@ from polymimic._toml import write_table, write_value
 from polymimic.crowds import PROFILES, Crowd
 from polymimic.reproduce.config import ConfigError, RunConfig, _checked, _in_range, _table, read_config, toml_tables
 
-__all__ = ["METHODS", "BenchmarkConfig", "BenchmarkSettings"]
+__all__ = ["METHODS", "OPTIONAL_METHODS", "BenchmarkConfig", "BenchmarkSettings"]
 
 METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "bco", "bco_lp", "bc", "bc_best",
            "random")
-"""Every method a benchmark compares (SPEC §6.2). ``ppo``, which learns from the reward rather
-than from demonstrations, runs on its own (:mod:`polymimic.baselines.ppo`)."""
+"""The methods a benchmark compares by default (SPEC §6.2)."""
+
+OPTIONAL_METHODS = ("ppo",)
+"""Methods run only when named: ``ppo`` learns from the reward rather than from demonstrations,
+needs stable-baselines3 (``pip install "polymimic[rl]"``) and takes about 20 minutes of one core
+per million environment steps (:mod:`polymimic.baselines.ppo`)."""
 
 TRIAL_INDEPENDENT = ("bc", "bco", "bc_best", "random")
 """Baselines that learn the same thing in every trial: the crowd's demonstrations, unweighted."""
@@ -62,13 +66,17 @@ class BenchmarkSettings:
     # polymimic.baselines.training.MAX_DECISION_SAMPLES, not imported: that would import scikit-learn.
     max_decision_samples: int = _doc("the most decision samples a baseline's fit takes (its sample stride widens "
                                      "evenly to stay under it)", 30_000)
+    ppo_timesteps: int = _doc("environment steps each ppo run learns from (when methods name ppo)", 1_000_000)
+    ppo_eval_every: int = _doc("environment steps between ppo's checkpoints on the evaluation attempts", 50_000)
+    ppo_runs: int = _doc("ppo training runs, seeds 0, 1, … (ppo learns no crowd's data: its runs serve every "
+                         "profile)", 1)
     refit_baselines: bool = _doc("fit bc, bco, bc_best and random again for every trial's seed (their data are "
                                  "the same in every trial: by default they are fitted and evaluated once)", False)
 
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
                      "validation_attempts_per_configuration", "tuning_budget", "lp_plugin_trials",
-                     "max_decision_samples"):
+                     "max_decision_samples", "ppo_timesteps", "ppo_eval_every", "ppo_runs"):
             _in_range("benchmark", name, getattr(self, name), 1)
         _in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
         for name in ("profiles", "methods"):
@@ -79,9 +87,9 @@ class BenchmarkSettings:
                 raise ConfigError(f"[benchmark] {name} names {next(v for v in value if value.count(v) > 1)!r} twice")
             object.__setattr__(self, name, tuple(value))
         for method in self.methods:
-            if method not in METHODS:
+            if method not in METHODS + OPTIONAL_METHODS:
                 raise ConfigError(f"[benchmark] methods: unknown method {method!r}; expected one of "
-                                  f"{', '.join(METHODS)}")
+                                  f"{', '.join(METHODS + OPTIONAL_METHODS)}")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -140,13 +148,15 @@ class BenchmarkConfig:
     def quick(cls) -> BenchmarkConfig:
         """A small benchmark: 2 trials per profile, 5 demonstrations per member and configuration,
         5 attempts per configuration, 3 tuning candidates on 3 attempts each, fits of at most
-        3000 decision samples, and the quick reproduction's recogniser."""
+        3000 decision samples, ppo (where named) for 8192 steps, and the quick reproduction's
+        recogniser."""
         full = cls()
         return dataclasses.replace(
             full, run=_with_lp_weighting(dataclasses.replace(RunConfig.quick(), experiments=full.run.experiments)),
             benchmark=dataclasses.replace(full.benchmark, trials=2, demonstrations_per_configuration=5,
                                           attempts_per_configuration=5, validation_attempts_per_configuration=3,
-                                          tuning_budget=3, max_decision_samples=3000))
+                                          tuning_budget=3, max_decision_samples=3000, ppo_timesteps=8192,
+                                          ppo_eval_every=4096))
 
     def to_dict(self) -> dict[str, Any]:
         run = self.run.to_dict()

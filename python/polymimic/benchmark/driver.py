@@ -12,7 +12,10 @@ arrives, and a rerun redoes only what is missing or damaged):
    the first trial's LPs); the chosen candidate, fitted as the evaluation after the first
    trial would fit it, is evaluated there and then;
 5. **evaluate** — every method after every trial, on the evaluation attempts;
-6. **report** — ``benchmark.json``, ``benchmark.md``, ``benchmark.html`` and the plots.
+6. **ppo** — where the methods name it, each ppo run, learning from the reward and played on
+   the evaluation attempts at every checkpoint (a run is one piece of work: an interrupted one
+   starts again);
+7. **report** — ``benchmark.json``, ``benchmark.md``, ``benchmark.html`` and the plots.
 """
 
 from __future__ import annotations
@@ -28,9 +31,9 @@ from typing import Any
 
 from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
-from polymimic.benchmark.config import BenchmarkConfig
+from polymimic.benchmark.config import OPTIONAL_METHODS, BenchmarkConfig
 from polymimic.benchmark.figures import draw_figures
-from polymimic.benchmark.files import load_method_evaluation, load_tuning
+from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_tuning
 from polymimic.benchmark.report import benchmark_html, benchmark_markdown
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.summary import gather
@@ -40,6 +43,7 @@ from polymimic.benchmark.tasks import (
     Shared,
     dumps,
     evaluation_task,
+    ppo_task,
     trial_task,
     tuning_task,
 )
@@ -48,6 +52,7 @@ from polymimic.datasets import load_demonstrations, load_self_observation, save_
 from polymimic.field import PRIMITIVES, self_observation
 from polymimic.learning import TrialResult, segmented
 from polymimic.reproduce.backends import TaskRunner
+from polymimic.reproduce.config import ConfigError
 from polymimic.reproduce.progress import progress
 
 __all__ = ["Benchmark"]
@@ -74,8 +79,19 @@ class Benchmark:
         self.say(f"{name}: {made} made in {time.perf_counter() - started:.1f} s")
         return made
 
+    @staticmethod
+    def check_extras(config: BenchmarkConfig) -> None:
+        """A :class:`ConfigError` if ``config`` names a method whose optional extra is missing."""
+        if "ppo" in config.benchmark.methods:
+            from polymimic.baselines import ppo
+
+            if not ppo.available():
+                raise ConfigError("[benchmark] methods: ppo needs stable-baselines3 and torch: "
+                                  "pip install \"polymimic[rl]\"")
+
     def run_all(self) -> float:
         """Every step, in order; the seconds they took."""
+        self.check_extras(self.config)
         started = time.perf_counter()
         self._step("recognise", self.recognise)
         self._step("record", self.record)
@@ -83,6 +99,8 @@ class Benchmark:
         self._step("learn", lambda: self.learn(shared))
         self._step("tune", lambda: self.tune(shared))
         self._step("evaluate", lambda: self.evaluate(shared))
+        if "ppo" in self.config.benchmark.methods:
+            self._step("ppo", lambda: self.ppo(shared))
         self._step("report", self.report)
         return time.perf_counter() - started
 
@@ -150,7 +168,7 @@ class Benchmark:
     # 4. Tuning.
 
     def _baselines(self) -> list[str]:
-        return [m for m in self.config.benchmark.methods if m not in POLYMIMIC_METHODS]
+        return [m for m in self.config.benchmark.methods if m not in POLYMIMIC_METHODS and m not in OPTIONAL_METHODS]
 
     def tune(self, shared: Shared) -> int:
         first = self.config.seeds.first_trial
@@ -179,7 +197,7 @@ class Benchmark:
         jobs: list[tuple[str, str, int, str | None, dict[str, Any] | None]] = []
         methods = self.config.benchmark.methods
         for crowd in self.config.crowds():
-            for method in methods:
+            for method in (m for m in methods if m not in OPTIONAL_METHODS):
                 tuned = None if method in POLYMIMIC_METHODS else load_tuning(
                     self.run.require(self.run.tuning_path(crowd.name, method), "benchmark"))["hyperparameters"]
                 for seed in self.config.evaluated_seeds(method):
@@ -199,19 +217,41 @@ class Benchmark:
                 bar.update(1)
         return len(jobs)
 
+    # 6. ppo, from the reward.
+
+    def _ppo_done(self, seed: int) -> bool:
+        if not self.run.ppo_policy_path(seed).is_file() or not self.run.finished(self.run.ppo_curve_path(seed),
+                                                                                   load_ppo_curve):
+            return False
+        saved, settings = load_ppo_curve(self.run.ppo_curve_path(seed)), self.config.benchmark
+        return (saved["seed"], saved["evaluation_seed"], saved["attempts"], saved["total_timesteps"],
+                saved["eval_every"]) == (seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
+                                         settings.ppo_timesteps, settings.ppo_eval_every)
+
+    def ppo(self, shared: Shared) -> int:
+        jobs = [seed for seed in range(self.config.benchmark.ppo_runs) if not self._ppo_done(seed)]
+        self.run.ppo_curve_path(0).parent.mkdir(parents=True, exist_ok=True)
+        with progress(total=len(jobs), desc="ppo", quiet=self.quiet) as bar:
+            for seed, result in self.runner.map(ppo_task, shared, jobs):
+                result.pop("policy").save(self.run.ppo_policy_path(seed))  # the policy first: the curve marks done
+                atomic_write_text(self.run.ppo_curve_path(seed), dumps(result))
+                bar.update(1)
+        return len(jobs)
+
     def _write_evaluation(self, result: dict[str, Any]) -> None:
         path = self.run.evaluation_path(result["profile"], result["method"], result["trial_seed"])
         atomic_write_text(path, dumps(result))
 
 
-    # 6. The summary and the report.
+    # 7. The summary and the report.
 
     def report(self) -> int:
         summary = gather(self.run, self.config)
         atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
         draw_figures(summary, self.run.plots)
         stages = self.run.manifest()["stages"]
-        seconds = {name: float(stages[name]["seconds"]) for name in ("recognise", "record", "learn", "tune", "evaluate")
+        steps = ("recognise", "record", "learn", "tune", "evaluate", "ppo")
+        seconds = {name: float(stages[name]["seconds"]) for name in steps
                    if isinstance(stages.get(name, {}).get("seconds"), (int, float))}
         markdown = benchmark_markdown(summary, seconds=seconds)
         atomic_write_text(self.run.report_md_path, markdown + "\n")

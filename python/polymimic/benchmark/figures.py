@@ -1,4 +1,5 @@
-"""The benchmark's pictures: net goals by method and profile, LP against lapse, LP over training.
+"""The benchmark's pictures: net goals by method and profile, LP against lapse, LP over training,
+and (where ppo ran) ppo's net goals over its training against polymimic's in every profile.
 
 >>> import pathlib, tempfile
 >>> summary = {"profiles": {"pair": {
@@ -24,7 +25,7 @@ from polymimic.plots import plot_metric_bars, save_figure
 __all__ = ["FIGURES", "draw_figures"]
 
 FIGURES = {"net_goals": "benchmark_net_goals.png", "lp_vs_lapse": "benchmark_lp_vs_lapse.png",
-           "lp_over_training": "benchmark_lp_over_training.png"}
+           "lp_over_training": "benchmark_lp_over_training.png", "ppo_curve": "benchmark_ppo_curve.png"}
 
 
 def _panels(count: int, *, width_in: float = 3.6, height_in: float = 3.0) -> tuple[Any, list[Any]]:
@@ -73,6 +74,33 @@ def _lp_over_training(profiles: Mapping[str, Any], path: pathlib.Path) -> None:
     save_figure(figure, path)
 
 
+def _ppo_curve(summary: Mapping[str, Any], path: pathlib.Path) -> None:
+    from matplotlib.figure import Figure
+    from matplotlib.ticker import StrMethodFormatter
+
+    figure = Figure(figsize=(7.5, 4.2), layout="constrained")
+    ax = figure.add_subplot()
+    for run in summary["ppo"]["runs"]:
+        points = run["checkpoints"]
+        ax.plot([p["env_steps"] for p in points], [p["net_goals"] for p in points], marker="o", markersize=3,
+                label=f"ppo, seed {run['seed']}")
+    styles = iter(("--", ":", "-.", (0, (5, 1)), (0, (3, 1, 1, 1))) * 4)
+    for name, profile in summary["profiles"].items():
+        ours = profile["methods"].get("polymimic")
+        if ours is not None:
+            ax.axhline(ours["net_goals"]["mean"], color="0.35", linestyle=next(styles), linewidth=1.0,
+                       label=f"polymimic, {name}")
+    attempts = next(iter(summary["profiles"].values()))["methods"]["ppo"]["attempts"]
+    ax.set_ylim(-attempts - 1, attempts + 1)
+    ax.xaxis.set_major_formatter(StrMethodFormatter("{x:,.0f}"))
+    ax.set_xlabel("environment steps (one primitive each)")
+    ax.set_ylabel(f"net goals in {attempts} attempts")
+    ax.set_title("ppo learning from the reward, against polymimic learning from each crowd", fontsize="medium")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="lower right", fontsize="x-small")
+    save_figure(figure, path)
+
+
 def draw_figures(summary: Mapping[str, Any], folder: str | os.PathLike[str]) -> list[pathlib.Path]:
     """Draw every figure of ``summary`` (a ``benchmark.json``) into ``folder``; their paths."""
     out = pathlib.Path(folder)
@@ -84,4 +112,8 @@ def draw_figures(summary: Mapping[str, Any], folder: str | os.PathLike[str]) -> 
     save_figure(figure, out / FIGURES["net_goals"])
     _lp_vs_lapse(profiles, out / FIGURES["lp_vs_lapse"])
     _lp_over_training(profiles, out / FIGURES["lp_over_training"])
-    return [out / f for f in FIGURES.values()]
+    drawn = [out / FIGURES[k] for k in ("net_goals", "lp_vs_lapse", "lp_over_training")]
+    if "ppo" in summary:
+        _ppo_curve(summary, out / FIGURES["ppo_curve"])
+        drawn.append(out / FIGURES["ppo_curve"])
+    return drawn

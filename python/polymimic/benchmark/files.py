@@ -13,7 +13,8 @@ from polymimic.baselines import Hyperparameters
 from polymimic.benchmark.config import METHODS
 from polymimic.field import OUTCOMES
 
-__all__ = ["SavedMethodEvaluation", "SavedTuning", "load_method_evaluation", "load_tuning"]
+__all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_method_evaluation", "load_ppo_curve",
+           "load_tuning"]
 
 
 class SavedMethodEvaluation(TypedDict):
@@ -38,6 +39,17 @@ class SavedTuning(TypedDict):
     hyperparameters: dict[str, Any]
     scores: list[dict[str, Any]]
     validation_attempts: int
+
+
+class SavedPPOCurve(TypedDict):
+    """A ppo run: its training seed, budget and every checkpoint on the evaluation attempts."""
+
+    seed: int
+    evaluation_seed: int
+    attempts: int
+    total_timesteps: int
+    eval_every: int
+    checkpoints: list[dict[str, Any]]
 
 
 def _object(path: str | os.PathLike[str], what: str) -> dict[str, Any]:
@@ -104,3 +116,26 @@ def load_tuning(path: str | os.PathLike[str]) -> SavedTuning:
     return SavedTuning(profile=_name(data, "profile", where), method=_name(data, "method", where, METHODS),
                        chosen=data["chosen"], hyperparameters=data["hyperparameters"], scores=scores,
                        validation_attempts=_integer(data, "validation_attempts", where, 1))
+
+
+def load_ppo_curve(path: str | os.PathLike[str]) -> SavedPPOCurve:
+    """A ppo curve file, checked: checkpoints in order of steps, from 0 to the budget or past it,
+    each one's goals and own goals within its attempts and its net goals their difference."""
+    where, data = os.fspath(path), _object(path, "ppo curve")
+    attempts, total = _integer(data, "attempts", where, 1), _integer(data, "total_timesteps", where, 1)
+    checkpoints = data.get("checkpoints")
+    if not isinstance(checkpoints, list) or not checkpoints or not all(isinstance(c, dict) for c in checkpoints):
+        raise ModelFileError(f"{where}: key 'checkpoints' must list objects, got {checkpoints!r}")
+    steps = []
+    for index, point in enumerate(checkpoints):
+        at = f"{where}: checkpoint {index}"
+        steps.append(_integer(point, "env_steps", at, 0))
+        goals, own = _integer(point, "goals", at, 0, attempts), _integer(point, "own_goals", at, 0, attempts)
+        if point.get("attempts") != attempts or point.get("net_goals") != goals - own or goals + own > attempts:
+            raise ModelFileError(f"{at}: its attempts, goals, own goals and net goals disagree ({point!r})")
+    if steps[0] != 0 or steps != sorted(set(steps)) or steps[-1] < total:
+        raise ModelFileError(f"{where}: the checkpoints' env_steps must rise from 0 to at least {total}, got {steps}")
+    return SavedPPOCurve(seed=_integer(data, "seed", where, 0),
+                         evaluation_seed=_integer(data, "evaluation_seed", where, 0), attempts=attempts,
+                         total_timesteps=total, eval_every=_integer(data, "eval_every", where, 1),
+                         checkpoints=checkpoints)

@@ -56,6 +56,29 @@ def _recovery_rows(summary: Mapping[str, Any]) -> list[str]:
     return rows
 
 
+def _ppo_rows(summary: Mapping[str, Any]) -> list[str]:
+    """ppo against polymimic: the steps each run took to first score polymimic's net goals."""
+    ppo = summary["ppo"]
+    budget = ppo["hyperparameters"]["total_timesteps"]
+    runs = [r["seed"] for r in ppo["runs"]]
+    lines = ["## Reinforcement learning: ppo", "",
+             "ppo learns from the reward alone (+1 a goal, −1 an own goal), not from the crowds, with "
+             "stable-baselines3's default hyperparameters, untuned, on one torch thread; "
+             f"at the first policy update past every {ppo['eval_every']:,} environment steps it plays the same "
+             f"evaluation attempts as every method. One step is one primitive, one second of the robot's time. "
+             f"Environment steps each run (training seed) took to first score polymimic's mean net goals in a "
+             f"profile, or that it did not within {budget:,}:", "",
+             "| profile | polymimic's net goals | " + " | ".join(f"ppo seed {s}" for s in runs) + " |",
+             "| --- | --- | " + " | ".join("---" for _ in runs) + " |"]
+    for name, profile in summary["profiles"].items():
+        ours = profile["methods"].get("polymimic")
+        reached = profile["methods"]["ppo"]["env_steps_to_polymimic"]
+        cells = [f"not within {budget:,}" if steps is None else f"{steps:,}" for steps in reached]
+        target = "n/a" if ours is None else f"{ours['net_goals']['mean']:.1f}"
+        lines.append(f"| {name} | {target} | " + " | ".join(cells) + " |")
+    return [*lines, "", f"![ppo's net goals over training](plots/{FIGURES['ppo_curve']})", ""]
+
+
 def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] | None = None) -> str:
     """The report of a ``benchmark.json``; ``seconds`` are the steps' times, from the manifest."""
     sizes = summary["sizes"]
@@ -79,6 +102,8 @@ def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, floa
     lines += ["", "## Net goals", "", f"![Net goals by method and profile](plots/{FIGURES['net_goals']})", ""]
     for name, profile in summary["profiles"].items():
         lines += [f"### {name}", "", *_methods_table(profile), ""]
+    if "ppo" in summary:
+        lines += _ppo_rows(summary)
     lines += ["## Skill recovery", "",
               "How well each estimate ranks the members by true skill (lower ε is better): the members' final LPs, "
               "and the plain estimator that ranks them by the net goals of their own demonstrations.", "",

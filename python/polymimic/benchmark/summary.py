@@ -5,6 +5,10 @@ members' final LPs and true skill, mean and sd over trials, and how many trials 
 the lowest ε on top) beside the same for the plain estimator that ranks members by the net
 goals of their own demonstrations; every method's goals, own goals and net goals after every
 trial. ``None`` stands where a number does not exist (ρ where every member has the same ε).
+
+``ppo``, where it ran, learns no crowd's data: its final checkpoints stand in every profile's
+methods, with the environment steps each run took to first score ``polymimic``'s mean net goals
+there, and its curves once, under ``ppo``.
 """
 
 from __future__ import annotations
@@ -15,10 +19,11 @@ from typing import Any, TypedDict
 import numpy as np
 
 from polymimic._native import __version__
+from polymimic.baselines.ppo import steps_to_reach
 from polymimic.benchmark.config import BenchmarkConfig
-from polymimic.benchmark.files import load_method_evaluation, load_tuning
+from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_tuning
 from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.benchmark.tasks import POLYMIMIC_METHODS, final_lps
+from polymimic.benchmark.tasks import POLYMIMIC_METHODS, final_lps, ppo_hyperparameters
 from polymimic.crowds import Crowd
 from polymimic.datasets import load_demonstrations
 from polymimic.learning import TrialResult
@@ -26,7 +31,8 @@ from polymimic.ranking import kendall, spearman
 from polymimic.reproduce.results import mean_sd
 from polymimic.reproduce.schema import MeanSd
 
-__all__ = ["FORMAT", "VERSION", "MemberSummary", "MethodSummary", "ProfileSummary", "SkillRecovery", "gather"]
+__all__ = ["FORMAT", "VERSION", "MemberSummary", "MethodSummary", "PPOSummary", "ProfileSummary", "SkillRecovery",
+           "gather"]
 
 FORMAT, VERSION = "polymimic.benchmark", 1
 LP_POINTS = 200
@@ -59,6 +65,12 @@ class MethodSummary(TypedDict):
     attempts: int
     evaluated: int
     hyperparameters: dict[str, Any]
+
+
+class PPOSummary(MethodSummary):
+    env_steps_to_polymimic: list[int | None]
+    """Per run, the steps of its first checkpoint with at least polymimic's mean net goals in
+    this profile (None: not within its budget)."""
 
 
 class ProfileSummary(TypedDict):
@@ -112,6 +124,22 @@ def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, me
                          hyperparameters=chosen)
 
 
+def _ppo_curves(run: BenchmarkDir, config: BenchmarkConfig) -> list[dict[str, Any]]:
+    return [dict(load_ppo_curve(run.require(run.ppo_curve_path(seed), "benchmark")))
+            for seed in range(config.benchmark.ppo_runs)]
+
+
+def _ppo_summary(curves: Sequence[Mapping[str, Any]], config: BenchmarkConfig, target: float | None) -> PPOSummary:
+    """ppo's final checkpoints over its runs, and the steps each took to reach ``target``."""
+    finals = [c["checkpoints"][-1] for c in curves]
+    return PPOSummary(goals=mean_sd(f["goals"] for f in finals), own_goals=mean_sd(f["own_goals"] for f in finals),
+                      net_goals=mean_sd(f["net_goals"] for f in finals),
+                      attempts=2 * config.benchmark.attempts_per_configuration, evaluated=len(curves),
+                      hyperparameters=ppo_hyperparameters(config),
+                      env_steps_to_polymimic=[None if target is None else steps_to_reach(c["checkpoints"], target)
+                                              for c in curves])
+
+
 def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd) -> ProfileSummary:
     demos = load_demonstrations(run.require(run.crowd_path(crowd.name), "benchmark"))
     trials = [TrialResult.load(run.require(run.trial_path(crowd.name, s), "benchmark")) for s in config.trial_seeds()]
@@ -125,11 +153,14 @@ def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd) -> Profil
         members[member.name] = MemberSummary(controller=member.controller, body=member.body, lapse=member.lapse,
                                              goals=goals, own_goals=own_goals, attempts=len(own),
                                              final_lp=mean_sd(lp[member.name] for lp in lps))
-    methods = config.benchmark.methods
+    methods: dict[str, MethodSummary] = {m: _method_summary(run, config, crowd.name, m)
+                                         for m in config.benchmark.methods if m != "ppo"}
+    if "ppo" in config.benchmark.methods:
+        methods["ppo"] = _ppo_summary(_ppo_curves(run, config), config,
+                                      methods["polymimic"]["net_goals"]["mean"] if "polymimic" in methods else None)
     return ProfileSummary(
         demonstrators=members, trials=len(trials), skill_recovery=recovery(lps, crowd),
-        skill_by_outcomes=recovery([net] * len(trials), crowd),
-        methods={m: _method_summary(run, config, crowd.name, m) for m in methods},
+        skill_by_outcomes=recovery([net] * len(trials), crowd), methods=methods,
         lp_over_training={name: _downsampled(model.lp_history) for name, model in trials[0].models.items()})
 
 
@@ -143,5 +174,10 @@ def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
              "lp_plugin_trials": settings.lp_plugin_trials,
              "refit_baselines": settings.refit_baselines, "evaluation_seed": config.seeds.evaluation,
              "validation_seed": settings.validation_seed}
-    return {"format": FORMAT, "version": VERSION, "polymimic_version": __version__, "sizes": sizes,
-            "profiles": {crowd.name: _profile(run, config, crowd) for crowd in config.crowds()}}
+    summary = {"format": FORMAT, "version": VERSION, "polymimic_version": __version__, "sizes": sizes,
+               "profiles": {crowd.name: _profile(run, config, crowd) for crowd in config.crowds()}}
+    if "ppo" in settings.methods:
+        runs = [{"seed": c["seed"], "checkpoints": c["checkpoints"]} for c in _ppo_curves(run, config)]
+        summary["ppo"] = {"hyperparameters": ppo_hyperparameters(config), "eval_every": settings.ppo_eval_every,
+                          "runs": runs}
+    return summary

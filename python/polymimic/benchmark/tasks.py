@@ -17,8 +17,8 @@ from polymimic.crowds import Crowd
 from polymimic.field import Demonstration
 from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate, run_trial
 
-__all__ = ["POLYMIMIC_METHODS", "ProfileInputs", "Shared", "evaluation_task", "final_lps", "trial_task",
-           "tuning_task"]
+__all__ = ["POLYMIMIC_METHODS", "ProfileInputs", "Shared", "evaluation_task", "final_lps", "ppo_hyperparameters",
+           "ppo_task", "trial_task", "tuning_task"]
 
 POLYMIMIC_METHODS = {"polymimic": ("improved", False), "polymimic_thesis_control": ("thesis", False),
                      "polymimic_uniform_lp": ("improved", True)}
@@ -133,6 +133,38 @@ def _evaluation(shared: Shared, profile: str, method: str, trial_seed: int, resu
     outcomes = [a.outcome for a in result.attempts]
     return {"profile": profile, "method": method, "trial_seed": trial_seed, "seed": shared.config.seeds.evaluation,
             "goals": result.goals, "own_goals": result.own_goals, "attempts": len(outcomes), "outcomes": outcomes}
+
+
+PPO_FEATURE_SET, PPO_FRAMES_PER_ACTION = "goal_relative", 30
+"""What ``ppo`` sees and how long it holds a primitive: the goal-relative features and the
+imitator's one-second primitives (:func:`polymimic.baselines.ppo.fit`'s defaults)."""
+
+
+def ppo_hyperparameters(config: BenchmarkConfig) -> dict[str, Any]:
+    """What a ppo run of ``config`` is, as the report prints it."""
+    return {"total_timesteps": config.benchmark.ppo_timesteps, "feature_set": PPO_FEATURE_SET,
+            "frames_per_action": PPO_FRAMES_PER_ACTION, "environments": "one per field configuration",
+            "tuned": "no: stable-baselines3's defaults", "torch_threads": 1}
+
+
+def ppo_task(shared: Shared, seed: int) -> dict[str, Any]:
+    """A ppo run of training seed ``seed``: its checkpoints on the evaluation attempts, as the
+    run directory keeps them (without their wall-clock times, so the same seed gives the same
+    bytes), and (``"policy"``) the final policy. Torch runs on one thread, so the curve is the
+    same on any machine's number of cores."""
+    import torch  # type: ignore[import-not-found, unused-ignore]
+
+    torch.set_num_threads(1)
+    settings = shared.config.benchmark
+    policy, curve, _ = baselines.ppo.learning_curve(
+        total_timesteps=settings.ppo_timesteps, eval_every=settings.ppo_eval_every,
+        attempts_per_configuration=settings.attempts_per_configuration, evaluation_seed=shared.config.seeds.evaluation,
+        seed=seed, frames_per_action=PPO_FRAMES_PER_ACTION, feature_set=PPO_FEATURE_SET,
+        field_config=shared.config.field)
+    return {"seed": seed, "evaluation_seed": shared.config.seeds.evaluation,
+            "attempts": 2 * settings.attempts_per_configuration, "total_timesteps": settings.ppo_timesteps,
+            "eval_every": settings.ppo_eval_every,
+            "checkpoints": [{k: v for k, v in c.to_dict().items() if k != "wall_s"} for c in curve], "policy": policy}
 
 
 def dumps(data: dict[str, Any]) -> str:

@@ -318,9 +318,15 @@ def test_ppo_imports_without_stable_baselines3():
             baselines.ppo.fit(total_timesteps=10)
 
 
-def test_ppo_trains_evaluates_and_saves(tmp_path):
+def test_ppo_trains_evaluates_and_saves_and_leaves_no_log_folder_behind(tmp_path, monkeypatch):
     pytest.importorskip("stable_baselines3")
+    import tempfile
+
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(scratch))
     policy = baselines.ppo.fit(total_timesteps=128, n_steps=32, batch_size=32, n_epochs=1, seed=0)
+    assert not list(scratch.glob("SB3-*"))  # stable-baselines3's own quiet logger makes one
     result = baselines.evaluate_policy(policy, attempts_per_configuration=1, seed=0)
     assert len(result.attempts) == 2
     policy.save(tmp_path / "ppo.pmp")

@@ -152,6 +152,7 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
         raise ValueError(f"total_timesteps must be an integer ≥ 1 (environment steps), got {total_timesteps!r}")
     import gymnasium
     from stable_baselines3 import PPO  # type: ignore[import-not-found, unused-ignore]
+    from stable_baselines3.common.logger import Logger  # type: ignore[import-not-found, unused-ignore]
     from stable_baselines3.common.vec_env import DummyVecEnv  # type: ignore[import-not-found, unused-ignore]
 
     from polymimic.env import PenaltyKickEnv
@@ -172,6 +173,8 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
     env = DummyVecEnv([make(1), make(2)])
     env.seed(seed)
     model = PPO("MlpPolicy", env, seed=seed, verbose=0, device="cpu", **ppo_kwargs)
+    # Its own quiet logger would make an empty SB3-<time> folder in the temporary directory.
+    model.set_logger(Logger(folder=None, output_formats=[]))
     model.learn(total_timesteps=int(total_timesteps), callback=callback)
     return PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
                      total_timesteps=total_timesteps)

@@ -73,7 +73,8 @@ def _ppo_rows(summary: Mapping[str, Any]) -> list[str]:
     for name, profile in summary["profiles"].items():
         ours = profile["methods"].get("polymimic")
         reached = profile["methods"]["ppo"]["env_steps_to_polymimic"]
-        cells = [f"not within {budget:,}" if steps is None else f"{steps:,}" for steps in reached]
+        cells = ["n/a" if ours is None else f"not within {budget:,}" if steps is None else f"{steps:,}"
+                 for steps in reached]
         target = "n/a" if ours is None else f"{ours['net_goals']['mean']:.1f}"
         lines.append(f"| {name} | {target} | " + " | ".join(cells) + " |")
     return [*lines, "", f"![ppo's net goals over training](plots/{FIGURES['ppo_curve']})", ""]

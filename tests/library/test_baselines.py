@@ -355,18 +355,3 @@ def test_the_small_batch_forest_predicts_as_scikit_learns_forest_to_the_bit():
             query = rng.normal(size=(rows, 6))
             assert np.array_equal(ours.predict_proba(query), theirs.predict_proba(query))
             assert np.array_equal(ours.predict(query), theirs.predict(query))
-
-
-def test_an_mlp_stops_on_held_out_samples_unless_a_class_is_too_rare_to_hold_any_out():
-    from polymimic.baselines.classifiers import MLP_HOLD_OUT_MIN_PER_CLASS, fit_weighted, make_classifier
-
-    rng = np.random.default_rng(1)
-    X = rng.normal(size=(3000, 2))
-    y = (X[:, 0] > 0).astype(int)
-    model = fit_weighted(make_classifier("mlp", {"hidden_layer_sizes": (8,)}, seed=0), X, y, np.ones(3000))
-    assert model[-1].early_stopping and model[-1].n_iter_ < 300 and model.score(X, y) > 0.98
-    # One sample of a third class: a stratified hold-out cannot be drawn, so the fit uses them all.
-    y[0] = 2
-    assert MLP_HOLD_OUT_MIN_PER_CLASS > 1
-    model = fit_weighted(make_classifier("mlp", {"hidden_layer_sizes": (8,)}, seed=0), X, y, np.ones(3000))
-    assert not model[-1].early_stopping and set(model.classes_) == {0, 1, 2}

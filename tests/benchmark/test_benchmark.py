@@ -228,3 +228,38 @@ def test_ppo_without_stable_baselines3_is_refused_before_the_run_starts(tiny_tom
     err = capsys.readouterr().err.strip()
     assert 'pip install "polymimic[rl]"' in err and len(err.splitlines()) == 1
     assert not run.exists()
+
+
+TWINS = """
+[recognizer]
+train_per_primitive = 40
+codebook_size = 16
+[benchmark]
+profiles = ["twins"]
+methods = ["polymimic", "bc", "bc_best"]
+trials = 1
+demonstrations_per_configuration = 2
+attempts_per_configuration = 2
+validation_attempts_per_configuration = 1
+tuning_budget = 2
+[profiles.twins]
+members = [{ controller = "expert", lapse = 0.2, count = 2 }]
+"""
+
+
+def test_bc_best_is_bc_where_every_member_shares_the_lowest_lapse_and_is_copied_not_rerun(tmp_path, monkeypatch):
+    from polymimic.benchmark import driver
+    from polymimic.benchmark.tasks import tuning_task
+
+    path = tmp_path / "twins.toml"
+    path.write_text(TWINS)
+    tuned = []
+    monkeypatch.setattr(driver, "tuning_task", lambda shared, job: tuned.append(job[1]) or tuning_task(shared, job))
+    copied, fitted = tmp_path / "copied", tmp_path / "fitted"
+    assert main(["benchmark", "--config", str(path), "--run-dir", str(copied), "--quiet", "--workers", "1"]) == 0
+    assert tuned == ["bc"]
+    monkeypatch.setattr(driver.Benchmark, "_bc_best_is_bc", lambda self, crowd: False)
+    assert main(["benchmark", "--config", str(path), "--run-dir", str(fitted), "--quiet", "--workers", "1"]) == 0
+    assert tuned == ["bc", "bc", "bc_best"]
+    assert (copied / "benchmark.json").read_bytes() == (fitted / "benchmark.json").read_bytes()
+    assert json.loads(BenchmarkDir(copied).tuning_path("twins", "bc_best").read_text())["method"] == "bc_best"

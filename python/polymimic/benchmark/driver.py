@@ -170,18 +170,40 @@ class Benchmark:
     def _baselines(self) -> list[str]:
         return [m for m in self.config.benchmark.methods if m not in POLYMIMIC_METHODS and m not in OPTIONAL_METHODS]
 
+    def _bc_best_is_bc(self, crowd: Crowd) -> bool:
+        """Whether ``bc_best`` learns just what ``bc`` does in ``crowd`` (every member shares the
+        lowest ε): the same demonstrations, candidates and seeds make the same fits, so its tuning
+        is ``bc``'s, copied rather than run again."""
+        return set(crowd.best()) == set(crowd.names) and {"bc", "bc_best"} <= set(self._baselines())
+
     def tune(self, shared: Shared) -> int:
         first = self.config.seeds.first_trial
+        copies = [crowd.name for crowd in self.config.crowds() if self._bc_best_is_bc(crowd)
+                  and not self.run.finished(self.run.tuning_path(crowd.name, "bc_best"), load_tuning)]
         jobs = [(crowd.name, method, self._trial_json(crowd.name, first) if method == "bco_lp" else None)
                 for crowd in self.config.crowds() for method in self._baselines()
-                if not self.run.finished(self.run.tuning_path(crowd.name, method), load_tuning)]
-        with progress(total=len(jobs), desc="tune", quiet=self.quiet) as bar:
+                if not (method == "bc_best" and crowd.name in copies)
+                and not self.run.finished(self.run.tuning_path(crowd.name, method), load_tuning)]
+        with progress(total=len(jobs) + len(copies), desc="tune", quiet=self.quiet) as bar:
             for _, result in self.runner.map(tuning_task, shared, jobs):
-                # The evaluation first: a tuning on disk is done, and a lost evaluation is redone.
-                self._write_evaluation(result.pop("evaluation"))
-                atomic_write_text(self.run.tuning_path(result["profile"], result["method"]), dumps(result))
+                self._write_tuning(result)
                 bar.update(1)
-        return len(jobs)
+            for profile in copies:
+                tuning = load_tuning(self.run.require(self.run.tuning_path(profile, "bc"), "benchmark"))
+                evaluated = self.run.evaluation_path(profile, "bc", first)
+                # Where bc's evaluation was lost, the evaluate stage makes bc_best's too.
+                evaluation = ({**load_method_evaluation(evaluated), "method": "bc_best"}
+                              if self.run.finished(evaluated, load_method_evaluation) else None)
+                self._write_tuning({**tuning, "method": "bc_best", "evaluation": evaluation})
+                bar.update(1)
+        return len(jobs) + len(copies)
+
+    def _write_tuning(self, result: dict[str, Any]) -> None:
+        # The evaluation first: a tuning on disk is done, and a lost evaluation is redone.
+        evaluation = result.pop("evaluation")
+        if evaluation is not None:
+            self._write_evaluation(evaluation)
+        atomic_write_text(self.run.tuning_path(result["profile"], result["method"]), dumps(result))
 
     # 5. Evaluation.
 

@@ -65,7 +65,7 @@ class BenchmarkSettings:
                                  "first ones", 5)
     # polymimic.baselines.training.MAX_DECISION_SAMPLES, not imported: that would import scikit-learn.
     max_decision_samples: int = _doc("the most decision samples a baseline's fit takes (its sample stride widens "
-                                     "evenly to stay under it)", 30_000)
+                                     "evenly to stay under it)", 20_000)
     ppo_timesteps: int = _doc("environment steps each ppo run learns from (when methods name ppo)", 1_000_000)
     ppo_eval_every: int = _doc("environment steps between ppo's checkpoints on the evaluation attempts", 50_000)
     ppo_runs: int = _doc("ppo training runs, seeds 0, 1, … (ppo learns no crowd's data: its runs serve every "

@@ -57,6 +57,11 @@ from polymimic.reproduce.progress import progress
 
 __all__ = ["Benchmark"]
 
+_LONGEST_FIRST = {"bco_lp": 0, "bco": 0, "bc": 0, "bc_best": 1, "random": 2}
+"""The order the tasks of a stage start in, by method: those that fit on a whole crowd first,
+then bc_best (one member's data), then random (no fit), so that no worker is left idle while
+the other finishes a long fit begun last."""
+
 
 @dataclasses.dataclass
 class Benchmark:
@@ -184,6 +189,7 @@ class Benchmark:
                 for crowd in self.config.crowds() for method in self._baselines()
                 if not (method == "bc_best" and crowd.name in copies)
                 and not self.run.finished(self.run.tuning_path(crowd.name, method), load_tuning)]
+        jobs.sort(key=lambda job: _LONGEST_FIRST.get(job[1], 0))
         with progress(total=len(jobs) + len(copies), desc="tune", quiet=self.quiet) as bar:
             for _, result in self.runner.map(tuning_task, shared, jobs):
                 self._write_tuning(result)
@@ -232,7 +238,8 @@ class Benchmark:
         return jobs
 
     def evaluate(self, shared: Shared) -> int:
-        jobs = self.evaluation_jobs()
+        # bco_lp's refits first: the other evaluations are short and fill in around them.
+        jobs = sorted(self.evaluation_jobs(), key=lambda job: job[1] != "bco_lp")
         with progress(total=len(jobs), desc="evaluate", quiet=self.quiet) as bar:
             for _, result in self.runner.map(evaluation_task, shared, jobs):
                 self._write_evaluation(result)

@@ -38,8 +38,8 @@ METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "bco
 
 OPTIONAL_METHODS = ("ppo",)
 """Methods run only when named: ``ppo`` learns from the reward rather than from demonstrations,
-needs stable-baselines3 (``pip install "polymimic[rl]"``) and takes about 20 minutes of one core
-per million environment steps (:mod:`polymimic.baselines.ppo`)."""
+needs stable-baselines3 (``pip install "polymimic[rl]"``) and took 13 minutes of one core per
+million environment steps in the README's run (:mod:`polymimic.baselines.ppo`)."""
 
 TRIAL_INDEPENDENT = ("bc", "bco", "bc_best", "random")
 """Baselines that learn the same thing in every trial: the crowd's demonstrations, unweighted."""

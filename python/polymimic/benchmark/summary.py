@@ -140,7 +140,8 @@ def _ppo_summary(curves: Sequence[Mapping[str, Any]], config: BenchmarkConfig, t
                                               for c in curves])
 
 
-def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd) -> ProfileSummary:
+def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd,
+             ppo_curves: Sequence[Mapping[str, Any]] | None) -> ProfileSummary:
     demos = load_demonstrations(run.require(run.crowd_path(crowd.name), "benchmark"))
     trials = [TrialResult.load(run.require(run.trial_path(crowd.name, s), "benchmark")) for s in config.trial_seeds()]
     lps = [final_lps(t) for t in trials]
@@ -155,8 +156,8 @@ def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd) -> Profil
                                              final_lp=mean_sd(lp[member.name] for lp in lps))
     methods: dict[str, MethodSummary] = {m: _method_summary(run, config, crowd.name, m)
                                          for m in config.benchmark.methods if m != "ppo"}
-    if "ppo" in config.benchmark.methods:
-        methods["ppo"] = _ppo_summary(_ppo_curves(run, config), config,
+    if ppo_curves is not None:
+        methods["ppo"] = _ppo_summary(ppo_curves, config,
                                       methods["polymimic"]["net_goals"]["mean"] if "polymimic" in methods else None)
     return ProfileSummary(
         demonstrators=members, trials=len(trials), skill_recovery=recovery(lps, crowd),
@@ -174,10 +175,12 @@ def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
              "lp_plugin_trials": settings.lp_plugin_trials,
              "refit_baselines": settings.refit_baselines, "evaluation_seed": config.seeds.evaluation,
              "validation_seed": settings.validation_seed}
+    # ppo's runs serve every profile: read once.
+    curves = _ppo_curves(run, config) if "ppo" in settings.methods else None
     summary = {"format": FORMAT, "version": VERSION, "polymimic_version": __version__, "sizes": sizes,
-               "profiles": {crowd.name: _profile(run, config, crowd) for crowd in config.crowds()}}
-    if "ppo" in settings.methods:
-        runs = [{"seed": c["seed"], "checkpoints": c["checkpoints"]} for c in _ppo_curves(run, config)]
+               "profiles": {crowd.name: _profile(run, config, crowd, curves) for crowd in config.crowds()}}
+    if curves is not None:
+        runs = [{"seed": c["seed"], "checkpoints": c["checkpoints"]} for c in curves]
         summary["ppo"] = {"hyperparameters": ppo_hyperparameters(config), "eval_every": settings.ppo_eval_every,
                           "runs": runs}
     return summary

@@ -205,3 +205,23 @@ def test_any_config_is_refused_by_name_or_read_whole():
         assert RunConfig.from_toml(config.to_toml()) == config
 
     check()
+
+
+def test_loaded_reads_a_whole_output_once_and_removes_a_damaged_one(tmp_path):
+    run = RunDir(tmp_path / "run")
+    whole, damaged = tmp_path / "whole.json", tmp_path / "damaged.json"
+    whole.write_text('{"attempts": 50}')
+    damaged.write_text('{"attempts": 5')
+    reads: list[str] = []
+
+    def load(path):
+        reads.append(path.name)
+        return json.loads(path.read_text())  # json.JSONDecodeError is a ValueError
+
+    warnings: list[str] = []
+    assert run.loaded(whole, load, say=warnings.append) == {"attempts": 50}
+    assert reads == ["whole.json"]
+    assert run.loaded(tmp_path / "missing.json", load) is None
+    assert run.loaded(damaged, load, say=warnings.append) is None
+    assert not damaged.exists() and len(warnings) == 1 and "damaged.json is damaged" in warnings[0]
+    assert run.finished(whole, load) and not run.finished(damaged, load)

@@ -214,12 +214,9 @@ class Benchmark:
     # 5. Evaluation.
 
     def _evaluation_done(self, profile: str, method: str, seed: int) -> bool:
-        path = self.run.evaluation_path(profile, method, seed)
-        if not self.run.finished(path, load_method_evaluation):
-            return False
-        saved = load_method_evaluation(path)
-        return (saved["attempts"] == 2 * self.config.benchmark.attempts_per_configuration
-                and saved["seed"] == self.config.seeds.evaluation)
+        saved = self.run.loaded(self.run.evaluation_path(profile, method, seed), load_method_evaluation)
+        return saved is not None and (saved["attempts"] == 2 * self.config.benchmark.attempts_per_configuration
+                                      and saved["seed"] == self.config.seeds.evaluation)
 
     def evaluation_jobs(self) -> list[tuple[str, str, int, str | None, dict[str, Any] | None]]:
         jobs: list[tuple[str, str, int, str | None, dict[str, Any] | None]] = []
@@ -249,10 +246,11 @@ class Benchmark:
     # 6. ppo, from the reward.
 
     def _ppo_done(self, seed: int) -> bool:
-        if not self.run.ppo_policy_path(seed).is_file() or not self.run.finished(self.run.ppo_curve_path(seed),
-                                                                                   load_ppo_curve):
+        if not self.run.ppo_policy_path(seed).is_file():
             return False
-        saved, settings = load_ppo_curve(self.run.ppo_curve_path(seed)), self.config.benchmark
+        saved, settings = self.run.loaded(self.run.ppo_curve_path(seed), load_ppo_curve), self.config.benchmark
+        if saved is None:
+            return False
         return (saved["seed"], saved["evaluation_seed"], saved["attempts"], saved["total_timesteps"],
                 saved["eval_every"]) == (seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
                                          settings.ppo_timesteps, settings.ppo_eval_every)

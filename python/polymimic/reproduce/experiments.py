@@ -228,10 +228,8 @@ def _evaluation_done(run: RunDir, path: pathlib.Path, control: str, attempts: in
     """Whether ``path`` holds this evaluation: whole, driven by ``control``, ``attempts`` long.
     A damaged file is removed (with a warning) and made again; a file another control drove or
     of another size is simply redone."""
-    if not run.finished(path, load_evaluation):
-        return False
-    saved = load_evaluation(path)
-    return saved["control"] == control and saved["attempts"] == attempts
+    saved = run.loaded(path, load_evaluation)
+    return saved is not None and saved["control"] == control and saved["attempts"] == attempts
 
 
 def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,

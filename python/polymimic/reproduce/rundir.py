@@ -140,15 +140,25 @@ class RunHouse(Generic[ConfigT]):
         """Whether a stage's output at ``path`` is there and whole: ``load`` reads it without
         error. A damaged one is reported through ``say`` (a warning on stderr, shown even in a
         quiet run), removed, and counts as not finished, so that the stage makes it again."""
+        return self._read_whole(path, load, say)[0]
+
+    def loaded(self, path: pathlib.Path, load: Callable[[pathlib.Path], Loaded], *,
+               say: Callable[[str], None] | None = None) -> Loaded | None:
+        """What ``load`` reads from a finished output at ``path`` (see :meth:`finished`), or
+        ``None`` where it is not finished: one read where a caller also looks inside."""
+        return self._read_whole(path, load, say)[1]
+
+    def _read_whole(self, path: pathlib.Path, load: Callable[[pathlib.Path], Loaded],
+                    say: Callable[[str], None] | None) -> tuple[bool, Loaded | None]:
         if not path.exists():
-            return False
+            return False, None
         try:
-            load(path)
+            value = load(path)
         except (ModelFileError, RunError, ValueError, OSError) as error:
             (say or _warn)(f"{path} is damaged ({error}): making it again")
             path.unlink(missing_ok=True)
-            return False
-        return True
+            return False, None
+        return True, value
 
     # Exclusive use, and what an interrupted writer left behind.
 

@@ -198,8 +198,8 @@ class Benchmark:
                 tuning = load_tuning(self.run.require(self.run.tuning_path(profile, "bc"), "benchmark"))
                 evaluated = self.run.evaluation_path(profile, "bc", first)
                 # Where bc's evaluation was lost, the evaluate stage makes bc_best's too.
-                evaluation = ({**load_method_evaluation(evaluated), "method": "bc_best"}
-                              if self.run.finished(evaluated, load_method_evaluation) else None)
+                saved = self.run.loaded(evaluated, load_method_evaluation)
+                evaluation = None if saved is None else {**saved, "method": "bc_best"}
                 self._write_tuning({**tuning, "method": "bc_best", "evaluation": evaluation})
                 bar.update(1)
         return len(jobs) + len(copies)
@@ -248,9 +248,10 @@ class Benchmark:
     def _ppo_done(self, seed: int) -> bool:
         if not self.run.ppo_policy_path(seed).is_file():
             return False
-        saved, settings = self.run.loaded(self.run.ppo_curve_path(seed), load_ppo_curve), self.config.benchmark
+        saved = self.run.loaded(self.run.ppo_curve_path(seed), load_ppo_curve)
         if saved is None:
             return False
+        settings = self.config.benchmark
         return (saved["seed"], saved["evaluation_seed"], saved["attempts"], saved["total_timesteps"],
                 saved["eval_every"]) == (seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
                                          settings.ppo_timesteps, settings.ppo_eval_every)

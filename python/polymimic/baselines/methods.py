@@ -51,8 +51,10 @@ class Prepared:
 
 def prepare(method: str, demonstrations: Sequence[Demonstration], *,
             recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
-            member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None) -> Prepared:
-    """Label the demonstrations as ``method`` does (segmenting them once, for ``bco``).
+            member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
+            max_samples: int = MAX_DECISION_SAMPLES) -> Prepared:
+    """Label the demonstrations as ``method`` does (reading them once with the recogniser, for
+    ``bco``, at the stride of fits of at most ``max_samples`` decision samples).
 
     ``recognizer`` is needed by ``bco`` and ``bco_lp``, ``weights`` by ``bco_lp``, ``member``
     by ``bc_best``; ``random`` needs nothing (and takes an empty list).
@@ -69,7 +71,7 @@ def prepare(method: str, demonstrations: Sequence[Demonstration], *,
         return Prepared(method, bc_best_labelled(demos, member=member))
     if recognizer is None:
         raise ValueError(f"{method} needs recognizer: a polymimic.PrimitiveRecognizer trained on self-observation")
-    labelled = bco_labelled(demos, recognizer=recognizer, segmenter=segmenter)
+    labelled = bco_labelled(demos, recognizer=recognizer, segmenter=segmenter, max_samples=max_samples)
     if method == "bco":
         return Prepared(method, labelled)
     if weights is None:
@@ -111,5 +113,5 @@ def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters
     """
     check_max_samples(max_samples)
     prepared = prepare(method, demonstrations, recognizer=recognizer, weights=weights, member=member,
-                       segmenter=segmenter)
+                       segmenter=segmenter, max_samples=max_samples)
     return fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed, max_samples=max_samples)

@@ -34,7 +34,7 @@ from polymimic.baselines.labels import NO_LABEL, Labelled
 from polymimic.baselines.policy import ClonedPolicy
 
 __all__ = ["DEFAULT", "MAX_DECISION_SAMPLES", "SAMPLE_STRIDE_FRAMES", "check_max_samples", "decision_samples",
-           "train"]
+           "stride_for_frames", "train"]
 
 SAMPLE_STRIDE_FRAMES = 3
 """Frames between decision samples (every 0.1 s): consecutive frames differ by tracker noise
@@ -64,7 +64,11 @@ def sample_stride(labelled: Sequence[Labelled], *, max_samples: int = MAX_DECISI
     >>> sample_stride([item] * 10), sample_stride([item] * 200), sample_stride([item] * 10, max_samples=1000)
     (3, 9, 9)
     """
-    frames = sum(len(item.labels) for item in labelled)
+    return stride_for_frames(sum(len(item.labels) for item in labelled), max_samples=max_samples)
+
+
+def stride_for_frames(frames: int, *, max_samples: int = MAX_DECISION_SAMPLES) -> int:
+    """The decision samples' stride over demonstrations of ``frames`` frames in all."""
     return max(SAMPLE_STRIDE_FRAMES, -(-frames // check_max_samples(max_samples)))
 
 

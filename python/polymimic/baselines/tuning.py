@@ -128,7 +128,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         steps = list(dict.fromkeys(h.frames_per_action for h in tried))
         tried = [next(h for h in tried if h.frames_per_action == k) for k in steps]
     prepared = prepare(method, list(demonstrations) if method != "random" else [], recognizer=recognizer,
-                       weights=weights, member=member, segmenter=segmenter)
+                       weights=weights, member=member, segmenter=segmenter, max_samples=max_samples)
     scores: list[dict[str, Any]] = []
     best: tuple[tuple[int, int], int, ClonedPolicy | RandomPolicy] | None = None
     for index, hyperparameters in enumerate(tried):

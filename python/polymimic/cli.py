@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import importlib.util
+import json
 import pathlib
 import sys
 import time
@@ -21,10 +22,11 @@ from typing import Any
 from polymimic import __version__, demo
 from polymimic._native import PolymimicError
 from polymimic.benchmark.config import METHODS, BenchmarkConfig
+from polymimic.benchmark.export import export_crowds
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.bodies import WheeledBody
 from polymimic.datasets import load_demonstrations, save_demonstrations
-from polymimic.export import ACTIONS
+from polymimic.export import ACTIONS, LABELS
 from polymimic.field import BODY_NAMES
 from polymimic.plots import animate_demonstration
 from polymimic.reproduce.backends import TaskRunner
@@ -127,11 +129,16 @@ def build_parser() -> argparse.ArgumentParser:
     replay.set_defaults(handler=_replay)
 
     exporting = commands.add_parser("export", parents=[_run_options(tasks=False)],
-                                    help="write a run's demonstrations as Minari datasets of PenaltyKick-v0 episodes")
-    exporting.add_argument("--prefix", default="polymimic/run",
-                           help="dataset ids are <prefix>-<demonstrator>-v0 (default polymimic/run)")
+                                    help="write a run's demonstrations (or a benchmark's crowds) as Minari datasets of "
+                                         "PenaltyKick-v0 episodes")
+    exporting.add_argument("--prefix",
+                           help="dataset ids are <prefix>-<demonstrator>-v0 for a run (default polymimic/run), "
+                                "<prefix>-<profile>-v0 for a benchmark (default polymimic/benchmark)")
     exporting.add_argument("--actions", choices=ACTIONS, default="recognizer",
                            help="the recogniser's reading (learned from observation, default) or the commands sent")
+    exporting.add_argument("--labels", choices=LABELS, default="steps",
+                           help="how the recogniser names a step: the second of motion from it (default) or the "
+                                "segments its frames lie in")
     exporting.add_argument("--overwrite", action="store_true", help="replace datasets of the same ids")
     exporting.add_argument("--author", help="the datasets' author (Minari asks for one)")
     exporting.add_argument("--author-email")
@@ -268,15 +275,39 @@ def _replay(args: argparse.Namespace) -> int:
 
 
 def _export(args: argparse.Namespace) -> int:
-    run = _existing(RunDir(_run_path(args, new=False)))
-    config = run.open(_requested_config(args))
+    path = _run_path(args, new=False)
+    minari_info = {"actions": args.actions, "labels": args.labels, "overwrite": args.overwrite, "author": args.author,
+                   "author_email": args.author_email, "code_permalink": args.code_permalink}
     try:
-        written = export_run(run, config, prefix=args.prefix, actions=args.actions, overwrite=args.overwrite,
-                             author=args.author, author_email=args.author_email, code_permalink=args.code_permalink)
+        if _is_benchmark(path):
+            bench = BenchmarkDir(path)
+            base = BenchmarkConfig.quick() if args.quick else BenchmarkConfig()
+            requested = None if args.config is None and not args.quick else (
+                BenchmarkConfig.load(args.config, base=base) if args.config is not None else base)
+            exported = export_crowds(bench, bench.open(requested), prefix=args.prefix or "polymimic/benchmark",
+                                     **minari_info)
+            for profile, names in exported.left_out.items():
+                print(f"{profile}: left out {', '.join(names)} (PenaltyKick-v0 simulates the Lego robot only)",
+                      file=sys.stderr)
+            written = exported.dataset_ids
+        else:
+            run = _existing(RunDir(path))
+            written = export_run(run, run.open(_requested_config(args)), prefix=args.prefix or "polymimic/run",
+                                 **minari_info)
     except ValueError as error:  # an existing dataset id, or a bad prefix: bad input, named
         raise RunError(str(error)) from error
     print("\n".join(written))
     return 0
+
+
+def _is_benchmark(path: pathlib.Path) -> bool:
+    """Whether ``path`` holds a benchmark's manifest (anything else is read as a run's, which
+    names what is wrong with it)."""
+    try:
+        manifest = json.loads((path / "manifest.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return False
+    return isinstance(manifest, dict) and manifest.get("format") == BenchmarkDir.manifest_format
 
 
 def _requested_benchmark(args: argparse.Namespace) -> BenchmarkConfig | None:

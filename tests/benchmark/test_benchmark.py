@@ -263,3 +263,26 @@ def test_bc_best_is_bc_where_every_member_shares_the_lowest_lapse_and_is_copied_
     assert tuned == ["bc", "bc", "bc_best"]
     assert (copied / "benchmark.json").read_bytes() == (fitted / "benchmark.json").read_bytes()
     assert json.loads(BenchmarkDir(copied).tuning_path("twins", "bc_best").read_text())["method"] == "bc_best"
+
+
+def test_export_writes_each_crowd_with_its_members_lapses(benchmarked, tmp_path, monkeypatch, capsys):
+    minari = pytest.importorskip("minari")
+    monkeypatch.setenv("MINARI_DATASETS_PATH", str(tmp_path / "minari"))
+    who = ["--author", "tests", "--author-email", "tests@polymimic.invalid", "--code-permalink", "tests"]
+    assert main(["export", "--run-dir", str(benchmarked), *who]) == 0
+    out, err = capsys.readouterr()
+    assert out.split() == ["polymimic/benchmark-pair-v0", "polymimic/benchmark-duo-v0"]
+    assert "duo: left out tiny_00 (PenaltyKick-v0 simulates the Lego robot only)" in err
+    for dataset_id, lapses in (("polymimic/benchmark-pair-v0", {"good": 0.0, "bad": 1.0}),
+                               ("polymimic/benchmark-duo-v0", {"poor_01": 0.6})):
+        dataset = minari.load_dataset(dataset_id)
+        # Two demonstrations per configuration and member.
+        assert dataset.total_episodes == 4 * len(lapses)
+        meta = list(dataset.storage.get_episode_metadata(range(dataset.total_episodes)))
+        assert {m["demonstrator"]: m["lapse"] for m in meta} == lapses
+        assert dataset.storage.metadata["learned_from_observation"] is True
+    assert main(["export", "--run-dir", str(benchmarked), "--actions", "commands", "--overwrite", *who]) == 0
+    capsys.readouterr()
+    assert minari.load_dataset("polymimic/benchmark-pair-v0").storage.metadata["polymimic_actions"] == "commands"
+    assert main(["export", "--run-dir", str(benchmarked), *who]) == 2
+    assert "exists already: pass overwrite=True" in capsys.readouterr().err

@@ -103,3 +103,58 @@ def test_refusals_name_what_is_wrong(expert):
         export.to_minari([], "polymimic/x-v0", **WHO)
     with pytest.raises(ValueError, match="step_frames must be an integer ≥ 1, got 0"):
         export.steps_of(expert[0], step_frames=0, actions="commands")
+
+
+def _shifting(commands, seed=0):
+    """A demonstration of the Lego robot sending each of ``commands`` for one 30-frame step."""
+    episode = polymimic.Episode("lego", configuration=1, seed=seed)
+    frames, outcome = episode.run([c for c in commands for _ in range(30)])
+    return polymimic.Demonstration(frames=as_frames(frames), outcome=outcome or "time_up", demonstrator="poor",
+                                   configuration=1, seed=seed)
+
+
+@pytest.fixture(scope="module")
+def recognizer():
+    return recognition.train_recognizer(polymimic.self_observation(40, seed=2), codebook_size=32)
+
+
+def test_each_step_is_named_by_the_second_of_motion_from_it(recognizer):
+    # Each primitive sent for two steps: in the second the robot moves as the primitive alone
+    # moves it (the first still carries the last one's momentum), so its name is known.
+    held = ["forward", "left", "stop", "right", "backward"]
+    right_by_steps = right_by_segments = 0
+    for seed in range(3):
+        demo = _shifting([c for c in held for _ in range(2)], seed=seed)
+        steps = export.steps_of(demo, recognizer=recognizer)
+        assert [PRIMITIVES[a] for a in steps.actions[1::2]] == held
+        assert not steps.gap[1::2].any()
+        sent = np.repeat([PRIMITIVES.index(c) for c in held], 2)
+        right_by_steps += int((steps.actions == sent).sum())
+        segments = export.steps_of(demo, recognizer=recognizer, labels="segments")
+        right_by_segments += int((segments.actions == sent).sum())
+    # A segment grows past a step's second: named by their segments, fewer steps are right.
+    assert right_by_steps > right_by_segments
+
+
+def test_a_step_too_close_to_call_takes_its_nearest_named_steps_primitive():
+    chosen, gap = export._nearest_named(np.array([-1, 2, -1, -1, 0]))
+    assert chosen.tolist() == [2, 2, 2, 0, 0] and gap.tolist() == [True, False, True, True, False]
+    chosen, _ = export._nearest_named(np.array([1, -1, 3]))
+    assert chosen.tolist() == [1, 1, 3], "a tie goes to the earlier step"
+    with pytest.raises(ValueError, match="names no step of this demonstration: every second is a gap"):
+        export._nearest_named(np.array([-1, -1]))
+
+
+def test_each_episode_carries_its_demonstrators_lapse(expert, recognizer):
+    poor = polymimic.record("poor", configuration=1, n=1, seed=3)
+    dataset = export.to_minari([*expert, *poor], "polymimic/lapses-v0", recognizer=recognizer,
+                               lapses={"expert": 0.25}, **WHO)
+    meta = list(dataset.storage.get_episode_metadata(range(dataset.total_episodes)))
+    assert [(m["demonstrator"], m["lapse"]) for m in meta] == [("expert", 0.25)] * len(expert) + [("poor", 0.0)]
+    assert dataset.storage.metadata["polymimic_labels"] == "steps"
+    with pytest.raises(ValueError, match=r"lapses\['expert'\] must be a number in \[0, 1\], got 1.5"):
+        export.to_minari(expert, "polymimic/x-v0", recognizer=recognizer, lapses={"expert": 1.5}, **WHO)
+    with pytest.raises(ValueError, match="lapses names 'tiny', who demonstrates none of these; they are by expert"):
+        export.to_minari(expert, "polymimic/x-v0", recognizer=recognizer, lapses={"tiny": 0.1}, **WHO)
+    with pytest.raises(ValueError, match="labels must be one of 'steps', 'segments', got 'frames'"):
+        export.steps_of(expert[0], recognizer=recognizer, labels="frames")

@@ -38,14 +38,15 @@ import numpy as np
 from polymimic._native import PrimitiveRecognizer
 from polymimic.bodies import Field, field_of
 from polymimic.field import PRIMITIVES, Demonstration, command_primitives, primitives_sent
+from polymimic.step_names import NO_NAME, WINDOW_FRAMES, name_windows, repeat_last_good
 
 __all__ = ["NO_LABEL", "STEP_STRIDE_FRAMES", "STEP_WINDOW_FRAMES", "Labelled", "check_demonstrations", "check_weights",
            "command_labels", "segment_labels", "step_labels"]
 
-NO_LABEL = -1
+NO_LABEL = NO_NAME
 """The label of a frame that gives no training sample (a gap, or no segment)."""
 
-STEP_WINDOW_FRAMES = 30
+STEP_WINDOW_FRAMES = WINDOW_FRAMES
 """Frames the recogniser reads to name a step: one second, the length of every self-observed
 primitive it learned from."""
 
@@ -113,7 +114,7 @@ def observations_of(demo: Demonstration) -> np.ndarray:
     obs = np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
                                                 "ball_x_mm", "ball_y_mm")]).astype(np.float64)
     for column in range(obs.shape[1]):
-        obs[:, column] = _repeat_last_good(obs[:, column])
+        obs[:, column] = repeat_last_good(obs[:, column])
     field = field_of(demo.body)
     if field == "small":
         obs[:, [0, 1]] *= _SMALL_TO_LARGE
@@ -122,17 +123,6 @@ def observations_of(demo: Demonstration) -> np.ndarray:
         # A field of the user's: to the large field's scale, along its length (goal to goal).
         obs[:, [0, 1, 3, 4]] *= _LARGE_LENGTH_MM / field.length_mm
     return obs
-
-
-def _repeat_last_good(values: np.ndarray) -> np.ndarray:
-    """NaN entries replaced by the last finite one before them (the first finite one before
-    any); all NaN stays NaN."""
-    good = np.isfinite(values)
-    if good.all() or not good.any():
-        return values
-    index = np.maximum.accumulate(np.where(good, np.arange(len(values)), -1))
-    index[index < 0] = int(np.argmax(good))
-    return values[index]
 
 
 def command_labels(demonstrations: Sequence[Demonstration]) -> list[Labelled]:
@@ -166,48 +156,23 @@ def step_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRe
                 gap_margin: float = 2.0) -> list[Labelled]:
     """Frames labelled with the primitive of the ``window_frames`` frames from them (from the
     demonstration's last full window near its end), named as the segmenter names a segment
-    (SPEC §3): a stop if the robot ends the window within ``stop_distance_mm`` and
-    ``stop_rotation_deg`` of where it started it, else the HMM that scores the window highest,
-    and no label where the best two scores are within ``gap_margin``.
+    (:func:`polymimic.step_names.name_windows`): a stop if the robot ends the window within
+    ``stop_distance_mm`` and ``stop_rotation_deg`` of where it started it, else the HMM that
+    scores the window highest, and no label where the best two scores are within ``gap_margin``.
 
     Every ``stride_frames``-th frame from the first is named so; the frames between carry the
     label of the one named before them. Naming costs a reading of a whole window, so a caller
     that samples every k-th frame (as :func:`~polymimic.baselines.training.decision_samples`
     does) names with stride k, and every sample is named exactly."""
     demos = check_demonstrations(demonstrations)
-    for name, value, low in (("window_frames", window_frames, 2), ("stride_frames", stride_frames, 1)):
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < low:
-            raise ValueError(f"{name} must be an integer ≥ {low}, got {value!r}")
+    if isinstance(stride_frames, bool) or not isinstance(stride_frames, (int, np.integer)) or stride_frames < 1:
+        raise ValueError(f"stride_frames must be an integer ≥ 1, got {stride_frames!r}")
     labelled = []
     for demo in demos:
-        frames = demo.frames
-        n = len(frames)
-        poses = np.column_stack([_repeat_last_good(np.asarray(frames[c], dtype=np.float64))
-                                 for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad")])
-        starts = np.minimum(np.arange(0, n, stride_frames), max(n - window_frames, 0))
-        windows = [poses[s:s + window_frames] for s in starts]
-        named = np.array([_name_window(w, stop_distance_mm, stop_rotation_deg) for w in windows], dtype=np.int64)
-        moving = np.flatnonzero(named == _MOVING)
-        if len(moving):
-            # Forward, backward, left, right: the order of PRIMITIVES.
-            scores = recognizer.log_likelihoods_many([windows[i] for i in moving])
-            best_two = np.sort(scores, axis=1)[:, -2:]
-            named[moving] = np.where(best_two[:, 1] - best_two[:, 0] < gap_margin, NO_LABEL, scores.argmax(axis=1))
+        n = len(demo.frames)
+        named = name_windows(demo.frames, recognizer, np.arange(0, n, stride_frames), window_frames=window_frames,
+                             stop_distance_mm=stop_distance_mm, stop_rotation_deg=stop_rotation_deg,
+                             gap_margin=gap_margin)
         labels = np.repeat(named, stride_frames)[:n]
         labelled.append(Labelled(demo.demonstrator, observations_of(demo), labels))
     return labelled
-
-
-_MOVING = -2
-_STOP = PRIMITIVES.index("stop")
-
-
-def _name_window(poses: np.ndarray, stop_distance_mm: float, stop_rotation_deg: float) -> int:
-    """:data:`_STOP` if the window's robot ends within the stop tolerances of where it started
-    (the segmenter's stop test, over the window), :data:`NO_LABEL` for a window too short to
-    read, else :data:`_MOVING` (for the HMMs)."""
-    if len(poses) < 2 or not np.isfinite(poses).all():
-        return NO_LABEL
-    moved = np.hypot(poses[-1, 0] - poses[0, 0], poses[-1, 1] - poses[0, 1])
-    turned = np.degrees(np.abs(np.angle(np.exp(1j * (poses[-1, 2] - poses[0, 2])))))
-    return _STOP if moved < stop_distance_mm and turned < stop_rotation_deg else _MOVING

@@ -18,8 +18,8 @@ from polymimic.reproduce.rundir import RunDir
 __all__ = ["export_run"]
 
 
-def export_run(run: RunDir, config: RunConfig, *, prefix: str, actions: str = "recognizer", overwrite: bool = False,
-               **minari_info: Any) -> list[str]:
+def export_run(run: RunDir, config: RunConfig, *, prefix: str, actions: str = "recognizer", labels: str = "steps",
+               overwrite: bool = False, **minari_info: Any) -> list[str]:
     """Write ``<prefix>-<demonstrator>-v0`` for every Lego-bodied demonstrator of the run (the
     Expert, the Poor, the Average); return the dataset ids written."""
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train")) if actions == "recognizer" \
@@ -29,7 +29,7 @@ def export_run(run: RunDir, config: RunConfig, *, prefix: str, actions: str = "r
         demos = load_demonstrations(run.require(run.demonstrations_path(who), "record" if who != "average"
                                                 else "segment"))
         dataset_id = f"{prefix}-{who}-v0"
-        export.to_minari(demos, dataset_id, actions=actions, recognizer=recognizer,
+        export.to_minari(demos, dataset_id, actions=actions, recognizer=recognizer, labels=labels,
                          segmenter=dataclasses.asdict(config.segmenter), overwrite=overwrite, **minari_info)
         written.append(dataset_id)
     return written

@@ -1,0 +1,84 @@
+"""The recogniser's name for the second of motion that starts at a frame: what BCO's inverse
+model names a transition, read with the imitator's own HMMs (SPEC §2) and the segmenter's rules
+(SPEC §3).
+
+A window of :data:`WINDOW_FRAMES` frames is a stop if the robot ends it within the stop
+tolerances of where it started it; otherwise the HMM that scores it highest names it, and none
+does (:data:`NO_NAME`) where the best two scores are within the gap margin. A window that would
+run past the demonstration's end is moved back to its last full window. Both ``bco``'s labels
+(:func:`polymimic.baselines.labels.step_labels`) and Minari's actions
+(:func:`polymimic.export.steps_of`) are named so.
+
+>>> import polymimic
+>>> from polymimic import recognition
+>>> recognizer = recognition.train_recognizer(polymimic.self_observation(30, seed=1), codebook_size=16)
+>>> frames, _ = polymimic.Episode("lego", configuration=1, seed=0).run(["forward"] * 60)
+>>> [polymimic.field.PRIMITIVES[i] for i in name_windows(polymimic.field.as_frames(frames), recognizer, [0, 30])]
+['forward', 'forward']
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+import numpy as np
+
+from polymimic._native import PrimitiveRecognizer
+from polymimic.field import PRIMITIVES
+
+__all__ = ["NO_NAME", "WINDOW_FRAMES", "name_windows", "repeat_last_good"]
+
+NO_NAME = -1
+"""The name of a window too close to call (a gap) or too short to read."""
+
+WINDOW_FRAMES = 30
+"""Frames the recogniser reads to name a step: one second, the length of every self-observed
+primitive it learned from."""
+
+_MOVING = -2
+_STOP = PRIMITIVES.index("stop")
+
+
+def repeat_last_good(values: np.ndarray) -> np.ndarray:
+    """NaN entries replaced by the last finite one before them (the first finite one before
+    any); all NaN stays NaN."""
+    good = np.isfinite(values)
+    if good.all() or not good.any():
+        return values
+    index = np.maximum.accumulate(np.where(good, np.arange(len(values)), -1))
+    index[index < 0] = int(np.argmax(good))
+    return values[index]
+
+
+def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Sequence[int] | np.ndarray, *,
+                 window_frames: int = WINDOW_FRAMES, stop_distance_mm: float = 1.0, stop_rotation_deg: float = 20.0,
+                 gap_margin: float = 2.0) -> np.ndarray:
+    """The index into :data:`polymimic.field.PRIMITIVES` of the window of ``window_frames``
+    frames from each of ``starts`` (a tracker-frame record array), or :data:`NO_NAME`.
+    Lost readings repeat the last good one, as the environment repeats them."""
+    if isinstance(window_frames, bool) or not isinstance(window_frames, (int, np.integer)) or window_frames < 2:
+        raise ValueError(f"window_frames must be an integer ≥ 2, got {window_frames!r}")
+    n = len(frames)
+    poses = np.column_stack([repeat_last_good(np.asarray(frames[c], dtype=np.float64))
+                             for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad")])
+    first = np.minimum(np.asarray(starts, dtype=np.int64), max(n - window_frames, 0))
+    windows = [poses[s:s + window_frames] for s in first]
+    named = np.array([_stop_or_moving(w, stop_distance_mm, stop_rotation_deg) for w in windows], dtype=np.int64)
+    moving = np.flatnonzero(named == _MOVING)
+    if len(moving):
+        # Forward, backward, left, right: the order of PRIMITIVES.
+        scores = recognizer.log_likelihoods_many([windows[i] for i in moving])
+        best_two = np.sort(scores, axis=1)[:, -2:]
+        named[moving] = np.where(best_two[:, 1] - best_two[:, 0] < gap_margin, NO_NAME, scores.argmax(axis=1))
+    return named
+
+
+def _stop_or_moving(poses: np.ndarray, stop_distance_mm: float, stop_rotation_deg: float) -> int:
+    """:data:`_STOP` if the window's robot ends within the stop tolerances of where it started
+    (the segmenter's stop test, over the window), :data:`NO_NAME` for a window too short to
+    read, else :data:`_MOVING` (for the HMMs)."""
+    if len(poses) < 2 or not np.isfinite(poses).all():
+        return NO_NAME
+    moved = np.hypot(poses[-1, 0] - poses[0, 0], poses[-1, 1] - poses[0, 1])
+    turned = np.degrees(np.abs(np.angle(np.exp(1j * (poses[-1, 2] - poses[0, 2])))))
+    return _STOP if moved < stop_distance_mm and turned < stop_rotation_deg else _MOVING

@@ -294,7 +294,7 @@ class LearningConfig:
         initial_lp: float = 0.5,
         imitator_lp: float = 0.9,
         hold_lp: bool = False,
-        imitator_weighting: Literal["even", "lp"] = "even",
+        imitator_weighting: Literal["even", "lp", "lp_gain"] = "even",
         lp_goal: float = 0.01,
         lp_ball_to_goal: float = 0.005,
         lp_robot_to_ball: float = 0.002,

@@ -74,8 +74,11 @@ class LearningConfig(_native.LearningConfig):
       little and decay away; :class:`ImitatorPolicy` with ``control="improved"`` weighs each
       demonstration's samples by the trial's final LP weight of its demonstrator (the ball's
       response and a state's value as weighted means, the push region as weighted
-      percentiles). With ``"even"``, or with ``hold_lp`` (all LPs equal), every weight is 1 and
-      the results are exactly those of the thesis's scheme.
+      percentiles); or ``"lp_gain"``: the same, each member weighed by how far its LP rose
+      above ``initial_lp``, ``w_m = (LP_m − LP₀)⁺ / max_k (LP_k − LP₀)⁺`` (all 1 if none rose),
+      so a member the LP likes no better than a stranger teaches nothing. With ``"even"``, or
+      with ``hold_lp`` (all LPs equal), every weight is 1 and the results are exactly those of
+      the thesis's scheme.
 
     ``save``/``load`` use TOML.
 

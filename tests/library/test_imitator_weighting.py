@@ -2,6 +2,8 @@
 their demonstrators' LPs (``imitator_weighting``): configured, saved and refused by name, and
 acting on trials and on the improved control."""
 
+import json
+
 import pytest
 
 import polymimic
@@ -29,7 +31,7 @@ def test_the_switches_round_trip_through_toml_and_files(tmp_path):
 
 
 @pytest.mark.parametrize("change, error, match", [
-    (dict(imitator_weighting="lpp"), ValueError, 'imitator_weighting must be "even" or "lp", got "lpp"'),
+    (dict(imitator_weighting="lpp"), ValueError, 'imitator_weighting must be "even" or "lp" or "lp_gain", got "lpp"'),
     (dict(imitator_weighting=1), TypeError, "imitator_weighting must be a string, got 1"),
     (dict(hold_lp="yes"), TypeError, "hold_lp must be True or False, got 'yes'"),
     (dict(hold_lp=1), TypeError, "hold_lp must be True or False, got 1"),
@@ -92,3 +94,22 @@ def test_the_improved_control_weighs_the_demonstrations_by_the_trials_lps(recogn
         polymimic.ImitatorPolicy(trial, recognizer=recognizer, config=by_lp, control="improved",
                                  demonstrations=stranger)
     polymimic.ImitatorPolicy(trial, recognizer=recognizer, config=HELD, control="improved", demonstrations=stranger)
+
+
+def test_the_gain_leaves_out_a_member_whose_lp_never_rose(recognizer, demonstrations):
+    trial = polymimic.run_trial(demonstrations, recognizer=recognizer, ordering=ORDERING, seed=3)
+    record = json.loads(trial.to_json())
+    record["models"]["poor"]["lp"] = 0.45  # below the 0.5 every model starts from
+    sunk = polymimic.TrialResult.from_json(json.dumps(record))
+    expert_only = [d for d in demonstrations if d["demonstrator"] == "expert"]
+
+    def frames(config, demos):
+        policy = polymimic.ImitatorPolicy(sunk, recognizer=recognizer, config=config, control="improved",
+                                          demonstrations=demos)
+        return [a.frames.tobytes() for a in polymimic.evaluate(policy, attempts_per_configuration=2, seed=5).attempts]
+
+    # The Poor weighs (0.45 − 0.5)⁺ = 0 and the Expert 1: as if only the Expert had been watched.
+    gain = polymimic.LearningConfig(imitator_weighting="lp_gain")
+    assert frames(gain, demonstrations) == frames(polymimic.LearningConfig(), expert_only)
+    # Under "lp" the Poor still weighs 0.45 / LP_expert: it is not left out.
+    assert frames(gain.replace(imitator_weighting="lp"), demonstrations) != frames(gain, demonstrations)

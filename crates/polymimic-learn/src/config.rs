@@ -71,6 +71,11 @@ pub enum ImitatorWeighting {
     /// permanency step), not its decay; the world model of the improved control weighs each
     /// demonstration's samples by its demonstrator's final LP.
     Lp,
+    /// *Choice*: as [`ImitatorWeighting::Lp`], with each member weighed by how far its LP has
+    /// risen above the `initial_lp` every model starts from: `w_m = (LP_m − LP₀)⁺ / max_k
+    /// (LP_k − LP₀)⁺`. A member the LP likes no better than a stranger teaches nothing; if
+    /// none has risen, every member weighs 1.
+    LpGain,
 }
 
 /// The constants of behaviour creation, permanency, decay, learning preference and

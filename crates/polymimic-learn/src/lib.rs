@@ -43,7 +43,7 @@ pub use shaping::{LpCause, LpCauseCounts};
 pub use state::{Pitch, ball_to_goal_mm, precondition_measures, range_bearing, robot_to_ball_mm};
 pub use state_value::StateValue;
 pub use trial::{PhaseOne, TrialResult, run_trial};
-pub use weighting::{demonstration_weights, lp_weights};
+pub use weighting::{demonstration_weights, imitator_weights, lp_weights};
 pub use world::WorldModel;
 
 #[cfg(test)]

@@ -11,7 +11,7 @@ use crate::model::{Event, ForwardModel};
 use crate::prediction::MotionTable;
 use crate::round::SegmentedDemonstration;
 use crate::shaping::LpCause;
-use crate::weighting::lp_weights;
+use crate::weighting::imitator_weights;
 
 /// How phase 1 presents demonstrations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -105,8 +105,11 @@ pub fn run_trial(
             nominate(&events, m, &mut models, &mut imitator, config);
         }
         let weight = match (config.imitator_weighting, model_of(&demonstrations[i])) {
-            (ImitatorWeighting::Lp, Some(m)) => lp_weights(&models.iter().map(|model| model.lp).collect::<Vec<_>>())[m],
-            _ => 1.0,
+            (ImitatorWeighting::Even, _) | (_, None) => 1.0,
+            (weighting, Some(m)) => {
+                let lps: Vec<f64> = models.iter().map(|model| model.lp).collect();
+                imitator_weights(weighting, &lps, config.initial_lp)[m]
+            }
         };
         let events = imitator.process_weighted(&demonstrations[i], weight, motion, config, &mut rngs[imitator_stream]);
         judge_candidates(&events, &mut models, config);

@@ -106,9 +106,9 @@ learning from the demonstrations the policies of every other trial share."""
 def _policy(inputs: EvaluationInputs, trial: TrialResult, control: str) -> CompiledPolicy:
     """The trial's imitator driven by ``control``; what the improved control learns from the
     demonstrations is learned once per process and experiment where it does not depend on the
-    trial (every weighting but ``"lp"``)."""
+    trial (under ``"even"`` weighting)."""
     first = _first_policies.get(control)
-    if first is not None and first[0] is inputs and inputs.learning.imitator_weighting != "lp":
+    if first is not None and first[0] is inputs and inputs.learning.imitator_weighting == "even":
         return first[1].for_trial(trial)
     policy = imitator_policy(trial, recognizer=inputs.recognizer, config=inputs.learning, control=control,
                              demonstrations=inputs.items)

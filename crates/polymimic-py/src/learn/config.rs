@@ -48,7 +48,13 @@ const SCOPES: [(&str, LpScope); 2] = [("own_demonstrator", LpScope::OwnDemonstra
 const CRITERIA: [(&str, LpCriteria); 2] = [("foremost", LpCriteria::Foremost), ("both", LpCriteria::Both)];
 const WEIGHTS: [(&str, LpApproachWeight); 2] =
     [("per_demonstration", LpApproachWeight::PerDemonstration), ("per_span", LpApproachWeight::PerSpan)];
-const WEIGHTINGS: [(&str, ImitatorWeighting); 2] = [("even", ImitatorWeighting::Even), ("lp", ImitatorWeighting::Lp)];
+const WEIGHTINGS: [(&str, ImitatorWeighting); 3] =
+    [("even", ImitatorWeighting::Even), ("lp", ImitatorWeighting::Lp), ("lp_gain", ImitatorWeighting::LpGain)];
+
+/// The Python name of an imitator weighting.
+pub(crate) fn weighting_name(weighting: ImitatorWeighting) -> &'static str {
+    name_of(&WEIGHTINGS, weighting)
+}
 
 fn name_of<T: PartialEq + Copy>(options: &[(&'static str, T)], value: T) -> &'static str {
     options.iter().find(|(_, o)| *o == value).map_or("", |(name, _)| name)
@@ -149,7 +155,9 @@ fn set(c: &mut LearningConfig, name: &str, value: &Bound<'_, PyAny>) -> PyResult
 /// same for the imitator, the thesis) or ``"lp"``: a demonstration by member m counts with
 /// weight ``LP_m / max_k LP_k`` (all 1 if every LP is 0), scaling the imitator's frequency
 /// and permanency gains from it in phase 2 (the LPs of that moment; decay is not scaled) and
-/// its samples in the improved control's world model (the final LPs).
+/// its samples in the improved control's world model (the final LPs); or ``"lp_gain"``: the
+/// same, each member weighed by how far its LP rose above ``initial_lp``,
+/// ``(LP_m − LP₀)⁺ / max_k (LP_k − LP₀)⁺`` (all 1 if none rose).
 ///
 /// Examples
 /// --------
@@ -331,7 +339,7 @@ impl PyLearningConfig {
     fn hold_lp(&self) -> bool {
         self.config.hold_lp
     }
-    /// `"even"` or `"lp"`.
+    /// `"even"`, `"lp"` or `"lp_gain"`.
     #[getter]
     fn imitator_weighting(&self) -> &'static str {
         name_of(&WEIGHTINGS, self.config.imitator_weighting)

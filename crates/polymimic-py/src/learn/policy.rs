@@ -10,7 +10,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use super::config::{PyLearningConfig, config_or_default};
+use super::config::{PyLearningConfig, config_or_default, weighting_name};
 use super::motion_table;
 use super::segments::batch;
 use super::trial::PyTrialResult;
@@ -87,10 +87,11 @@ impl PyImitatorPolicy {
                 }
                 let weights = match config.imitator_weighting {
                     ImitatorWeighting::Even => Vec::new(),
-                    ImitatorWeighting::Lp => {
+                    weighting => {
                         let lps: Vec<(String, f64)> =
                             trial.record.models.iter().map(|m| (m.name.clone(), m.lp)).collect();
-                        demonstration_weights(&demos, &lps).map_err(crate::errors::learn_params_error)?
+                        demonstration_weights(&demos, &lps, weighting, config.initial_lp)
+                            .map_err(crate::errors::learn_params_error)?
                     }
                 };
                 Some(Arc::new(
@@ -129,13 +130,15 @@ impl PyImitatorPolicy {
     /// The same control driving ``trial``'s imitator, with what this one learned from the
     /// demonstrations (the improved control's ball response, state values and routes) shared
     /// rather than learned again: the policy ``ImitatorPolicy(trial, ...)`` with this one's
-    /// arguments would make, sooner. Under ``imitator_weighting="lp"`` what the improved control
-    /// learns depends on the trial's LPs, so that is a ``ValueError``: make a new policy.
+    /// arguments would make, sooner. Under ``imitator_weighting="lp"`` or ``"lp_gain"`` what the
+    /// improved control learns depends on the trial's LPs, so that is a ``ValueError``: make a
+    /// new policy.
     fn for_trial(&self, trial: &PyTrialResult) -> PyResult<Self> {
-        if self.world.is_some() && self.config.imitator_weighting == ImitatorWeighting::Lp {
-            return Err(PyValueError::new_err(
-                "for_trial: under imitator_weighting=\"lp\" the improved control learns from the demonstrations by the trial's LPs; make a new ImitatorPolicy for each trial",
-            ));
+        if self.world.is_some() && self.config.imitator_weighting != ImitatorWeighting::Even {
+            return Err(PyValueError::new_err(format!(
+                "for_trial: under imitator_weighting=\"{}\" the improved control learns from the demonstrations by the trial's LPs; make a new ImitatorPolicy for each trial",
+                weighting_name(self.config.imitator_weighting)
+            )));
         }
         Ok(Self {
             model: trial.imitator_forward_model()?,

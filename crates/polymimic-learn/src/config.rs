@@ -266,6 +266,9 @@ mod tests {
         assert_eq!(LearningConfig { hold_lp: true, imitator_weighting: ImitatorWeighting::Lp, ..config }, changed);
         assert_eq!(LearningConfig::from_json(&changed.to_json()), Ok(changed));
         let refused = LearningConfig::from_json(r#"{"imitator_weighting": "lpp"}"#).unwrap_err().to_string();
-        assert!(refused.contains("lpp") && refused.contains("expected `even` or `lp`"), "{refused}");
+        assert!(refused.contains("lpp") && refused.contains("expected one of `even`, `lp`, `lp_gain`"), "{refused}");
+        let gain = LearningConfig::from_json(r#"{"imitator_weighting": "lp_gain"}"#).expect("a valid config");
+        assert_eq!(gain.imitator_weighting, ImitatorWeighting::LpGain);
+        assert_eq!(LearningConfig::from_json(&gain.to_json()), Ok(gain));
     }
 }

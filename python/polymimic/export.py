@@ -26,7 +26,7 @@ Actions, one of the five primitives a step, come from one of two places:
   (privileged: a real tracker does not see them), the most frequent over the step.
 
 Each episode's demonstrator, body, lapse, configuration, episode seed and outcome go in its Minari
-episode metadata, and :func:`from_minari` reads them back. Needs ``pip install
+episode metadata, and :func:`from_minari` reads back all but the lapse (a demonstration has none). Needs ``pip install
 "polymimic[minari]"``.
 """
 
@@ -174,12 +174,14 @@ def to_minari(demonstrations: Sequence[Demonstration], dataset_id: str, *, actio
             raise ValueError(f"demonstration {i} ({demo.demonstrator}) is of the {demo.body} body; "
                              f"{ENV_ID} simulates the Lego robot only")
     lapse_of = _checked_lapses(lapses, {d.demonstrator for d in demonstrations})
-    if dataset_id in minari.list_local_datasets():
-        if not overwrite:
-            raise ValueError(f"a Minari dataset {dataset_id!r} exists already: pass overwrite=True to replace it")
-        minari.delete_dataset(dataset_id)
+    exists = dataset_id in minari.list_local_datasets()
+    if exists and not overwrite:
+        raise ValueError(f"a Minari dataset {dataset_id!r} exists already: pass overwrite=True to replace it")
+    # Every step first: a bad argument or an unreadable demonstration leaves the old dataset be.
     all_steps = [steps_of(d, step_frames=step_frames, actions=actions, recognizer=recognizer, segmenter=segmenter,
                           labels=labels) for d in demonstrations]
+    if exists:
+        minari.delete_dataset(dataset_id)
     buffers = [episode_buffer(observations=s.observations, actions=s.actions, rewards=s.rewards.tolist(),
                               terminations=s.terminations.tolist(), truncations=s.truncations.tolist(),
                               infos={"gap": [*s.gap.tolist(), False]}) for s in all_steps]

@@ -69,7 +69,10 @@ def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Se
         # Forward, backward, left, right: the order of PRIMITIVES.
         scores = recognizer.log_likelihoods_many([windows[i] for i in moving])
         best_two = np.sort(scores, axis=1)[:, -2:]
-        named[moving] = np.where(best_two[:, 1] - best_two[:, 0] < gap_margin, NO_NAME, scores.argmax(axis=1))
+        # A window no HMM can have made (every score −inf) is a gap too, as the segmenter has it.
+        with np.errstate(invalid="ignore"):
+            close = ~np.isfinite(best_two[:, 1]) | (best_two[:, 1] - best_two[:, 0] < gap_margin)
+        named[moving] = np.where(close, NO_NAME, scores.argmax(axis=1))
     return named
 
 

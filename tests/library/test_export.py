@@ -158,3 +158,24 @@ def test_each_episode_carries_its_demonstrators_lapse(expert, recognizer):
         export.to_minari(expert, "polymimic/x-v0", recognizer=recognizer, lapses={"tiny": 0.1}, **WHO)
     with pytest.raises(ValueError, match="labels must be one of 'steps', 'segments', got 'frames'"):
         export.steps_of(expert[0], recognizer=recognizer, labels="frames")
+
+
+def test_a_failed_overwrite_keeps_the_old_dataset(expert):
+    export.to_minari(expert[:1], "polymimic/keep-v0", actions="commands", **WHO)
+    with pytest.raises(ValueError, match="labels must be one of"):
+        export.to_minari(expert, "polymimic/keep-v0", actions="commands", labels="frames", overwrite=True, **WHO)
+    assert minari.load_dataset("polymimic/keep-v0").total_episodes == 1
+
+
+class _Impossible:
+    """A recogniser to which every window is impossible: every HMM scores it −inf."""
+
+    def log_likelihoods_many(self, windows):
+        return np.full((len(windows), 4), -np.inf)
+
+
+def test_a_window_no_hmm_can_have_made_is_a_gap():
+    from polymimic.step_names import NO_NAME, name_windows
+
+    demo = _scripted("forward", 70)
+    assert name_windows(demo.frames, _Impossible(), [0, 30]).tolist() == [NO_NAME, NO_NAME]

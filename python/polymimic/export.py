@@ -25,9 +25,9 @@ Actions, one of the five primitives a step, come from one of two places:
 - ``actions="commands"``: the primitive equivalent of the commands the demonstrator sent
   (privileged: a real tracker does not see them), the most frequent over the step.
 
-Each episode's demonstrator, body, lapse, configuration, episode seed and outcome go in its Minari
-episode metadata, and :func:`from_minari` reads back all but the lapse (a demonstration has none). Needs ``pip install
-"polymimic[minari]"``.
+Each episode's demonstrator, body, lapse, configuration, episode seed and outcome go in its
+Minari episode metadata, and :func:`from_minari` reads back all but the lapse (a demonstration
+has none). Needs ``pip install "polymimic[minari]"``.
 """
 
 from __future__ import annotations
@@ -41,18 +41,12 @@ import numpy as np
 from polymimic._native import PrimitiveRecognizer
 from polymimic.env import ENV_ID
 from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, primitives_sent
-from polymimic.step_names import NO_NAME, name_windows
+from polymimic.step_names import LABELS, NO_NAME, name_windows, step_settings
 
 __all__ = ["ACTIONS", "LABELS", "OBSERVED", "SIMULATED_BODIES", "from_minari", "steps_of", "to_minari"]
 
 ACTIONS = ("recognizer", "commands")
 """Where a dataset's actions come from (see the module's documentation)."""
-
-LABELS = ("steps", "segments")
-"""How the recogniser names a step, for ``actions="recognizer"``; ``"steps"`` is the default."""
-
-# The segmenter's settings that name a step as they name a segment.
-_STEP_SETTINGS = ("stop_distance_mm", "stop_rotation_deg", "gap_margin")
 
 OBSERVED = ("robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm")
 """The frame columns an observation holds, in order."""
@@ -113,8 +107,7 @@ def steps_of(demonstration: Demonstration, *, step_frames: int = 30, actions: st
         named = _recognised(recognizer.segment(frames, **dict(segmenter or {})), len(frames))
         chosen, gap = _majorities(named, starts, ends)
     else:
-        settings = {k: v for k, v in dict(segmenter or {}).items() if k in _STEP_SETTINGS}
-        chosen, gap = _nearest_named(name_windows(frames, recognizer, starts, **settings))
+        chosen, gap = _nearest_named(name_windows(frames, recognizer, starts, **step_settings(segmenter)))
     rewards = np.zeros(n_steps)
     rewards[-1] = _REWARDS.get(demonstration.outcome, 0.0)
     terminations, truncations = np.zeros(n_steps, dtype=bool), np.zeros(n_steps, dtype=bool)

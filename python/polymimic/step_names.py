@@ -19,14 +19,22 @@ run past the demonstration's end is moved back to its last full window. Both ``b
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.field import PRIMITIVES
 
-__all__ = ["NO_NAME", "WINDOW_FRAMES", "name_windows", "repeat_last_good"]
+__all__ = ["LABELS", "NO_NAME", "WINDOW_FRAMES", "name_windows", "repeat_last_good", "step_settings"]
+
+LABELS = ("steps", "segments")
+"""How a recogniser may label demonstrations: by the second of motion from each step (the
+default), or by the segments (SPEC §3) the frames lie in."""
+
+# The segmenter's settings that name a step as they name a segment.
+_STEP_SETTINGS = ("stop_distance_mm", "stop_rotation_deg", "gap_margin")
 
 NO_NAME = -1
 """The name of a window too close to call (a gap) or too short to read."""
@@ -48,6 +56,11 @@ def repeat_last_good(values: np.ndarray) -> np.ndarray:
     index = np.maximum.accumulate(np.where(good, np.arange(len(values)), -1))
     index[index < 0] = int(np.argmax(good))
     return values[index]
+
+
+def step_settings(segmenter: Mapping[str, Any] | None) -> dict[str, Any]:
+    """The segmenter's settings that :func:`name_windows` names a step with."""
+    return {k: v for k, v in dict(segmenter or {}).items() if k in _STEP_SETTINGS}
 
 
 def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Sequence[int] | np.ndarray, *,

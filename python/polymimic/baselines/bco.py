@@ -33,14 +33,10 @@ from polymimic.baselines.labels import Labelled, segment_labels, step_labels
 from polymimic.baselines.policy import ClonedPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, stride_for_frames, train
 from polymimic.field import Demonstration
+from polymimic.step_names import LABELS, step_settings
 
 __all__ = ["LABELS", "check_recognizer", "fit", "labelled"]
 
-LABELS = ("steps", "segments")
-"""How ``bco`` may label the demonstrations' frames; ``"steps"`` is the default."""
-
-# The segmenter's settings that name a step as they name a segment.
-_STEP_SETTINGS = ("stop_distance_mm", "stop_rotation_deg", "gap_margin")
 
 
 def check_recognizer(recognizer: Any) -> PrimitiveRecognizer:
@@ -62,8 +58,7 @@ def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRe
     if labels == "steps":
         demos = list(demonstrations)
         stride = stride_for_frames(sum(len(d.frames) for d in demos), max_samples=max_samples)
-        return step_labels(demos, recognizer, stride_frames=stride,
-                           **{k: v for k, v in settings.items() if k in _STEP_SETTINGS})
+        return step_labels(demos, recognizer, stride_frames=stride, **step_settings(settings))
     if labels == "segments":
         return segment_labels(demonstrations, recognizer, **settings)
     raise ValueError(f"unknown labels {labels!r}; expected one of {', '.join(map(repr, LABELS))}")

@@ -281,11 +281,8 @@ def _export(args: argparse.Namespace) -> int:
     try:
         if _is_benchmark(path):
             bench = BenchmarkDir(path)
-            base = BenchmarkConfig.quick() if args.quick else BenchmarkConfig()
-            requested = None if args.config is None and not args.quick else (
-                BenchmarkConfig.load(args.config, base=base) if args.config is not None else base)
-            exported = export_crowds(bench, bench.open(requested), prefix=args.prefix or "polymimic/benchmark",
-                                     **minari_info)
+            exported = export_crowds(bench, bench.open(_benchmark_config(args)),
+                                     prefix=args.prefix or "polymimic/benchmark", **minari_info)
             for profile, names in exported.left_out.items():
                 print(f"{profile}: left out {', '.join(names)} (PenaltyKick-v0 simulates the Lego robot only)",
                       file=sys.stderr)
@@ -296,6 +293,10 @@ def _export(args: argparse.Namespace) -> int:
                                  **minari_info)
     except ValueError as error:  # an existing dataset id, or a bad prefix: bad input, named
         raise RunError(str(error)) from error
+    except ModuleNotFoundError as error:  # Minari is an optional extra: the error says how to install it
+        if error.name != "minari":
+            raise
+        raise ConfigError(str(error)) from error
     print("\n".join(written))
     return 0
 
@@ -310,12 +311,20 @@ def _is_benchmark(path: pathlib.Path) -> bool:
     return isinstance(manifest, dict) and manifest.get("format") == BenchmarkDir.manifest_format
 
 
-def _requested_benchmark(args: argparse.Namespace) -> BenchmarkConfig | None:
-    """The benchmark config asked for on the command line, or None when none was."""
-    if args.config is None and not args.quick and args.profiles is None and args.methods is None:
+def _benchmark_config(args: argparse.Namespace) -> BenchmarkConfig | None:
+    """The benchmark config ``--config`` and ``--quick`` ask for, or None when neither was given."""
+    if args.config is None and not args.quick:
         return None
     base = BenchmarkConfig.quick() if args.quick else BenchmarkConfig()
-    config = BenchmarkConfig.load(args.config, base=base) if args.config is not None else base
+    return BenchmarkConfig.load(args.config, base=base) if args.config is not None else base
+
+
+def _requested_benchmark(args: argparse.Namespace) -> BenchmarkConfig | None:
+    """The benchmark config asked for on the command line, or None when none was."""
+    config = _benchmark_config(args)
+    if args.profiles is None and args.methods is None:
+        return config
+    config = config or BenchmarkConfig()
     settings = config.benchmark
     if args.profiles is not None:
         settings = dataclasses.replace(settings, profiles=tuple(args.profiles))

@@ -3,10 +3,11 @@ of ``PenaltyKick-v0`` episodes, and back.
 
 An episode is a demonstration cut into the environment's steps: every ``step_frames`` tracker
 frames (30 a second) the observation the environment would give (robot x, y, θ and ball x, y,
-the last good reading repeated through a tracking dropout), so that a dataset holds one more
-observation than it has actions, as Minari expects. Its reward is the environment's (+1 on
-the step of a goal, −1 on an own goal, 0 otherwise); it terminates on a goal, an own goal or
-the ball or robot leaving the field, and is truncated by the time limit.
+the last good reading repeated through a tracking dropout, and the first good one before it
+is first seen), so that a dataset holds one more observation than it has actions, as Minari
+expects. Its reward is the environment's (+1 on the step of a goal, −1 on an own goal, 0
+otherwise); it terminates on a goal, an own goal or the ball or robot leaving the field, and is
+truncated by the time limit.
 
 Actions, one of the five primitives a step, come from one of two places:
 
@@ -33,6 +34,7 @@ has none). Needs ``pip install "polymimic[minari]"``.
 from __future__ import annotations
 
 import dataclasses
+import numbers
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -41,7 +43,7 @@ import numpy as np
 from polymimic._native import PrimitiveRecognizer
 from polymimic.env import ENV_ID
 from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, primitives_sent
-from polymimic.step_names import LABELS, NO_NAME, name_windows, step_settings
+from polymimic.step_names import LABELS, NO_NAME, name_windows, repeat_last_good, segmenter_settings, step_settings
 
 __all__ = ["ACTIONS", "LABELS", "OBSERVED", "SIMULATED_BODIES", "from_minari", "steps_of", "to_minari"]
 
@@ -94,7 +96,7 @@ def steps_of(demonstration: Demonstration, *, step_frames: int = 30, actions: st
     frames = demonstration.frames
     if len(frames) < 2:
         raise ValueError(f"a demonstration of {len(frames)} frame(s) has no step: it needs at least 2")
-    observed = _filled(np.column_stack([frames[c] for c in OBSERVED]).astype(np.float32))
+    observed = repeat_last_good(np.column_stack([frames[c] for c in OBSERVED]).astype(np.float32))
     n_steps = -(-(len(frames) - 1) // step_frames)
     ends = np.minimum(np.arange(1, n_steps + 1) * step_frames, len(frames) - 1)
     starts = np.concatenate([[0], ends[:-1]])
@@ -104,7 +106,7 @@ def steps_of(demonstration: Demonstration, *, step_frames: int = 30, actions: st
     elif recognizer is None:
         raise ValueError('actions="recognizer" needs the recognizer= that reads the demonstrations')
     elif labels == "segments":
-        named = _recognised(recognizer.segment(frames, **dict(segmenter or {})), len(frames))
+        named = _recognised(recognizer.segment(frames, **segmenter_settings(segmenter)), len(frames))
         chosen, gap = _majorities(named, starts, ends)
     else:
         chosen, gap = _nearest_named(name_windows(frames, recognizer, starts, **step_settings(segmenter)))
@@ -238,7 +240,8 @@ def _minari() -> tuple[Any, Any]:
         import minari
         from minari.data_collector import EpisodeBuffer
     except ImportError as error:
-        raise ModuleNotFoundError('Minari export needs minari: pip install "polymimic[minari]"') from error
+        raise ModuleNotFoundError('Minari export needs minari: pip install "polymimic[minari]"',
+                                  name="minari") from error
     return minari, EpisodeBuffer
 
 
@@ -251,12 +254,12 @@ def _env_spec(step_frames: int) -> Any:
 
 def _checked_lapses(lapses: Mapping[str, float] | None, demonstrators: set[str]) -> dict[str, float]:
     """``lapses`` as floats in [0, 1], or a ValueError naming a bad one or one no demonstration has."""
-    checked = {}
+    checked: dict[str, float] = {}
     for name, value in dict(lapses or {}).items():
         if name not in demonstrators:
             raise ValueError(f"lapses names {name!r}, who demonstrates none of these; they are by "
                              f"{', '.join(sorted(demonstrators))}")
-        if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not 0.0 <= value <= 1.0:
+        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0.0 <= value <= 1.0:
             raise ValueError(f"lapses[{name!r}] must be a number in [0, 1], got {value!r}")
         checked[name] = float(value)
     return checked
@@ -265,15 +268,6 @@ def _checked_lapses(lapses: Mapping[str, float] | None, demonstrators: set[str])
 def _check_step_frames(step_frames: Any) -> None:
     if not isinstance(step_frames, int) or isinstance(step_frames, bool) or step_frames < 1:
         raise ValueError(f"step_frames must be an integer ≥ 1, got {step_frames!r}")
-
-
-def _filled(observed: np.ndarray) -> np.ndarray:
-    """Each NaN reading replaced by the last good one before it (as the environment repeats it)."""
-    filled = observed.copy()
-    for t in range(1, len(filled)):
-        lost = ~np.isfinite(filled[t])
-        filled[t, lost] = filled[t - 1, lost]
-    return filled
 
 
 def _recognised(segments: Mapping[str, Any], n_frames: int) -> np.ndarray:

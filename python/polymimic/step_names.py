@@ -19,6 +19,8 @@ run past the demonstration's end is moved back to its last full window. Both ``b
 
 from __future__ import annotations
 
+import math
+import numbers
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -27,11 +29,15 @@ import numpy as np
 from polymimic._native import PrimitiveRecognizer
 from polymimic.field import PRIMITIVES
 
-__all__ = ["LABELS", "NO_NAME", "WINDOW_FRAMES", "name_windows", "repeat_last_good", "step_settings"]
+__all__ = ["LABELS", "NO_NAME", "SEGMENTER_SETTINGS", "WINDOW_FRAMES", "name_windows", "repeat_last_good",
+           "segmenter_settings", "step_settings"]
 
 LABELS = ("steps", "segments")
 """How a recogniser may label demonstrations: by the second of motion from each step (the
 default), or by the segments (SPEC §3) the frames lie in."""
+
+SEGMENTER_SETTINGS = ("min_frames", "stop_distance_mm", "stop_rotation_deg", "limit_sds", "gap_margin")
+"""The settings :meth:`polymimic.PrimitiveRecognizer.segment` takes."""
 
 # The segmenter's settings that name a step as they name a segment.
 _STEP_SETTINGS = ("stop_distance_mm", "stop_rotation_deg", "gap_margin")
@@ -48,19 +54,35 @@ _STOP = PRIMITIVES.index("stop")
 
 
 def repeat_last_good(values: np.ndarray) -> np.ndarray:
-    """NaN entries replaced by the last finite one before them (the first finite one before
-    any); all NaN stays NaN."""
+    """A copy of ``values`` (one reading a row) with each NaN replaced, column by column, by the
+    last finite reading before it, and those before any by the first finite one: the nearest
+    reading there is, for a dropout at the start too. A column of NaN alone stays NaN."""
+    values = np.asarray(values)
+    if not len(values):
+        return values.copy()
     good = np.isfinite(values)
-    if good.all() or not good.any():
-        return values
-    index = np.maximum.accumulate(np.where(good, np.arange(len(values)), -1))
-    index[index < 0] = int(np.argmax(good))
-    return values[index]
+    rows = np.arange(len(values)).reshape(-1, *[1] * (values.ndim - 1))
+    last_good = np.maximum.accumulate(np.where(good, rows, -1), axis=0)
+    # argmax finds a column's first finite row; an all-NaN column's row 0 is NaN, and stays so.
+    index = np.where(last_good < 0, np.argmax(good, axis=0), last_good)
+    return np.take_along_axis(values, index, axis=0)
+
+
+def segmenter_settings(segmenter: Mapping[str, Any] | None) -> dict[str, Any]:
+    """``segmenter`` as a dict, or a ValueError naming the keys that are none of
+    :data:`SEGMENTER_SETTINGS` (a misspelt one would otherwise leave its default in force)."""
+    settings = dict(segmenter or {})
+    unknown = [k for k in settings if k not in SEGMENTER_SETTINGS]
+    if unknown:
+        raise ValueError(f"segmenter has no setting {', '.join(map(repr, unknown))}; its settings are "
+                         f"{', '.join(SEGMENTER_SETTINGS)}")
+    return settings
 
 
 def step_settings(segmenter: Mapping[str, Any] | None) -> dict[str, Any]:
-    """The segmenter's settings that :func:`name_windows` names a step with."""
-    return {k: v for k, v in dict(segmenter or {}).items() if k in _STEP_SETTINGS}
+    """The segmenter's settings that :func:`name_windows` names a step with (a ValueError for
+    a key the segmenter has not)."""
+    return {k: v for k, v in segmenter_settings(segmenter).items() if k in _STEP_SETTINGS}
 
 
 def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Sequence[int] | np.ndarray, *,
@@ -68,13 +90,18 @@ def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Se
                  gap_margin: float = 2.0) -> np.ndarray:
     """The index into :data:`polymimic.field.PRIMITIVES` of the window of ``window_frames``
     frames from each of ``starts`` (a tracker-frame record array), or :data:`NO_NAME`.
-    Lost readings repeat the last good one, as the environment repeats them."""
+    ``starts`` are frame indices in time order; the tolerances and ``gap_margin`` are finite
+    and ≥ 0, as the segmenter has them. Lost readings repeat the last good one, as the
+    environment repeats them."""
     if isinstance(window_frames, bool) or not isinstance(window_frames, (int, np.integer)) or window_frames < 2:
         raise ValueError(f"window_frames must be an integer ≥ 2, got {window_frames!r}")
+    for name, value in (("stop_distance_mm", stop_distance_mm), ("stop_rotation_deg", stop_rotation_deg),
+                        ("gap_margin", gap_margin)):
+        _check_non_negative(name, value)
     n = len(frames)
-    poses = np.column_stack([repeat_last_good(np.asarray(frames[c], dtype=np.float64))
-                             for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad")])
-    first = np.minimum(np.asarray(starts, dtype=np.int64), max(n - window_frames, 0))
+    poses = repeat_last_good(np.column_stack([np.asarray(frames[c], dtype=np.float64)
+                                              for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad")]))
+    first = np.minimum(_checked_starts(starts, n), max(n - window_frames, 0))
     windows = [poses[s:s + window_frames] for s in first]
     named = np.array([_stop_or_moving(w, stop_distance_mm, stop_rotation_deg) for w in windows], dtype=np.int64)
     moving = np.flatnonzero(named == _MOVING)
@@ -87,6 +114,32 @@ def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Se
             close = ~np.isfinite(best_two[:, 1]) | (best_two[:, 1] - best_two[:, 0] < gap_margin)
         named[moving] = np.where(close, NO_NAME, scores.argmax(axis=1))
     return named
+
+
+def _check_non_negative(name: str, value: Any) -> None:
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) or value < 0:
+        raise ValueError(f"{name} must be a finite number ≥ 0, got {value!r}")
+
+
+def _checked_starts(starts: Sequence[int] | np.ndarray, n_frames: int) -> np.ndarray:
+    """``starts`` as int64 frame indices, or a ValueError: each must be a frame of the
+    demonstration (a negative one would slice from its end), and they run in time order, as
+    steps do (a repeat is allowed)."""
+    checked = np.asarray(starts)
+    if checked.ndim != 1 or (checked.size and checked.dtype.kind not in "iu"):
+        raise ValueError(f"starts must be a sequence of integer frame indices, got {starts!r}")
+    checked = checked.astype(np.int64)
+    outside = np.flatnonzero((checked < 0) | (checked >= n_frames))
+    if len(outside):
+        i = int(outside[0])
+        raise ValueError(f"starts[{i}] = {checked[i]} is not a frame index of these {n_frames} frames "
+                         f"(0 to {n_frames - 1})")
+    backwards = np.flatnonzero(np.diff(checked) < 0)
+    if len(backwards):
+        i = int(backwards[0]) + 1
+        raise ValueError(f"starts must not decrease: starts[{i}] = {checked[i]} follows starts[{i - 1}] = "
+                         f"{checked[i - 1]}")
+    return checked
 
 
 def _stop_or_moving(poses: np.ndarray, stop_distance_mm: float, stop_rotation_deg: float) -> int:

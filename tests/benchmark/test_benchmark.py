@@ -2,6 +2,8 @@
 resumption, damaged files, and the same bits on one worker or two."""
 
 import json
+import shutil
+import sys
 
 import pytest
 
@@ -286,3 +288,37 @@ def test_export_writes_each_crowd_with_its_members_lapses(benchmarked, tmp_path,
     assert minari.load_dataset("polymimic/benchmark-pair-v0").storage.metadata["polymimic_actions"] == "commands"
     assert main(["export", "--run-dir", str(benchmarked), *who]) == 2
     assert "exists already: pass overwrite=True" in capsys.readouterr().err
+
+
+WHO = ["--author", "tests", "--author-email", "tests@polymimic.invalid", "--code-permalink", "tests"]
+
+
+def test_export_with_a_crowd_missing_writes_no_dataset(benchmarked, tmp_path, monkeypatch, capsys):
+    minari = pytest.importorskip("minari")
+    monkeypatch.setenv("MINARI_DATASETS_PATH", str(tmp_path / "minari"))
+    run = tmp_path / "bench"
+    shutil.copytree(benchmarked, run)
+    BenchmarkDir(run).crowd_path("duo").unlink()  # the second profile: the first's would be written first
+    assert main(["export", "--run-dir", str(run), *WHO]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "crowd_duo.parquet is missing: run `polymimic benchmark" in err and len(err.splitlines()) == 1
+    assert not minari.list_local_datasets()
+
+
+def test_export_without_minari_says_how_to_install_it(benchmarked, tmp_path, monkeypatch, capsys):
+    monkeypatch.setenv("MINARI_DATASETS_PATH", str(tmp_path / "minari"))
+    monkeypatch.setitem(sys.modules, "minari", None)  # as if it were not installed
+    assert main(["export", "--run-dir", str(benchmarked), *WHO]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == 'polymimic export: error: Minari export needs minari: pip install "polymimic[minari]"'
+
+
+def test_export_reads_the_config_asked_for_as_the_benchmark_does(benchmarked, tiny_toml, tmp_path, monkeypatch,
+                                                                 capsys):
+    pytest.importorskip("minari")
+    monkeypatch.setenv("MINARI_DATASETS_PATH", str(tmp_path / "minari"))
+    assert main(["export", "--run-dir", str(benchmarked), "--config", str(tiny_toml), *WHO]) == 0
+    assert capsys.readouterr().out.split() == ["polymimic/benchmark-pair-v0", "polymimic/benchmark-duo-v0"]
+    assert main(["export", "--run-dir", str(benchmarked), "--quick", *WHO]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "was made with a different config" in err and len(err.splitlines()) == 1

@@ -163,6 +163,11 @@ def test_bad_step_label_settings_are_refused_by_name(forward_demos, recognizer):
         labels.step_labels(forward_demos, recognizer, stride_frames=0)
     with pytest.raises(ValueError, match="unknown labels 'frames'; expected one of 'steps', 'segments'"):
         bco.labelled(forward_demos, recognizer=recognizer, labels="frames")
+    with pytest.raises(ValueError, match="gap_margin must be a finite number ≥ 0, got nan"):
+        labels.step_labels(forward_demos, recognizer, gap_margin=math.nan)
+    for labelling in ("steps", "segments"):
+        with pytest.raises(ValueError, match="segmenter has no setting 'stop_rotation'; its settings are "):
+            bco.labelled(forward_demos, recognizer=recognizer, labels=labelling, segmenter={"stop_rotation": 10.0})
 
 
 def test_bco_lp_with_weight_zero_equals_fitting_without_that_member(mixed_demos, recognizer):

@@ -54,6 +54,16 @@ def test_a_dropout_repeats_the_last_good_reading():
     assert steps.observations[1, 3] == np.float32(frames["ball_x_mm"][29])
 
 
+def test_a_reading_lost_from_the_start_takes_the_first_good_one():
+    demo = _scripted("stop", 40)
+    frames = demo.frames.copy()
+    frames["ball_x_mm"][:3] = np.nan
+    steps = export.steps_of(polymimic.Demonstration(frames=frames, outcome="time_up", demonstrator="poor",
+                                                    configuration=1, seed=0), actions="commands")
+    assert steps.observations[0, 3] == np.float32(frames["ball_x_mm"][3])
+    assert np.isfinite(steps.observations).all()
+
+
 def test_commands_round_trip_through_minari(expert):
     dataset = export.to_minari(expert, "polymimic/expert-v0", actions="commands", **WHO)
     loaded = minari.load_dataset("polymimic/expert-v0")
@@ -158,6 +168,23 @@ def test_each_episode_carries_its_demonstrators_lapse(expert, recognizer):
         export.to_minari(expert, "polymimic/x-v0", recognizer=recognizer, lapses={"tiny": 0.1}, **WHO)
     with pytest.raises(ValueError, match="labels must be one of 'steps', 'segments', got 'frames'"):
         export.steps_of(expert[0], recognizer=recognizer, labels="frames")
+
+
+def test_lapses_may_be_numpy_numbers_but_not_truth_values_or_nan():
+    checked = export._checked_lapses({"expert": np.int64(1), "poor": np.float64(0.1)}, {"expert", "poor"})
+    assert checked == {"expert": 1.0, "poor": 0.1} and all(type(v) is float for v in checked.values())
+    assert export._checked_lapses({"poor": np.float32(0.5)}, {"poor"}) == {"poor": 0.5}
+    for bad in (True, np.bool_(False), np.float64(np.nan), np.int64(2), -0.1, "0.1"):
+        with pytest.raises(ValueError, match=r"lapses\['poor'\] must be a number in \[0, 1\]"):
+            export._checked_lapses({"poor": bad}, {"poor"})
+
+
+def test_a_misspelt_segmenter_setting_is_refused_under_either_labelling(expert, recognizer):
+    for labels in export.LABELS:
+        with pytest.raises(ValueError, match="segmenter has no setting 'gap_margn'; its settings are min_frames"):
+            export.steps_of(expert[0], recognizer=recognizer, labels=labels, segmenter={"gap_margn": 5.0})
+    with pytest.raises(ValueError, match="gap_margin must be a finite number ≥ 0, got -1.0"):
+        export.steps_of(expert[0], recognizer=recognizer, segmenter={"gap_margin": -1.0})
 
 
 def test_a_failed_overwrite_keeps_the_old_dataset(expert):

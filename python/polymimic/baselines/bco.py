@@ -33,7 +33,7 @@ from polymimic.baselines.labels import Labelled, segment_labels, step_labels
 from polymimic.baselines.policy import ClonedPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, stride_for_frames, train
 from polymimic.field import Demonstration
-from polymimic.step_names import LABELS, step_settings
+from polymimic.step_names import LABELS, segmenter_settings, step_settings
 
 __all__ = ["LABELS", "check_recognizer", "fit", "labelled"]
 
@@ -54,7 +54,7 @@ def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRe
     (``labels="steps"``, named at the stride the fit of at most ``max_samples`` decision
     samples takes them) or by its segment (``"segments"``); gaps give no label."""
     recognizer = check_recognizer(recognizer)
-    settings = dict(segmenter or {})
+    settings = segmenter_settings(segmenter)
     if labels == "steps":
         demos = list(demonstrations)
         stride = stride_for_frames(sum(len(d.frames) for d in demos), max_samples=max_samples)

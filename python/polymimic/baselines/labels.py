@@ -111,10 +111,8 @@ def observations_of(demo: Demonstration) -> np.ndarray:
     """The ``(n, 5)`` observations of a demonstration's frames: NaN readings (lost tracking,
     a ball out of sight) repeat the last good one, and a small-field body is scaled up."""
     frames = demo.frames
-    obs = np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
-                                                "ball_x_mm", "ball_y_mm")]).astype(np.float64)
-    for column in range(obs.shape[1]):
-        obs[:, column] = repeat_last_good(obs[:, column])
+    obs = repeat_last_good(np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
+                                                                 "ball_x_mm", "ball_y_mm")]).astype(np.float64))
     field = field_of(demo.body)
     if field == "small":
         obs[:, [0, 1]] *= _SMALL_TO_LARGE

@@ -32,9 +32,12 @@ def export_crowds(run: BenchmarkDir, config: BenchmarkConfig, *, prefix: str, ac
     """Write ``<prefix>-<profile>-v0`` for every profile the benchmark recorded."""
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "benchmark")) \
         if actions == "recognizer" else None
+    crowds = config.crowds()
+    # Every crowd first: one missing must not leave the earlier profiles' datasets written.
+    paths = [run.require(run.crowd_path(crowd.name), "benchmark") for crowd in crowds]
     written, left_out = [], {}
-    for crowd in config.crowds():
-        demos = load_demonstrations(run.require(run.crowd_path(crowd.name), "benchmark"))
+    for crowd, path in zip(crowds, paths):
+        demos = load_demonstrations(path)
         simulated = [m for m in crowd.members if m.body in export.SIMULATED_BODIES]
         if len(simulated) < len(crowd.members):
             left_out[crowd.name] = [m.name for m in crowd.members if m not in simulated]

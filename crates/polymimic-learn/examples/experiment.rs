@@ -2,7 +2,8 @@
 //! control quickly: `cargo run --release -p polymimic-learn --example experiment -- [trials]
 //! [attempts_per_configuration] [key=value …]`, where each `key=value` overrides a
 //! [`LearningConfig`] field (for instance `lp_bounds=\"clamp\"`), or the seed of the
-//! recorded demonstrations (`demonstrations_seed=0`, the default, as `polymimic reproduce`).
+//! recorded demonstrations (`demonstrations_seed=0`, the default, as `polymimic reproduce`),
+//! or, prefixed `field.`, a [`FieldConfig`] value by its path (`field.tracker.heading_sigma_rad=0.0026`).
 //!
 //! Prints, per experiment, the mean (sd) final LP, match rate and candidates made permanent of
 //! each model, what changed the LPs, the trials whose final LPs follow the true skill order,
@@ -11,7 +12,7 @@
 
 use std::collections::BTreeMap;
 
-use polymimic_field::Demonstrator;
+use polymimic_field::{Demonstrator, FieldConfig};
 use polymimic_learn::{
     ControlMode, Laboratory, LearningConfig, LpCauseCounts, PhaseOne, Pitch, Running, SegmentedDemonstration,
     TrialResult, WorldModel, lp_order_hits, net_goals_of, summarise,
@@ -89,14 +90,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     let attempts: usize = args.get(2).map_or(Ok(0), |s| s.parse())?;
     let mut config = serde_json::to_value(LearningConfig::default())?;
+    let mut field = serde_json::from_str::<serde_json::Value>(&FieldConfig::default().to_json_in_full())?;
     let mut demonstrations_seed = 0;
     for pair in args.iter().skip(3) {
         match pair.split_once('=').ok_or("overrides are key=value")? {
             ("demonstrations_seed", value) => demonstrations_seed = value.parse()?,
+            (key, value) if key.starts_with("field.") => {
+                let pointer = key.replacen("field.", "/", 1).replace('.', "/");
+                *field.pointer_mut(&pointer).ok_or_else(|| format!("no field parameter {key}"))? =
+                    serde_json::from_str(value)?;
+            }
             (key, value) => config[key] = serde_json::from_str(value)?,
         }
     }
-    let lab = Laboratory::new(1000, 1, LearningConfig::from_json(&config.to_string())?)?;
+    let field: FieldConfig = serde_json::from_value(field)?;
+    let lab = Laboratory::on_field(1000, 1, LearningConfig::from_json(&config.to_string())?, field)?;
     let everyone = [Demonstrator::Expert, Demonstrator::Tiny, Demonstrator::Humanoid, Demonstrator::Poor];
     let recorded = lab.record(&everyone, 25, demonstrations_seed)?;
     let of = |names: &[&str]| -> Vec<SegmentedDemonstration> {

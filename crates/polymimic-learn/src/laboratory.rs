@@ -64,8 +64,21 @@ impl Laboratory {
     /// # Errors
     /// A field, recogniser or config error.
     pub fn new(per_primitive: usize, seed: u64, config: LearningConfig) -> Result<Self, LaboratoryError> {
+        Self::on_field(per_primitive, seed, config, FieldConfig::default())
+    }
+
+    /// As [`Laboratory::new`], on a field of its own (another tracker, another humanoid).
+    ///
+    /// # Errors
+    /// A field, recogniser or config error.
+    pub fn on_field(
+        per_primitive: usize,
+        seed: u64,
+        config: LearningConfig,
+        field: FieldConfig,
+    ) -> Result<Self, LaboratoryError> {
         config.check().map_err(LearnError::from)?;
-        let field = FieldConfig::default();
+        field.check().map_err(FieldError::from)?;
         let training: Vec<LabelledSequence> = self_observation(per_primitive, seed, &field)?
             .iter()
             .map(|s| LabelledSequence { primitive: s.primitive, poses: s.frames.iter().map(Frame::robot).collect() })
@@ -245,4 +258,17 @@ impl<T: FinalLps> FinalLps for &T {
 pub fn lp_order_hits<T: FinalLps>(trials: &[T], order: &[&str]) -> usize {
     let lp = |t: &T, who: &str| t.final_lp(who).unwrap_or(f64::NAN);
     trials.iter().filter(|t| order.windows(2).all(|w| lp(t, w[0]) < lp(t, w[1]))).count()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_field_that_does_not_validate_is_refused_before_anything_is_simulated() {
+        let mut field = FieldConfig::default();
+        field.tracker.heading_sigma_rad = -1.0;
+        let refused = Laboratory::on_field(1000, 1, LearningConfig::default(), field).err().expect("refused");
+        assert!(refused.to_string().contains("heading_sigma_rad"), "{refused}");
+    }
 }

@@ -178,6 +178,13 @@ def test_bco_lp_with_weight_zero_equals_fitting_without_that_member(mixed_demos,
     assert (weighted.predict(observations) == without.predict(observations)).all()
 
 
+def test_numpy_weights_count_as_the_numbers_they_are(mixed_demos, recognizer):
+    as_numpy = bco_lp.fit(mixed_demos, recognizer=recognizer, weights={"poor": np.int64(1), "expert": np.float64(0.5)})
+    as_python = bco_lp.fit(mixed_demos, recognizer=recognizer, weights={"poor": 1.0, "expert": 0.5})
+    observations = grid_observations()
+    assert (as_numpy.predict(observations) == as_python.predict(observations)).all()
+
+
 def test_bc_best_learns_from_the_named_member_only(mixed_demos):
     best = bc_best.fit(mixed_demos, member="expert")
     alone = bc.fit([d for d in mixed_demos if d.demonstrator == "expert"])
@@ -306,7 +313,7 @@ def test_an_unknown_member_is_refused_by_name(mixed_demos):
         bc_best.fit(mixed_demos, member="novice")
 
 
-@pytest.mark.parametrize("weight", [-0.1, 1.5, math.nan, "high"])
+@pytest.mark.parametrize("weight", [-0.1, 1.5, math.nan, "high", True])
 def test_a_weight_outside_zero_one_is_refused_by_name(mixed_demos, recognizer, weight):
     with pytest.raises(ValueError, match=r"weights\['poor'\] must be a number in \[0, 1\]"):
         bco_lp.fit(mixed_demos, recognizer=recognizer, weights={"poor": weight, "expert": 0.5})

@@ -30,6 +30,7 @@ the millimetres, is what carries over).
 from __future__ import annotations
 
 import dataclasses
+import numbers
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -96,12 +97,12 @@ def check_demonstrations(demonstrations: Sequence[Demonstration]) -> list[Demons
 
 def check_weights(weights: Mapping[str, float], demonstrations: Sequence[Demonstration]) -> dict[str, float]:
     """Every demonstrator's weight, in [0, 1], or a ValueError naming the one missing or wrong."""
-    checked = {}
+    checked: dict[str, float] = {}
     for name in sorted({d.demonstrator for d in demonstrations}):
         if name not in weights:
             raise ValueError(f"weights has no weight for demonstrator {name!r}; it has {sorted(weights)}")
         value = weights[name]
-        if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) or not 0.0 <= value <= 1.0:
+        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0.0 <= value <= 1.0:
             raise ValueError(f"weights[{name!r}] must be a number in [0, 1], got {value!r}")
         checked[name] = float(value)
     return checked

@@ -162,7 +162,9 @@ def test_a_policy_for_another_trial_shares_what_was_learned_and_plays_as_a_new_o
         played, expected = (polymimic.evaluate(p, attempts_per_configuration=4, seed=5) for p in (shared, fresh))
         assert [a.frames.tobytes() for a in played.attempts] == [a.frames.tobytes() for a in expected.attempts]
         assert played.behaviours == expected.behaviours
-    by_lp = polymimic.ImitatorPolicy(first, recognizer=recognizer, control="improved", demonstrations=expert_and_poor,
-                                     config=polymimic.LearningConfig(imitator_weighting="lp"))
-    with pytest.raises(ValueError, match="trial's LPs"):
-        by_lp.for_trial(second)
+    for weighting in ("lp", "lp_gain"):
+        by_lp = polymimic.ImitatorPolicy(first, recognizer=recognizer, control="improved",
+                                         demonstrations=expert_and_poor,
+                                         config=polymimic.LearningConfig(imitator_weighting=weighting))
+        with pytest.raises(ValueError, match=f'imitator_weighting="{weighting}".*trial\'s LPs'):
+            by_lp.for_trial(second)

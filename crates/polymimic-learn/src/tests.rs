@@ -308,4 +308,6 @@ fn weighting_by_equal_lps_is_bit_for_bit_the_even_trial() {
         scorer_and_loser(&LearningConfig { initial_lp: 0.0, ..held }),
         "all at 0: all weigh 1"
     );
+    let gain = LearningConfig { imitator_weighting: ImitatorWeighting::LpGain, ..weighted };
+    assert_eq!(scorer_and_loser(&gain), scorer_and_loser(&held), "no LP rose: all weigh 1");
 }

@@ -99,6 +99,11 @@ mod tests {
             vec![1.0, 1.0],
             "none rose: all count"
         );
+        // LPs held at the start (the uniform-LP ablation): lp_gain weighs as even does.
+        assert_eq!(
+            imitator_weights(ImitatorWeighting::LpGain, &[0.5; 3], 0.5),
+            imitator_weights(ImitatorWeighting::Even, &[0.5; 3], 0.5)
+        );
         assert_eq!(imitator_weights(ImitatorWeighting::Lp, &lps, 0.5), lp_weights(&lps));
         assert_eq!(imitator_weights(ImitatorWeighting::Even, &lps, 0.5), vec![1.0; 4]);
     }

@@ -427,3 +427,29 @@ def test_the_small_batch_forest_predicts_as_scikit_learns_forest_to_the_bit():
             query = rng.normal(size=(rows, 6))
             assert np.array_equal(ours.predict_proba(query), theirs.predict_proba(query))
             assert np.array_equal(ours.predict(query), theirs.predict(query))
+
+
+def test_the_small_batch_boosting_predicts_as_scikit_learns_boosting_to_the_bit():
+    from sklearn.ensemble import HistGradientBoostingClassifier
+
+    from polymimic.baselines.classifiers import SmallBatchBoosting
+
+    rng = np.random.default_rng(1)
+    X = rng.normal(size=(1500, 5))
+    X[rng.random(X.shape) < 0.05] = np.nan  # missing values take the side each split learned for them
+    multiclass = (X[:, 0] > 0).astype(int) + 2 * (X[:, 1] > 0.5) + (np.nan_to_num(X[:, 2]) > 1)
+    for y in (multiclass, (X[:, 3] > 0).astype(int)):
+        params = {"max_iter": 40, "max_leaf_nodes": 15, "learning_rate": 0.1, "early_stopping": False}
+        theirs = HistGradientBoostingClassifier(random_state=2, **params).fit(X, y)
+        ours = SmallBatchBoosting(random_state=2, **params).fit(X, y)
+        # Rows right on the thresholds, too, where ≤ and < part ways.
+        splits = [node for iteration in theirs._predictors for tree in iteration for node in tree.nodes
+                  if not node["is_leaf"]]
+        on_thresholds = np.full((len(splits), 5), 0.0)
+        on_thresholds[np.arange(len(splits)), [s["feature_idx"] for s in splits]] = [s["num_threshold"] for s in splits]
+        for rows in (1, 7, 400):
+            query = rng.normal(size=(rows, 5))
+            query[rng.random(query.shape) < 0.1] = np.nan
+            query = np.vstack([query, on_thresholds[rng.integers(len(splits), size=rows)]])
+            assert np.array_equal(ours.predict_proba(query), theirs.predict_proba(query))
+            assert np.array_equal(ours.predict(query), theirs.predict(query))

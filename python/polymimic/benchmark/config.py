@@ -148,14 +148,14 @@ class BenchmarkConfig:
     def quick(cls) -> BenchmarkConfig:
         """A small benchmark: 2 trials per profile, 5 demonstrations per member and configuration,
         5 attempts per configuration, 3 tuning candidates on 3 attempts each, fits of at most
-        3000 decision samples, ppo (where named) for 8192 steps, and the quick reproduction's
+        1000 decision samples, ppo (where named) for 8192 steps, and the quick reproduction's
         recogniser."""
         full = cls()
         return dataclasses.replace(
             full, run=_with_lp_weighting(dataclasses.replace(RunConfig.quick(), experiments=full.run.experiments)),
             benchmark=dataclasses.replace(full.benchmark, trials=2, demonstrations_per_configuration=5,
                                           attempts_per_configuration=5, validation_attempts_per_configuration=3,
-                                          tuning_budget=3, max_decision_samples=3000, ppo_timesteps=8192,
+                                          tuning_budget=3, max_decision_samples=1000, ppo_timesteps=8192,
                                           ppo_eval_every=4096))
 
     def to_dict(self) -> dict[str, Any]:

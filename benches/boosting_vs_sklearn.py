@@ -6,13 +6,13 @@ grid: 300 iterations of five classes, 31 leaves. Rows per call are what a policy
 """
 
 import argparse
-import statistics
 import time
 
 import numpy as np
 from sklearn.ensemble import HistGradientBoostingClassifier
 from threadpoolctl import threadpool_limits
 
+from _rounds import alternate
 from polymimic.baselines.classifiers import SmallBatchBoosting
 
 
@@ -36,17 +36,12 @@ def main():
     ours, theirs = SmallBatchBoosting(**params).fit(X, y), HistGradientBoostingClassifier(**params).fit(X, y)
     queries = [rng.normal(size=(args.rows, 12)) for _ in range(args.calls)]
     assert all(np.array_equal(ours.predict_proba(q), theirs.predict_proba(q)) for q in queries[:20])
-    ours_rates, theirs_rates = [], []
     with threadpool_limits(limits=1):  # as a benchmark worker predicts
-        for round_ in range(args.rounds):
-            ours_rates.append(calls_per_second(ours, queries))
-            theirs_rates.append(calls_per_second(theirs, queries))
-            print(f"round {round_}: SmallBatchBoosting {ours_rates[-1]:7.0f}  scikit-learn {theirs_rates[-1]:7.0f} "
-                  f"calls/s  ratio {ours_rates[-1] / theirs_rates[-1]:.2f}")
-    ratio = statistics.median(a / b for a, b in zip(ours_rates, theirs_rates))
-    print(f"\n{args.rows} rows per call: SmallBatchBoosting {statistics.median(ours_rates):.0f} calls/s, "
-          f"scikit-learn {statistics.median(theirs_rates):.0f}; median ratio {ratio:.2f}")
-
+        ours_rate, theirs_rate, ratio = alternate(
+            args.rounds, lambda _: calls_per_second(ours, queries), lambda _: calls_per_second(theirs, queries),
+            names=("SmallBatchBoosting", "scikit-learn"), unit="calls/s")
+    print(f"\n{args.rows} rows per call: SmallBatchBoosting {ours_rate:.0f} calls/s, "
+          f"scikit-learn {theirs_rate:.0f}; median ratio {ratio:.2f}")
 
 if __name__ == "__main__":
     main()

@@ -5,12 +5,12 @@ Run: ``python benches/vector_env_vs_sync.py``.
 """
 
 import argparse
-import statistics
 import time
 
 import gymnasium
 import numpy as np
 
+from _rounds import alternate
 from polymimic.env import PenaltyKickEnv
 from polymimic.vector_env import PenaltyKickVectorEnv
 
@@ -32,16 +32,12 @@ def main():
     args = parser.parse_args()
     ours = PenaltyKickVectorEnv(args.envs)
     sync = gymnasium.vector.SyncVectorEnv([PenaltyKickEnv for _ in range(args.envs)])
-    ours_rates, sync_rates = [], []
-    for round_ in range(args.rounds):
-        ours_rates.append(steps_per_second(ours, args.envs, args.steps, round_))
-        sync_rates.append(steps_per_second(sync, args.envs, args.steps, round_))
-        print(f"round {round_}: vector {ours_rates[-1]:8.0f}  sync {sync_rates[-1]:8.0f} env steps/s  "
-              f"ratio {ours_rates[-1] / sync_rates[-1]:.2f}")
-    ratio = statistics.median(a / b for a, b in zip(ours_rates, sync_rates))
-    print(f"\n{args.envs} envs: PenaltyKickVectorEnv {statistics.median(ours_rates):.0f} env steps/s, "
-          f"SyncVectorEnv {statistics.median(sync_rates):.0f}; median ratio {ratio:.2f} (target ≥ 3)")
-
+    ours_rate, sync_rate, ratio = alternate(
+        args.rounds, lambda round_: steps_per_second(ours, args.envs, args.steps, round_),
+        lambda round_: steps_per_second(sync, args.envs, args.steps, round_), names=("vector", "sync"),
+        unit="env steps/s")
+    print(f"\n{args.envs} envs: PenaltyKickVectorEnv {ours_rate:.0f} env steps/s, "
+          f"SyncVectorEnv {sync_rate:.0f}; median ratio {ratio:.2f} (target ≥ 3)")
 
 if __name__ == "__main__":
     main()

@@ -308,6 +308,7 @@ class LearningConfig:
         prediction_noise_divisor: float = 3.0,
         ball_dead_band_mm: float = 10.0,
         robot_dead_band_mm: float = 10.0,
+        prefer_sooner_goals: bool = False,
         lp_bounds: Literal["soft", "clamp"] = "soft",
         lp_scope: Literal["own_demonstrator", "every"] = "own_demonstrator",
         lp_criteria: Literal["foremost", "both"] = "foremost",
@@ -368,6 +369,8 @@ class LearningConfig:
     def ball_dead_band_mm(self) -> float: ...
     @property
     def robot_dead_band_mm(self) -> float: ...
+    @property
+    def prefer_sooner_goals(self) -> bool: ...
     @property
     def lp_bounds(self) -> str: ...
     @property

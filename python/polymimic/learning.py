@@ -43,8 +43,11 @@ class LearningConfig(_native.LearningConfig):
 
     Values the thesis leaves open are choices: ``permanency_step``, the ball-prediction
     thresholds (``ball_min_samples``, ``ball_max_angle_sd_deg``, ``ball_moved_mm``), the dead
-    bands of the approach criteria (``ball_dead_band_mm``, ``robot_dead_band_mm``), and how the
-    LP is shaped:
+    bands of the approach criteria (``ball_dead_band_mm``, ``robot_dead_band_mm``),
+    ``prefer_sooner_goals`` (``False``; ``True`` makes the improved control rate, of two
+    behaviours predicted to score, the one scoring in fewer primitives the better, instead of
+    the one carrying the ball further: the robot then stops turning one way for a goal three
+    pushes later and back for another), and how the LP is shaped:
 
     - ``lp_bounds``: ``"soft"`` (a rise moves the LP by ``amount · 2(1 − LP)``, a fall by
       ``amount · 2 LP``: the thesis's step at the midpoint, none at a bound, so each

@@ -168,3 +168,18 @@ def test_a_policy_for_another_trial_shares_what_was_learned_and_plays_as_a_new_o
                                          config=polymimic.LearningConfig(imitator_weighting=weighting))
         with pytest.raises(ValueError, match=f'imitator_weighting="{weighting}".*trial\'s LPs'):
             by_lp.for_trial(second)
+
+
+def test_preferring_sooner_goals_is_a_switch_of_the_improved_control(recognizer, expert_and_poor):
+    config = polymimic.LearningConfig(prefer_sooner_goals=True)
+    assert config.prefer_sooner_goals is True and polymimic.LearningConfig().prefer_sooner_goals is False
+    assert "prefer_sooner_goals = true\n" in config.to_toml()
+    assert polymimic.LearningConfig.from_toml(config.to_toml()) == config
+    with pytest.raises(TypeError, match="prefer_sooner_goals must be True or False, got 1"):
+        polymimic.LearningConfig(prefer_sooner_goals=1)
+    trial = polymimic.run_trial(expert_and_poor, recognizer=recognizer, ordering=["poor", "expert"],
+                                phase_one="interleaved", seed=0)
+    policy = polymimic.ImitatorPolicy(trial, recognizer=recognizer, config=config, control="improved",
+                                      demonstrations=expert_and_poor)
+    sooner = polymimic.evaluate(policy, attempts_per_configuration=10)
+    assert sooner.own_goals <= 1 and sooner.goals >= 8, [a.outcome for a in sooner.attempts]

@@ -131,6 +131,9 @@ pub struct LearningConfig {
     /// *Choice*: the robot nearer the ball by less than this counts as neither nearer nor
     /// farther (a walking humanoid sways by about a centimetre while it stands).
     pub robot_dead_band_mm: f64,
+    /// *Choice*, improved control only: of two behaviours predicted to score, the one that
+    /// scores in fewer primitives rates better (by default the one carrying the ball further).
+    pub prefer_sooner_goals: bool,
     /// *Choice*: how the LP is bounded.
     pub lp_bounds: LpBounds,
     /// *Choice*: which demonstrations shape the LP while the model reads them.
@@ -168,6 +171,7 @@ impl Default for LearningConfig {
             prediction_noise_divisor: 3.0,
             ball_dead_band_mm: 10.0,
             robot_dead_band_mm: 10.0,
+            prefer_sooner_goals: false,
             lp_bounds: LpBounds::Soft,
             lp_scope: LpScope::OwnDemonstrator,
             lp_criteria: LpCriteria::Foremost,

@@ -49,15 +49,16 @@ pub enum ControlMode {
     #[default]
     Thesis,
     /// The thesis's future work: every behaviour predicts the ball with the ball response
-    /// learned from all the demonstrations (§5.4), and its predicted end is rated by a goal,
-    /// then by whether the demonstrations passing near it ended, on balance, in own goals,
-    /// then by how much nearer the goal it puts the ball, then the robot to the ball; only the
-    /// first primitive runs before choosing again, so a behaviour that comes to rate better
-    /// takes over at once (§4.4.1). Preconditions are not consulted: every behaviour competes.
-    /// Behaviours push only from where the demonstrators pushed toward the goal (relative to
-    /// the ball and the goal, [`PushRegion`](crate::PushRegion)), or when one predicts a goal;
-    /// anywhere else the robot takes the shortest route there in its own primitives
-    /// ([`ApproachPlan`](crate::ApproachPlan)), going round the ball rather than through it.
+    /// learned from all the demonstrations (§5.4), and its predicted end is rated by a goal (the
+    /// sooner the better, with `prefer_sooner_goals`), then by whether the demonstrations
+    /// passing near it ended, on balance, in own goals, then by how much nearer the goal it puts
+    /// the ball, then the robot to the ball; only the first primitive runs before choosing again, so a behaviour that comes to
+    /// rate better takes over at once (§4.4.1). Preconditions are not consulted: every
+    /// behaviour competes. Behaviours push only from where the demonstrators pushed toward the
+    /// goal (relative to the ball and the goal, [`PushRegion`](crate::PushRegion)), or when one
+    /// predicts a goal; anywhere else the robot takes the shortest route there in its own
+    /// primitives ([`ApproachPlan`](crate::ApproachPlan)), going round the ball rather than
+    /// through it.
     Improved,
 }
 
@@ -131,7 +132,7 @@ impl ImitatorPolicy<'_> {
         let (rating, best) =
             ratings.iter().enumerate().filter_map(|(i, rating)| rating.map(|rating| (rating, i))).max_by(
                 |(a, i), (b, j)| {
-                    a.total_cmp(b)
+                    a.total_cmp(b, self.config.prefer_sooner_goals)
                         .then(behaviours[*j].primitives.len().cmp(&behaviours[*i].primitives.len()))
                         .then(behaviours[*j].age.cmp(&behaviours[*i].age))
                 },
@@ -146,7 +147,7 @@ impl ImitatorPolicy<'_> {
         let mut ratings = vec![None; self.model.behaviours.len()];
         let root = &tree.nodes[0];
         if !root.ending.is_empty() {
-            let rating = Some(self.rate_end(state, state));
+            let rating = Some(self.rate_end(state, state, 0));
             root.ending.iter().for_each(|&b| ratings[b] = rating);
         }
         let rng = ChaCha8Rng::seed_from_u64(0);
@@ -178,29 +179,30 @@ impl ImitatorPolicy<'_> {
             |behaviours: &[usize], rating: Option<Rating>| behaviours.iter().for_each(|&b| ratings[b] = rating);
         let robot = self.motion.step(now.robot, primitive, f64::INFINITY, &mut rng);
         if !self.pitch.contains(robot.x_mm(), robot.y_mm()) {
-            settle(&here.below, (depth > 0).then(|| self.rate_end(start, &now)));
+            settle(&here.below, (depth > 0).then(|| self.rate_end(start, &now, depth)));
             return;
         }
         let ball = self.world.map_or((now.ball_x_mm, now.ball_y_mm), |w| w.ball_response.predict(&now, primitive));
         let next = TrackedFrame { robot, ball_x_mm: ball.0, ball_y_mm: ball.1 };
         if self.pitch.in_target_goal(ball.0, ball.1) || self.pitch.in_own_goal(ball.0, ball.1) {
-            settle(&here.below, Some(self.rate_end(start, &next)));
+            settle(&here.below, Some(self.rate_end(start, &next, depth + 1)));
             return;
         }
         if !here.ending.is_empty() {
-            settle(&here.ending, Some(self.rate_end(start, &next)));
+            settle(&here.ending, Some(self.rate_end(start, &next, depth + 1)));
         }
         for &child in &here.children {
             self.walk(tree, child, start, next, depth + 1, rng.clone(), ratings);
         }
     }
 
-    /// The rating of a chain from `start` that ended at `end`: a goal, then a state the
-    /// demonstrations do not tie to own goals, then millimetres the ball comes nearer the goal
-    /// (beyond the dead band), then millimetres the robot comes nearer the ball.
-    fn rate_end(&self, start: &TrackedFrame, end: &TrackedFrame) -> Rating {
+    /// The rating of a chain of `primitives` from `start` that ended at `end`: a goal (the
+    /// sooner the better, with `prefer_sooner_goals`), then a state the demonstrations do not tie to own goals, then
+    /// millimetres the ball comes nearer the goal (beyond the dead band), then millimetres the
+    /// robot comes nearer the ball.
+    fn rate_end(&self, start: &TrackedFrame, end: &TrackedFrame, primitives: usize) -> Rating {
         let value = self.world.map_or(0.0, |w| w.state_value.estimate(end));
-        Rating::of(start, end, value, &self.pitch, self.config)
+        Rating::of(start, end, value, primitives, &self.pitch, self.config)
     }
 }
 
@@ -209,6 +211,10 @@ impl ImitatorPolicy<'_> {
 struct Rating {
     /// +1 a goal, −1 an own goal, else 0.
     goal: f64,
+    /// Primitives chained to the end: with `prefer_sooner_goals`, of two predicted goals the
+    /// sooner wins, so the robot does not turn one way for a goal three pushes later, then back
+    /// for another.
+    primitives: usize,
     /// Whether the demonstrations that passed near the predicted state did not, on balance,
     /// end in own goals (its learned value is not negative).
     safe: bool,
@@ -217,7 +223,14 @@ struct Rating {
 }
 
 impl Rating {
-    fn of(before: &TrackedFrame, after: &TrackedFrame, value: f64, pitch: &Pitch, config: &LearningConfig) -> Self {
+    fn of(
+        before: &TrackedFrame,
+        after: &TrackedFrame,
+        value: f64,
+        primitives: usize,
+        pitch: &Pitch,
+        config: &LearningConfig,
+    ) -> Self {
         let goal = if pitch.in_target_goal(after.ball_x_mm, after.ball_y_mm) {
             1.0
         } else if pitch.in_own_goal(after.ball_x_mm, after.ball_y_mm) {
@@ -228,15 +241,22 @@ impl Rating {
         let ball = ball_to_goal_mm(before, pitch) - ball_to_goal_mm(after, pitch);
         Self {
             goal,
+            primitives,
             safe: value >= 0.0,
             ball_nearer_goal_mm: if ball.abs() > config.ball_dead_band_mm { ball } else { 0.0 },
             robot_nearer_ball_mm: robot_to_ball_mm(before) - robot_to_ball_mm(after),
         }
     }
 
-    fn total_cmp(&self, other: &Self) -> std::cmp::Ordering {
+    fn total_cmp(&self, other: &Self, sooner_goals: bool) -> std::cmp::Ordering {
+        let sooner = if sooner_goals && self.goal > 0.0 && other.goal > 0.0 {
+            other.primitives.cmp(&self.primitives)
+        } else {
+            std::cmp::Ordering::Equal
+        };
         self.goal
             .total_cmp(&other.goal)
+            .then(sooner)
             .then(self.safe.cmp(&other.safe))
             .then(self.ball_nearer_goal_mm.total_cmp(&other.ball_nearer_goal_mm))
             .then(self.robot_nearer_ball_mm.total_cmp(&other.robot_nearer_ball_mm))
@@ -350,6 +370,7 @@ mod tests {
         fn outcome_by_chaining(&self, index: usize, state: &TrackedFrame) -> Option<Rating> {
             let mut rng = ChaCha8Rng::seed_from_u64(0);
             let mut now = *state;
+            let mut chained = 0;
             for (k, &primitive) in self.model.behaviours[index].primitives.iter().enumerate() {
                 let robot = self.motion.step(now.robot, primitive, f64::INFINITY, &mut rng);
                 if !self.pitch.contains(robot.x_mm(), robot.y_mm()) {
@@ -361,11 +382,35 @@ mod tests {
                 let ball =
                     self.world.map_or((now.ball_x_mm, now.ball_y_mm), |w| w.ball_response.predict(&now, primitive));
                 now = TrackedFrame { robot, ball_x_mm: ball.0, ball_y_mm: ball.1 };
+                chained = k + 1;
                 if self.pitch.in_target_goal(ball.0, ball.1) || self.pitch.in_own_goal(ball.0, ball.1) {
                     break;
                 }
             }
-            Some(self.rate_end(state, &now))
+            Some(self.rate_end(state, &now, chained))
+        }
+    }
+
+    #[test]
+    fn of_two_predicted_goals_the_sooner_rates_better_if_asked_and_otherwise_length_does_not_count() {
+        use std::cmp::Ordering;
+        let rating = |goal, primitives, ball_nearer_goal_mm| Rating {
+            goal,
+            primitives,
+            safe: true,
+            ball_nearer_goal_mm,
+            robot_nearer_ball_mm: 0.0,
+        };
+        // A goal in one push beats a goal four primitives away that carries the ball further…
+        assert_eq!(rating(1.0, 1, 100.0).total_cmp(&rating(1.0, 4, 300.0), true), Ordering::Greater);
+        // …unless sooner goals are not preferred (the default): then the further wins.
+        assert_eq!(rating(1.0, 1, 100.0).total_cmp(&rating(1.0, 4, 300.0), false), Ordering::Less);
+        for sooner in [true, false] {
+            // With no goal predicted, how far the ball comes decides, however long the chain.
+            assert_eq!(rating(0.0, 1, 100.0).total_cmp(&rating(0.0, 4, 300.0), sooner), Ordering::Less);
+            assert_eq!(rating(-1.0, 1, 0.0).total_cmp(&rating(-1.0, 4, 0.0), sooner), Ordering::Equal);
+            // A goal however late beats none.
+            assert_eq!(rating(1.0, 9, 0.0).total_cmp(&rating(0.0, 1, 500.0), sooner), Ordering::Greater);
         }
     }
 

@@ -36,7 +36,8 @@ from sklearn.pipeline import Pipeline  # type: ignore[import-untyped, unused-ign
 from sklearn.preprocessing import StandardScaler  # type: ignore[import-untyped, unused-ignore]
 from sklearn.utils.validation import check_is_fitted  # type: ignore[import-untyped, unused-ignore]
 
-__all__ = ["FAMILIES", "SmallBatchBoosting", "SmallBatchForest", "WeightedKNeighbors", "fit_weighted", "make_classifier"]
+__all__ = ["FAMILIES", "SmallBatchBoosting", "SmallBatchForest", "WeightedKNeighbors", "fit_weighted",
+           "make_classifier"]
 
 FAMILIES = ("hist_gradient_boosting", "random_forest", "knn", "logistic_regression", "mlp")
 

@@ -12,7 +12,7 @@ use pyo3::types::{PyBool, PyDict, PyString, PyTuple, PyType};
 use crate::convert::one_of;
 
 /// Every constant, in the order `to_dict` and `repr` give them.
-const NAMES: [&str; 28] = [
+const NAMES: [&str; 29] = [
     "creation_threshold",
     "default_permanency",
     "permanency_threshold",
@@ -37,6 +37,7 @@ const NAMES: [&str; 28] = [
     "prediction_noise_divisor",
     "ball_dead_band_mm",
     "robot_dead_band_mm",
+    "prefer_sooner_goals",
     "lp_bounds",
     "lp_scope",
     "lp_criteria",
@@ -118,6 +119,7 @@ fn set(c: &mut LearningConfig, name: &str, value: &Bound<'_, PyAny>) -> PyResult
         "initial_lp" => float(&mut c.initial_lp),
         "imitator_lp" => float(&mut c.imitator_lp),
         "hold_lp" => flag(name, value).map(|v| c.hold_lp = v),
+        "prefer_sooner_goals" => flag(name, value).map(|v| c.prefer_sooner_goals = v),
         "imitator_weighting" => choice(name, value, &WEIGHTINGS).map(|v| c.imitator_weighting = v),
         "lp_goal" => float(&mut c.lp_goal),
         "lp_ball_to_goal" => float(&mut c.lp_ball_to_goal),
@@ -195,6 +197,7 @@ impl PyLearningConfig {
         match name {
             "ball_min_samples" => Ok(c.ball_min_samples.into_pyobject(py)?.into_any()),
             "hold_lp" => Ok(PyBool::new(py, c.hold_lp).to_owned().into_any()),
+            "prefer_sooner_goals" => Ok(PyBool::new(py, c.prefer_sooner_goals).to_owned().into_any()),
             "imitator_weighting" => Ok(PyString::new(py, name_of(&WEIGHTINGS, c.imitator_weighting)).into_any()),
             "lp_bounds" => Ok(PyString::new(py, name_of(&BOUNDS, c.lp_bounds)).into_any()),
             "lp_scope" => Ok(PyString::new(py, name_of(&SCOPES, c.lp_scope)).into_any()),
@@ -338,6 +341,11 @@ impl PyLearningConfig {
     #[getter]
     fn hold_lp(&self) -> bool {
         self.config.hold_lp
+    }
+    /// Whether, under the improved control, of two predicted goals the sooner rates better.
+    #[getter]
+    fn prefer_sooner_goals(&self) -> bool {
+        self.config.prefer_sooner_goals
     }
     /// `"even"`, `"lp"` or `"lp_gain"`.
     #[getter]

@@ -114,8 +114,10 @@ def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, me
     if method in POLYMIMIC_METHODS:
         control, uniform = POLYMIMIC_METHODS[method]
         chosen: dict[str, Any] = {"control": control, "lp": "held at 0.5" if uniform else "learned",
-                                  "imitator_weighting": config.learning.imitator_weighting,
-                                  "tuned": "no: the thesis's constants"}
+                                  "imitator_weighting": config.learning.imitator_weighting}
+        if control == "improved" and config.learning.prefer_sooner_goals:
+            chosen["prefer_sooner_goals"] = True  # printed only where it is not the default
+        chosen["tuned"] = "no: the thesis's constants"
     else:
         chosen = load_tuning(run.require(run.tuning_path(profile, method), "benchmark"))["chosen"]
     return MethodSummary(goals=mean_sd(e["goals"] for e in saved), own_goals=mean_sd(e["own_goals"] for e in saved),

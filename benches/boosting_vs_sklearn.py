@@ -43,5 +43,6 @@ def main():
     print(f"\n{args.rows} rows per call: SmallBatchBoosting {ours_rate:.0f} calls/s, "
           f"scikit-learn {theirs_rate:.0f}; median ratio {ratio:.2f}")
 
+
 if __name__ == "__main__":
     main()

@@ -39,5 +39,6 @@ def main():
     print(f"\n{args.envs} envs: PenaltyKickVectorEnv {ours_rate:.0f} env steps/s, "
           f"SyncVectorEnv {sync_rate:.0f}; median ratio {ratio:.2f} (target ≥ 3)")
 
+
 if __name__ == "__main__":
     main()

@@ -52,13 +52,13 @@ pub enum ControlMode {
     /// learned from all the demonstrations (§5.4), and its predicted end is rated by a goal (the
     /// sooner the better, with `prefer_sooner_goals`), then by whether the demonstrations
     /// passing near it ended, on balance, in own goals, then by how much nearer the goal it puts
-    /// the ball, then the robot to the ball; only the first primitive runs before choosing again, so a behaviour that comes to
-    /// rate better takes over at once (§4.4.1). Preconditions are not consulted: every
-    /// behaviour competes. Behaviours push only from where the demonstrators pushed toward the
-    /// goal (relative to the ball and the goal, [`PushRegion`](crate::PushRegion)), or when one
-    /// predicts a goal; anywhere else the robot takes the shortest route there in its own
-    /// primitives ([`ApproachPlan`](crate::ApproachPlan)), going round the ball rather than
-    /// through it.
+    /// the ball, then the robot to the ball; only the first primitive runs before choosing
+    /// again, so a behaviour that comes to rate better takes over at once (§4.4.1).
+    /// Preconditions are not consulted: every behaviour competes. Behaviours push only from
+    /// where the demonstrators pushed toward the goal (relative to the ball and the goal,
+    /// [`PushRegion`](crate::PushRegion)), or when one predicts a goal; anywhere else the robot
+    /// takes the shortest route there in its own primitives
+    /// ([`ApproachPlan`](crate::ApproachPlan)), going round the ball rather than through it.
     Improved,
 }
 
@@ -197,9 +197,9 @@ impl ImitatorPolicy<'_> {
     }
 
     /// The rating of a chain of `primitives` from `start` that ended at `end`: a goal (the
-    /// sooner the better, with `prefer_sooner_goals`), then a state the demonstrations do not tie to own goals, then
-    /// millimetres the ball comes nearer the goal (beyond the dead band), then millimetres the
-    /// robot comes nearer the ball.
+    /// sooner the better, with `prefer_sooner_goals`), then a state the demonstrations do not
+    /// tie to own goals, then millimetres the ball comes nearer the goal (beyond the dead band),
+    /// then millimetres the robot comes nearer the ball.
     fn rate_end(&self, start: &TrackedFrame, end: &TrackedFrame, primitives: usize) -> Rating {
         let value = self.world.map_or(0.0, |w| w.state_value.estimate(end));
         Rating::of(start, end, value, primitives, &self.pitch, self.config)

@@ -453,3 +453,44 @@ def test_the_small_batch_boosting_predicts_as_scikit_learns_boosting_to_the_bit(
             query = np.vstack([query, on_thresholds[rng.integers(len(splits), size=rows)]])
             assert np.array_equal(ours.predict_proba(query), theirs.predict_proba(query))
             assert np.array_equal(ours.predict(query), theirs.predict(query))
+
+
+def _same_fit(ours, theirs):
+    """Whether two fitted MLPs hold the same weights, loss curve, stopping state and optimizer."""
+    arrays = list(zip(ours.coefs_ + ours.intercepts_, theirs.coefs_ + theirs.intercepts_, strict=True))
+    moments = list(zip(ours._optimizer.ms + ours._optimizer.vs, theirs._optimizer.ms + theirs._optimizer.vs,
+                       strict=True))
+    return (all(np.array_equal(a, b) for a, b in arrays + moments) and ours.loss_curve_ == theirs.loss_curve_
+            and (ours.n_iter_, ours.t_, ours.best_loss_, ours._no_improvement_count, ours._optimizer.t)
+            == (theirs.n_iter_, theirs.t_, theirs.best_loss_, theirs._no_improvement_count, theirs._optimizer.t))
+
+
+def test_the_quick_fit_mlp_trains_as_scikit_learns_mlp_to_the_bit():
+    import warnings
+
+    from sklearn.exceptions import ConvergenceWarning
+    from sklearn.neural_network import MLPClassifier
+
+    from polymimic.baselines.mlp import QuickFitMLP
+
+    rng = np.random.default_rng(5)
+    X = rng.normal(size=(530, 4))  # 530: the last batch of each epoch is a short one
+    multiclass = (X[:, 0] > 0).astype(int) + 2 * (X[:, 1] > 0.5) + (X[:, 2] > 1)
+    binary = (X[:, 3] + 0.3 * X[:, 0] > 0).astype(int)  # a logistic output and its own loss
+    weights = rng.uniform(0.1, 3.0, size=len(X))
+    cases = [({"hidden_layer_sizes": (16, 16), "max_iter": 12}, multiclass, weights),
+             ({"hidden_layer_sizes": (8,), "max_iter": 12, "alpha": 1e-2}, multiclass, None),
+             ({"hidden_layer_sizes": (8,), "max_iter": 12, "batch_size": 64}, binary, weights),
+             ({"hidden_layer_sizes": (8,), "max_iter": 12, "activation": "tanh"}, multiclass, weights),
+             # A loose tolerance: the loss stalls, and the fit stops before its last epoch.
+             ({"hidden_layer_sizes": (8,), "max_iter": 200, "tol": 0.05, "n_iter_no_change": 2}, multiclass, weights)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ConvergenceWarning)
+        for params, y, w in cases:
+            theirs = MLPClassifier(random_state=3, **params).fit(X, y, sample_weight=w)
+            ours = QuickFitMLP(random_state=3, **params).fit(X, y, sample_weight=w)
+            assert _same_fit(ours, theirs), params
+            assert np.array_equal(ours.predict_proba(X), theirs.predict_proba(X))
+            # Carrying on from there, scikit-learn's partial_fit takes up the same optimizer state.
+            assert _same_fit(ours.partial_fit(X, y, sample_weight=w), theirs.partial_fit(X, y, sample_weight=w))
+        assert cases[-1][0]["max_iter"] > QuickFitMLP(random_state=3, **cases[-1][0]).fit(X, multiclass).n_iter_

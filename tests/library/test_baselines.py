@@ -1,6 +1,7 @@
 """The baselines of SPEC §6.2, on scripted demonstrators whose right answers are known."""
 
 import math
+import pickle
 import re
 
 import numpy as np
@@ -453,6 +454,12 @@ def test_the_small_batch_boosting_predicts_as_scikit_learns_boosting_to_the_bit(
             query = np.vstack([query, on_thresholds[rng.integers(len(splits), size=rows)]])
             assert np.array_equal(ours.predict_proba(query), theirs.predict_proba(query))
             assert np.array_equal(ours.predict(query), theirs.predict(query))
+    # A saved model leaves its flat trees out and builds them again on loading.
+    saved = pickle.dumps(ours)
+    loaded = pickle.loads(saved)
+    assert len(saved) < len(pickle.dumps(theirs)) + 1000
+    assert "_flat_trees_" in vars(loaded) and "_flat_trees_" in vars(ours)
+    assert np.array_equal(loaded.predict_proba(query), theirs.predict_proba(query))
 
 
 def _same_fit(ours, theirs):

@@ -73,6 +73,16 @@ class SmallBatchBoosting(HistGradientBoostingClassifier):  # type: ignore[misc]
         self._flat_trees_ = _flat_trees(self._predictors)
         return self
 
+    def __getstate__(self) -> dict[str, Any]:
+        state = dict(super().__getstate__())  # a copy: the live estimator keeps its flat trees
+        state.pop("_flat_trees_", None)  # derived from the trees, so rebuilt on loading, not saved
+        return state
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        super().__setstate__(state)
+        if hasattr(self, "_predictors"):
+            self._flat_trees_ = _flat_trees(self._predictors)
+
     def _predict_iterations(self, X: np.ndarray, predictors: Any, raw_predictions: np.ndarray, is_binned: bool,
                             n_threads: int) -> None:
         flat = getattr(self, "_flat_trees_", None)

@@ -309,6 +309,7 @@ class LearningConfig:
         ball_dead_band_mm: float = 10.0,
         robot_dead_band_mm: float = 10.0,
         prefer_sooner_goals: bool = False,
+        push_heading_tail: float = 0.1,
         lp_bounds: Literal["soft", "clamp"] = "soft",
         lp_scope: Literal["own_demonstrator", "every"] = "own_demonstrator",
         lp_criteria: Literal["foremost", "both"] = "foremost",
@@ -371,6 +372,8 @@ class LearningConfig:
     def robot_dead_band_mm(self) -> float: ...
     @property
     def prefer_sooner_goals(self) -> bool: ...
+    @property
+    def push_heading_tail(self) -> float: ...
     @property
     def lp_bounds(self) -> str: ...
     @property

@@ -164,17 +164,19 @@ def test_the_report_states_every_choice(benchmarked):
     assert "classifier=" in text
 
 
-def test_the_report_names_the_sooner_goal_rating_where_it_is_switched_on(benchmarked, tmp_path):
-    assert "prefer_sooner_goals" not in _summary(benchmarked)["profiles"]["pair"]["methods"]["polymimic"][
-        "hyperparameters"]
+def test_the_report_names_the_improved_controls_choices_where_they_are_not_the_defaults(benchmarked, tmp_path):
+    defaults = _summary(benchmarked)["profiles"]["pair"]["methods"]["polymimic"]["hyperparameters"]
+    assert "prefer_sooner_goals" not in defaults and "push_heading_tail" not in defaults
     config = tmp_path / "sooner.toml"
     config.write_text(TINY.replace('profiles = ["pair", "duo"]', 'profiles = ["pair"]\nmethods = ["polymimic"]')
-                      + "[learning]\nprefer_sooner_goals = true\n")
+                      + "[learning]\nprefer_sooner_goals = true\npush_heading_tail = 0.2\n")
     run = tmp_path / "sooner"
     assert main(["benchmark", "--config", str(config), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0
     chosen = _summary(run)["profiles"]["pair"]["methods"]["polymimic"]["hyperparameters"]
     assert chosen["prefer_sooner_goals"] is True and chosen["control"] == "improved"
-    assert "prefer_sooner_goals=True" in (run / "benchmark.md").read_text()
+    assert chosen["push_heading_tail"] == 0.2
+    text = (run / "benchmark.md").read_text()
+    assert "prefer_sooner_goals=True" in text and "push_heading_tail=0.2" in text
 
 
 def test_ray_gives_the_same_bits(benchmarked, tiny_toml, tmp_path):

@@ -183,3 +183,21 @@ def test_preferring_sooner_goals_is_a_switch_of_the_improved_control(recognizer,
                                       demonstrations=expert_and_poor)
     sooner = polymimic.evaluate(policy, attempts_per_configuration=10)
     assert sooner.own_goals <= 1 and sooner.goals >= 8, [a.outcome for a in sooner.attempts]
+
+
+def test_the_push_heading_tail_is_a_share_the_improved_control_checks(recognizer, expert_and_poor):
+    config = polymimic.LearningConfig(push_heading_tail=0.2)
+    assert config.push_heading_tail == 0.2 and polymimic.LearningConfig().push_heading_tail == 0.1
+    assert "push_heading_tail = 0.2\n" in config.to_toml()
+    assert polymimic.LearningConfig.from_toml(config.to_toml()) == config
+    for value in (0.5, -0.1, float("nan")):
+        with pytest.raises(ValueError, match=r"push_heading_tail = .* must be in \[0, 0.5\)"):
+            polymimic.LearningConfig(push_heading_tail=value)
+    trial = polymimic.run_trial(expert_and_poor, recognizer=recognizer, ordering=["poor", "expert"],
+                                phase_one="interleaved", seed=0)
+    played = {tail: polymimic.evaluate(polymimic.ImitatorPolicy(
+        trial, recognizer=recognizer, config=polymimic.LearningConfig(push_heading_tail=tail), control="improved",
+        demonstrations=expert_and_poor), attempts_per_configuration=5) for tail in (0.1, 0.3)}
+    # A narrower heading window changes where the robot pushes from, so what it does.
+    assert played[0.1].behaviours != played[0.3].behaviours
+    assert all(p.own_goals <= 1 for p in played.values()), {t: p.own_goals for t, p in played.items()}

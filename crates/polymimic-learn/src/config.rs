@@ -134,6 +134,11 @@ pub struct LearningConfig {
     /// *Choice*, improved control only: of two behaviours predicted to score, the one that
     /// scores in fewer primitives rates better (by default the one carrying the ball further).
     pub prefer_sooner_goals: bool,
+    /// *Choice*, improved control only: the share of the demonstrators' pushing headings left
+    /// out at each end of the push region's heading range (0.1: the 10th to 90th percentile).
+    /// A larger share pushes only nearer the line to the goal, from a window never narrower
+    /// than half the imitator's mean turn either side.
+    pub push_heading_tail: f64,
     /// *Choice*: how the LP is bounded.
     pub lp_bounds: LpBounds,
     /// *Choice*: which demonstrations shape the LP while the model reads them.
@@ -172,6 +177,7 @@ impl Default for LearningConfig {
             ball_dead_band_mm: 10.0,
             robot_dead_band_mm: 10.0,
             prefer_sooner_goals: false,
+            push_heading_tail: 0.1,
             lp_bounds: LpBounds::Soft,
             lp_scope: LpScope::OwnDemonstrator,
             lp_criteria: LpCriteria::Foremost,
@@ -244,6 +250,13 @@ impl LearningConfig {
                 return Err(LearnParamsError::Config { name, value, why: "must be a finite number ≥ 0" });
             }
         }
+        if !(0.0..0.5).contains(&self.push_heading_tail) {
+            return Err(LearnParamsError::Config {
+                name: "push_heading_tail",
+                value: self.push_heading_tail,
+                why: "must be in [0, 0.5) (a share left out at each end of the heading range)",
+            });
+        }
         if self.deletion_threshold >= self.default_permanency || self.default_permanency >= self.permanency_threshold {
             return Err(LearnParamsError::Config {
                 name: "default_permanency",
@@ -274,5 +287,16 @@ mod tests {
         let gain = LearningConfig::from_json(r#"{"imitator_weighting": "lp_gain"}"#).expect("a valid config");
         assert_eq!(gain.imitator_weighting, ImitatorWeighting::LpGain);
         assert_eq!(LearningConfig::from_json(&gain.to_json()), Ok(gain));
+    }
+
+    #[test]
+    fn the_push_heading_tail_is_a_share_below_a_half() {
+        assert_eq!(LearningConfig::default().push_heading_tail, 0.1);
+        let narrow = LearningConfig::from_json(r#"{"push_heading_tail": 0.0}"#).expect("no tail is a valid choice");
+        assert_eq!(narrow.push_heading_tail, 0.0);
+        for value in ["0.5", "-0.1", "0.75"] {
+            let refused = LearningConfig::from_json(&format!(r#"{{"push_heading_tail": {value}}}"#)).unwrap_err();
+            assert!(refused.to_string().contains("push_heading_tail") && refused.to_string().contains("[0, 0.5)"));
+        }
     }
 }

@@ -35,7 +35,7 @@ pub use error::{LearnError, LearnParamsError};
 pub use laboratory::{FinalLps, Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, pitch_of, summarise};
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use prediction::{MotionTable, Prediction, matches, predict};
-pub use push_region::{BallGoalPose, Interval, PushRegion};
+pub use push_region::{BallGoalPose, Interval, PushRegion, RegionShape};
 pub use record::{BehaviourRecord, Json, ModelRecord, RecordError, TrialRecord};
 pub use round::{Ending, SegmentedDemonstration};
 pub use running::Running;

@@ -47,6 +47,12 @@ impl MotionTable {
         self.rows.iter().find(|(p, _)| *p == primitive).map_or([0.0; 4], |(_, row)| *row)
     }
 
+    /// The smaller of the left and right primitives' mean rotations (rad, unsigned).
+    #[must_use]
+    pub fn mean_turn_rad(&self) -> f64 {
+        self.row(Primitive::Left)[2].abs().min(self.row(Primitive::Right)[2].abs())
+    }
+
     /// The pose after one primitive from `pose` with its mean distance and rotation.
     #[must_use]
     pub fn mean_step(&self, pose: Pose, primitive: Primitive) -> Pose {

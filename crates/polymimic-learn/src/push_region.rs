@@ -9,8 +9,29 @@ use crate::round::{Ending, SegmentedDemonstration};
 use crate::state::{Pitch, ball_to_goal_mm};
 use crate::weighting::weighted;
 
-/// The share of pushing poses left out at each end of a range (the 10th to 90th percentile).
+/// The share of pushing poses left out at each end of the along and across ranges (the 10th to
+/// 90th percentile); the heading range's share is [`RegionShape::heading_tail`].
 const RANGE_TAIL: f64 = 0.1;
+
+/// How the region's ranges are cut from the pushing poses.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RegionShape {
+    /// The least half-width of the along and across ranges either side of their medians (mm)…
+    pub min_half_width_mm: f64,
+    /// …and of the heading range (rad).
+    pub min_half_width_rad: f64,
+    /// The share of pushing headings left out at each end of the heading range.
+    pub heading_tail: f64,
+}
+
+impl RegionShape {
+    /// Ranges from the 10th to the 90th percentile, at least `min_half_width` (mm, rad) either
+    /// side of their medians.
+    #[must_use]
+    pub const fn central(min_half_width: (f64, f64)) -> Self {
+        Self { min_half_width_mm: min_half_width.0, min_half_width_rad: min_half_width.1, heading_tail: RANGE_TAIL }
+    }
+}
 
 /// The robot's pose in the ball–goal frame: behind (−) or ahead (+) of the ball along the line
 /// from the ball to the goal, to its left (+) or right (−), and heading relative to the line.
@@ -72,16 +93,14 @@ fn sorted(mut values: Vec<(f64, f64)>) -> Vec<(f64, f64)> {
 }
 
 impl Interval {
-    /// The central part of `values` (each a value and its weight; at least `min_half_width`
-    /// either side of the weighted median).
-    fn central(values: Vec<(f64, f64)>, min_half_width: f64) -> Self {
+    /// The central part of `values` (each a value and its weight): from the weighted
+    /// percentile `tail` to `1 − tail`, and at least `min_half_width` either side of the
+    /// weighted median.
+    fn central(values: Vec<(f64, f64)>, min_half_width: f64, tail: f64) -> Self {
         let values = sorted(values);
         let at = |share: f64| percentile(&values, share);
         let median = at(0.5);
-        Self {
-            low: at(RANGE_TAIL).min(median - min_half_width),
-            high: at(1.0 - RANGE_TAIL).max(median + min_half_width),
-        }
+        Self { low: at(tail).min(median - min_half_width), high: at(1.0 - tail).max(median + min_half_width) }
     }
 
     #[must_use]
@@ -108,16 +127,15 @@ impl PushRegion {
     /// From every segment of the demonstrations on `pitch` that ended in a goal which carried
     /// the ball more than `ball_moved_mm` nearer the goal, whether it set the ball moving or
     /// kept a push going (so the region holds where a push continues as well as where it
-    /// begins); `None` if there is no such segment. Ranges are at least `min_half_width` (mm, rad) either side
-    /// of their medians.
+    /// begins); `None` if there is no such segment. `shape` says how the ranges are cut.
     #[must_use]
     pub fn learn(
         demonstrations: &[SegmentedDemonstration],
         pitch: &Pitch,
         ball_moved_mm: f64,
-        min_half_width: (f64, f64),
+        shape: &RegionShape,
     ) -> Option<Self> {
-        Self::learn_weighted(demonstrations, &[], pitch, ball_moved_mm, min_half_width)
+        Self::learn_weighted(demonstrations, &[], pitch, ball_moved_mm, shape)
     }
 
     /// [`Self::learn`], every push of demonstration i weighing `weights[i]` (see
@@ -129,7 +147,7 @@ impl PushRegion {
         weights: &[f64],
         pitch: &Pitch,
         ball_moved_mm: f64,
-        min_half_width: (f64, f64),
+        shape: &RegionShape,
     ) -> Option<Self> {
         let mut starts = Vec::new();
         let scoring = weighted(demonstrations, weights).filter(|(d, _)| d.pitch == *pitch && d.ending == Ending::Goal);
@@ -149,11 +167,11 @@ impl PushRegion {
             return None;
         }
         let column = |f: fn(&BallGoalPose) -> f64| starts.iter().map(|(p, w)| (f(p), *w)).collect::<Vec<_>>();
-        let (mm, rad) = min_half_width;
+        let mm = shape.min_half_width_mm;
         Some(Self {
-            along_mm: Interval::central(column(|p| p.along_mm), mm),
-            across_mm: Interval::central(column(|p| p.across_mm), mm),
-            heading_rad: Interval::central(column(|p| p.heading_rad), rad),
+            along_mm: Interval::central(column(|p| p.along_mm), mm, RANGE_TAIL),
+            across_mm: Interval::central(column(|p| p.across_mm), mm, RANGE_TAIL),
+            heading_rad: Interval::central(column(|p| p.heading_rad), shape.min_half_width_rad, shape.heading_tail),
             // The weighted median: with every weight 1, the value of rank n / 2.
             contact_mm: percentile(&sorted(column(BallGoalPose::distance_mm)), 0.5),
             pushes: starts.len(),
@@ -175,6 +193,8 @@ mod tests {
     use polymimic_types::{Primitive, TrackedFrame};
 
     use super::*;
+
+    const SHAPE: RegionShape = RegionShape::central((20.0, 0.1));
 
     fn frame(robot: (f64, f64, f64), ball: (f64, f64)) -> TrackedFrame {
         TrackedFrame { robot: Pose::new(robot.0, robot.1, robot.2), ball_x_mm: ball.0, ball_y_mm: ball.1 }
@@ -233,9 +253,9 @@ mod tests {
         let near = demo(Ending::Goal, (0..5).map(|k| push(120.0 + 10.0 * f64::from(k))).collect());
         let far = demo(Ending::Goal, (0..5).map(|k| push(300.0 + 10.0 * f64::from(k))).collect());
         let demos = [near, far];
-        let learn = |weights: &[f64]| PushRegion::learn_weighted(&demos, weights, &Pitch::LARGE, 10.0, (20.0, 0.1));
-        assert_eq!(learn(&[1.0, 0.0]), PushRegion::learn(&demos[..1], &Pitch::LARGE, 10.0, (20.0, 0.1)));
-        assert_eq!(learn(&[1.0, 1.0]), PushRegion::learn(&demos, &Pitch::LARGE, 10.0, (20.0, 0.1)));
+        let learn = |weights: &[f64]| PushRegion::learn_weighted(&demos, weights, &Pitch::LARGE, 10.0, &SHAPE);
+        assert_eq!(learn(&[1.0, 0.0]), PushRegion::learn(&demos[..1], &Pitch::LARGE, 10.0, &SHAPE));
+        assert_eq!(learn(&[1.0, 1.0]), PushRegion::learn(&demos, &Pitch::LARGE, 10.0, &SHAPE));
         // Evenly, the median distance is the sixth of ten (300) and the 10th percentile of
         // along_mm the second (−330).
         let even = learn(&[]).expect("ten pushes");
@@ -249,6 +269,38 @@ mod tests {
         assert_eq!(region.contact_mm, 150.0);
         assert_eq!((region.along_mm.low, region.along_mm.high), (-320.0, -130.0));
         assert_eq!(learn(&[0.0, 0.0]), None);
+    }
+
+    #[test]
+    fn a_heading_tail_cuts_the_heading_range_alone_at_its_percentiles() {
+        // Ten pushes from 150 mm behind the ball, headings −0.45, −0.35, … 0.45 rad.
+        let pushes = (0..10)
+            .map(|k| {
+                let heading = -0.45 + 0.1 * f64::from(k);
+                segment(frame((-150.0, 0.0, heading), (0.0, 0.0)), frame((-110.0, 0.0, heading), (40.0, 0.0)))
+            })
+            .collect();
+        let demos = [demo(Ending::Goal, pushes)];
+        let cut = |heading_tail| {
+            PushRegion::learn(&demos, &Pitch::LARGE, 10.0, &RegionShape { heading_tail, ..SHAPE }).expect("pushes")
+        };
+        let close = |interval: Interval, low: f64, high: f64| {
+            (interval.low - low).abs() < 1e-12 && (interval.high - high).abs() < 1e-12
+        };
+        // Ranks round(9 · share): 10th and 90th percentiles the second and ninth values, 30th and
+        // 70th the fourth and seventh, none left out the first and last.
+        assert!(close(cut(0.1).heading_rad, -0.35, 0.35));
+        assert!(close(cut(0.3).heading_rad, -0.15, 0.15));
+        assert!(close(cut(0.0).heading_rad, -0.45, 0.45));
+        assert_eq!(cut(0.3).along_mm, cut(0.1).along_mm, "the other ranges keep their tails");
+        // The median is the sixth value, 0.05: a wide minimum half-width overrules any cut.
+        let floored = PushRegion::learn(
+            &demos,
+            &Pitch::LARGE,
+            10.0,
+            &RegionShape { heading_tail: 0.3, min_half_width_rad: 0.3, ..SHAPE },
+        );
+        assert!(close(floored.expect("pushes").heading_rad, -0.25, 0.35));
     }
 
     #[test]
@@ -283,7 +335,7 @@ mod tests {
         );
         let sideways = segment(frame((0.0, -300.0, 0.0), (0.0, 0.0)), frame((0.0, -300.0, 0.0), (0.0, 60.0)));
         let demos = [demo(Ending::Goal, pushes), own_goal, demo(Ending::Goal, vec![sideways])];
-        let region = PushRegion::learn(&demos, &Pitch::LARGE, 10.0, (20.0, 0.1)).expect("ten pushes");
+        let region = PushRegion::learn(&demos, &Pitch::LARGE, 10.0, &SHAPE).expect("ten pushes");
         assert_eq!(region.pushes, 10);
         // Percentiles by rank: the 10th of 10 values is the second smallest, the 90th the ninth.
         assert_eq!((region.along_mm.low, region.along_mm.high), (-200.0, -130.0));
@@ -295,7 +347,7 @@ mod tests {
         assert!(region.contains(&inside));
         assert!(!region.contains(&BallGoalPose { heading_rad: 0.2, ..inside }));
         assert!(!region.contains(&BallGoalPose { along_mm: -250.0, ..inside }));
-        assert!(PushRegion::learn(&demos[1..2], &Pitch::LARGE, 10.0, (20.0, 0.1)).is_none());
-        assert!(PushRegion::learn(&demos, &Pitch::SMALL, 10.0, (20.0, 0.1)).is_none());
+        assert!(PushRegion::learn(&demos[1..2], &Pitch::LARGE, 10.0, &SHAPE).is_none());
+        assert!(PushRegion::learn(&demos, &Pitch::SMALL, 10.0, &SHAPE).is_none());
     }
 }

@@ -7,7 +7,7 @@ use crate::approach::{ApproachPlan, MIN_REGION_HALF_WIDTH};
 use crate::ball_response::BallResponse;
 use crate::config::LearningConfig;
 use crate::prediction::MotionTable;
-use crate::push_region::PushRegion;
+use crate::push_region::{PushRegion, RegionShape};
 use crate::round::SegmentedDemonstration;
 use crate::state::Pitch;
 use crate::state_value::StateValue;
@@ -47,12 +47,63 @@ impl WorldModel {
         motion: &MotionTable,
         config: &LearningConfig,
     ) -> Self {
-        let push_region =
-            PushRegion::learn_weighted(demonstrations, weights, pitch, config.ball_moved_mm, MIN_REGION_HALF_WIDTH);
+        let (min_mm, min_rad) = MIN_REGION_HALF_WIDTH;
+        let shape = RegionShape {
+            min_half_width_mm: min_mm,
+            // Whole turns bring any heading within half a turn of the window's middle, so a window
+            // narrower than that could be turned past, back and forth, and never entered.
+            min_half_width_rad: min_rad.max(0.5 * motion.mean_turn_rad()),
+            heading_tail: config.push_heading_tail,
+        };
+        let push_region = PushRegion::learn_weighted(demonstrations, weights, pitch, config.ball_moved_mm, &shape);
         Self {
             ball_response: BallResponse::learn_weighted(demonstrations, weights, pitch, config.ball_moved_mm),
             state_value: StateValue::learn_weighted(demonstrations, weights, pitch),
             approach: push_region.map(|p| ApproachPlan::new(p, motion)),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use polymimic_perceive::{Label, Segment};
+    use polymimic_types::{Pose, Primitive, TrackedFrame};
+
+    use super::*;
+    use crate::round::Ending;
+
+    /// Ten scoring pushes, every one from 150 mm behind the ball facing the goal.
+    fn straight_pushes() -> Vec<SegmentedDemonstration> {
+        let frame = |x: f64, ball: f64| TrackedFrame { robot: Pose::new(x, 0.0, 0.0), ball_x_mm: ball, ball_y_mm: 0.0 };
+        let push = Segment {
+            label: Label::Primitive(Primitive::Forward),
+            first_frame: 0,
+            last_frame: 30,
+            start: frame(-150.0, 0.0),
+            end: frame(-110.0, 40.0),
+            scores: [0.0; 4],
+        };
+        let demo = SegmentedDemonstration {
+            demonstrator: "expert".to_owned(),
+            pitch: Pitch::LARGE,
+            ending: Ending::Goal,
+            segments: vec![push; 10],
+        };
+        vec![demo]
+    }
+
+    #[test]
+    fn the_push_heading_window_is_at_least_half_the_mean_turn_either_side() {
+        let demos = straight_pushes();
+        let window = |turn_deg: f64| {
+            let motion = MotionTable::exact(40.0, turn_deg);
+            let world = WorldModel::learn(&demos, &Pitch::LARGE, &motion, &LearningConfig::default());
+            world.approach.expect("pushes to route to").push_region.heading_rad
+        };
+        // Every push faces the goal: the window is the floor, half a 30° turn…
+        let half_turn = window(30.0);
+        assert!((half_turn.high - 15_f64.to_radians()).abs() < 1e-12 && (half_turn.low + half_turn.high).abs() < 1e-12);
+        // …but never narrower than one of the route table's 10° heading bins.
+        assert!((window(8.0).high - 10_f64.to_radians()).abs() < 1e-12);
     }
 }

@@ -26,7 +26,7 @@ from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.tasks import POLYMIMIC_METHODS, final_lps, ppo_hyperparameters
 from polymimic.crowds import Crowd
 from polymimic.datasets import load_demonstrations
-from polymimic.learning import TrialResult
+from polymimic.learning import LearningConfig, TrialResult
 from polymimic.ranking import kendall, spearman
 from polymimic.reproduce.results import mean_sd
 from polymimic.reproduce.schema import MeanSd
@@ -115,8 +115,11 @@ def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, me
         control, uniform = POLYMIMIC_METHODS[method]
         chosen: dict[str, Any] = {"control": control, "lp": "held at 0.5" if uniform else "learned",
                                   "imitator_weighting": config.learning.imitator_weighting}
+        # The improved control's choices, printed only where they are not the defaults.
         if control == "improved" and config.learning.prefer_sooner_goals:
-            chosen["prefer_sooner_goals"] = True  # printed only where it is not the default
+            chosen["prefer_sooner_goals"] = True
+        if control == "improved" and config.learning.push_heading_tail != LearningConfig().push_heading_tail:
+            chosen["push_heading_tail"] = config.learning.push_heading_tail
         chosen["tuned"] = "no: the thesis's constants"
     else:
         chosen = load_tuning(run.require(run.tuning_path(profile, method), "benchmark"))["chosen"]

@@ -12,7 +12,7 @@ use pyo3::types::{PyBool, PyDict, PyString, PyTuple, PyType};
 use crate::convert::one_of;
 
 /// Every constant, in the order `to_dict` and `repr` give them.
-const NAMES: [&str; 29] = [
+const NAMES: [&str; 30] = [
     "creation_threshold",
     "default_permanency",
     "permanency_threshold",
@@ -38,6 +38,7 @@ const NAMES: [&str; 29] = [
     "ball_dead_band_mm",
     "robot_dead_band_mm",
     "prefer_sooner_goals",
+    "push_heading_tail",
     "lp_bounds",
     "lp_scope",
     "lp_criteria",
@@ -134,6 +135,7 @@ fn set(c: &mut LearningConfig, name: &str, value: &Bound<'_, PyAny>) -> PyResult
         "prediction_noise_divisor" => float(&mut c.prediction_noise_divisor),
         "ball_dead_band_mm" => float(&mut c.ball_dead_band_mm),
         "robot_dead_band_mm" => float(&mut c.robot_dead_band_mm),
+        "push_heading_tail" => float(&mut c.push_heading_tail),
         "lp_bounds" => choice(name, value, &BOUNDS).map(|v| c.lp_bounds = v),
         "lp_scope" => choice(name, value, &SCOPES).map(|v| c.lp_scope = v),
         "lp_criteria" => choice(name, value, &CRITERIA).map(|v| c.lp_criteria = v),
@@ -224,6 +226,7 @@ impl PyLearningConfig {
             "prediction_noise_divisor" => float(c.prediction_noise_divisor),
             "ball_dead_band_mm" => float(c.ball_dead_band_mm),
             "robot_dead_band_mm" => float(c.robot_dead_band_mm),
+            "push_heading_tail" => float(c.push_heading_tail),
             _ => Err(PyTypeError::new_err(format!("LearningConfig has no constant '{name}'"))),
         }
     }
@@ -403,6 +406,11 @@ impl PyLearningConfig {
     #[getter]
     fn robot_dead_band_mm(&self) -> f64 {
         self.config.robot_dead_band_mm
+    }
+    /// The share of pushing headings the improved control's push region leaves out at each end.
+    #[getter]
+    fn push_heading_tail(&self) -> f64 {
+        self.config.push_heading_tail
     }
     #[getter]
     fn lp_bounds(&self) -> &'static str {

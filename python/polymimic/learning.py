@@ -49,9 +49,9 @@ class LearningConfig(_native.LearningConfig):
     the one carrying the ball further: the robot then stops turning one way for a goal three
     pushes later and back for another), ``push_heading_tail`` (``0.1``: the improved control
     pushes from headings between the 10th and 90th percentiles of the demonstrators' pushing
-    headings; a larger share, up to 0.5, keeps it to headings nearer the line to the goal, from
-    a window never narrower than half the imitator's mean turn either side of the median), and
-    how the LP is shaped:
+    headings; a larger share, below 0.5, keeps it to headings nearer the line to the goal; at
+    any share the window reaches at least max(10°, half the smaller of the imitator's mean left
+    and right turns) either side of the median heading), and how the LP is shaped:
 
     - ``lp_bounds``: ``"soft"`` (a rise moves the LP by ``amount · 2(1 − LP)``, a fall by
       ``amount · 2 LP``: the thesis's step at the midpoint, none at a bound, so each

@@ -135,9 +135,10 @@ pub struct LearningConfig {
     /// scores in fewer primitives rates better (by default the one carrying the ball further).
     pub prefer_sooner_goals: bool,
     /// *Choice*, improved control only: the share of the demonstrators' pushing headings left
-    /// out at each end of the push region's heading range (0.1: the 10th to 90th percentile).
-    /// A larger share pushes only nearer the line to the goal, from a window never narrower
-    /// than half the imitator's mean turn either side.
+    /// out at each end of the push region's heading range, below 0.5 (0.1: the 10th to 90th
+    /// percentile); a larger share pushes only from nearer the line to the goal. At any share
+    /// the range reaches at least max(10°, half the smaller of the imitator's mean left and
+    /// right turns) either side of the median heading.
     pub push_heading_tail: f64,
     /// *Choice*: how the LP is bounded.
     pub lp_bounds: LpBounds,

@@ -20,7 +20,8 @@ pub struct RegionShape {
     pub min_half_width_mm: f64,
     /// …and of the heading range (rad).
     pub min_half_width_rad: f64,
-    /// The share of pushing headings left out at each end of the heading range.
+    /// The share of pushing headings left out at each end of the heading range, in [0, 0.5)
+    /// (as [`crate::LearningConfig::check`] holds `push_heading_tail` to).
     pub heading_tail: f64,
 }
 

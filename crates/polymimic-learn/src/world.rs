@@ -48,12 +48,11 @@ impl WorldModel {
         config: &LearningConfig,
     ) -> Self {
         let (min_mm, min_rad) = MIN_REGION_HALF_WIDTH;
+        // Whole turns bring any heading within half a turn of the median, so a window narrower
+        // than that could be turned past, back and forth, and never entered.
         let shape = RegionShape {
-            min_half_width_mm: min_mm,
-            // Whole turns bring any heading within half a turn of the window's middle, so a window
-            // narrower than that could be turned past, back and forth, and never entered.
-            min_half_width_rad: min_rad.max(0.5 * motion.mean_turn_rad()),
             heading_tail: config.push_heading_tail,
+            ..RegionShape::central((min_mm, min_rad.max(0.5 * motion.mean_turn_rad())))
         };
         let push_region = PushRegion::learn_weighted(demonstrations, weights, pitch, config.ball_moved_mm, &shape);
         Self {

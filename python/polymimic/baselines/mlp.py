@@ -6,10 +6,13 @@ spends most of a step's time outside those products: it rebuilds every moment es
 new list of arrays, finds the ReLU's zeros by boolean indexing and indexes each batch through
 its generic helpers. :class:`QuickFitMLP` keeps every parameter, gradient and moment estimate
 in one flat array each (the layers are views into it), so Adam's update is a handful of calls
-on one array, and masks the ReLU's derivative without boolean indexing. Every element is computed by the same
-operations in the same order as scikit-learn's: the same weights, loss curve and stopping
-epoch, to the bit (a test holds it to that). Whatever this loop does not cover (another solver,
-early stopping, no shuffling, ``partial_fit``, ``verbose``) is left to scikit-learn.
+on one array, and masks the ReLU's derivative without boolean indexing. Every element is
+computed by the same operations in the same order as scikit-learn's: the same weights, loss
+curve and stopping epoch, to the bit (a test holds it to that). Whatever this loop does not
+cover is left to scikit-learn: another solver, early stopping, no shuffling, ``partial_fit``,
+``verbose``, and inputs other than dense float64 (float32 would round Adam's update where
+scikit-learn does not). One difference is deliberate: an interrupt stops the fit with the
+interrupt, where scikit-learn would warn and return a half-trained model as if fitted.
 """
 
 from __future__ import annotations
@@ -18,6 +21,7 @@ import warnings
 from typing import Any
 
 import numpy as np
+from scipy.sparse import issparse  # type: ignore[import-untyped, unused-ignore]
 from sklearn.exceptions import ConvergenceWarning  # type: ignore[import-untyped, unused-ignore]
 from sklearn.neural_network import MLPClassifier  # type: ignore[import-untyped, unused-ignore]
 from sklearn.neural_network._base import ACTIVATIONS, DERIVATIVES, LOSS_FUNCTIONS  # type: ignore[import-untyped, unused-ignore]
@@ -36,23 +40,37 @@ class QuickFitMLP(MLPClassifier):  # type: ignore[misc]
     def _fit_stochastic(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None,
                         activations: list[Any], deltas: list[Any], coef_grads: list[Any],
                         intercept_grads: list[Any], layer_units: list[int], incremental: bool) -> None:
-        if incremental or self.solver != "adam" or self.early_stopping or not self.shuffle or self.verbose:
+        if incremental or self.solver != "adam" or self.early_stopping or not self.shuffle or self.verbose \
+                or issparse(X) or X.dtype != np.float64:
             super()._fit_stochastic(X, y, sample_weight, activations, deltas, coef_grads, intercept_grads,
                                     layer_units, incremental)
             return
         layers = len(self.coefs_)
         flat, views = _flat_views(self.coefs_ + self.intercepts_)
         self.coefs_, self.intercepts_ = views[:layers], views[layers:]
+        adam = _FlatAdam(flat, self.learning_rate_init, self.beta_1, self.beta_2, self.epsilon)
+        try:
+            self._epochs(X, y, sample_weight, adam)
+        finally:
+            # Separate arrays again, and an optimizer in scikit-learn's own state, so that a
+            # later warm start or partial_fit carries on exactly as after scikit-learn's own fit
+            # (and a fit stopped by an exception leaves a consistent model).
+            self.coefs_ = [c.copy() for c in self.coefs_]
+            self.intercepts_ = [b.copy() for b in self.intercepts_]
+            self._optimizer = adam.to_sklearn(self.coefs_ + self.intercepts_)
+
+    def _epochs(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None, adam: _FlatAdam) -> None:
+        """Shuffled epochs of Adam steps until the training loss stalls or ``max_iter``."""
+        layers = len(self.coefs_)
         grads_flat, grads = _flat_views(self.coefs_ + self.intercepts_)
         coef_grads, intercept_grads = grads[:layers], grads[layers:]
-        adam = _FlatAdam(flat, self.learning_rate_init, self.beta_1, self.beta_2, self.epsilon)
         n_samples = X.shape[0]
         if self.batch_size == "auto":
             batch_size = min(200, n_samples)
         else:
             if not 1 <= self.batch_size <= n_samples:
-                warnings.warn(f"batch_size {self.batch_size} is outside 1..{n_samples} (the samples): clipped to it",
-                              stacklevel=2)
+                warnings.warn("Got `batch_size` less than 1 or larger than sample size. It is going to be clipped",
+                              stacklevel=3)
             batch_size = int(np.clip(self.batch_size, 1, n_samples))
         order = np.arange(n_samples, dtype=int)
         self.n_iter_ = 0
@@ -75,12 +93,7 @@ class QuickFitMLP(MLPClassifier):  # type: ignore[misc]
                 break  # Adam stops where the training loss has stalled
             if self.n_iter_ == self.max_iter:
                 warnings.warn(f"Stochastic Optimizer: Maximum iterations ({self.max_iter}) reached and the "
-                              f"optimization hasn't converged yet.", ConvergenceWarning, stacklevel=2)
-        # Separate arrays again, and an optimizer in scikit-learn's own state, so that a later
-        # warm start or partial_fit carries on exactly as after scikit-learn's own fit.
-        self.coefs_ = [c.copy() for c in self.coefs_]
-        self.intercepts_ = [b.copy() for b in self.intercepts_]
-        self._optimizer = adam.to_sklearn(self.coefs_ + self.intercepts_)
+                              f"optimization hasn't converged yet.", ConvergenceWarning, stacklevel=3)
 
     def _step(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None, coef_grads: list[np.ndarray],
               intercept_grads: list[np.ndarray]) -> float:
@@ -165,4 +178,4 @@ def _flat_views(arrays: list[np.ndarray]) -> tuple[np.ndarray, list[np.ndarray]]
 
 def _split(flat: np.ndarray, like: list[np.ndarray]) -> list[np.ndarray]:
     ends = np.cumsum([a.size for a in like])
-    return [part.reshape(a.shape) for part, a in zip(np.split(flat, ends[:-1]), like, strict=True)]
+    return [part.reshape(a.shape) for part, a in zip(np.split(flat, ends[:-1]), like)]

@@ -72,6 +72,8 @@ class QuickFitMLP(MLPClassifier):  # type: ignore[misc]
                 warnings.warn("Got `batch_size` less than 1 or larger than sample size. It is going to be clipped",
                               stacklevel=3)
             batch_size = int(np.clip(self.batch_size, 1, n_samples))
+        binary = self.loss == "log_loss" and self.out_activation_ == "logistic"
+        loss_of = LOSS_FUNCTIONS["binary_log_loss" if binary else self.loss]
         order = np.arange(n_samples, dtype=int)
         self.n_iter_ = 0
         for _ in range(self.max_iter):
@@ -81,7 +83,7 @@ class QuickFitMLP(MLPClassifier):  # type: ignore[misc]
                 stop = min(start + batch_size, n_samples)
                 rows = order[start:stop]
                 weights = None if sample_weight is None else sample_weight[rows]
-                batch_loss = self._step(X[rows], y[rows], weights, coef_grads, intercept_grads)
+                batch_loss = self._step(X[rows], y[rows], weights, loss_of, coef_grads, intercept_grads)
                 accumulated_loss += batch_loss * (stop - start)
                 adam.step(grads_flat)
             self.n_iter_ += 1
@@ -95,9 +97,10 @@ class QuickFitMLP(MLPClassifier):  # type: ignore[misc]
                 warnings.warn(f"Stochastic Optimizer: Maximum iterations ({self.max_iter}) reached and the "
                               f"optimization hasn't converged yet.", ConvergenceWarning, stacklevel=3)
 
-    def _step(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None, coef_grads: list[np.ndarray],
-              intercept_grads: list[np.ndarray]) -> float:
-        """One batch forward and back: its loss, with the gradients written into the views."""
+    def _step(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None, loss_of: Any,
+              coef_grads: list[np.ndarray], intercept_grads: list[np.ndarray]) -> float:
+        """One batch forward and back: its loss (by ``loss_of``, scikit-learn's loss function
+        for this output), with the gradients written into the views."""
         layers = len(self.coefs_)
         activations = [X]
         for i in range(layers):
@@ -105,8 +108,7 @@ class QuickFitMLP(MLPClassifier):  # type: ignore[misc]
             z += self.intercepts_[i]
             ACTIVATIONS[self.activation if i + 1 < layers else self.out_activation_](z)
             activations.append(z)
-        loss_name = "binary_log_loss" if self.loss == "log_loss" and self.out_activation_ == "logistic" else self.loss
-        loss = LOSS_FUNCTIONS[loss_name](y, activations[-1], sample_weight)
+        loss = loss_of(y, activations[-1], sample_weight)
         values = 0
         for coef in self.coefs_:
             flat = coef.ravel()

@@ -108,6 +108,18 @@ def _downsampled(history: Sequence[float], points: int = LP_POINTS) -> list[floa
     return [float(history[i]) for i in picks]
 
 
+_IMPROVED_CONTROL_CHOICES = ("prefer_sooner_goals", "push_heading_tail")
+"""The learning constants only the improved control reads."""
+
+
+def _improved_control_choices(learning: LearningConfig) -> dict[str, Any]:
+    """The improved control's choices in ``learning`` that are not the defaults (the report
+    prints only those)."""
+    defaults = LearningConfig()
+    return {name: getattr(learning, name) for name in _IMPROVED_CONTROL_CHOICES
+            if getattr(learning, name) != getattr(defaults, name)}
+
+
 def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, method: str) -> MethodSummary:
     saved = [load_method_evaluation(run.require(run.evaluation_path(profile, method, s), "benchmark"))
              for s in config.evaluated_seeds(method)]
@@ -115,11 +127,8 @@ def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, me
         control, uniform = POLYMIMIC_METHODS[method]
         chosen: dict[str, Any] = {"control": control, "lp": "held at 0.5" if uniform else "learned",
                                   "imitator_weighting": config.learning.imitator_weighting}
-        # The improved control's choices, printed only where they are not the defaults.
-        if control == "improved" and config.learning.prefer_sooner_goals:
-            chosen["prefer_sooner_goals"] = True
-        if control == "improved" and config.learning.push_heading_tail != LearningConfig().push_heading_tail:
-            chosen["push_heading_tail"] = config.learning.push_heading_tail
+        if control == "improved":
+            chosen.update(_improved_control_choices(config.learning))
         chosen["tuned"] = "no: the thesis's constants"
     else:
         chosen = load_tuning(run.require(run.tuning_path(profile, method), "benchmark"))["chosen"]

@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import json
 import os
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -47,12 +47,13 @@ def segment_demonstrations(demonstrations: Sequence[Demonstration], recognizer: 
     return segmented(demonstrations, recognizer, **segmenter)
 
 
-def save_segments(items: SegmentedDemonstrations | Sequence[dict[str, Any]], path: str | os.PathLike[str]) -> None:
+def save_segments(items: SegmentedDemonstrations | Sequence[Mapping[str, Any]],
+                  path: str | os.PathLike[str]) -> None:
     """Write segmented demonstrations to a Parquet file, atomically."""
     import pyarrow as pa
     import pyarrow.parquet as pq
 
-    items = list(items)
+    items = list[Mapping[str, Any]](items)
     columns: dict[str, Any] = {key: pa.array([item[key] for item in items], pa.string())
                                for key in ("demonstrator", "outcome", "pitch")}
     columns["label"] = pa.array([list(item["segments"]["label"]) for item in items], pa.list_(pa.string()))

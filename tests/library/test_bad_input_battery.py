@@ -11,6 +11,7 @@ import json
 import math
 import os
 import pathlib
+import pickle
 import tempfile
 
 import numpy as np
@@ -20,7 +21,7 @@ from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
 import polymimic
-from polymimic import datasets
+from polymimic import datasets, learning
 from polymimic.field import PRIMITIVES, check_config, default_config
 
 EXAMPLES = int(os.environ.get("POLYMIMIC_BATTERY_EXAMPLES", "40"))
@@ -121,6 +122,47 @@ def test_recording_takes_any_arguments_cleanly(demonstrator, configuration, n, s
     if isinstance(n, int) and not isinstance(n, bool) and n > 2:
         n = 2
     _finite_or_clean(lambda: polymimic.record(demonstrator, configuration=configuration, n=n, seed=seed))
+
+
+@pytest.fixture(scope="module")
+def segmented_batch(recognizer):
+    return learning.segmented(polymimic.record("expert", configuration=1, n=2, seed=5), recognizer)
+
+
+ITEM_KEYS = ("demonstrator", "outcome", "pitch", "segments")
+SEGMENT_COLUMNS = ("label", "first_frame", "last_frame", "start", "end", "scores")
+
+
+@battery
+@given(index=st.integers(0, 1), key=st.sampled_from(ITEM_KEYS + SEGMENT_COLUMNS), value=st.one_of(odd_values, arrays),
+       how=st.sampled_from(["assign", "delete", "element", "resize"]))
+def test_changed_segments_are_refused_and_the_batch_keeps_what_it_checked(recognizer, segmented_batch, index, key,
+                                                                            value, how):
+    before = pickle.dumps(segmented_batch)
+    item = segmented_batch[index]
+    target = item if key in ITEM_KEYS else item["segments"]
+    column = target[key]
+
+    def change():
+        if how == "assign":
+            target[key] = value
+        elif how == "delete":
+            del target[key]
+        elif how == "element":
+            column[0] = value
+        else:
+            column.resize(1)
+
+    with pytest.raises((TypeError, ValueError, AttributeError, IndexError)):
+        change()
+    assert segmented_batch == pickle.loads(before)
+    # The same change made to a copy is checked again wherever the copy is taken.
+    copy = {**item, "segments": dict(item["segments"])}
+    (copy if key in ITEM_KEYS else copy["segments"])[key] = value
+    batch = _finite_or_clean(lambda: polymimic.SegmentedDemonstrations([copy]))
+    if batch is not None:
+        _finite_or_clean(lambda: polymimic.run_trial(batch, recognizer=recognizer, ordering=batch.demonstrators,
+                                                     seed=1))
 
 
 def _mangled_configs():

@@ -160,6 +160,11 @@ def test_field_configs_are_checked_whole_by_name():
         polymimic.self_observation(1, config={"tracker": {"sigma": 1.0}})
     with pytest.raises(TypeError, match="'substeps_per_frame' must be an integer, like the default 8; got 2.5"):
         polymimic.record("expert", configuration=1, n=1, config={"substeps_per_frame": 2.5})
+    with pytest.raises(ValueError, match=r"field config: parameter `substeps_per_frame` = -1 is not a count: a whole "
+                                         r"number, 1 ≤ substeps ≤ 64$"):
+        polymimic.record("expert", configuration=1, n=1, config={"substeps_per_frame": -1})
+    with pytest.raises(ValueError, match=r"parameter `substeps_per_frame` = -3 is not a count"):
+        polymimic.Episode(config='{"substeps_per_frame": -3}')
     with pytest.raises(TypeError, match="'tracker' must be a table"):
         polymimic.record("expert", configuration=1, n=1, config={"tracker": 3})
     with pytest.raises(ValueError, match="position_sigma_mm"):

@@ -48,10 +48,6 @@ def test_the_same_answers_as_hmmlearn_on_random_models(rng, stochastic):
 def test_round_trips_carry_every_parameter_exactly(wikipedia):
     fitted = hmm.CategoricalHMM(2, n_iter=17, tol=1e-3, random_state=5, init_params="ste")
     fitted.fit(np.array([[0], [1], [2], [2], [1], [0], [0]]), lengths=[3, 4])
-    # Fitting turns hmmlearn's random_state into a RandomState, whose state cannot be carried:
-    # the seed is then given.
-    with pytest.raises(ValueError, match="random_state must be an int or None to carry over.*pass seed="):
-        polymimic.DiscreteHMM.from_hmmlearn(fitted)
     ours = polymimic.DiscreteHMM.from_hmmlearn(fitted, seed=5)
     for name in ("startprob_", "transmat_", "emissionprob_"):
         assert np.array_equal(getattr(ours, name), getattr(fitted, name)), name
@@ -68,6 +64,30 @@ def test_round_trips_carry_every_parameter_exactly(wikipedia):
     trained = polymimic.DiscreteHMM.from_params(ours.startprob_, ours.transmat_, ours.emissionprob_, max_iter=5,
                                                 tol=float("-inf")).fit(seqs, init="given")
     np.testing.assert_allclose(trained.transmat_, peer.transmat_, atol=1e-10)
+
+
+def test_a_model_hmmlearn_fitted_carries_over_without_a_seed():
+    """Fitting leaves hmmlearn's random_state a RandomState: the seed is drawn from a copy of it,
+    the same for the same state, and the model's own state is left as it was."""
+    fitted = hmm.CategoricalHMM(2, n_iter=9, random_state=3, init_params="ste")
+    fitted.fit(np.array([[0], [1], [2], [2], [1], [0], [0], [2]]), lengths=[3, 5])
+    assert isinstance(fitted.random_state, np.random.RandomState)
+    state = fitted.random_state.get_state()
+    ours = polymimic.DiscreteHMM.from_hmmlearn(fitted)
+    again = polymimic.DiscreteHMM.from_hmmlearn(fitted)
+    assert ours.seed == again.seed >= 0
+    after = fitted.random_state.get_state()
+    assert after[0] == state[0] and np.array_equal(after[1], state[1]) and after[2:] == state[2:]
+    for seq in ([0, 1, 2], [2, 2, 1, 0, 0], [1]):
+        assert ours.score(np.array(seq)) == pytest.approx(fitted.score(np.array(seq)[:, None]), rel=1e-12)
+    generator = hmm.CategoricalHMM(2, random_state=np.random.default_rng(11))
+    generator.startprob_, generator.transmat_, generator.emissionprob_ = START, TRANS, EMIT
+    first = polymimic.DiscreteHMM.from_hmmlearn(generator).seed
+    assert first == polymimic.DiscreteHMM.from_hmmlearn(generator).seed == np.random.default_rng(11).integers(0, 2**62)
+    generator.random_state = "seven"
+    with pytest.raises(ValueError, match="random_state must be an int, None, a RandomState or a Generator to carry "
+                                         "over, got seven: pass seed="):
+        polymimic.DiscreteHMM.from_hmmlearn(generator)
 
 
 def test_the_topology_is_the_one_transmat_implies():

@@ -86,13 +86,72 @@ def test_a_batch_gives_back_what_it_was_given():
         ["expert", "tiny"], ["goal", "time_up"], ["large", "small"])
     first = batch[0]
     assert list(first) == ["demonstrator", "outcome", "segments", "pitch"]
-    assert first["segments"]["label"] == ["forward", "gap"]
+    assert first["segments"]["label"] == ("forward", "gap")
     assert first["segments"]["first_frame"].dtype == np.int64
     assert (first["segments"]["end"] == 1.0).all() and (first["segments"]["scores"] == -3.0).all()
     assert batch[-1]["demonstrator"] == "tiny"
     with pytest.raises(IndexError):
         batch[2]
     assert [d["pitch"] for d in batch] == ["large", "small"]
+
+
+def _change_label(item):
+    item["segments"]["label"] = ["forward", "jump"]
+
+
+def _change_a_label_in_place(item):
+    item["segments"]["label"][1] = "jump"
+
+
+def _shorten_a_column(item):
+    item["segments"]["first_frame"].resize(1, refcheck=False)
+
+
+def _move_a_frame(item):
+    item["segments"]["first_frame"][0] = 5
+
+
+def _rename_the_pitch(item):
+    item["pitch"] = "medium"
+
+
+def _delete_the_segments(item):
+    del item["segments"]
+
+
+def _clear_the_item(item):
+    item.clear()
+
+
+@pytest.mark.parametrize("change, error, match", [
+    (_change_label, TypeError, "does not support item assignment"),
+    (_change_a_label_in_place, TypeError, "does not support item assignment"),
+    (_shorten_a_column, ValueError, "cannot resize this array"),
+    (_move_a_frame, ValueError, "assignment destination is read-only"),
+    (_rename_the_pitch, TypeError, "does not support item assignment"),
+    (_delete_the_segments, TypeError, "does not support item deletion"),
+    (_clear_the_item, AttributeError, "has no attribute 'clear'"),
+])
+def test_what_a_batch_hands_out_cannot_be_changed_behind_the_learners_back(change, error, match):
+    batch = polymimic.SegmentedDemonstrations([_item(), _item(demonstrator="tiny", pitch="small")])
+    before = pickle.dumps(batch)
+    for item in (batch[0], next(iter(batch))):
+        with pytest.raises(error, match=match):
+            change(item)
+    assert batch == pickle.loads(before)
+
+
+def test_a_copy_of_an_item_is_checked_again_when_it_becomes_a_batch():
+    batch = polymimic.SegmentedDemonstrations([_item()])
+    copy = dict(batch[0])
+    copy["segments"] = {**copy["segments"], "label": ["forward", "jump"]}
+    with pytest.raises(ValueError, match="demonstration 0: segment 1: label 'jump' is not one of"):
+        polymimic.SegmentedDemonstrations([copy])
+    copy["segments"] = {**copy["segments"], "label": ["forward", "gap"], "first_frame": np.array([0])}
+    with pytest.raises(ValueError, match="demonstration 0: first_frame has 1 values for 2 labels"):
+        polymimic.SegmentedDemonstrations([copy])
+    copy["segments"] = dict(batch[0]["segments"])
+    assert polymimic.SegmentedDemonstrations([copy]) == batch
 
 
 def test_batches_add_concatenate_and_pickle():

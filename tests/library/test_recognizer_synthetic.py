@@ -87,6 +87,24 @@ def test_bad_frames_are_named(recognizer):
         polymimic.PrimitiveRecognizer.train([np.zeros((5, 3))], ["forward"])
 
 
+def test_frames_whose_time_runs_backwards_are_refused_at_that_frame(recognizer):
+    demo = polymimic.record("expert", configuration=1, n=1, seed=4)[0]
+    frames = demo.frames.copy()
+    frames["t_s"][40] = frames["t_s"][38]
+    with pytest.raises(ValueError, match=r"^demonstration: frame 40 has t_s 1.2666\d* s, before frame 39's 1.3 s; "
+                                         r"time must not run backwards$"):
+        recognizer.segment(frames)
+    with pytest.raises(ValueError, match=r"^demonstration 1: frame 40 has t_s"):
+        recognizer.segment_many([demo.frames, frames])
+    with pytest.raises(ValueError, match="frame 40 has t_s"):
+        polymimic.learning.segmented([polymimic.Demonstration(frames, "goal", "expert", 1, 0)], recognizer)
+    frames["t_s"][40] = np.nan
+    with pytest.raises(ValueError, match=r"^demonstration: frame 40 has t_s NaN; every frame needs its time$"):
+        recognizer.segment(frames)
+    frames["t_s"][40] = frames["t_s"][39]  # a repeated time is not a step back
+    assert len(recognizer.segment(frames)["label"]) == len(recognizer.segment(demo.frames)["label"])
+
+
 def test_save_load_and_pickle(tmp_path, recognizer, observed):
     recognizer.save(tmp_path / "r.json")
     loaded = polymimic.PrimitiveRecognizer.load(tmp_path / "r.json")

@@ -1,6 +1,7 @@
 """Tracker logs: round trips through other units and rates, known answers, and bad logs refused
 with the file, row and column named."""
 
+import csv
 import math
 
 import numpy as np
@@ -315,11 +316,46 @@ def test_readings_that_do_not_fit_the_field_suggest_the_unit(tmp_path):
     _refused(_csv(tmp_path, in_m, name="m.csv"),
              r"reach only 0.17 mm from the centre.*did you mean units=\{'length': 'm'\}\?")
     in_deg = [[t, x, y, 90.0, bx, by] for t, x, y, th, bx, by in in_mm]
-    _refused(_csv(tmp_path, in_deg, name="deg.csv"), r"data row 1 \(line 2\), column 'robot_theta_rad': heading 90 rad "
-                                                     r"is more than a full turn; did you mean units=\{'angle': 'deg'\}")
+    _refused(_csv(tmp_path, in_deg, name="deg.csv"),
+             r"data row 1 \(line 2\), column 'robot_theta_rad': heading 90 rad is more than 8 full turns.*; "
+             r"did you mean units=\{'angle': 'deg'\}")
     in_ms = [[t * 1000, x, y, th, bx, by] for t, x, y, th, bx, by in in_mm]
     _refused(_csv(tmp_path, in_ms, name="ms.csv"), r"column 't_s': readings are 33.3333 s apart .*did you mean "
                                                    r"units=\{'time': 'ms'\}\?")
+
+
+def test_unwrapped_headings_read_as_the_angles_they_are(tmp_path):
+    """An integrating tracker's headings (past ±180°) give the frames the wrapped log gives."""
+    demo = polymimic.record("expert", configuration=2, n=1, seed=3)[0]
+    wrapped_path = tmp_path / "wrapped.csv"
+    write_tracks([demo], wrapped_path)
+    wrapped = import_tracks(wrapped_path, demonstrator="x")
+    with open(wrapped_path, newline="") as file:
+        header, *rows = list(csv.reader(file))
+    column = header.index("robot_theta_rad")
+    theta = np.unwrap([float(r[column]) for r in rows]) + 4 * math.pi  # two turns on, never jumping
+    assert theta.max() > 2 * math.pi + 1
+    for r, value in zip(rows, theta):
+        r[column] = repr(float(value))
+    unwrapped_path = tmp_path / "unwrapped.csv"
+    with open(unwrapped_path, "w", newline="") as file:
+        csv.writer(file).writerows([header, *rows])
+    unwrapped = import_tracks(unwrapped_path, demonstrator="x")
+    a, b = wrapped.demonstrations[0].frames, unwrapped.demonstrations[0].frames
+    assert np.array_equal(a["robot_x_mm"], b["robot_x_mm"])
+    turn = np.angle(np.exp(1j * (a["robot_theta_rad"] - b["robot_theta_rad"])))
+    assert np.abs(turn).max() < 1e-9 and np.abs(b["robot_theta_rad"]).max() <= math.pi
+
+
+def test_degrees_declared_as_radians_are_refused_by_the_turn_they_would_mean(tmp_path):
+    """A robot turning 3° a reading, logged in degrees read as radians, would turn 14 turns a second."""
+    rows = [[t, x, y, 30.0 + 3 * i, bx, by] for i, (t, x, y, th, bx, by) in enumerate(_readings(5))]
+    message = _refused(_csv(tmp_path, rows), r"data row 2 \(line 3\), column 'robot_theta_rad': heading 33 rad after "
+                                             r"30 rad 0.0333 s before, a turn of 14.3 turns a second \(at most 2\)")
+    assert message.endswith("did you mean units={'angle': 'deg'}?")
+    degrees = import_tracks(_csv(tmp_path, rows, header=HEADER.replace("_rad", "_deg"), name="deg.csv"),
+                            demonstrator="x", units={"angle": "deg"})
+    assert degrees.demonstrations[0].frames["robot_theta_rad"][1] == pytest.approx(math.radians(33.0))
 
 
 def test_unknown_units_and_bad_rates_are_refused(tmp_path):

@@ -64,6 +64,16 @@ pub enum FieldParamError {
     /// A demonstrator name that does not exist.
     #[error("unknown demonstrator `{0}`")]
     UnknownDemonstrator(String),
+    /// A count (of substeps, of frames) that is not a whole number, or is negative.
+    #[error("parameter `{name}` = {value} is not a count: {expected}")]
+    NotACount {
+        /// Parameter name.
+        name: &'static str,
+        /// The offending value, as written.
+        value: String,
+        /// What is allowed, in words.
+        expected: &'static str,
+    },
     /// Malformed JSON for a config.
     #[error("invalid JSON: {0}")]
     Json(String),
@@ -114,9 +124,37 @@ pub(crate) fn check_range(
     }
 }
 
+/// Refuses, by key, a count in a config's JSON object that is not a whole number from 0 to
+/// `u32::MAX` (`counts`: each key with what is allowed), before serde reads it: serde's own
+/// message names the type and a column, not the key. Malformed JSON is left to serde.
+pub(crate) fn check_counts(json: &str, counts: &[(&'static str, &'static str)]) -> Result<(), FieldParamError> {
+    let Ok(serde_json::Value::Object(values)) = serde_json::from_str::<serde_json::Value>(json) else {
+        return Ok(());
+    };
+    for &(name, expected) in counts {
+        if let Some(value) = values.get(name)
+            && value.as_u64().is_none_or(|v| v > u64::from(u32::MAX))
+        {
+            return Err(FieldParamError::NotACount { name, value: value.to_string(), expected });
+        }
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn counts_are_refused_by_key_unless_whole_and_not_negative() {
+        let counts = [("n", "a whole number")];
+        assert_eq!(check_counts(r#"{"n": 3, "x": -1}"#, &counts), Ok(()));
+        for bad in ["-1", "2.5", "\"8\"", "4294967296"] {
+            let error = check_counts(&format!(r#"{{"n": {bad}}}"#), &counts).expect_err(bad);
+            assert_eq!(error.to_string(), format!("parameter `n` = {bad} is not a count: a whole number"));
+        }
+        assert_eq!(check_counts("{", &counts), Ok(()), "left to serde");
+    }
 
     #[test]
     fn check_range_rejects_nan_and_bounds() {

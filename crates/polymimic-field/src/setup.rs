@@ -5,7 +5,7 @@ use polymimic_types::{Point, Pose};
 use serde::{Deserialize, Serialize};
 
 use crate::body::{BodyKind, HUMANOID, HumanoidParams};
-use crate::error::{FieldParamError, check_range};
+use crate::error::{FieldParamError, check_counts, check_range};
 use crate::geometry::FieldGeometry;
 use crate::physics::BallParams;
 use crate::tracker::TrackerConfig;
@@ -76,8 +76,10 @@ impl FieldConfig {
     /// A config from JSON, validated.
     ///
     /// # Errors
-    /// `Json` for malformed input; `OutOfRange` for invalid values.
+    /// `Json` for malformed input; `NotACount` for a substep count that is not a whole number
+    /// (by its key); `OutOfRange` for invalid values.
     pub fn from_json(json: &str) -> Result<Self, FieldParamError> {
+        check_counts(json, &[("substeps_per_frame", "a whole number, 1 ≤ substeps ≤ 64")])?;
         let config: Self = serde_json::from_str(json).map_err(|e| FieldParamError::Json(e.to_string()))?;
         config.check()?;
         Ok(config)
@@ -194,5 +196,10 @@ mod tests {
         ));
         let bad = c.to_json().replace("\"substeps_per_frame\":8", "\"substeps_per_frame\":0");
         assert!(matches!(FieldConfig::from_json(&bad), Err(FieldParamError::OutOfRange { .. })));
+        let negative = c.to_json().replace("\"substeps_per_frame\":8", "\"substeps_per_frame\":-8");
+        assert!(matches!(
+            FieldConfig::from_json(&negative),
+            Err(FieldParamError::NotACount { name: "substeps_per_frame", .. })
+        ));
     }
 }

@@ -144,8 +144,9 @@ pub fn floats(value: &Bound<'_, PyAny>, name: &str, rank: usize) -> PyResult<(Ve
     }
 }
 
-/// Columns of tracker frames: from a structured array, the named fields; from a 2-D float
-/// array, its first `columns.len()` columns in that order. Returns rows of `columns.len()`.
+/// Columns of tracker frames: from a structured array, the named fields (its time `t_s`, where
+/// it has one, checked to run forward); from a 2-D float array, its first `columns.len()`
+/// columns in that order. Returns rows of `columns.len()`.
 pub fn frame_columns(value: &Bound<'_, PyAny>, what: &str, columns: &[&str]) -> PyResult<Vec<Vec<f64>>> {
     let array = asarray(value, None)?;
     let names = array.getattr("dtype")?.getattr("names")?;
@@ -162,6 +163,9 @@ pub fn frame_columns(value: &Bound<'_, PyAny>, what: &str, columns: &[&str]) -> 
         data.chunks_exact(shape[1]).map(|row| row[..width].to_vec()).collect()
     } else {
         let names: Vec<String> = names.extract()?;
+        if names.iter().any(|n| n == "t_s") {
+            time_runs_forward(&floats(&array.get_item("t_s")?, what, 1)?.0, what)?;
+        }
         let mut fields = Vec::with_capacity(width);
         for &column in columns {
             if !names.iter().any(|n| n == column) {
@@ -176,6 +180,24 @@ pub fn frame_columns(value: &Bound<'_, PyAny>, what: &str, columns: &[&str]) -> 
         (0..rows).map(|r| fields.iter().map(|f| f[r]).collect()).collect()
     };
     Ok(table)
+}
+
+/// Refuses frames whose time (`t_s`) is unknown or runs backwards, naming the first such frame:
+/// a tracker's frames come in the order they were seen.
+fn time_runs_forward(t_s: &[f64], what: &str) -> PyResult<()> {
+    if let Some(i) = t_s.iter().position(|t| !t.is_finite()) {
+        return Err(PyValueError::new_err(format!("{what}: frame {i} has t_s {}; every frame needs its time", t_s[i])));
+    }
+    match t_s.windows(2).position(|pair| pair[1] < pair[0]) {
+        Some(i) => Err(PyValueError::new_err(format!(
+            "{what}: frame {} has t_s {} s, before frame {}'s {} s; time must not run backwards",
+            i + 1,
+            t_s[i + 1],
+            i,
+            t_s[i]
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// A row-major vector as a 2-D array.

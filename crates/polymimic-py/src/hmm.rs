@@ -205,8 +205,10 @@ impl PyDiscreteHmm {
 
     /// A model from a fitted `hmmlearn.hmm.CategoricalHMM`: its probabilities exactly, its
     /// `n_iter` and `tol`, and the topology its `startprob_` and `transmat_` imply (see
-    /// `from_params`). The seed is `seed`, else its integer `random_state` (0 for None); a
-    /// `RandomState` (what fitting leaves there) cannot be carried over, so `seed` is needed.
+    /// `from_params`). The seed is `seed`, else the model's `random_state`: an integer as it is,
+    /// 0 for None, and for a `RandomState` (what fitting leaves there) or a `Generator` the
+    /// first draw of a copy of it, so the same state gives the same seed and the model's own
+    /// state is left as it was.
     #[classmethod]
     #[pyo3(signature = (model, *, seed=None))]
     fn from_hmmlearn(cls: &Bound<'_, PyType>, model: &Bound<'_, PyAny>, seed: Option<i64>) -> PyResult<Self> {
@@ -225,16 +227,9 @@ impl PyDiscreteHmm {
                 )));
             }
         }
-        let random_state = model.getattr("random_state")?;
         let seed = match seed {
             Some(seed) => seed,
-            None if random_state.is_none() => 0,
-            None => random_state.extract::<i64>().map_err(|_| {
-                PyValueError::new_err(format!(
-                    "the CategoricalHMM's random_state must be an int or None to carry over, got {random_state}: \
-                     pass seed="
-                ))
-            })?,
+            None => seed_of(&model.getattr("random_state")?)?,
         };
         Self::from_params(
             cls,
@@ -399,4 +394,29 @@ impl PyDiscreteHmm {
             format!("DiscreteHMM(n_states={}, n_symbols={}, {topology}{state})", p.n_states, p.n_symbols)
         })
     }
+}
+
+/// A seed from an hmmlearn model's `random_state`: an integer as it is, 0 for None, and a
+/// `numpy.random.RandomState` or `Generator` drawn from once through a copy, which leaves the
+/// model's own state untouched.
+fn seed_of(random_state: &Bound<'_, PyAny>) -> PyResult<i64> {
+    if random_state.is_none() {
+        return Ok(0);
+    }
+    if let Ok(seed) = random_state.extract::<i64>() {
+        return Ok(seed);
+    }
+    let py = random_state.py();
+    let draw = if random_state.hasattr("integers")? {
+        "integers"
+    } else if random_state.hasattr("randint")? {
+        "randint"
+    } else {
+        return Err(PyValueError::new_err(format!(
+            "the CategoricalHMM's random_state must be an int, None, a RandomState or a Generator to carry over, \
+             got {random_state}: pass seed="
+        )));
+    };
+    let copy = py.import("copy")?.call_method1("deepcopy", (random_state,))?;
+    copy.call_method1(draw, (0_i64, 1_i64 << 62))?.extract()
 }

@@ -18,6 +18,7 @@ from polymimic.bodies import Field, WheeledBody, body_name, resolve
 from polymimic.field import FRAME_DTYPE, OUTCOMES, UNKNOWN_COMMAND, Demonstration, command_table
 from polymimic.tracks.episodes import Stretch, lost_tracking, nominal_period_s, split_episodes
 from polymimic.tracks.errors import LostTrackingWarning, TrackLogError
+from polymimic.tracks.headings import check_headings
 from polymimic.tracks.outcomes import LINE_TOLERANCE_MM, configuration_of, outcome_of
 from polymimic.tracks.reading import Log, read_log
 from polymimic.tracks.resampling import grid, heading, held, linear
@@ -96,7 +97,9 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
         under its bare name.
     units : dict, optional
         ``{"length": "mm" | "cm" | "m", "angle": "rad" | "deg", "time": "s" | "ms"}``; mm, rad and
-        s where left out.
+        s where left out. Headings may be wrapped or unwrapped (past ±180°, as a tracker that
+        integrates the turning writes them); degrees declared as radians are refused by the
+        turn rate or the number of turns they would mean (:mod:`polymimic.tracks.headings`).
     rate_hz : float, optional
         The log's nominal rate, checked against its timestamps (the median interval within 10 %);
         without it the median interval is the nominal period.
@@ -162,6 +165,7 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
     log = read_log(path, columns=columns, units=checked, ignore=ignore)
     check_scale(log, field, checked)
     stretches = split_episodes(log, field_length_mm=field.length_mm)
+    check_headings(log, stretches, checked)
     period_s = nominal_period_s(log, stretches, rate_hz, checked["time"])
     commands = _commands(log) if "command" in log.labels else None
     _check_outcomes(log)

@@ -1,15 +1,12 @@
 """Whether a log's readings fit the field in the units declared for them.
 
-Readings more than :data:`MARGIN_SHARE` of the field's size beyond its lines, headings beyond a
-full turn, or x readings that never reach :data:`MIN_REACH_SHARE` of the half length from the
-centre (the robot and the ball start a sixth of the length from it) mean a unit declared wrong;
-the error says which unit would fit. Headings in radians declared as degrees cannot be told
-apart: every value fits.
+Readings more than :data:`MARGIN_SHARE` of the field's size beyond its lines, or x readings that
+never reach :data:`MIN_REACH_SHARE` of the half length from the centre (the robot and the ball
+start a sixth of the length from it) mean a length unit declared wrong; the error says which
+unit would fit. Headings are judged apart, episode by episode (:mod:`polymimic.tracks.headings`).
 """
 
 from __future__ import annotations
-
-import math
 
 import numpy as np
 
@@ -27,7 +24,7 @@ MIN_REACH_SHARE = 0.2
 
 
 def check_scale(log: Log, field: Field, units: Units) -> None:
-    """A ``TrackLogError`` if the positions or headings cannot be in the declared units."""
+    """A ``TrackLogError`` if the positions cannot be in the declared length unit."""
     limit_x = field.half_length_mm + MARGIN_SHARE * field.length_mm
     limit_y = field.half_width_mm + MARGIN_SHARE * field.width_mm
     limits = {"robot_x": limit_x, "ball_x": limit_x, "robot_y": limit_y, "ball_y": limit_y}
@@ -48,15 +45,6 @@ def check_scale(log: Log, field: Field, units: Units) -> None:
         raise TrackLogError(f"{log.path}: the robot's and the ball's x readings reach only {reach_mm / declared:g} "
                             f"{unit} from the centre, too little for the {field.length_mm:g} mm field, on which they "
                             f"start {field.length_mm / 6:g} mm from it{_length_hint(excess, reach_mm, field, unit)}")
-    theta = log.measured["robot_theta"]
-    if np.isfinite(theta).any() and float(np.nanmax(np.abs(theta))) > 2 * math.pi + 1e-9:
-        row = int(np.nanargmax(np.abs(theta)))
-        angle = units["angle"]
-        value = theta[row] / UNITS["angle"][angle]
-        hint = (f"; did you mean {unit_hint('angle', 'deg')}?"
-                if angle == "rad" and abs(value) <= 360.0 else "")
-        raise TrackLogError(f"{log.where(row, 'robot_theta')}: heading {value:g} {angle} is more than a full turn"
-                            f"{hint}")
 
 
 def _length_hint(excess: float, reach_mm: float, field: Field, declared: str) -> str:

@@ -16,7 +16,7 @@ use polymimic_types::{Pose, Primitive, direction_rad};
 use serde::{Deserialize, Serialize};
 
 use crate::command::{Command, LEGO_WHEEL_BASE_MM};
-use crate::error::{FieldParamError, check_range};
+use crate::error::{FieldParamError, check_counts, check_range};
 use crate::math::{Rng, exp, gaussian, wrap_angle_rad};
 
 /// Random traction of one manoeuvre class, drawn on every command onset.
@@ -141,8 +141,10 @@ impl WheeledParams {
     /// the life of the process (names are few, and errors quote them).
     ///
     /// # Errors
-    /// `Json` for malformed JSON or an unknown key; `OutOfRange` as [`WheeledParams::check`].
+    /// `Json` for malformed JSON or an unknown key; `NotACount` for a frame count that is not a
+    /// whole number; `OutOfRange` as [`WheeledParams::check`].
     pub fn from_json(json: &str) -> Result<Self, FieldParamError> {
+        check_counts(json, &[("traction_refresh_frames", "a whole number of frames, at least 1")])?;
         let data: WheeledParamsData = serde_json::from_str(json).map_err(|e| FieldParamError::Json(e.to_string()))?;
         let params = Self {
             name: interned(&data.name),
@@ -347,6 +349,11 @@ mod tests {
         assert!(matches!(WheeledParams::from_json("{\"name\": \"x\"}"), Err(FieldParamError::Json(_))));
         let extra = LEGO.to_json().replace("{", "{\"wheels\": 3,");
         assert!(matches!(WheeledParams::from_json(&extra), Err(FieldParamError::Json(e)) if e.contains("wheels")));
+        let negative = LEGO.to_json().replace("\"traction_refresh_frames\":30", "\"traction_refresh_frames\":-30");
+        assert_eq!(
+            WheeledParams::from_json(&negative).map_err(|e| e.to_string()),
+            Err("parameter `traction_refresh_frames` = -30 is not a count: a whole number of frames, at least 1".into())
+        );
     }
 
     fn run(body: &mut WheeledBody, command: Command, frames: u32, r: &mut Rng) {

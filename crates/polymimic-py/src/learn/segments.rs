@@ -8,10 +8,9 @@ use std::sync::Arc;
 use polymimic_field::Outcome;
 use polymimic_learn::{Ending, Pitch, SegmentedDemonstration};
 use polymimic_perceive::{Label, Pose, Primitive, Segment, TrackedFrame};
-use pyo3::PyTypeInfo;
-use pyo3::exceptions::{PyIndexError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyIndexError, PyKeyError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyIterator, PyList, PyString, PyTuple};
+use pyo3::types::{IntoPyDict, PyDict, PyIterator, PyList, PyString, PyTuple};
 
 use crate::convert::{floats, integers};
 use crate::perceive::segment_columns;
@@ -30,8 +29,10 @@ const STATE_COLUMNS: [&str; 5] = ["robot_x_mm", "robot_y_mm", "robot_theta_rad",
 /// is checked once, here: a bad one is a ``ValueError`` naming the demonstration, the field,
 /// the value and what is allowed. ``frame_counts`` (one per demonstration) also checks that
 /// every segment lies inside its demonstration. The batch is immutable and shared, not copied,
-/// by every trial and policy it is given to; indexing gives a demonstration back as a
-/// dictionary, and batches add and pickle.
+/// by every trial and policy it is given to; indexing gives a demonstration back read-only
+/// (mappings that refuse assignment, labels as a tuple, arrays that refuse writes), so what
+/// was checked cannot change; ``dict(item)`` and the columns' copies make a new one to edit
+/// and check again. Batches add and pickle.
 ///
 /// Examples
 /// --------
@@ -42,7 +43,11 @@ const STATE_COLUMNS: [&str; 5] = ["robot_x_mm", "robot_y_mm", "robot_theta_rad",
 /// >>> batch = SegmentedDemonstrations([{"demonstrator": "expert", "outcome": "goal", "pitch": "large",
 /// ...                                   "segments": segments}])
 /// >>> len(batch), batch.outcomes, batch[0]["segments"]["label"]
-/// (1, ['goal'], ['forward'])
+/// (1, ['goal'], ('forward',))
+/// >>> batch[0]["segments"]["label"] = ["jump"]
+/// Traceback (most recent call last):
+/// ...
+/// TypeError: 'mappingproxy' object does not support item assignment
 /// >>> SegmentedDemonstrations([{"demonstrator": "expert", "outcome": "own-goal", "pitch": "large",
 /// ...                           "segments": segments}])
 /// Traceback (most recent call last):
@@ -212,6 +217,7 @@ impl PySegmentedDemonstrations {
         Self { demonstrations: demonstrations.into(), outcomes: outcomes.into() }
     }
 
+    /// Demonstration `i` as a dictionary the constructor takes (a copy of it).
     fn item<'py>(&self, py: Python<'py>, i: usize) -> PyResult<Bound<'py, PyDict>> {
         let d = &self.demonstrations[i];
         let out = PyDict::new(py);
@@ -220,6 +226,25 @@ impl PySegmentedDemonstrations {
         out.set_item("segments", segment_columns(py, &d.segments)?)?;
         out.set_item("pitch", pitch_name(&d.pitch))?;
         Ok(out)
+    }
+
+    /// Demonstration `i` as a read-only view: mappings that refuse assignment and deletion,
+    /// labels as a tuple, arrays that refuse writes. What was checked cannot change behind the
+    /// learner's back, even in a copy a user might take for the batch itself.
+    fn read_only_item<'py>(&self, py: Python<'py>, i: usize) -> PyResult<Bound<'py, PyAny>> {
+        let proxy = py.import("types")?.getattr("MappingProxyType")?;
+        let item = self.item(py, i)?;
+        let columns =
+            item.get_item("segments")?.ok_or_else(|| PyKeyError::new_err("segments"))?.cast_into::<PyDict>()?;
+        for (key, column) in columns.iter() {
+            if column.is_instance_of::<PyList>() {
+                columns.set_item(key, PyTuple::new(py, column.cast_into::<PyList>()?.iter())?)?;
+            } else {
+                column.call_method("setflags", (), Some(&[("write", false)].into_py_dict(py)?))?;
+            }
+        }
+        item.set_item("segments", proxy.call1((columns,))?)?;
+        proxy.call1((item,))
     }
 }
 
@@ -282,22 +307,22 @@ impl PySegmentedDemonstrations {
         self.demonstrations.len()
     }
 
-    /// Demonstration `index` as a dictionary (a copy), as the constructor takes it.
-    fn __getitem__<'py>(&self, py: Python<'py>, index: isize) -> PyResult<Bound<'py, PyDict>> {
+    /// Demonstration `index`, read-only, with the keys and columns the constructor takes.
+    fn __getitem__<'py>(&self, py: Python<'py>, index: isize) -> PyResult<Bound<'py, PyAny>> {
         let n = self.demonstrations.len() as isize;
         let i = if index < 0 { index + n } else { index };
         if !(0..n).contains(&i) {
             return Err(PyIndexError::new_err(format!("demonstration {index} of {n}")));
         }
-        self.item(py, i as usize)
+        self.read_only_item(py, i as usize)
     }
 
-    /// Every demonstration as a dictionary (copies), in order.
+    /// Every demonstration, read-only, in order.
     fn __iter__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyIterator>> {
         let py = slf.py();
         let items = PyList::empty(py);
         for i in 0..slf.get().demonstrations.len() {
-            items.append(slf.get().item(py, i)?)?;
+            items.append(slf.get().read_only_item(py, i)?)?;
         }
         items.try_iter()
     }
@@ -326,7 +351,10 @@ impl PySegmentedDemonstrations {
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
         let py = slf.py();
-        let items = PyList::type_object(py).call1((Self::__iter__(slf)?,))?;
+        let items = PyList::empty(py);
+        for i in 0..slf.get().demonstrations.len() {
+            items.append(slf.get().item(py, i)?)?;
+        }
         Ok((slf.get_type().into_any(), PyTuple::new(py, [items])?))
     }
 

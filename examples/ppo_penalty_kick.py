@@ -36,7 +36,7 @@ from typing import Any
 from polymimic.baselines import ppo
 from polymimic.baselines.ppo import Checkpoint
 from polymimic.plots import plot_demonstration, save_figure
-from polymimic.reproduce.config import SeedSettings
+from polymimic.runs.config import SeedSettings
 
 FEATURE_SET = "goal_relative"
 FRAMES_PER_ACTION = 30

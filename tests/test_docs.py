@@ -60,7 +60,7 @@ def test_readme_body_table_is_a_body():
 
 def test_readme_roster_is_a_run_config():
     """The README's own-experiments example reads as a run config with those experiments."""
-    from polymimic.reproduce.config import RunConfig
+    from polymimic.runs.config import RunConfig
 
     blocks = [b.split("```", 1)[0] for b in README.read_text().split("```toml\n")[1:]]
     rosters = [b for b in blocks if "[experiments." in b]

@@ -1,5 +1,6 @@
-"""The house's shape, read from the imports: the library never imports the application, and no
-module of polymimic imports another that imports it back."""
+"""The house's shape, read from the imports: the library never imports the run machinery or an
+application, the run machinery no application, no application another, and no module of
+polymimic imports another that imports it back."""
 
 import ast
 import pathlib
@@ -31,16 +32,35 @@ def _imports():
 
 
 GRAPH = _imports()
-APPLICATION = ("polymimic.reproduce", "polymimic.benchmark", "polymimic.cli", "polymimic.__main__")
+RUNS = ("polymimic.runs",)
+APPLICATIONS = ("polymimic.reproduce", "polymimic.benchmark")
+COMMAND = ("polymimic.cli", "polymimic.__main__")
+APPLICATION = RUNS + APPLICATIONS + COMMAND
+
+
+def _within(name, packages):
+    return any(name == a or name.startswith(a + ".") for a in packages)
 
 
 def _is_application(name):
-    return any(name == a or name.startswith(a + ".") for a in APPLICATION)
+    return _within(name, APPLICATION)
 
 
 @pytest.mark.parametrize("module", sorted(m for m in GRAPH if not _is_application(m)))
 def test_the_library_never_imports_the_application(module):
     assert not [m for m in GRAPH[module] if _is_application(m)]
+
+
+@pytest.mark.parametrize("module", sorted(m for m in GRAPH if _within(m, RUNS)))
+def test_the_run_machinery_imports_no_application(module):
+    assert not [m for m in GRAPH[module] if _within(m, APPLICATIONS + COMMAND)]
+
+
+@pytest.mark.parametrize("application", APPLICATIONS)
+def test_no_application_imports_another(application):
+    others = tuple(a for a in APPLICATIONS if a != application) + COMMAND
+    found = {(m, t) for m in GRAPH if _within(m, (application,)) for t in GRAPH[m] if _within(t, others)}
+    assert not found
 
 
 def test_no_module_imports_itself_back():
@@ -61,5 +81,5 @@ def test_no_module_imports_itself_back():
 def test_the_graph_is_read():
     # A guard on the reader itself: known edges are there.
     assert "polymimic.field" in GRAPH["polymimic.learning"]
-    assert "polymimic.reproduce.config" in GRAPH["polymimic.reproduce.stages"]
+    assert "polymimic.runs.config" in GRAPH["polymimic.reproduce.stages"]
     assert _is_application("polymimic.reproduce.stages") and not _is_application("polymimic.recognition")

@@ -219,7 +219,7 @@ def test_bad_humanoid_constants_are_named(humanoid, error, match):
 def test_the_presets_in_the_docs_are_valid_run_configs():
     import pathlib
 
-    from polymimic.reproduce.config import RunConfig
+    from polymimic.runs.config import RunConfig
 
     configs = pathlib.Path(__file__).parents[2] / "docs" / "configs"
     tracker = RunConfig.load(configs / "tracker_table_3_1.toml").field["tracker"]

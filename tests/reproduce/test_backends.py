@@ -5,7 +5,7 @@ import os
 
 import pytest
 
-from polymimic.reproduce.backends import TaskRunner
+from polymimic.runs.backends import TaskRunner
 
 
 def _thread_pools(shared, arg):

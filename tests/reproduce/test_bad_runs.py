@@ -12,8 +12,9 @@ import time
 import pytest
 
 from polymimic import cli
-from polymimic.reproduce.config import ConfigError, RunConfig
-from polymimic.reproduce.rundir import RunDir, RunError
+from polymimic.reproduce.rundir import RunDir
+from polymimic.runs.config import ConfigError, RunConfig
+from polymimic.runs.rundir import RunError
 
 
 @pytest.fixture(scope="module")

@@ -39,8 +39,8 @@ def test_import_tracks_writes_the_runs_demonstrations_and_says_how_many(tmp_path
 
     log = tmp_path / "log.csv"
     demos = _tracker_log(log, units={"length": "m", "angle": "deg"}, rate_hz=60, include=())
-    from polymimic.reproduce.config import RunConfig
     from polymimic.reproduce.rundir import RunDir
+    from polymimic.runs.config import RunConfig
 
     run = tmp_path / "runs" / "20260101-000000"
     RunDir(run).open(RunConfig.from_toml('[demonstrators.alice]\nimported = true\n'))

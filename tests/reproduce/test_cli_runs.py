@@ -6,7 +6,7 @@ import pytest
 import tomllib
 
 from polymimic import cli
-from polymimic.reproduce.config import RunConfig
+from polymimic.runs.config import RunConfig
 
 
 @pytest.fixture(scope="module")

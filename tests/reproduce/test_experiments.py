@@ -10,11 +10,12 @@ import pytest
 from polymimic import ModelFileError
 from polymimic.learning import ModelResult, TrialResult
 from polymimic.reproduce import experiments, results
-from polymimic.reproduce.backends import TaskRunner
-from polymimic.reproduce.config import RunConfig
-from polymimic.reproduce.roster import EXPERIMENTS
-from polymimic.reproduce.rundir import MissingInputError, RunDir
+from polymimic.reproduce.rundir import RunDir
 from polymimic.reproduce.stages import WORKER_MODULES, Context, run_stage
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.config import RunConfig
+from polymimic.runs.roster import EXPERIMENTS
+from polymimic.runs.rundir import MissingInputError
 
 
 def _context(path, runner=None, config=None):

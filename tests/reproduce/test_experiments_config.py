@@ -6,7 +6,7 @@ import pytest
 import tomllib
 
 import polymimic
-from polymimic.reproduce.config import ConfigError, RunConfig
+from polymimic.runs.config import ConfigError, RunConfig
 
 
 def test_defaults_are_the_thesis_sizes():

@@ -11,10 +11,10 @@ import pytest
 from polymimic import write_tracks
 from polymimic.datasets import load_demonstrations
 from polymimic.field import record
-from polymimic.reproduce.backends import TaskRunner
-from polymimic.reproduce.config import ConfigError, RunConfig
 from polymimic.reproduce.rundir import RunDir
 from polymimic.reproduce.stages import Context, reproduce
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.config import ConfigError, RunConfig
 
 POLICY = '''
 import math
@@ -168,7 +168,7 @@ def test_the_thesis_bodies_are_two_entries_of_the_bodies_table():
 
 def test_a_log_brought_in_with_import_tracks_is_the_runs_demonstrator(tiny_run_toml, tmp_path, capsys):
     from polymimic import cli
-    from polymimic.reproduce.rundir import MissingInputError
+    from polymimic.runs.rundir import MissingInputError
 
     roster = ('[demonstrators.alice]\nimported = true\n\n[experiments.with_alice]\n'
               'demonstrators = ["alice", "expert"]\n')
@@ -216,7 +216,7 @@ def test_a_controller_drives_its_own_body_unless_told(tmp_path):
 
 
 def test_a_policy_file_that_fails_to_load_is_named(tmp_path):
-    from polymimic.reproduce.roster_config import RosterError, record_demonstrator
+    from polymimic.runs.roster_config import RosterError, record_demonstrator
 
     (tmp_path / "broken.py").write_text("def act(reading:\n")
     (tmp_path / "typed.py").write_text("from __future__ import annotations\nimport dataclasses\n\n"
@@ -231,7 +231,7 @@ def test_a_policy_file_that_fails_to_load_is_named(tmp_path):
 
 
 def test_a_rerun_makes_nothing_new_and_a_changed_log_is_refused(own_run):
-    from polymimic.reproduce.rundir import RunError
+    from polymimic.runs.rundir import RunError
 
     run, config, logged = own_run
     ctx = Context(run=run, config=config, runner=TaskRunner(workers=1), quiet=True)

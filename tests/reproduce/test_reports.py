@@ -5,13 +5,14 @@ import re
 
 import pytest
 
-from polymimic.reproduce import markdown, thesis
 from polymimic.reproduce import report as reports
-from polymimic.reproduce.backends import TaskRunner
-from polymimic.reproduce.config import RunConfig
+from polymimic.reproduce import thesis
 from polymimic.reproduce.figures import FIGURES
 from polymimic.reproduce.rundir import RunDir
 from polymimic.reproduce.stages import Context, reproduce
+from polymimic.runs import markdown, stats
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.config import RunConfig
 
 PRIMITIVES = {"forward", "backward", "left", "right", "stop"}
 MOVING = {"forward", "backward", "left", "right"}
@@ -122,8 +123,8 @@ def test_the_html_report_stands_alone(run):
 
 def test_verdicts_and_formatting():
     assert reports.verdict("Expert first", None).endswith("— **n/a (too little data)**")
-    assert reports.msd({"mean": 0.914, "sd": 0.012}, share=True) == "91.4 % (1.2 %)"
-    assert reports.msd(None) == "—"
+    assert stats.msd({"mean": 0.914, "sd": 0.012}, share=True) == "91.4 % (1.2 %)"
+    assert stats.msd(None) == "—"
     assert thesis.IMITATOR_GOALS["heterogeneous_bcr"] == {"goals": 7, "own_goals": 13, "attempts": 50}
 
 

@@ -1,7 +1,7 @@
 """Every parameter of a benchmark run; TOML in and out.
 
 The sections a reproduction has (``[seeds]``, ``[field]``, ``[recognizer]``, ``[segmenter]``,
-``[learning]``, read by :class:`~polymimic.reproduce.config.RunConfig`), then ``[benchmark]``
+``[learning]``, read by :class:`~polymimic.runs.config.RunConfig`), then ``[benchmark]``
 (sizes, methods, tuning effort) and one ``[profiles.<name>]`` table per crowd, whose
 ``members`` list tables of ``controller`` and ``lapse`` (and optionally ``name`` and
 ``count``). The five built-in profiles are there unless a file redefines one; a file may add
@@ -17,7 +17,7 @@ its own and run it with ``profiles = [...]``.
 >>> BenchmarkConfig.from_toml('[benchmark]\\nprofiles = ["one_goood"]\\n')
 Traceback (most recent call last):
 ...
-polymimic.reproduce.config.ConfigError: [benchmark] profiles: unknown profile 'one_goood'; expected one of one_good, ...
+polymimic.runs.config.ConfigError: [benchmark] profiles: unknown profile 'one_goood'; expected one of one_good, ...
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ from typing import Any
 
 from polymimic._toml import write_table, write_value
 from polymimic.crowds import PROFILES, Crowd
-from polymimic.reproduce.config import ConfigError, RunConfig, _checked, _in_range, _table, read_config, toml_tables
+from polymimic.runs.config import ConfigError, RunConfig, as_table, checked_section, in_range, read_config, toml_tables
 
 __all__ = ["METHODS", "OPTIONAL_METHODS", "BenchmarkConfig", "BenchmarkSettings"]
 
@@ -77,8 +77,8 @@ class BenchmarkSettings:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
                      "validation_attempts_per_configuration", "tuning_budget", "lp_plugin_trials",
                      "max_decision_samples", "ppo_timesteps", "ppo_eval_every", "ppo_runs"):
-            _in_range("benchmark", name, getattr(self, name), 1)
-        _in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
+            in_range("benchmark", name, getattr(self, name), 1)
+        in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
         for name in ("profiles", "methods"):
             value = getattr(self, name)
             if not isinstance(value, (list, tuple)) or not value:
@@ -171,8 +171,8 @@ class BenchmarkConfig:
         own = {"benchmark", "profiles"}
         run = RunConfig.from_dict({k: v for k, v in data.items() if k not in own}, base=base.run)
         profiles = dict(base.profiles)
-        for name, table in _table("profiles", data.get("profiles", {})).items():
-            members = _table(f"profiles.{name}", table)
+        for name, table in as_table("profiles", data.get("profiles", {})).items():
+            members = as_table(f"profiles.{name}", table)
             unknown = sorted(set(members) - {"members"})
             if unknown:
                 raise ConfigError(f"unknown key in [profiles.{name}]: {unknown[0]} (a profile has members only)")
@@ -184,7 +184,7 @@ class BenchmarkConfig:
         if "benchmark" in data:
             defaults = {k: list(v) if isinstance(v, tuple) else v
                         for k, v in dataclasses.asdict(base.benchmark).items()}
-            values = _checked("benchmark", _table("benchmark", data["benchmark"]), defaults)
+            values = checked_section("benchmark", as_table("benchmark", data["benchmark"]), defaults)
             benchmark = dataclasses.replace(base.benchmark, **values)
         return cls(run=run, benchmark=benchmark, profiles=profiles)
 

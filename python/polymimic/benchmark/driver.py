@@ -51,9 +51,9 @@ from polymimic.crowds import Crowd, record_crowd
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
 from polymimic.field import PRIMITIVES, self_observation
 from polymimic.learning import TrialResult, segmented
-from polymimic.reproduce.backends import TaskRunner
-from polymimic.reproduce.config import ConfigError
-from polymimic.reproduce.progress import progress
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.config import ConfigError
+from polymimic.runs.progress import progress
 
 __all__ = ["Benchmark"]
 

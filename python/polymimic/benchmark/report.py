@@ -8,8 +8,8 @@ from typing import Any
 
 from polymimic.benchmark.figures import FIGURES
 from polymimic.benchmark.targets import check_targets
-from polymimic.reproduce.markdown import to_html
-from polymimic.reproduce.report import msd
+from polymimic.runs.markdown import to_html
+from polymimic.runs.stats import msd
 
 __all__ = ["benchmark_html", "benchmark_markdown"]
 

@@ -24,7 +24,7 @@ import os
 import pathlib
 
 from polymimic.benchmark.config import BenchmarkConfig
-from polymimic.reproduce.rundir import RunHouse
+from polymimic.runs.rundir import RunHouse
 
 __all__ = ["BenchmarkDir"]
 

@@ -27,9 +27,9 @@ from polymimic.benchmark.tasks import POLYMIMIC_METHODS, final_lps, ppo_hyperpar
 from polymimic.crowds import Crowd
 from polymimic.datasets import load_demonstrations
 from polymimic.learning import LearningConfig, TrialResult
+from polymimic.plots import MeanSd
 from polymimic.ranking import kendall, spearman
-from polymimic.reproduce.results import mean_sd
-from polymimic.reproduce.schema import MeanSd
+from polymimic.runs.stats import mean_sd
 
 __all__ = ["FORMAT", "VERSION", "MemberSummary", "MethodSummary", "PPOSummary", "ProfileSummary", "SkillRecovery",
            "gather"]

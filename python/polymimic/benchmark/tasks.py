@@ -1,6 +1,6 @@
 """The benchmark's tasks: module-level functions of what every task shares and its own job, so
 that process-pool and Ray workers can import them (see
-:class:`~polymimic.reproduce.backends.TaskRunner`). Each returns plain data the driver writes
+:class:`~polymimic.runs.backends.TaskRunner`). Each returns plain data the driver writes
 to the run directory; each depends on its job and the shared inputs alone.
 """
 

@@ -6,10 +6,10 @@ Three experiments, each of many trials that differ only in their seed:
 * ``heterogeneous_bcr``: the same demonstrations, the reverse order (BCR);
 * ``varying_skill``: Poor, Average, Expert, their demonstrations interleaved in phase one.
 
-Trials and evaluations run as tasks on a :class:`~polymimic.reproduce.backends.TaskRunner`; every result
+Trials and evaluations run as tasks on a :class:`~polymimic.runs.backends.TaskRunner`; every result
 is written to the run directory, atomically, as it arrives, so an interrupted stage resumes
 where it stopped and a finished one is never redone. Who takes part is in
-:mod:`polymimic.reproduce.roster`.
+:mod:`polymimic.runs.roster`.
 """
 
 from __future__ import annotations
@@ -34,11 +34,12 @@ from polymimic.learning import (
     evaluate,
     run_trial,
 )
-from polymimic.reproduce.backends import TaskRunner
-from polymimic.reproduce.config import ConfigError, RunConfig
-from polymimic.reproduce.progress import progress
-from polymimic.reproduce.roster import CONTROLS, Experiment
-from polymimic.reproduce.rundir import MissingInputError, RunDir
+from polymimic.reproduce.rundir import RunDir
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.config import ConfigError, RunConfig
+from polymimic.runs.progress import progress
+from polymimic.runs.roster import CONTROLS, Experiment
+from polymimic.runs.rundir import MissingInputError
 from polymimic.segments import load_segments
 
 __all__ = ["SavedEvaluation", "evaluate_imitators", "evaluated_seeds", "imitator_policy", "learn", "load_evaluation",

@@ -11,9 +11,9 @@ from polymimic import export
 from polymimic._native import PrimitiveRecognizer
 from polymimic.datasets import load_demonstrations
 from polymimic.field import body_of
-from polymimic.reproduce.config import RunConfig
-from polymimic.reproduce.roster import DEMONSTRATORS
 from polymimic.reproduce.rundir import RunDir
+from polymimic.runs.config import RunConfig
+from polymimic.runs.roster import DEMONSTRATORS
 
 __all__ = ["export_run"]
 

@@ -16,9 +16,9 @@ import os
 import pathlib
 
 from polymimic.plots import plot_log_likelihoods, plot_lp_over_time, plot_metric_bars
-from polymimic.reproduce.backends import TaskRunner
-from polymimic.reproduce.progress import progress
 from polymimic.reproduce.schema import Results
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.progress import progress
 
 __all__ = ["FIGURES", "METRIC_LABELS", "draw_figure", "draw_figures"]
 

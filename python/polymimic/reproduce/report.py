@@ -20,35 +20,18 @@ from typing import Any, Literal
 from polymimic._atomic import atomic_write_text
 from polymimic.recognition import MOVING
 from polymimic.reproduce import thesis
-from polymimic.reproduce.backends import TaskRunner
-from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.figures import METRIC_LABELS, draw_figures
-from polymimic.reproduce.markdown import to_html
 from polymimic.reproduce.results import BEHAVIOUR_COUNTS, gather
-from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, HETEROGENEOUS, VARYING_SKILL
 from polymimic.reproduce.rundir import RunDir
 from polymimic.reproduce.schema import ExperimentResults, MeanSd, Outcomes, PrimitiveStats, Results
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.config import RunConfig
+from polymimic.runs.markdown import to_html
+from polymimic.runs.roster import DEMONSTRATORS, EXPERIMENTS, HETEROGENEOUS, VARYING_SKILL
+from polymimic.runs.stats import msd, num, pct
 
 __all__ = ["render", "verdict", "write_report"]
 
-
-
-def pct(share: float | None, digits: int = 1) -> str:
-    """A share as a percentage; ``—`` where there is none."""
-    return "—" if share is None else f"{100 * share:.{digits}f} %"
-
-
-def num(value: float | None, digits: int = 1) -> str:
-    return "—" if value is None else f"{value:.{digits}f}"
-
-
-def msd(cell: MeanSd | None, *, share: bool = False, digits: int = 1) -> str:
-    """``mean (sd)``, as a percentage for shares."""
-    if not cell or cell["mean"] is None:
-        return "—"
-    if share:
-        return f"{pct(cell['mean'], digits)} ({pct(cell['sd'], digits)})"
-    return f"{cell['mean']:.{digits}f} ({num(cell['sd'], digits)})"
 
 
 def verdict(claim: str, holds: bool | None) -> str:

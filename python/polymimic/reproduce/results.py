@@ -19,17 +19,13 @@ import math
 from collections.abc import Iterable, Sequence
 from typing import Any, cast
 
-import numpy as np
-
 from polymimic import __version__, recognition
 from polymimic._native import PrimitiveRecognizer, lp_order_hits
 from polymimic.datasets import load_demonstrations, load_self_observation
 from polymimic.field import Demonstration, commands_recorded
 from polymimic.learning import LearningConfig, ModelResult, TrialResult
-from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.experiments import evaluated_seeds, load_evaluation, trial_seeds
-from polymimic.reproduce.roster import DEMONSTRATORS, Experiment
-from polymimic.reproduce.rundir import MissingInputError, RunDir
+from polymimic.reproduce.rundir import RunDir
 from polymimic.reproduce.schema import (
     AppendixB,
     BehaviourRow,
@@ -37,14 +33,17 @@ from polymimic.reproduce.schema import (
     ExperimentSummary,
     ImitatorScore,
     LpClimb,
-    MeanSd,
     Outcomes,
     PrimitiveStats,
     Results,
     SegmentRow,
 )
+from polymimic.runs.config import RunConfig
+from polymimic.runs.roster import DEMONSTRATORS, Experiment
+from polymimic.runs.rundir import MissingInputError
+from polymimic.runs.stats import mean_sd
 
-__all__ = ["appendix_b", "gather", "lp_climb", "mean_sd", "summarize_evaluations", "summarize_experiment"]
+__all__ = ["appendix_b", "gather", "lp_climb", "summarize_evaluations", "summarize_experiment"]
 
 FORMAT = "polymimic.results"
 FORMAT_VERSION = 1
@@ -52,14 +51,6 @@ BEHAVIOUR_COUNTS = ("created", "deleted", "permanent", "candidates", "duplicates
 LP_CLIMB_SHARE = 0.9
 """The share of its way to its final value a model's LP must cover for :func:`lp_climb`."""
 APPENDIX_B_ROWS = 30
-
-
-def mean_sd(values: Iterable[float]) -> MeanSd:
-    """Mean and sample standard deviation (0 for one value; both ``None`` for none)."""
-    array = np.asarray(list(values), dtype=float)
-    if array.size == 0:
-        return {"mean": None, "sd": None}
-    return {"mean": float(array.mean()), "sd": float(array.std(ddof=1)) if array.size > 1 else 0.0}
 
 
 def lp_climb(histories: Sequence[Sequence[float]], *, share: float = LP_CLIMB_SHARE) -> LpClimb:

@@ -34,12 +34,13 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
 from polymimic.field import PRIMITIVES, record, self_observation
 from polymimic.learning import TrialResult, average_demonstrator
-from polymimic.reproduce.backends import TaskRunner
-from polymimic.reproduce.config import RunConfig
 from polymimic.reproduce.experiments import evaluate_imitators, learn
 from polymimic.reproduce.report import write_report
-from polymimic.reproduce.roster import DEMONSTRATORS, HETEROGENEOUS, RECORDED
-from polymimic.reproduce.roster_config import (
+from polymimic.reproduce.rundir import RunDir
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.config import RunConfig
+from polymimic.runs.roster import DEMONSTRATORS, HETEROGENEOUS, RECORDED
+from polymimic.runs.roster_config import (
     DemonstratorSpec,
     ImportedDemonstrator,
     demonstrations_expected,
@@ -47,7 +48,7 @@ from polymimic.reproduce.roster_config import (
     record_demonstrator,
     source_file,
 )
-from polymimic.reproduce.rundir import MissingInputError, RunDir, RunError
+from polymimic.runs.rundir import MissingInputError, RunError
 from polymimic.segments import load_segments, save_segments, segment_demonstrations
 
 __all__ = ["STAGES", "Context", "reproduce", "run_stage"]

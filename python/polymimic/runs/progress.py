@@ -1,6 +1,6 @@
 """Progress bars for long stages: tqdm on stderr, shown only on a terminal and unless quiet.
 
->>> from polymimic.reproduce.progress import progress
+>>> from polymimic.runs.progress import progress
 >>> with progress(total=3, desc="trials", quiet=True) as bar:
 ...     for _ in range(3):
 ...         _ = bar.update(1)

@@ -1,4 +1,5 @@
-"""Every parameter of a reproduction run, with the thesis's values as defaults; TOML in and out.
+"""Every parameter of a run, with the thesis's values as defaults; TOML in and out, and the
+checks every application's config is read with.
 
 Sections: ``[seeds]``, ``[field]`` (the simulated field), ``[recognizer]`` (self-observation
 sizes and the HMM bank), ``[segmenter]``, ``[learning]`` (:class:`~polymimic.LearningConfig`)
@@ -15,7 +16,7 @@ True
 >>> RunConfig.from_toml("[recognizer]\\ncodebok_size = 3\\n")
 Traceback (most recent call last):
 ...
-polymimic.reproduce.config.ConfigError: unknown key in [recognizer]: codebok_size
+polymimic.runs.config.ConfigError: unknown key in [recognizer]: codebok_size
 """
 
 from __future__ import annotations
@@ -33,8 +34,8 @@ from polymimic._toml import loads, write_table
 from polymimic.bodies import THESIS_BODIES, WheeledBody
 from polymimic.field import PrimitiveSequence, check_config, default_config
 from polymimic.learning import LearningConfig
-from polymimic.reproduce.roster import EXPERIMENTS, Experiment
-from polymimic.reproduce.roster_config import (
+from polymimic.runs.roster import EXPERIMENTS, Experiment
+from polymimic.runs.roster_config import (
     DemonstratorSpec,
     RosterError,
     demonstrators_from_tables,
@@ -43,7 +44,8 @@ from polymimic.reproduce.roster_config import (
     spec_table,
 )
 
-__all__ = ["ConfigError", "ExperimentSettings", "RecognizerSettings", "RunConfig", "SeedSettings", "SegmenterSettings"]
+__all__ = ["ConfigError", "ExperimentSettings", "RecognizerSettings", "RunConfig", "SeedSettings", "SegmenterSettings",
+           "as_table", "checked_section", "in_range", "read_config", "toml_tables"]
 
 
 Loaded = TypeVar("Loaded")
@@ -57,7 +59,7 @@ def _doc(text: str, default: Any) -> Any:
     return dataclasses.field(default=default, metadata={"doc": text})
 
 
-def _in_range(section: str, name: str, value: float, low: float, high: float | None = None, *,
+def in_range(section: str, name: str, value: float, low: float, high: float | None = None, *,
               exclusive_low: bool = False) -> None:
     """A :class:`ConfigError` naming ``[section] name`` unless ``value`` is a finite number in range."""
     below = value <= low if exclusive_low else value < low
@@ -79,7 +81,7 @@ class SeedSettings:
 
     def __post_init__(self) -> None:
         for f in dataclasses.fields(self):
-            _in_range("seeds", f.name, getattr(self, f.name), 0, 2**64 - 1)
+            in_range("seeds", f.name, getattr(self, f.name), 0, 2**64 - 1)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -101,13 +103,13 @@ class RecognizerSettings:
 
     def __post_init__(self) -> None:
         for name in ("train_per_primitive", "test_per_primitive", "n_states", "codebook_size", "links", "max_iter"):
-            _in_range("recognizer", name, getattr(self, name), 1)
-        _in_range("recognizer", "n_states", self.n_states, 1, 20)
-        _in_range("recognizer", "tol", self.tol, 0.0, exclusive_low=True)
+            in_range("recognizer", name, getattr(self, name), 1)
+        in_range("recognizer", "n_states", self.n_states, 1, 20)
+        in_range("recognizer", "tol", self.tol, 0.0, exclusive_low=True)
         # At most one over the codebook's size, so that an emission row can still sum to 1.
-        _in_range("recognizer", "emission_floor", self.emission_floor, 0.0, 1.0 / self.codebook_size)
-        _in_range("recognizer", "min_variance", self.min_variance, 0.0, exclusive_low=True)
-        _in_range("recognizer", "seed", self.seed, 0, 2**64 - 1)
+        in_range("recognizer", "emission_floor", self.emission_floor, 0.0, 1.0 / self.codebook_size)
+        in_range("recognizer", "min_variance", self.min_variance, 0.0, exclusive_low=True)
+        in_range("recognizer", "seed", self.seed, 0, 2**64 - 1)
         if self.representation not in ("thesis", "egocentric"):
             raise ConfigError(f"[recognizer] representation = {self.representation!r} must be \"thesis\" or "
                               "\"egocentric\"")
@@ -133,11 +135,11 @@ class SegmenterSettings:
     gap_margin: float = _doc("log-likelihood margin below which a segment is a gap", 2.0)
 
     def __post_init__(self) -> None:
-        _in_range("segmenter", "min_frames", self.min_frames, 2)
-        _in_range("segmenter", "stop_distance_mm", self.stop_distance_mm, 0.0)
-        _in_range("segmenter", "stop_rotation_deg", self.stop_rotation_deg, 0.0, 180.0)
-        _in_range("segmenter", "limit_sds", self.limit_sds, 0.0)
-        _in_range("segmenter", "gap_margin", self.gap_margin, 0.0)
+        in_range("segmenter", "min_frames", self.min_frames, 2)
+        in_range("segmenter", "stop_distance_mm", self.stop_distance_mm, 0.0)
+        in_range("segmenter", "stop_rotation_deg", self.stop_rotation_deg, 0.0, 180.0)
+        in_range("segmenter", "limit_sds", self.limit_sds, 0.0)
+        in_range("segmenter", "gap_margin", self.gap_margin, 0.0)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -155,8 +157,8 @@ class ExperimentSettings:
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
                      "average_max_trials", "lp_stride"):
-            _in_range("experiments", name, getattr(self, name), 1)
-        _in_range("experiments", "evaluated_imitators", self.evaluated_imitators, 0)
+            in_range("experiments", name, getattr(self, name), 1)
+        in_range("experiments", "evaluated_imitators", self.evaluated_imitators, 0)
 
 
 _SECTIONS = {"seeds": SeedSettings, "recognizer": RecognizerSettings, "segmenter": SegmenterSettings,
@@ -176,7 +178,7 @@ class RunConfig:
     bodies: dict[str, WheeledBody] = dataclasses.field(default_factory=lambda: dict(THESIS_BODIES))
     """``[bodies.<name>]``: the wheeled bodies, the thesis's ``lego`` and ``tiny`` (as the field
     was calibrated; a table of either must hold the same constants) and the user's (see
-    :mod:`polymimic.reproduce.roster_config`)."""
+    :mod:`polymimic.runs.roster_config`)."""
     demonstrators: dict[str, DemonstratorSpec] = dataclasses.field(default_factory=dict)
     """``[demonstrators.<name>]``: demonstrators of the user's, recorded or imported with the thesis's."""
     own_experiments: dict[str, Experiment] = dataclasses.field(default_factory=dict)
@@ -227,13 +229,13 @@ class RunConfig:
         changes: dict[str, Any] = {}
         own_tables: dict[str, Any] = {}
         if "experiments" in data:
-            table = _table("experiments", data["experiments"])
+            table = as_table("experiments", data["experiments"])
             own_tables = {k: v for k, v in table.items() if isinstance(v, dict)}
             data = {**data, "experiments": {k: v for k, v in table.items() if k not in own_tables}}
         for name in _SECTIONS:
             if name in data:
                 current = getattr(base, name)
-                values = _checked(name, _table(name, data[name]), dataclasses.asdict(current))
+                values = checked_section(name, as_table(name, data[name]), dataclasses.asdict(current))
                 changes[name] = dataclasses.replace(current, **values)
         try:
             bodies = {**base.bodies, **read_bodies(data["bodies"])} if "bodies" in data else base.bodies
@@ -245,14 +247,14 @@ class RunConfig:
             raise ConfigError(str(error)) from None
         changes.update(bodies=bodies, demonstrators=demonstrators, own_experiments=own)
         if "field" in data:
-            field = _field_section(base.field, _table("field", data["field"]))
+            field = _field_section(base.field, as_table("field", data["field"]))
             try:
                 check_config(field)
             except (ValueError, TypeError) as error:
                 raise ConfigError(f"[field] {str(error).removeprefix('field config: ')}") from error
             changes["field"] = field
         if "learning" in data:
-            values = _checked("learning", _table("learning", data["learning"]), base.learning.to_dict())
+            values = checked_section("learning", as_table("learning", data["learning"]), base.learning.to_dict())
             try:
                 changes["learning"] = base.learning.replace(**values)
             except ValueError as error:
@@ -320,13 +322,13 @@ def read_config(path: str | os.PathLike[str], parse: Callable[[str], Loaded]) ->
         raise ConfigError(f"{os.fspath(path)}: {error}") from error
 
 
-def _table(section: str, value: Any) -> dict[str, Any]:
+def as_table(section: str, value: Any) -> dict[str, Any]:
     if not isinstance(value, dict):
         raise ConfigError(f"[{section}] must be a table, got {value!r}")
     return value
 
 
-def _checked(section: str, values: dict[str, Any], defaults: dict[str, Any]) -> dict[str, Any]:
+def checked_section(section: str, values: dict[str, Any], defaults: dict[str, Any]) -> dict[str, Any]:
     """``values`` with their types checked against ``defaults``' (ints are accepted as floats)."""
     unknown = sorted(set(values) - set(defaults))
     if unknown:

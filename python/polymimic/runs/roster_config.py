@@ -57,7 +57,7 @@ from typing import Any, Union
 from polymimic import field, tracks
 from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, bodies_from_tables
 from polymimic.policies import DECISION_RATES_HZ
-from polymimic.reproduce.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
+from polymimic.runs.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
 from polymimic.tracks.units import UNITS
 
 __all__ = ["ControllerDemonstrator", "DemonstratorSpec", "ImportedDemonstrator", "LogDemonstrator",

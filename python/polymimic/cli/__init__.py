@@ -1,0 +1,57 @@
+"""The `polymimic` command: the demo, and the thesis reproduced stage by stage or end to end.
+
+`polymimic reproduce` runs every stage into a run directory (runs/<timestamp> unless --run-dir
+is given) and writes report.html beside results.json; `polymimic config` prints every parameter.
+`polymimic benchmark` compares polymimic with the baselines on crowds of demonstrators and
+writes benchmark.html beside benchmark.json (runs/benchmark/<timestamp> unless --run-dir).
+`polymimic import-tracks` turns a tracker log into a run's demonstrations.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+
+from polymimic import __version__
+from polymimic._native import PolymimicError
+from polymimic.cli import benchmark, demo, export, import_tracks, replay, stages
+from polymimic.runs.config import ConfigError
+
+__all__ = ["EXIT_INTERRUPTED", "EXIT_USAGE", "build_parser", "main"]
+
+EXIT_USAGE = 2
+"""Bad input: a missing stage input, a bad config, an unreadable file (as argparse's own errors)."""
+EXIT_INTERRUPTED = 130
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="polymimic", description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
+    commands = parser.add_subparsers(dest="command", required=True)
+    for command in (demo, stages, replay, export, benchmark, import_tracks):
+        command.add(commands)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if getattr(args, "address", None) is not None and args.backend != "ray":
+        parser.error("--address is for the Ray backend: add --backend ray")
+    started = time.perf_counter()
+    try:
+        return int(args.handler(args))
+    except (PolymimicError, ConfigError) as error:  # bad input: files, configs, runs; a bug still raises
+        one_line = "; ".join(line.strip() for line in str(error).splitlines() if line.strip())
+        print(f"polymimic {args.command}: error: {one_line}", file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        print(f"\npolymimic {args.command}: interrupted after {time.perf_counter() - started:.0f} s; run the same "
+              "command again to go on where it stopped", file=sys.stderr)
+        return EXIT_INTERRUPTED
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,115 @@
+"""A plain cloner beside ``bc`` on a finished benchmark run's crowds: the check that ``bc`` is
+not weaker than a few lines of scikit-learn.
+
+The plain cloner is scikit-learn's ``GradientBoostingClassifier`` on the environment's
+observation plus the ball relative to the robot (``ball_relative``), each frame labelled with the
+primitive of the command sent, on the crowd's demonstrations as recorded (no field is stretched
+onto another), with at most the benchmark's number of decision samples, drawn with the fit's
+seed. Its step length is chosen on the benchmark's validation attempts. It then plays the
+benchmark's evaluation attempts once per fit seed. The script prints one JSON line per profile:
+the plain cloner's net goals per seed and ``bc``'s, as the run's ``evaluation_bc_*.json`` has
+them. Run: ``python benches/plain_cloner_vs_bc.py RUN_DIR [--profiles mixed_bodies] [--fits 3]``.
+
+Measured on ``mixed_bodies`` (crowd seed 0, 25 demonstrations per configuration per member;
+20 000 samples; validation chose 5 frames a step): net 15, 22 and 13 over fit seeds 0, 1 and 2,
+against ``bc``'s 12 (19 goals, 7 own goals) from its tuning's single fit.
+"""
+
+import os
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")  # batched predictions of ≤ 50 rows: threads only cost
+
+import argparse  # noqa: E402
+import json  # noqa: E402
+
+import numpy as np  # noqa: E402
+from sklearn.ensemble import GradientBoostingClassifier  # noqa: E402
+
+from polymimic.baselines.evaluation import attempts_of, play  # noqa: E402
+from polymimic.baselines.features import features  # noqa: E402
+from polymimic.baselines.hyperparameters import FRAMES_PER_ACTION  # noqa: E402
+from polymimic.baselines.labels import command_labels  # noqa: E402
+from polymimic.baselines.training import SAMPLE_STRIDE_FRAMES  # noqa: E402
+from polymimic.baselines.tuning import validation_attempts  # noqa: E402
+from polymimic.benchmark.rundir import BenchmarkDir  # noqa: E402
+from polymimic.datasets import load_demonstrations  # noqa: E402
+from polymimic.step_names import repeat_last_good  # noqa: E402
+
+OBSERVATION = ("robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm")
+FEATURES = "ball_relative"
+
+
+class PlainPolicy:
+    """A fitted classifier holding each primitive for ``frames_per_action`` frames."""
+
+    method = "plain"
+
+    def __init__(self, model: GradientBoostingClassifier, frames_per_action: int) -> None:
+        self.model, self.frames_per_action = model, frames_per_action
+
+    def reset(self) -> None:
+        pass
+
+    def predict(self, observations: np.ndarray) -> np.ndarray:
+        return self.model.predict(features(np.asarray(observations), feature_set=FEATURES)).astype(np.int64)
+
+    def save(self, path: str) -> None:
+        raise NotImplementedError("the plain cloner is not kept")
+
+
+def samples(demonstrations, *, max_samples: int, seed: int) -> tuple[np.ndarray, np.ndarray]:
+    """Every third frame of every demonstration, as recorded, with its command's primitive;
+    at most ``max_samples`` of them, drawn with ``seed``."""
+    observations, labels = [], []
+    for demo, labelled in zip(demonstrations, command_labels(demonstrations)):
+        seen = repeat_last_good(np.column_stack([demo.frames[c] for c in OBSERVATION]).astype(np.float64))
+        rows = np.arange(0, len(seen), SAMPLE_STRIDE_FRAMES)
+        keep = rows[labelled.labels[rows] >= 0]
+        observations.append(seen[keep])
+        labels.append(labelled.labels[keep])
+    x, y = np.concatenate(observations), np.concatenate(labels)
+    pick = np.sort(np.random.default_rng(seed).choice(len(y), size=min(max_samples, len(y)), replace=False))
+    return x[pick], y[pick]
+
+
+def fit(demonstrations, frames_per_action: int, *, max_samples: int, seed: int) -> PlainPolicy:
+    x, y = samples(demonstrations, max_samples=max_samples, seed=seed)
+    model = GradientBoostingClassifier(random_state=seed).fit(features(x, feature_set=FEATURES), y)
+    return PlainPolicy(model, frames_per_action)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("run_dir", help="a finished `polymimic benchmark` run directory")
+    parser.add_argument("--profiles", nargs="+", help="default: every profile of the run")
+    parser.add_argument("--fits", type=int, default=3, help="fit seeds 0, 1, …")
+    args = parser.parse_args()
+    run = BenchmarkDir(args.run_dir)
+    config = run.open(None)
+    settings = config.benchmark
+    validation = validation_attempts(settings.validation_attempts_per_configuration,
+                                     validation_seed=settings.validation_seed)
+    evaluation = attempts_of(settings.attempts_per_configuration, seed=config.seeds.evaluation)
+    for profile in args.profiles or list(settings.profiles):
+        demonstrations = load_demonstrations(run.crowd_path(profile))
+        scores = {}
+        for frames in FRAMES_PER_ACTION:
+            played = play(fit(demonstrations, frames, max_samples=settings.max_decision_samples, seed=0), validation,
+                          field_config=config.field)
+            scores[frames] = (played.goals - played.own_goals, played.goals)
+        chosen = max(FRAMES_PER_ACTION, key=lambda k: scores[k])
+        plain = []
+        for seed in range(args.fits):
+            played = play(fit(demonstrations, chosen, max_samples=settings.max_decision_samples, seed=seed), evaluation,
+                          field_config=config.field)
+            plain.append({"seed": seed, "goals": played.goals, "own_goals": played.own_goals,
+                          "net": played.goals - played.own_goals})
+        bc = [json.loads(p.read_text()) for p in sorted(run.profile_dir(profile).glob("evaluation_bc_[0-9]*.json"))]
+        print(json.dumps({"profile": profile, "plain_frames_per_action": chosen,
+                          "plain_validation_net": {str(k): v[0] for k, v in scores.items()}, "plain": plain,
+                          "bc": [{"trial_seed": e["trial_seed"], "goals": e["goals"], "own_goals": e["own_goals"],
+                                  "net": e["goals"] - e["own_goals"]} for e in bc]}), flush=True)
+
+
+if __name__ == "__main__":
+    main()

@@ -10,9 +10,11 @@ benchmark's evaluation attempts once per fit seed. The script prints one JSON li
 the plain cloner's net goals per seed and ``bc``'s, as the run's ``evaluation_bc_*.json`` has
 them. Run: ``python benches/plain_cloner_vs_bc.py RUN_DIR [--profiles mixed_bodies] [--fits 3]``.
 
-Measured on ``mixed_bodies`` (crowd seed 0, 25 demonstrations per configuration per member;
-20 000 samples; validation chose 5 frames a step): net 15, 22 and 13 over fit seeds 0, 1 and 2,
-against ``bc``'s 12 (19 goals, 7 own goals) from its tuning's single fit.
+Measured on ``mixed_bodies`` with the benchmark's default seeds and sizes (crowd seed 0, 25
+demonstrations per configuration per member; 20 000 samples; validation chose 5 frames a step):
+the plain cloner netted 15, 22 and 13 over fit seeds 0, 1 and 2. ``bc`` tuned by
+``polymimic.baselines.tune`` with its defaults (12 candidates) netted 12 (19 goals, 7 own goals)
+on the same attempts from one fit; the README's benchmark table gives it 9.
 """
 
 import os

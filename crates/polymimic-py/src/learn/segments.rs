@@ -228,6 +228,19 @@ impl PySegmentedDemonstrations {
         Ok(out)
     }
 
+    /// Every demonstration as `each` gives it, in order.
+    fn items<'py, T: IntoPyObject<'py>>(
+        &self,
+        py: Python<'py>,
+        each: impl Fn(&Self, Python<'py>, usize) -> PyResult<T>,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let items = PyList::empty(py);
+        for i in 0..self.demonstrations.len() {
+            items.append(each(self, py, i)?)?;
+        }
+        Ok(items)
+    }
+
     /// Demonstration `i` as a read-only view: mappings that refuse assignment and deletion,
     /// labels as a tuple, arrays that refuse writes. What was checked cannot change behind the
     /// learner's back, even in a copy a user might take for the batch itself.
@@ -318,13 +331,8 @@ impl PySegmentedDemonstrations {
     }
 
     /// Every demonstration, read-only, in order.
-    fn __iter__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyIterator>> {
-        let py = slf.py();
-        let items = PyList::empty(py);
-        for i in 0..slf.get().demonstrations.len() {
-            items.append(slf.get().read_only_item(py, i)?)?;
-        }
-        items.try_iter()
+    fn __iter__<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyIterator>> {
+        self.items(py, Self::read_only_item)?.try_iter()
     }
 
     /// Who demonstrated each.
@@ -350,12 +358,8 @@ impl PySegmentedDemonstrations {
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
-        let py = slf.py();
-        let items = PyList::empty(py);
-        for i in 0..slf.get().demonstrations.len() {
-            items.append(slf.get().item(py, i)?)?;
-        }
-        Ok((slf.get_type().into_any(), PyTuple::new(py, [items])?))
+        let items = slf.get().items(slf.py(), Self::item)?;
+        Ok((slf.get_type().into_any(), PyTuple::new(slf.py(), [items])?))
     }
 
     fn __repr__(&self) -> String {

@@ -3,13 +3,18 @@
 from __future__ import annotations
 
 import argparse
+import os
 import pathlib
-from typing import Any
+from typing import TYPE_CHECKING, Protocol, TypeVar
 
 from polymimic.benchmark.config import BenchmarkConfig
 from polymimic.reproduce.rundir import RunDir
+from polymimic.runs.backends import BACKENDS
 from polymimic.runs.config import RunConfig
 from polymimic.runs.rundir import MissingInputError, latest_run_path, new_run_path
+
+if TYPE_CHECKING:
+    from typing_extensions import Self
 
 
 def positive(text: str) -> int:
@@ -32,19 +37,39 @@ def run_options(*, tasks: bool) -> argparse.ArgumentParser:
     if tasks:
         options.add_argument("--workers", type=positive, help="processes (or Ray CPUs) for trials and evaluations "
                                                                "(default: one per core)")
-        options.add_argument("--backend", choices=("local", "ray"), default="local",
+        options.add_argument("--backend", choices=BACKENDS, default="local",
                              help="local process pool (default) or Ray")
         options.add_argument("--address", help="a Ray cluster to join (e.g. ray://host:10001 or auto)")
     return options
 
 
-def requested_config(args: argparse.Namespace) -> Any:
-    """The config asked for on the command line, or None when none was."""
+class AskableConfig(Protocol):
+    """A run's config as the command line asks for one: the defaults, ``quick()``, or a file
+    read over either."""
 
+    def __init__(self) -> None: ...
+
+    @classmethod
+    def quick(cls) -> Self: ...
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str], *, base: Self | None = None) -> Self: ...
+
+
+Asked = TypeVar("Asked", bound=AskableConfig)
+
+
+def asked_config(args: argparse.Namespace, kind: type[Asked]) -> Asked | None:
+    """The ``kind`` config ``--config`` and ``--quick`` ask for, or None when neither was given."""
     if args.config is None and not args.quick:
         return None
-    base = RunConfig.quick() if args.quick else RunConfig()
-    return RunConfig.load(args.config, base=base) if args.config is not None else base
+    base = kind.quick() if args.quick else kind()
+    return kind.load(args.config, base=base) if args.config is not None else base
+
+
+def requested_config(args: argparse.Namespace) -> RunConfig | None:
+    """The reproduction's config asked for on the command line, or None when none was."""
+    return asked_config(args, RunConfig)
 
 
 def run_path(args: argparse.Namespace, *, new: bool) -> pathlib.Path:
@@ -68,8 +93,5 @@ def existing(run: RunDir) -> RunDir:
 
 
 def benchmark_config(args: argparse.Namespace) -> BenchmarkConfig | None:
-    """The benchmark config ``--config`` and ``--quick`` ask for, or None when neither was given."""
-    if args.config is None and not args.quick:
-        return None
-    base = BenchmarkConfig.quick() if args.quick else BenchmarkConfig()
-    return BenchmarkConfig.load(args.config, base=base) if args.config is not None else base
+    """The benchmark's config asked for on the command line, or None when none was."""
+    return asked_config(args, BenchmarkConfig)

@@ -353,6 +353,9 @@ def test_degrees_declared_as_radians_are_refused_by_the_turn_they_would_mean(tmp
     message = _refused(_csv(tmp_path, rows), r"data row 2 \(line 3\), column 'robot_theta_rad': heading 33 rad after "
                                              r"30 rad 0.0333 s before, a turn of 14.3 turns a second \(at most 2\)")
     assert message.endswith("did you mean units={'angle': 'deg'}?")
+    # No hint where degrees would not fit either: 5000° is nearly 14 turns.
+    far = [[t, x, y, 5000.0, bx, by] for t, x, y, th, bx, by in _readings(5)]
+    assert "did you mean" not in _refused(_csv(tmp_path, far, name="far.csv"), r"heading 5000 rad is more than 8 full")
     degrees = import_tracks(_csv(tmp_path, rows, header=HEADER.replace("_rad", "_deg"), name="deg.csv"),
                             demonstrator="x", units={"angle": "deg"})
     assert degrees.demonstrations[0].frames["robot_theta_rad"][1] == pytest.approx(math.radians(33.0))

@@ -49,16 +49,21 @@ def turn_rates_rad_s(theta_rad: np.ndarray, t_s: np.ndarray) -> np.ndarray:
 def check_headings(log: Log, stretches: list[Stretch], units: Units) -> None:
     """A ``TrackLogError`` if the headings cannot be angles in the declared unit (see above)."""
     theta = log.measured["robot_theta"]
-    if not np.isfinite(theta).any() or float(np.nanmax(np.abs(theta))) <= 2 * math.pi + 1e-9:
+    turns = np.abs(theta) / (2 * math.pi)
+    most_turns = float(np.nanmax(turns, initial=0.0))
+    if most_turns <= 1 + 1e-9 / (2 * math.pi):  # within a full turn, as a wrapping tracker writes
         return
     angle = units["angle"]
     per_unit = UNITS["angle"][angle]
+    # The hint stands only where degrees would pass the check that failed.
+    degrees_per_rad = UNITS["angle"]["deg"]
     hint = f"; did you mean {unit_hint('angle', 'deg')}?" if angle == "rad" else ""
-    turns = np.abs(theta) / (2 * math.pi)
-    if float(np.nanmax(turns)) > MAX_UNWRAPPED_TURNS:
+    if most_turns > MAX_UNWRAPPED_TURNS:
         row = int(np.nanargmax(turns))
+        fits = most_turns * degrees_per_rad <= MAX_UNWRAPPED_TURNS
         raise TrackLogError(f"{log.where(row, 'robot_theta')}: heading {theta[row] / per_unit:g} {angle} is more "
-                            f"than {MAX_UNWRAPPED_TURNS} full turns, too many even for an unwrapped heading{hint}")
+                            f"than {MAX_UNWRAPPED_TURNS} full turns, too many even for an unwrapped heading"
+                            f"{hint if fits else ''}")
     t_s = log.measured["t"]
     for stretch in stretches:
         rows = slice(stretch.start, stretch.stop)
@@ -70,4 +75,5 @@ def check_headings(log: Log, stretches: list[Stretch], units: Units) -> None:
                 f"{log.where(row, 'robot_theta')}: heading {theta[row] / per_unit:g} {angle} after "
                 f"{theta[row - 1] / per_unit:g} {angle} {t_s[row] - t_s[row - 1]:.3g} s before, a turn of "
                 f"{rate[fast[0]] / (2 * math.pi):.3g} turns a second (at most {MAX_TURN_RAD_S / (2 * math.pi):g}); "
-                f"headings beyond a full turn are read as unwrapped only where they change smoothly{hint}")
+                f"headings beyond a full turn are read as unwrapped only where they change smoothly"
+                f"{hint if rate[fast[0]] * degrees_per_rad <= MAX_TURN_RAD_S else ''}")

@@ -3,6 +3,7 @@ resumption, damaged files, and the same bits on one worker or two."""
 
 import json
 import shutil
+import statistics
 import sys
 
 import pytest
@@ -53,8 +54,8 @@ def test_the_run_holds_every_file(benchmarked):
     assert {"benchmark.json", "benchmark.md", "benchmark.html", "crowd_pair.parquet", "crowd_duo.parquet",
             "trial_0.json", "trial_1_uniform_lp.json", "tuning_bc.json", "evaluation_polymimic_1.json",
             "evaluation_bco_lp_1.json", "evaluation_bc_0.json", "benchmark_net_goals.png"} <= names
-    # bc learns the same data in every trial: fitted and evaluated once.
-    assert "evaluation_bc_1.json" not in names
+    # bc learns the same data in every trial: fitted and evaluated under three fit seeds.
+    assert {"evaluation_bc_1.json", "evaluation_bc_2.json"} <= names and "evaluation_bc_3.json" not in names
 
 
 def test_the_summary_follows_its_schema(benchmarked):
@@ -71,14 +72,34 @@ def test_the_summary_follows_its_schema(benchmarked):
     assert set(pair["skill_recovery"]) == {"spearman", "kendall", "best_hits", "top_among_best"}
     assert list(pair["methods"]) == list(METHODS)
     for method, entry in pair["methods"].items():
-        assert set(entry) == {"goals", "own_goals", "net_goals", "attempts", "evaluated", "hyperparameters"}
+        assert set(entry) == {"goals", "own_goals", "net_goals", "attempts", "evaluated", "hyperparameters",
+                              "validation"}
         assert entry["attempts"] == 4
-        assert entry["evaluated"] == (1 if method in ("bc", "bco", "bc_best", "random") else 2)
+        assert entry["evaluated"] == (3 if method in ("bc", "bco", "bc_best", "random") else 2)
+        assert (entry["validation"] is None) == method.startswith("polymimic")
         assert entry["net_goals"]["mean"] == pytest.approx(entry["goals"]["mean"] - entry["own_goals"]["mean"])
     assert pair["methods"]["bc"]["hyperparameters"]["classifier"]
+    assert summary["sizes"]["baseline_fits"] == 3
     assert pair["methods"]["polymimic"]["hyperparameters"]["control"] == "improved"
     duo = summary["profiles"]["duo"]
     assert duo["demonstrators"]["tiny_00"]["body"] == "tiny"
+
+
+def test_a_baselines_figures_are_over_its_fits_and_its_validation_scores_its_tunings(benchmarked):
+    """bc's mean and sd are those of its three fits' evaluations, each fit under its own seed;
+    its validation score is its chosen candidate's."""
+    run = BenchmarkDir(benchmarked)
+    entry = _summary(benchmarked)["profiles"]["pair"]["methods"]["bc"]
+    saved = [json.loads(run.evaluation_path("pair", "bc", seed).read_text()) for seed in (0, 1, 2)]
+    nets = [e["goals"] - e["own_goals"] for e in saved]
+    assert entry["net_goals"]["mean"] == pytest.approx(sum(nets) / 3)
+    assert entry["net_goals"]["sd"] == pytest.approx(statistics.stdev(nets))
+    assert [e["trial_seed"] for e in saved] == [0, 1, 2]
+    tuning = json.loads(run.tuning_path("pair", "bc").read_text())
+    (only,) = tuning["scores"]
+    assert entry["validation"] == {"attempts": 2, "candidates": 1, "runner_up": None,
+                                   "chosen": {"goals": only["goals"], "own_goals": only["own_goals"],
+                                              "net_goals": only["goals"] - only["own_goals"]}}
 
 
 def test_the_skill_statistics_are_the_members_own(benchmarked):
@@ -150,6 +171,8 @@ def test_bad_names_are_one_line_usage_errors(argv, message, tiny_toml, tmp_path,
      "lapse 1.2"),
     ("[benchmark]\ntrials = 0\n", "trials = 0"),
     ("[benchmark]\nmax_decision_samples = 0\n", "max_decision_samples = 0"),
+    ("[benchmark]\nbaseline_fits = 0\n", "baseline_fits = 0"),
+    ("[benchmark]\nrefit_baselines = true\n", "[benchmark] refit_baselines is no more: use baseline_fits"),
 ])
 def test_bad_crowds_and_sizes_are_named(extra, message, tmp_path, capsys):
     path = tmp_path / "bad.toml"

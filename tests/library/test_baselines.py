@@ -12,6 +12,7 @@ import polymimic
 from polymimic import _native, baselines, recognition
 from polymimic.baselines import bc, bc_best, bco, bco_lp, labels, random_primitive
 from polymimic.baselines.evaluation import attempts_of
+from polymimic.baselines.features import features
 from polymimic.baselines.labels import NO_LABEL
 from polymimic.field import PRIMITIVES, as_frames
 
@@ -92,6 +93,42 @@ def test_bc_on_an_always_forward_demonstrator_plays_forward_at_every_step(forwar
     assert all(set(chosen) == {"F"} for chosen in result.behaviours)
 
 
+def test_a_small_field_comes_onto_the_imitators_with_the_ball_scaled_and_the_robot_at_its_true_offset():
+    """The tiny's field is 560 mm long, the imitator's 1020: the ball's position scales by
+    1020/560, the robot stays as far from the ball, in the same direction, with the same
+    heading; a demonstration of the imitator's own field is left as it was."""
+    (tiny,) = polymimic.record("tiny", configuration=1, n=1, seed=0)
+    (lego,) = polymimic.record("expert", configuration=1, n=1, seed=0)
+    seen = {d.body: np.column_stack([d.frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
+                                                            "ball_x_mm", "ball_y_mm")]) for d in (tiny, lego)}
+    mapped = {item.demonstrator: item.observations for item in labels.command_labels([tiny, lego])}
+    raw, onto = seen["tiny"], mapped["tiny"]
+    assert np.isfinite(raw).all()
+    np.testing.assert_allclose(onto[:, 3:], raw[:, 3:] * 1020 / 560)
+    np.testing.assert_allclose(onto[:, :2] - onto[:, 3:], raw[:, :2] - raw[:, 3:], atol=1e-9)
+    np.testing.assert_array_equal(onto[:, 2], raw[:, 2])
+    np.testing.assert_array_equal(mapped["expert"], seen["lego"])
+    # A field twice the imitator's length halves the ball's position and keeps the robot's offset.
+    back = labels.onto_imitator_field(labels.onto_imitator_field(raw, field_length_mm=560.0),
+                                      field_length_mm=1020.0 * 1020.0 / 560.0)
+    np.testing.assert_allclose(back, raw, atol=1e-9)
+
+
+def test_a_humanoids_kick_is_labelled_forward_and_every_other_command_as_it_looks():
+    from polymimic.field import command_primitives, command_table
+
+    lookup, cloning = command_primitives(), labels.cloning_primitives()
+    for row in command_table():
+        expected = "forward" if row["name"] in ("Kick Left", "Kick Right") else row["primitive"]
+        assert PRIMITIVES[cloning[row["id"]]] == expected, row
+    kicks = [r["id"] for r in command_table() if r["name"].startswith("Kick")]
+    assert {lookup[i] for i in kicks} == {"backward"}  # as it looks from above (Table 4.4)
+    demos = polymimic.record("humanoid", configuration=1, n=3, seed=0)
+    (item, *_) = labels.command_labels(demos)
+    kicked = np.isin(demos[0].frames["command"], kicks)
+    assert kicked.any() and (item.labels[kicked] == PRIMITIVES.index("forward")).all()
+
+
 def test_bc_reproduces_a_turn_toward_the_ball_rule_on_held_out_observations():
     policy = bc.fit(turning_demonstrations(1, 40))
     held_out = np.concatenate([bc.labelled([d])[0].observations for d in turning_demonstrations(2, 15)])
@@ -100,10 +137,17 @@ def test_bc_reproduces_a_turn_toward_the_ball_rule_on_held_out_observations():
 
 
 def test_bco_labels_an_always_forward_demonstrator_forward(forward_demos, recognizer):
-    labels = np.concatenate([item.labels for item in bco.labelled(forward_demos, recognizer=recognizer)])
-    labelled = labels[labels != NO_LABEL]
-    assert len(labelled) > 0.8 * len(labels)
-    assert (labelled == FORWARD).all()
+    """bco names the frames a fit samples (every third, from a first frame its seed draws) and
+    no other: nearly all of them forward, none anything else."""
+    from polymimic.baselines.training import sample_rows
+
+    for seed in (0, 1):
+        items = bco.labelled(forward_demos, recognizer=recognizer, seed=seed)
+        rows = sample_rows([(d.demonstrator, len(d.frames)) for d in forward_demos], seed=seed)
+        named = np.concatenate([item.labels[r] for item, r in zip(items, rows)])
+        assert (named != NO_LABEL).mean() > 0.8 and (named[named != NO_LABEL] == FORWARD).all()
+        others = np.concatenate([np.delete(item.labels, r) for item, r in zip(items, rows)])
+        assert (others == NO_LABEL).all()
 
 
 def held_primitives(plan, *, seed, hold_frames=30):
@@ -155,6 +199,47 @@ def test_step_labels_at_a_stride_are_the_labels_of_the_frames_named(recognizer):
     strided = labels.step_labels(demos, recognizer, stride_frames=7)[0].labels
     assert (strided[::7] == every[::7]).all()
     assert (strided == np.repeat(every[::7], 7)[:len(every)]).all()
+
+
+def test_step_labels_at_given_frames_are_the_labels_of_those_frames_alone(recognizer):
+    demos = polymimic.record("expert", configuration=2, n=1, seed=4)
+    every = labels.step_labels(demos, recognizer, stride_frames=1)[0].labels
+    frames = np.array([0, 4, 5, 31, len(every) - 1])
+    chosen = labels.step_labels(demos, recognizer, frames=[frames])[0].labels
+    assert (chosen[frames] == every[frames]).all()
+    assert (np.delete(chosen, frames) == NO_LABEL).all()
+    with pytest.raises(ValueError, match="frames must list the frames to name for each of the 1 demonstrations, got 2"):
+        labels.step_labels(demos, recognizer, frames=[frames, frames])
+
+
+def test_a_fit_seed_draws_which_frames_give_samples():
+    """Every stride-th frame from a first frame in [0, stride) drawn per demonstration: the same
+    seed the same frames, other seeds other frames, and as many samples either way."""
+    from polymimic.baselines.training import sample_rows
+
+    lengths = [(f"d{i % 3}", 900) for i in range(10)]
+    for max_samples, stride in ((20_000, 3), (1000, 9)):
+        drawn = [sample_rows(lengths, max_samples=max_samples, seed=seed) for seed in range(4)]
+        for rows in drawn:
+            assert all(0 <= r[0] < stride and (np.diff(r) == stride).all() for r in rows)
+            assert sum(map(len, rows)) == 9000 // stride
+        assert all((a == b).all() for a, b in zip(drawn[0], sample_rows(lengths, max_samples=max_samples, seed=0)))
+        firsts = {tuple(int(r[0]) for r in rows) for rows in drawn}
+        assert len(firsts) == 4
+    for bad in (-1, 2**32, 1.5, True):
+        with pytest.raises(ValueError, match=r"seed must be an integer in \[0, 2\*\*32\)"):
+            sample_rows(lengths, seed=bad)
+
+
+def test_fits_under_other_seeds_differ_even_for_a_deterministic_classifier(mixed_demos):
+    chosen = baselines.Hyperparameters("logistic_regression", (("C", 1.0),), "ball_relative", 15, False)
+    probe = np.concatenate([item.observations for item in bc.labelled(mixed_demos)])
+    again, other = (baselines.fit("bc", mixed_demos, hyperparameters=chosen, seed=s) for s in (0, 0))
+    assert (again.classifier.predict_proba(features(probe, feature_set="ball_relative"))
+            == other.classifier.predict_proba(features(probe, feature_set="ball_relative"))).all()
+    other = baselines.fit("bc", mixed_demos, hyperparameters=chosen, seed=1)
+    assert not np.array_equal(again.classifier.predict_proba(features(probe, feature_set="ball_relative")),
+                              other.classifier.predict_proba(features(probe, feature_set="ball_relative")))
 
 
 def test_bad_step_label_settings_are_refused_by_name(forward_demos, recognizer):

@@ -29,9 +29,9 @@ from typing import Any
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
-from polymimic.baselines.labels import Labelled, segment_labels, step_labels
+from polymimic.baselines.labels import Labelled, check_demonstrations, segment_labels, step_labels
 from polymimic.baselines.policy import ClonedPolicy
-from polymimic.baselines.training import MAX_DECISION_SAMPLES, stride_for_frames, train
+from polymimic.baselines.training import MAX_DECISION_SAMPLES, sample_rows, train
 from polymimic.field import Demonstration
 from polymimic.step_names import LABELS, segmenter_settings, step_settings
 
@@ -49,16 +49,17 @@ def check_recognizer(recognizer: Any) -> PrimitiveRecognizer:
 
 def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecognizer,
              segmenter: Mapping[str, Any] | None = None, labels: str = "steps",
-             max_samples: int = MAX_DECISION_SAMPLES) -> list[Labelled]:
-    """The demonstrations with every frame labelled by the recogniser: by the step from it
-    (``labels="steps"``, named at the stride the fit of at most ``max_samples`` decision
-    samples takes them) or by its segment (``"segments"``); gaps give no label."""
+             max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0) -> list[Labelled]:
+    """The demonstrations labelled by the recogniser: by the step from each frame
+    (``labels="steps"``; only the frames a fit of at most ``max_samples`` decision samples
+    under ``seed`` takes are named, :func:`~polymimic.baselines.training.sample_rows`) or every
+    frame by its segment (``"segments"``); gaps give no label."""
     recognizer = check_recognizer(recognizer)
     settings = segmenter_settings(segmenter)
     if labels == "steps":
-        demos = list(demonstrations)
-        stride = stride_for_frames(sum(len(d.frames) for d in demos), max_samples=max_samples)
-        return step_labels(demos, recognizer, stride_frames=stride, **step_settings(settings))
+        demos = check_demonstrations(demonstrations)
+        rows = sample_rows([(d.demonstrator, len(d.frames)) for d in demos], max_samples=max_samples, seed=seed)
+        return step_labels(demos, recognizer, frames=rows, **step_settings(settings))
     if labels == "segments":
         return segment_labels(demonstrations, recognizer, **settings)
     raise ValueError(f"unknown labels {labels!r}; expected one of {', '.join(map(repr, LABELS))}")
@@ -87,5 +88,5 @@ def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecogni
     ValueError
         If ``demonstrations`` is empty, ``labels`` is unknown, or no frame is labelled (all gaps).
     """
-    return train("bco", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter, labels=labels),
+    return train("bco", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter, labels=labels, seed=seed),
                  hyperparameters=hyperparameters, seed=seed)

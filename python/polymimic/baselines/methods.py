@@ -24,7 +24,7 @@ from polymimic.baselines.bco import labelled as bco_labelled
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import Labelled, check_demonstrations, check_weights
 from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
-from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples, train
+from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_fit_seed, check_max_samples, train
 from polymimic.field import Demonstration
 
 __all__ = ["METHODS", "Prepared", "check_method", "fit", "fit_prepared", "prepare"]
@@ -42,55 +42,59 @@ def check_method(method: Any) -> str:
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class Prepared:
-    """What a method learns from: labelled demonstrations and per-demonstrator weights."""
+    """What a method learns from: labelled demonstrations and per-demonstrator weights, for
+    fits of at most about ``max_samples`` decision samples drawn with ``seed`` (``bco`` names
+    only the frames those fits take, so a fit of another seed or size needs another preparation)."""
 
     method: str
     labelled: list[Labelled]
+    seed: int
+    max_samples: int
     weights: dict[str, float] | None = None
 
 
 def prepare(method: str, demonstrations: Sequence[Demonstration], *,
             recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
             member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
-            max_samples: int = MAX_DECISION_SAMPLES) -> Prepared:
+            max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0) -> Prepared:
     """Label the demonstrations as ``method`` does (reading them once with the recogniser, for
-    ``bco``, at the stride of fits of at most ``max_samples`` decision samples).
+    ``bco``, at the frames fits of at most ``max_samples`` decision samples under ``seed`` take).
 
     ``recognizer`` is needed by ``bco`` and ``bco_lp``, ``weights`` by ``bco_lp``, ``member``
     by ``bc_best``; ``random`` needs nothing (and takes an empty list).
     """
     method = check_method(method)
+    check_max_samples(max_samples)
+    check_fit_seed(seed)
     if method == "random":
-        return Prepared(method, [])
+        return Prepared(method, [], seed, max_samples)
     demos = check_demonstrations(demonstrations)
     if method == "bc":
-        return Prepared(method, bc_labelled(demos))
+        return Prepared(method, bc_labelled(demos), seed, max_samples)
     if method == "bc_best":
         if member is None:
             raise ValueError("bc_best needs member: the name of the demonstrator to clone")
-        return Prepared(method, bc_best_labelled(demos, member=member))
+        return Prepared(method, bc_best_labelled(demos, member=member), seed, max_samples)
     if recognizer is None:
         raise ValueError(f"{method} needs recognizer: a polymimic.PrimitiveRecognizer trained on self-observation")
-    labelled = bco_labelled(demos, recognizer=recognizer, segmenter=segmenter, max_samples=max_samples)
+    labelled = bco_labelled(demos, recognizer=recognizer, segmenter=segmenter, max_samples=max_samples, seed=seed)
     if method == "bco":
-        return Prepared(method, labelled)
+        return Prepared(method, labelled, seed, max_samples)
     if weights is None:
         raise ValueError("bco_lp needs weights: a weight in [0, 1] for every demonstrator (e.g. its final LP)")
-    return Prepared(method, labelled, check_weights(weights, demos))
+    return Prepared(method, labelled, seed, max_samples, check_weights(weights, demos))
 
 
-def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None = None,
-                 seed: int = 0, max_samples: int = MAX_DECISION_SAMPLES) -> ClonedPolicy | RandomPolicy:
+def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None = None) -> ClonedPolicy | RandomPolicy:
     """The policy ``prepared.method`` learns with ``hyperparameters`` (default
-    :data:`~polymimic.baselines.hyperparameters.DEFAULT`) from at most about ``max_samples``
-    decision samples; ``random`` takes only their step length, and without them holds each
-    primitive for the environment's one second."""
-    check_max_samples(max_samples)
+    :data:`~polymimic.baselines.hyperparameters.DEFAULT`) from the decision samples the
+    preparation's seed draws; ``random`` takes only their step length, and without them holds
+    each primitive for the environment's one second."""
     if prepared.method == "random":
-        return RandomPolicy(seed=seed, frames_per_action=30 if hyperparameters is None
+        return RandomPolicy(seed=prepared.seed, frames_per_action=30 if hyperparameters is None
                             else hyperparameters.frames_per_action)
-    return train(prepared.method, prepared.labelled, hyperparameters=hyperparameters or DEFAULT, seed=seed,
-                 weights=prepared.weights, max_samples=max_samples)
+    return train(prepared.method, prepared.labelled, hyperparameters=hyperparameters or DEFAULT, seed=prepared.seed,
+                 weights=prepared.weights, max_samples=prepared.max_samples)
 
 
 def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters: Hyperparameters | None = None,
@@ -103,7 +107,8 @@ def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters
     ``hyperparameters`` default to :data:`~polymimic.baselines.hyperparameters.DEFAULT` (for
     ``random``: one primitive a second, the environment's step). ``max_samples`` caps the
     decision samples (:data:`~polymimic.baselines.training.MAX_DECISION_SAMPLES`: the sample
-    stride widens evenly to stay under it).
+    stride widens evenly to stay under it); ``seed`` draws which frames they are
+    (:func:`~polymimic.baselines.training.sample_rows`) and seeds the classifier.
 
     Raises
     ------
@@ -111,7 +116,6 @@ def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters
         If ``method`` is unknown, the method's input is missing or bad (see :func:`prepare`), or
         ``max_samples`` is not an integer ≥ 1.
     """
-    check_max_samples(max_samples)
     prepared = prepare(method, demonstrations, recognizer=recognizer, weights=weights, member=member,
-                       segmenter=segmenter, max_samples=max_samples)
-    return fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed, max_samples=max_samples)
+                       segmenter=segmenter, max_samples=max_samples, seed=seed)
+    return fit_prepared(prepared, hyperparameters=hyperparameters)

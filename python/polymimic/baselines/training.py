@@ -4,7 +4,11 @@ A decision sample is one frame's observation and its label, taken every
 :data:`SAMPLE_STRIDE_FRAMES` frames (any frame is a moment the policy may decide at); frames
 without a label give none. Where that would give more than :data:`MAX_DECISION_SAMPLES` (a
 crowd of ten members gives about 100 000), the stride widens evenly for every demonstration
-until it does not, so that a fit costs the same whatever the crowd's size.
+until it does not, so that a fit costs the same whatever the crowd's size. Where in its first
+stride each demonstration's samples start is drawn with the fit's seed
+(:func:`sample_rows`): fits under other seeds learn from other frames, so that even a
+deterministic classifier (gradient boosting without early stopping, k-NN, logistic
+regression) gives a spread over fits, not one draw.
 
 Each sample weighs its demonstrator's weight (1 unless a method says otherwise: ``bco_lp`` uses
 the LP), and, when the hyperparameters ask for balance, its
@@ -22,6 +26,7 @@ before fitting, so that a member weighted 0 is exactly a member left out.
 
 from __future__ import annotations
 
+import zlib
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -33,8 +38,8 @@ from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import NO_LABEL, Labelled
 from polymimic.baselines.policy import ClonedPolicy
 
-__all__ = ["DEFAULT", "MAX_DECISION_SAMPLES", "SAMPLE_STRIDE_FRAMES", "check_max_samples", "decision_samples",
-           "stride_for_frames", "train"]
+__all__ = ["DEFAULT", "MAX_DECISION_SAMPLES", "SAMPLE_STRIDE_FRAMES", "check_fit_seed", "check_max_samples",
+           "decision_samples", "sample_rows", "stride_for_frames", "train"]
 
 SAMPLE_STRIDE_FRAMES = 3
 """Frames between decision samples (every 0.1 s): consecutive frames differ by tracker noise
@@ -55,32 +60,56 @@ def check_max_samples(max_samples: Any) -> int:
     return int(max_samples)
 
 
-def sample_stride(labelled: Sequence[Labelled], *, max_samples: int = MAX_DECISION_SAMPLES) -> int:
-    """:data:`SAMPLE_STRIDE_FRAMES`, widened so that ``labelled`` gives at most ``max_samples``.
-
-    >>> import numpy as np
-    >>> from polymimic.baselines.labels import Labelled
-    >>> item = Labelled("d", np.zeros((900, 5)), np.zeros(900, dtype=np.int64))
-    >>> sample_stride([item] * 10), sample_stride([item] * 200), sample_stride([item] * 10, max_samples=1000)
-    (3, 9, 9)
-    """
-    return stride_for_frames(sum(len(item.labels) for item in labelled), max_samples=max_samples)
+def check_fit_seed(seed: Any) -> int:
+    """``seed`` if it is an integer in [0, 2**32) (what scikit-learn's classifiers take), else a
+    ``ValueError`` naming it."""
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= seed < 2**32:
+        raise ValueError(f"seed must be an integer in [0, 2**32) (it draws a fit's decision samples and seeds "
+                         f"its classifier), got {seed!r}")
+    return int(seed)
 
 
 def stride_for_frames(frames: int, *, max_samples: int = MAX_DECISION_SAMPLES) -> int:
-    """The decision samples' stride over demonstrations of ``frames`` frames in all."""
+    """The decision samples' stride over demonstrations of ``frames`` frames in all:
+    :data:`SAMPLE_STRIDE_FRAMES`, widened so that they give at most about ``max_samples``.
+
+    >>> stride_for_frames(9000), stride_for_frames(180_000), stride_for_frames(9000, max_samples=1000)
+    (3, 9, 9)
+    """
     return max(SAMPLE_STRIDE_FRAMES, -(-frames // check_max_samples(max_samples)))
 
 
+def sample_rows(demonstrations: Sequence[tuple[str, int]], *, max_samples: int = MAX_DECISION_SAMPLES,
+                seed: int = 0) -> list[np.ndarray]:
+    """The frames each demonstration, given as (demonstrator, frames), gives a decision sample
+    at: every stride-th (:func:`stride_for_frames` over them all), from a first frame in
+    ``[0, stride)`` drawn with ``seed``, the demonstrator's name and the demonstration's place
+    among that demonstrator's. Leaving a demonstrator out changes no other one's frames (so a
+    member weighted 0 is a member left out).
+
+    >>> [rows.tolist() for rows in sample_rows([("a", 10), ("a", 10)], max_samples=5, seed=0)]
+    [[0, 4, 8], [2, 6]]
+    """
+    stride = stride_for_frames(sum(length for _, length in demonstrations), max_samples=max_samples)
+    seed = check_fit_seed(seed)
+    seen: dict[str, int] = {}
+    rows = []
+    for name, length in demonstrations:
+        place = seen[name] = seen.get(name, -1) + 1
+        first = np.random.default_rng([seed, zlib.crc32(name.encode()), place]).integers(stride)
+        rows.append(np.arange(first, length, stride))
+    return rows
+
+
 def decision_samples(labelled: Sequence[Labelled], *, weights: Mapping[str, float] | None = None,
-                     balanced: bool = False,
-                     max_samples: int = MAX_DECISION_SAMPLES) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                     balanced: bool = False, max_samples: int = MAX_DECISION_SAMPLES,
+                     seed: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Observations ``(n, 5)``, labels ``(n,)`` and weights ``(n,)`` of every decision sample,
-    at most about ``max_samples`` of them."""
+    at most about ``max_samples`` of them, at the frames :func:`sample_rows` draws with ``seed``."""
     observations, labels, sample_weight = [], [], []
-    stride = sample_stride(labelled, max_samples=max_samples)
-    for item in labelled:
-        rows = np.arange(0, len(item.labels), stride)
+    every = sample_rows([(item.demonstrator, len(item.labels)) for item in labelled], max_samples=max_samples,
+                        seed=seed)
+    for item, rows in zip(labelled, every):
         rows = rows[item.labels[rows] != NO_LABEL]
         observations.append(item.observations[rows])
         labels.append(item.labels[rows])
@@ -101,7 +130,7 @@ def decision_samples(labelled: Sequence[Labelled], *, weights: Mapping[str, floa
 def train(method: str, labelled: Sequence[Labelled], *, hyperparameters: Hyperparameters, seed: int = 0,
           weights: Mapping[str, float] | None = None, max_samples: int = MAX_DECISION_SAMPLES) -> ClonedPolicy:
     """A :class:`ClonedPolicy` fitted on the decision samples of ``labelled`` (at most about
-    ``max_samples``).
+    ``max_samples``); ``seed`` draws the samples' frames and seeds the classifier.
 
     Raises
     ------
@@ -109,7 +138,8 @@ def train(method: str, labelled: Sequence[Labelled], *, hyperparameters: Hyperpa
         If no sample has a positive weight (nothing labelled, or every weight 0), or
         ``max_samples`` is not an integer ≥ 1.
     """
-    X, y, w = decision_samples(labelled, weights=weights, balanced=hyperparameters.balanced, max_samples=max_samples)
+    X, y, w = decision_samples(labelled, weights=weights, balanced=hyperparameters.balanced, max_samples=max_samples,
+                               seed=seed)
     if not (w > 0).any():
         raise ValueError(f"{method}: no decision sample to learn from (no labelled frame, or every weight 0)")
     model = make_classifier(hyperparameters.classifier, dict(hyperparameters.params), seed=seed)

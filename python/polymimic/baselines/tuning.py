@@ -128,11 +128,11 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         steps = list(dict.fromkeys(h.frames_per_action for h in tried))
         tried = [next(h for h in tried if h.frames_per_action == k) for k in steps]
     prepared = prepare(method, list(demonstrations) if method != "random" else [], recognizer=recognizer,
-                       weights=weights, member=member, segmenter=segmenter, max_samples=max_samples)
+                       weights=weights, member=member, segmenter=segmenter, max_samples=max_samples, seed=seed)
     scores: list[dict[str, Any]] = []
     best: tuple[tuple[int, int], int, ClonedPolicy | RandomPolicy] | None = None
     for index, hyperparameters in enumerate(tried):
-        policy = fit_prepared(prepared, hyperparameters=hyperparameters, seed=seed, max_samples=max_samples)
+        policy = fit_prepared(prepared, hyperparameters=hyperparameters)
         result = play(policy, attempts, field_config=field_config)
         scores.append({"hyperparameters": _chosen(method, hyperparameters), "goals": result.goals,
                        "own_goals": result.own_goals})

@@ -42,7 +42,12 @@ needs stable-baselines3 (``pip install "polymimic[rl]"``) and took 13 minutes of
 million environment steps in the README's run (:mod:`polymimic.baselines.ppo`)."""
 
 TRIAL_INDEPENDENT = ("bc", "bco", "bc_best", "random")
-"""Baselines that learn the same thing in every trial: the crowd's demonstrations, unweighted."""
+"""Baselines that learn the same thing in every trial: the crowd's demonstrations, unweighted.
+They are fitted ``baseline_fits`` times, each fit under its own seed."""
+
+RENAMED = {"refit_baselines": "baseline_fits (how many fits of bc, bco, bc_best and random, each under its own seed; "
+                              "refit_baselines = true was baseline_fits = trials)"}
+"""Keys an older config may hold, and what took their place."""
 
 
 def _doc(text: str, default: Any) -> Any:
@@ -70,13 +75,14 @@ class BenchmarkSettings:
     ppo_eval_every: int = _doc("environment steps between ppo's checkpoints on the evaluation attempts", 50_000)
     ppo_runs: int = _doc("ppo training runs, seeds 0, 1, … (ppo learns no crowd's data: its runs serve every "
                          "profile)", 1)
-    refit_baselines: bool = _doc("fit bc, bco, bc_best and random again for every trial's seed (their data are "
-                                 "the same in every trial: by default they are fitted and evaluated once)", False)
+    baseline_fits: int = _doc("fits of bc, bco, bc_best and random, each evaluated, under seeds first_trial, "
+                              "first_trial + 1, …: a seed draws the fit's decision samples and seeds its "
+                              "classifier (bco_lp is fitted after each of the first lp_plugin_trials trials)", 3)
 
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
                      "validation_attempts_per_configuration", "tuning_budget", "lp_plugin_trials",
-                     "max_decision_samples", "ppo_timesteps", "ppo_eval_every", "ppo_runs"):
+                     "baseline_fits", "max_decision_samples", "ppo_timesteps", "ppo_eval_every", "ppo_runs"):
             in_range("benchmark", name, getattr(self, name), 1)
         in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
         for name in ("profiles", "methods"):
@@ -132,12 +138,13 @@ class BenchmarkConfig:
         return [self.seeds.first_trial + i for i in range(self.benchmark.trials)]
 
     def evaluated_seeds(self, method: str) -> list[int]:
-        """The trials after which ``method`` is evaluated: every one, but only the first for a
-        baseline whose data no trial changes (unless ``refit_baselines``), and the first
-        ``lp_plugin_trials`` for ``bco_lp``, a fit per trial."""
+        """The seeds ``method`` is evaluated under: every trial's for polymimic's methods, the
+        first ``lp_plugin_trials`` trials' for ``bco_lp`` (a fit per trial, with its LPs), and
+        ``baseline_fits`` fit seeds (``first_trial``, ``first_trial + 1``, …) for a baseline
+        whose data no trial changes."""
+        if method in TRIAL_INDEPENDENT:
+            return [self.seeds.first_trial + i for i in range(self.benchmark.baseline_fits)]
         seeds = self.trial_seeds()
-        if method in TRIAL_INDEPENDENT and not self.benchmark.refit_baselines:
-            return seeds[:1]
         return seeds[:self.benchmark.lp_plugin_trials] if method == "bco_lp" else seeds
 
     def crowds(self) -> list[Crowd]:
@@ -184,7 +191,11 @@ class BenchmarkConfig:
         if "benchmark" in data:
             defaults = {k: list(v) if isinstance(v, tuple) else v
                         for k, v in dataclasses.asdict(base.benchmark).items()}
-            values = checked_section("benchmark", as_table("benchmark", data["benchmark"]), defaults)
+            table = as_table("benchmark", data["benchmark"])
+            for old, new in RENAMED.items():
+                if old in table:
+                    raise ConfigError(f"[benchmark] {old} is no more: use {new}")
+            values = checked_section("benchmark", table, defaults)
             benchmark = dataclasses.replace(base.benchmark, **values)
         return cls(run=run, benchmark=benchmark, profiles=profiles)
 

@@ -113,6 +113,11 @@ def load_tuning(path: str | os.PathLike[str]) -> SavedTuning:
     scores = data.get("scores")
     if not isinstance(scores, list) or not scores:
         raise ModelFileError(f"{where}: key 'scores' must list every candidate tried, got {scores!r}")
+    for i, score in enumerate(scores):
+        if not isinstance(score, dict):
+            raise ModelFileError(f"{where}: scores[{i}] must be an object, got {score!r}")
+        for key in ("goals", "own_goals"):
+            _integer(score, key, f"{where}: scores[{i}]", 0)
     return SavedTuning(profile=_name(data, "profile", where), method=_name(data, "method", where, METHODS),
                        chosen=data["chosen"], hyperparameters=data["hyperparameters"], scores=scores,
                        validation_attempts=_integer(data, "validation_attempts", where, 1))

@@ -32,7 +32,7 @@ from polymimic.ranking import kendall, spearman
 from polymimic.runs.stats import mean_sd
 
 __all__ = ["FORMAT", "VERSION", "MemberSummary", "MethodSummary", "PPOSummary", "ProfileSummary", "SkillRecovery",
-           "gather"]
+           "Validation", "ValidationScore", "gather", "validation"]
 
 FORMAT, VERSION = "polymimic.benchmark", 1
 LP_POINTS = 200
@@ -58,6 +58,22 @@ class SkillRecovery(TypedDict):
     """Trials whose top-ranked member is one of those of lowest ε (None where all share it)."""
 
 
+class ValidationScore(TypedDict):
+    goals: int
+    own_goals: int
+    net_goals: int
+
+
+class Validation(TypedDict):
+    """A tuned baseline's candidates on the validation attempts: how far the choice stood out."""
+
+    attempts: int
+    candidates: int
+    chosen: ValidationScore
+    runner_up: ValidationScore | None
+    """The best of the other candidates (None where only one was tried)."""
+
+
 class MethodSummary(TypedDict):
     goals: MeanSd
     own_goals: MeanSd
@@ -65,6 +81,8 @@ class MethodSummary(TypedDict):
     attempts: int
     evaluated: int
     hyperparameters: dict[str, Any]
+    validation: Validation | None
+    """A tuned baseline's validation scores; None for polymimic's untuned methods and ppo."""
 
 
 class PPOSummary(MethodSummary):
@@ -120,6 +138,29 @@ def _improved_control_choices(learning: LearningConfig) -> dict[str, Any]:
             if getattr(learning, name) != getattr(defaults, name)}
 
 
+def _score(entry: Mapping[str, Any]) -> ValidationScore:
+    return ValidationScore(goals=int(entry["goals"]), own_goals=int(entry["own_goals"]),
+                           net_goals=int(entry["goals"]) - int(entry["own_goals"]))
+
+
+def validation(tuning: Mapping[str, Any]) -> Validation:
+    """The chosen candidate's validation score and the runner-up's, from a saved tuning: the
+    first candidate of the best (net goals, goals) is the one chosen, as
+    :func:`polymimic.baselines.tune` chooses.
+
+    >>> scores = [{"goals": 5, "own_goals": 1}, {"goals": 7, "own_goals": 1}, {"goals": 6, "own_goals": 0}]
+    >>> v = validation({"scores": scores, "validation_attempts": 20})
+    >>> v["chosen"]["net_goals"], v["runner_up"]["net_goals"], v["candidates"]
+    (6, 6, 3)
+    """
+    scores = list(tuning["scores"])
+    ranked = sorted(range(len(scores)), key=lambda i: (-(scores[i]["goals"] - scores[i]["own_goals"]),
+                                                        -scores[i]["goals"], i))
+    return Validation(attempts=int(tuning["validation_attempts"]), candidates=len(scores),
+                      chosen=_score(scores[ranked[0]]),
+                      runner_up=_score(scores[ranked[1]]) if len(ranked) > 1 else None)
+
+
 def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, method: str) -> MethodSummary:
     saved = [load_method_evaluation(run.require(run.evaluation_path(profile, method, s), "benchmark"))
              for s in config.evaluated_seeds(method)]
@@ -130,12 +171,14 @@ def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, me
         if control == "improved":
             chosen.update(_improved_control_choices(config.learning))
         chosen["tuned"] = "no: the thesis's constants"
+        scored = None
     else:
-        chosen = load_tuning(run.require(run.tuning_path(profile, method), "benchmark"))["chosen"]
+        tuning = load_tuning(run.require(run.tuning_path(profile, method), "benchmark"))
+        chosen, scored = tuning["chosen"], validation(tuning)
     return MethodSummary(goals=mean_sd(e["goals"] for e in saved), own_goals=mean_sd(e["own_goals"] for e in saved),
                          net_goals=mean_sd(e["goals"] - e["own_goals"] for e in saved),
                          attempts=2 * config.benchmark.attempts_per_configuration, evaluated=len(saved),
-                         hyperparameters=chosen)
+                         hyperparameters=chosen, validation=scored)
 
 
 def _ppo_curves(run: BenchmarkDir, config: BenchmarkConfig) -> list[dict[str, Any]]:
@@ -149,7 +192,7 @@ def _ppo_summary(curves: Sequence[Mapping[str, Any]], config: BenchmarkConfig, t
     return PPOSummary(goals=mean_sd(f["goals"] for f in finals), own_goals=mean_sd(f["own_goals"] for f in finals),
                       net_goals=mean_sd(f["net_goals"] for f in finals),
                       attempts=2 * config.benchmark.attempts_per_configuration, evaluated=len(curves),
-                      hyperparameters=ppo_hyperparameters(config),
+                      hyperparameters=ppo_hyperparameters(config), validation=None,
                       env_steps_to_polymimic=[None if target is None else steps_to_reach(c["checkpoints"], target)
                                               for c in curves])
 
@@ -186,8 +229,8 @@ def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
              "attempts_per_configuration": settings.attempts_per_configuration,
              "validation_attempts_per_configuration": settings.validation_attempts_per_configuration,
              "tuning_budget": settings.tuning_budget, "max_decision_samples": settings.max_decision_samples,
-             "lp_plugin_trials": settings.lp_plugin_trials,
-             "refit_baselines": settings.refit_baselines, "evaluation_seed": config.seeds.evaluation,
+             "lp_plugin_trials": settings.lp_plugin_trials, "baseline_fits": settings.baseline_fits,
+             "evaluation_seed": config.seeds.evaluation,
              "validation_seed": settings.validation_seed}
     # ppo's runs serve every profile: read once.
     curves = _ppo_curves(run, config) if "ppo" in settings.methods else None

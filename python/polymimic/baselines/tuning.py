@@ -74,7 +74,7 @@ def validation_attempts(attempts_per_configuration: int, *, validation_seed: int
 
 
 def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Sequence[Hyperparameters] | None = None,
-         budget: int = 12, candidate_seed: int = 0, validation_seed: int = 0, attempts_per_configuration: int = 10,
+         budget: int = 12, candidate_seed: int = 0, validation_seed: int = 0, attempts_per_configuration: int = 50,
          evaluation_seed: int = 0, evaluation_attempts_per_configuration: int = 25, seed: int = 0,
          recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
          member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
@@ -92,7 +92,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         How many candidates (the same for every method).
     validation_seed : int, default 0
         Picks the validation attempts (see the seed rule above).
-    attempts_per_configuration : int, default 10
+    attempts_per_configuration : int, default 50
         Validation attempts per field configuration.
     evaluation_seed, evaluation_attempts_per_configuration : int
         The evaluation the validation must not meet (checked).

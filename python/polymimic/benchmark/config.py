@@ -63,11 +63,12 @@ class BenchmarkSettings:
     trials: int = _doc("learning trials per profile (seeds first_trial, first_trial + 1, …)", 20)
     demonstrations_per_configuration: int = _doc("valid demonstrations per member and field configuration", 25)
     attempts_per_configuration: int = _doc("evaluation attempts per method, trial and field configuration", 25)
-    validation_attempts_per_configuration: int = _doc("tuning attempts per configuration (never evaluated)", 10)
+    validation_attempts_per_configuration: int = _doc("tuning attempts per configuration (never evaluated; a "
+                                                      "policy plays 100 in about a second)", 50)
     tuning_budget: int = _doc("hyperparameter candidates tried per method and profile", 6)
     validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
     lp_plugin_trials: int = _doc("trials after which bco_lp, refitted with each trial's LPs, is evaluated: the "
-                                 "first ones", 5)
+                                 "first ones", 3)
     # polymimic.baselines.training.MAX_DECISION_SAMPLES, not imported: that would import scikit-learn.
     max_decision_samples: int = _doc("the most decision samples a baseline's fit takes (its sample stride widens "
                                      "evenly to stay under it)", 20_000)

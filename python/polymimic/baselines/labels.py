@@ -18,16 +18,16 @@ covers, carry no label and give no training sample.
 Observations are the frames' tracker readings (a dropout repeats the last good reading, as the
 environment does). A demonstration recorded on a field of another size (the ``tiny`` body's
 small field, a user's :class:`~polymimic.bodies.Field`) comes onto the imitator's field by
-:func:`onto_imitator_field`: the ball's position scales with the fields' lengths (goal to
-goal), and the robot keeps its offset from the ball in millimetres, since how near a robot
-comes to the ball and how it turns around it are its body's, not the field's. The cloning
-baselines once stretched the whole small field onto the large one per axis (x by 1020/560, y by
-810/345), which put the tiny's approach to the ball at the wrong distances. On ``mixed_bodies``
-(``python benches/bc_field_mapping.py RUN_DIR``: histogram gradient boosting on the
-ball-relative features, 5 frames a step, ten fits on the benchmark's evaluation attempts, kicks
-labelled as they look) that stretch netted 13.2 ± 4.0 goals per 50 (8.2 own goals), this mapping 17.9 ± 5.2 (2.8), and the
-tiny's frames as recorded 18.6 ± 3.5 (1.2), which would leave a larger field's frames off the
-imitator's field altogether.
+:func:`onto_imitator_field`: the ball's position scales with the fields' lengths (goal to goal),
+and the robot keeps its offset from the ball in millimetres, since how near a robot comes to the
+ball and how it turns around it are its body's, not the field's. The cloning baselines once
+stretched the whole small field onto the large one per axis (x by 1020/560, y by 810/345), which
+put the tiny's approach to the ball at the wrong distances. On ``mixed_bodies`` (``python
+benches/bc_field_mapping.py RUN_DIR``: histogram gradient boosting on the ball-relative
+features, 5 frames a step, ten fits on the benchmark's evaluation attempts, kicks labelled as
+they look) that stretch netted 13.2 ± 4.0 goals per 50 (8.2 own goals), this mapping 17.9 ± 5.2
+(2.8), and the tiny's frames as recorded 18.6 ± 3.5 (1.2), which would leave a larger field's
+frames off the imitator's field altogether.
 
 Labels are the imitator's own primitive for what the command did: the primitive that looks the
 same from above (:func:`polymimic.field.command_primitives`, the thesis's Table 4.4), except

@@ -75,7 +75,7 @@ pub use policy::{
 };
 /// The domain types the field shares with every crate, re-exported for the field's users.
 pub use polymimic_types::{MotionStats, Point, Pose, Primitive, TrackedFrame, wrap_angle_rad};
-pub use record::{PrimitiveSequence, run_controller, self_observation, self_observation_batch};
+pub use record::{PrimitiveSequence, run_controller, self_observation, self_observation_batch, self_observation_of};
 pub use setup::{Configuration, EpisodeSetup, FieldConfig};
 pub use stats::{THESIS_TABLE_3_1, primitive_motion, primitive_stats, table_3_1_row};
 pub use tracker::{FRAME_DT_S, FRAME_RATE_HZ, Frame, TrackerConfig};

@@ -1,5 +1,6 @@
 //! The self-observation babbler (§3.1.1): one primitive per second chosen uniformly from
-//! F B L R S; near an edge the robot is put back at the centre with a random heading.
+//! F B L R S, sent as the body's own command for it; near an edge the robot is put back at the
+//! centre with a random heading.
 
 use polymimic_types::{Pose, Primitive};
 
@@ -9,9 +10,11 @@ use crate::episode::Observation;
 use crate::math::{Rng, TAU, rng, stream, uniform, wrap_angle_rad};
 
 use super::Controller;
+use super::lapse::primitive_command;
 
 /// Random-primitive babbler.
 pub struct Babbler {
+    body: BodyKind,
     rng: Rng,
     current: Primitive,
     frames_left: u32,
@@ -28,7 +31,7 @@ impl Babbler {
         // Room for the body's half-diagonal plus a couple of primitives' travel.
         let (l, w) = body.footprint_mm();
         let margin_mm = 0.5 * l.hypot(w) + 1.5 * l.max(w).max(60.0);
-        Self { rng: rng(seed, stream::CONTROLLER), current: Primitive::Stop, frames_left: 0, margin_mm }
+        Self { body, rng: rng(seed, stream::CONTROLLER), current: Primitive::Stop, frames_left: 0, margin_mm }
     }
 
     /// The primitive being executed.
@@ -46,7 +49,7 @@ impl Controller for Babbler {
             self.frames_left = Self::PRIMITIVE_FRAMES;
         }
         self.frames_left -= 1;
-        Command::Primitive(self.current)
+        primitive_command(self.current, self.body)
     }
 
     fn reposition(&mut self, observation: &Observation) -> Option<Pose> {

@@ -10,11 +10,10 @@ benchmark's evaluation attempts once per fit seed. The script prints one JSON li
 the plain cloner's net goals per seed and ``bc``'s, as the run's ``evaluation_bc_*.json`` has
 them. Run: ``python benches/plain_cloner_vs_bc.py RUN_DIR [--profiles mixed_bodies] [--fits 3]``.
 
-Measured on ``mixed_bodies`` with the benchmark's default seeds and sizes (crowd seed 0, 25
-demonstrations per configuration per member; 20 000 samples; validation chose 5 frames a step):
-the plain cloner netted 15, 22 and 13 over fit seeds 0, 1 and 2. ``bc`` tuned by
-``polymimic.baselines.tune`` with its defaults (12 candidates) netted 12 (19 goals, 7 own goals)
-on the same attempts from one fit; the README's benchmark table gives it 9.
+Measured on the full benchmark's run (default seeds and sizes), net goals per fit seed 0, 1, 2:
+the plain cloner netted 3, 5, 11 on ``one_good``; 6, 6, 2 on ``half``; 18, 19, 18 on ``equal``;
+6, 6, 8 on ``linear``; 12, 21, 13 on ``mixed_bodies``; ``bc`` 8, 6, 0; 19, 19, 14; 21, 23, 24;
+22, 26, 11; 11, 11, 16.
 """
 
 import os

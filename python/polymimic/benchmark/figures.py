@@ -108,7 +108,11 @@ def draw_figures(summary: Mapping[str, Any], folder: str | os.PathLike[str]) -> 
     profiles = summary["profiles"]
     table = {name: {m: s["net_goals"] for m, s in p["methods"].items()} for name, p in profiles.items()}
     figure = plot_metric_bars(table, ylabel="net goals (goals − own goals)", title="Net goals by method and profile")
-    figure.set_size_inches(max(7.0, 1.3 * len(next(iter(table.values()), {})) + 2), 4.2)
+    figure.set_size_inches(max(7.0, 1.3 * len(next(iter(table.values()), {})) + 2), 4.6)
+    axes = figure.axes[0]
+    # Long method names would print over each other: break them after their first word.
+    axes.set_xticks(axes.get_xticks(), [label.get_text().replace("_", "_\n", 1) if len(label.get_text()) > 12
+                                        else label.get_text() for label in axes.get_xticklabels()])
     save_figure(figure, out / FIGURES["net_goals"])
     _lp_vs_lapse(profiles, out / FIGURES["lp_vs_lapse"])
     _lp_over_training(profiles, out / FIGURES["lp_over_training"])

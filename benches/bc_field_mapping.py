@@ -9,8 +9,10 @@ attempts. The ways:
 - ``stretch``: the whole small field stretched per axis, x by 1020/560 and y by 810/345 (what
   the cloning baselines once did);
 - ``mapped``: :func:`polymimic.baselines.labels.onto_imitator_field`, the ball's position
-  scaled by the fields' lengths and the robot at its true offset from it (what they do);
-- ``recorded``: the tiny's frames as recorded, its field centred on the imitator's.
+  scaled by the fields' lengths and the robot at its true offset from it (what they do with a
+  field longer than the imitator's);
+- ``recorded``: the tiny's frames as recorded, its field centred on the imitator's (what they
+  do with a field no longer than it).
 
 Kicks are labelled ``backward`` (as they look from above, Table 4.4) or ``forward`` (what
 ``bc`` does). Prints one JSON line per way and label: net goals, goals and own goals per fit.

@@ -93,24 +93,20 @@ def test_bc_on_an_always_forward_demonstrator_plays_forward_at_every_step(forwar
     assert all(set(chosen) == {"F"} for chosen in result.behaviours)
 
 
-def test_a_small_field_comes_onto_the_imitators_with_the_ball_scaled_and_the_robot_at_its_true_offset():
-    """The tiny's field is 560 mm long, the imitator's 1020: the ball's position scales by
-    1020/560, the robot stays as far from the ball, in the same direction, with the same
-    heading; a demonstration of the imitator's own field is left as it was."""
+def test_a_small_field_is_taken_as_recorded_and_a_longer_one_keeps_the_robots_offset_from_the_ball():
+    """The tiny's field (560 mm) lies within the imitator's (1020 mm): its frames are taken as
+    they were. A longer field's ball position scales by the lengths' ratio while the robot stays
+    as far from the ball, in the same direction, with the same heading; and back again is itself."""
     (tiny,) = polymimic.record("tiny", configuration=1, n=1, seed=0)
-    (lego,) = polymimic.record("expert", configuration=1, n=1, seed=0)
-    seen = {d.body: np.column_stack([d.frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
-                                                            "ball_x_mm", "ball_y_mm")]) for d in (tiny, lego)}
-    mapped = {item.demonstrator: item.observations for item in labels.command_labels([tiny, lego])}
-    raw, onto = seen["tiny"], mapped["tiny"]
+    raw = np.column_stack([tiny.frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
+                                                     "ball_x_mm", "ball_y_mm")])
     assert np.isfinite(raw).all()
-    np.testing.assert_allclose(onto[:, 3:], raw[:, 3:] * 1020 / 560)
+    np.testing.assert_array_equal(labels.command_labels([tiny])[0].observations, raw)
+    onto = labels.onto_imitator_field(raw, field_length_mm=3060.0)
+    np.testing.assert_allclose(onto[:, 3:], raw[:, 3:] / 3.0)
     np.testing.assert_allclose(onto[:, :2] - onto[:, 3:], raw[:, :2] - raw[:, 3:], atol=1e-9)
     np.testing.assert_array_equal(onto[:, 2], raw[:, 2])
-    np.testing.assert_array_equal(mapped["expert"], seen["lego"])
-    # A field twice the imitator's length halves the ball's position and keeps the robot's offset.
-    back = labels.onto_imitator_field(labels.onto_imitator_field(raw, field_length_mm=560.0),
-                                      field_length_mm=1020.0 * 1020.0 / 560.0)
+    back = labels.onto_imitator_field(onto, field_length_mm=340.0)
     np.testing.assert_allclose(back, raw, atol=1e-9)
 
 

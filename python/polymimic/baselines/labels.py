@@ -16,18 +16,18 @@ Frames the recogniser calls a gap (its two best scores too close to call), or th
 covers, carry no label and give no training sample.
 
 Observations are the frames' tracker readings (a dropout repeats the last good reading, as the
-environment does). A demonstration recorded on a field of another size (the ``tiny`` body's
-small field, a user's :class:`~polymimic.bodies.Field`) comes onto the imitator's field by
-:func:`onto_imitator_field`: the ball's position scales with the fields' lengths (goal to goal),
-and the robot keeps its offset from the ball in millimetres, since how near a robot comes to the
-ball and how it turns around it are its body's, not the field's. The cloning baselines once
-stretched the whole small field onto the large one per axis (x by 1020/560, y by 810/345), which
-put the tiny's approach to the ball at the wrong distances. On ``mixed_bodies`` (``python
-benches/bc_field_mapping.py RUN_DIR``: histogram gradient boosting on the ball-relative
-features, 5 frames a step, ten fits on the benchmark's evaluation attempts, kicks labelled as
-they look) that stretch netted 13.2 ± 4.0 goals per 50 (8.2 own goals), this mapping 17.9 ± 5.2
-(2.8), and the tiny's frames as recorded 18.6 ± 3.5 (1.2), which would leave a larger field's
-frames off the imitator's field altogether.
+environment does), on the imitator's field. A demonstration from a field no longer than the
+imitator's (the ``tiny`` body's small field, a small field of the user's) is taken as recorded:
+its frames, centred on the imitator's field, already lie on it, and the robot's approach to the
+ball keeps its true distances. A demonstration from a longer field (a RoboCup-size field read
+from a tracker log) comes onto the imitator's by :func:`onto_imitator_field`: the ball's
+position scales with the fields' lengths (goal to goal) and the robot keeps its offset from the
+ball in millimetres. Measured on ``mixed_bodies`` (``python benches/bc_field_mapping.py
+RUN_DIR``: histogram gradient boosting on the ball-relative features, 5 frames a step, ten fits
+on the benchmark's evaluation attempts, kicks labelled as they look): the tiny's frames as
+recorded netted 18.6 ± 3.5 goals per 50 (1.2 own goals), mapped by :func:`onto_imitator_field`
+17.9 ± 5.2 (2.8), and stretched per axis onto the large field (x by 1020/560, y by 810/345, what
+the cloning baselines once did) 13.2 ± 4.0 (8.2).
 
 Labels are the imitator's own primitive for what the command did: the primitive that looks the
 same from above (:func:`polymimic.field.command_primitives`, the thesis's Table 4.4), except
@@ -135,8 +135,8 @@ def onto_imitator_field(observations: np.ndarray, *, field_length_mm: float) -> 
     from the ball (mm) and the same heading.
 
     >>> seen = np.array([[100.0, -50.0, 0.3, 140.0, -50.0]])   # 40 mm behind the ball
-    >>> onto_imitator_field(seen, field_length_mm=510.0).tolist()
-    [[240.0, -100.0, 0.3, 280.0, -100.0]]
+    >>> onto_imitator_field(seen, field_length_mm=2040.0).tolist()
+    [[30.0, -25.0, 0.3, 70.0, -25.0]]
     """
     scale = _IMITATOR_LENGTH_MM / field_length_mm
     mapped = np.array(observations, dtype=np.float64)
@@ -148,14 +148,14 @@ def onto_imitator_field(observations: np.ndarray, *, field_length_mm: float) -> 
 
 def observations_of(demo: Demonstration) -> np.ndarray:
     """The ``(n, 5)`` observations of a demonstration's frames: NaN readings (lost tracking,
-    a ball out of sight) repeat the last good one, and a field of another size comes onto the
-    imitator's (:func:`onto_imitator_field`)."""
+    a ball out of sight) repeat the last good one, and a field longer than the imitator's comes
+    onto it (:func:`onto_imitator_field`)."""
     frames = demo.frames
     obs = repeat_last_good(np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
                                                                  "ball_x_mm", "ball_y_mm")]).astype(np.float64))
     field = field_of(demo.body)
     length_mm = field.length_mm if isinstance(field, Field) else _FIELD_LENGTH_MM[field]
-    return obs if length_mm == _IMITATOR_LENGTH_MM else onto_imitator_field(obs, field_length_mm=length_mm)
+    return obs if length_mm <= _IMITATOR_LENGTH_MM else onto_imitator_field(obs, field_length_mm=length_mm)
 
 
 def cloning_primitives() -> np.ndarray:

@@ -162,6 +162,9 @@ def save_self_observation(seqs: Sequence[PrimitiveSequence], path: str | os.Path
     """
     items = _checked_items(seqs, PrimitiveSequence, "self-observation sequences", "PrimitiveSequence")
     for i, seq in enumerate(items):
+        if seq.body != "lego":
+            raise ValueError(f"sequence {i} is the {seq.body!r}'s self-observation; the self-observation file "
+                             f"records the Lego imitator's only (its body would be lost on reading)")
         _check_frames(seq.frames, f"sequence {i}")
         if seq.primitive not in PRIMITIVES:
             raise ValueError(f"sequence {i} has primitive {seq.primitive!r}; expected one of {', '.join(PRIMITIVES)}")

@@ -122,10 +122,12 @@ class Demonstration:
 
 @dataclasses.dataclass(frozen=True, eq=False)
 class PrimitiveSequence:
-    """One second of the imitator executing one primitive, as the tracker saw it."""
+    """One second of an imitator executing one primitive, as the tracker saw it, and the body
+    that executed it."""
 
     primitive: str
     frames: np.ndarray
+    body: str = "lego"
 
 
 def body_of(demonstrator: str) -> str:
@@ -317,14 +319,25 @@ def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse:
     return _demonstrations(raw, parts.name, body_name(body))
 
 
-def self_observation(n_per_primitive: int, *, seed: int = 0,
-                     config: dict[str, Any] | str | None = None) -> list[PrimitiveSequence]:
-    """The imitator alone on the field executing random one-second primitives: exactly
-    ``n_per_primitive`` valid sequences of each of forward, backward, left, right and stop."""
+def self_observation(n_per_primitive: int, *, seed: int = 0, config: dict[str, Any] | str | None = None,
+                     body: str | WheeledBody = "lego") -> list[PrimitiveSequence]:
+    """An imitator alone on its body's field executing random one-second primitives: exactly
+    ``n_per_primitive`` valid sequences of each of forward, backward, left, right and stop.
+
+    ``body`` is the imitator's: the Lego robot by default (the thesis's), the ``"tiny"`` on the
+    small field, a :class:`polymimic.bodies.WheeledBody`, or the ``"humanoid"``, which executes
+    each primitive as its walking, turning or waiting equivalent.
+
+    >>> sequences = self_observation(1, seed=0, body="tiny")
+    >>> sorted(s.primitive for s in sequences), sequences[0].body
+    (['backward', 'forward', 'left', 'right', 'stop'], 'tiny')
+    """
+    _check_body(body)
     frames, primitives = _native.record_self_observation(integer("n_per_primitive", n_per_primitive, 1),
                                                          seed=integer("seed", seed, 0, 2**64 - 1),
-                                                         config=_field_config(config))
-    return [PrimitiveSequence(primitive=p, frames=as_frames(f)) for f, p in zip(frames, primitives)]
+                                                         config=_field_config(config), body=native_body(body))
+    return [PrimitiveSequence(primitive=p, frames=as_frames(f), body=body_name(body))
+            for f, p in zip(frames, primitives)]
 
 
 def command_table() -> list[dict[str, Any]]:

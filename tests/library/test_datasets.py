@@ -55,6 +55,15 @@ def test_special_floats_and_large_seeds_round_trip(tmp_path, demos):
     assert_same_demonstrations(load_demonstrations(tmp_path / "odd.parquet"), [odd])
 
 
+def test_another_bodys_self_observation_is_refused_rather_than_saved_as_the_legos(tmp_path):
+    tiny = polymimic.self_observation(1, seed=0, body="tiny")
+    path = tmp_path / "tiny.parquet"
+    with pytest.raises(ValueError, match="sequence 0 is the 'tiny''s self-observation; the self-observation file "
+                                         "records the Lego imitator's only"):
+        save_self_observation(tiny, path)
+    assert not path.exists()
+
+
 def test_self_observation_round_trips_exactly(tmp_path, sequences):
     path = tmp_path / "self.parquet"
     save_self_observation(sequences, path)

@@ -59,6 +59,38 @@ def test_self_observation_gives_one_second_sequences_of_each_primitive():
         assert set(command_primitives()[s.frames["command"]]) == {s.primitive}
 
 
+def _travel_mm(sequence):
+    """How far a sequence's robot went along its starting heading (mm)."""
+    f = sequence.frames
+    heading = f["robot_theta_rad"][0]
+    return ((f["robot_x_mm"][-1] - f["robot_x_mm"][0]) * np.cos(heading)
+            + (f["robot_y_mm"][-1] - f["robot_y_mm"][0]) * np.sin(heading))
+
+
+@pytest.mark.parametrize(("body", "half_length_mm"), [("tiny", 280.0), ("humanoid", 510.0)])
+def test_any_body_observes_itself_on_its_own_field(body, half_length_mm):
+    sequences = polymimic.self_observation(4, seed=3, body=body)
+    assert sorted(s.primitive for s in sequences) == sorted(PRIMITIVES * 4)
+    assert {s.body for s in sequences} == {body}
+    for s in sequences:
+        assert (np.abs(s.frames["robot_x_mm"]) < half_length_mm).all()
+        # Each frame records the command the body was sent: its own language's on the humanoid.
+        assert set(command_primitives()[s.frames["command"]]) == {s.primitive}
+    forward = [_travel_mm(s) for s in sequences if s.primitive == "forward"]
+    backward = [_travel_mm(s) for s in sequences if s.primitive == "backward"]
+    assert min(forward) > 0 > max(backward)
+    humanoid_ids = {r["id"] for r in polymimic.field.command_table() if r["language"] == "humanoid"}
+    sent = np.concatenate([s.frames["command"] for s in sequences])
+    assert set(sent.tolist()) <= humanoid_ids if body == "humanoid" else not set(sent.tolist()) & humanoid_ids
+
+
+def test_the_lego_is_the_default_imitator_bit_for_bit():
+    default, lego = polymimic.self_observation(2, seed=4), polymimic.self_observation(2, seed=4, body="lego")
+    assert all(a.frames.tobytes() == b.frames.tobytes() and a.body == b.body == "lego" for a, b in zip(default, lego))
+    with pytest.raises(ValueError, match="body must be one of lego, tiny, humanoid .*got 'lgeo'"):
+        polymimic.self_observation(1, body="lgeo")
+
+
 def test_same_seed_same_frames_different_seed_different_frames():
     a = polymimic.record("poor", configuration=2, n=3, seed=5)
     b = polymimic.record("poor", configuration=2, n=3, seed=5)

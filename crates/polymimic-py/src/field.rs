@@ -4,7 +4,7 @@
 use numpy::{PyArray1, PyArray2};
 use polymimic_field::{
     BodyKind, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, LapseRate, Outcome,
-    THESIS_TABLE_3_1, command_table, record_on, self_observation,
+    THESIS_TABLE_3_1, command_table, record_on, self_observation_of,
 };
 use polymimic_types::Pose;
 use pyo3::exceptions::PyValueError;
@@ -107,19 +107,22 @@ pub(crate) fn recording<'py>(
     Ok(item)
 }
 
-/// One-second primitives of the imitator alone on the field: `(frames, primitive names)`.
+/// One-second primitives of an imitator (the Lego unless `body` says otherwise) alone on its
+/// field: `(frames, primitive names)`.
 #[pyfunction]
-#[pyo3(signature = (n_per_primitive, *, seed=Seed(0), config=None),
-       text_signature = "(n_per_primitive, *, seed=0, config=None)")]
+#[pyo3(signature = (n_per_primitive, *, seed=Seed(0), config=None, body=None),
+       text_signature = "(n_per_primitive, *, seed=0, config=None, body=None)")]
 pub fn record_self_observation<'py>(
     py: Python<'py>,
     n_per_primitive: i64,
     seed: Seed,
     config: Option<&str>,
+    body: Option<Body>,
 ) -> PyResult<(Bound<'py, PyList>, Vec<&'static str>)> {
     let n = positive("n_per_primitive", n_per_primitive)?;
     let config = field_config(config)?;
-    let sequences = py.detach(|| self_observation(n, seed.0, &config)).map_err(field_error)?;
+    let body = body.map_or(BodyKind::Lego, |b| b.0);
+    let sequences = py.detach(|| self_observation_of(body, n, seed.0, &config)).map_err(field_error)?;
     let frames = PyList::empty(py);
     for s in &sequences {
         frames.append(frames_array(py, &s.frames)?)?;

@@ -23,17 +23,16 @@ import os
 
 os.environ.setdefault("OMP_NUM_THREADS", "1")  # batched predictions of ≤ 50 rows: threads only cost
 
-import argparse  # noqa: E402
 import json  # noqa: E402
 import statistics  # noqa: E402
 
 import numpy as np  # noqa: E402
 
-from polymimic.baselines.evaluation import attempts_of, play  # noqa: E402
+from _benchmark_run import arguments, opened  # noqa: E402
+from polymimic.baselines.evaluation import play  # noqa: E402
 from polymimic.baselines.hyperparameters import Hyperparameters  # noqa: E402
 from polymimic.baselines.labels import Labelled, command_labels, onto_imitator_field  # noqa: E402
 from polymimic.baselines.training import train  # noqa: E402
-from polymimic.benchmark.rundir import BenchmarkDir  # noqa: E402
 from polymimic.bodies import field_of  # noqa: E402
 from polymimic.datasets import load_demonstrations  # noqa: E402
 from polymimic.field import PRIMITIVES, command_table  # noqa: E402
@@ -67,15 +66,9 @@ def labelled(demonstrations, way: str, kick: str) -> list[Labelled]:
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("run_dir", help="a finished `polymimic benchmark` run directory")
-    parser.add_argument("--profile", default="mixed_bodies")
-    parser.add_argument("--fits", type=int, default=10, help="fit seeds 0, 1, …")
-    args = parser.parse_args()
-    run = BenchmarkDir(args.run_dir)
-    config = run.open(None)
+    args = arguments(__doc__, fits=10, one_profile=True)
+    run, config, evaluation = opened(args.run_dir)
     settings = config.benchmark
-    evaluation = attempts_of(settings.attempts_per_configuration, seed=config.seeds.evaluation)
     demonstrations = load_demonstrations(run.crowd_path(args.profile))
     for way in ("stretch", "mapped", "recorded"):
         for kick in ("backward", "forward"):

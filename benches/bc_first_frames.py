@@ -13,15 +13,14 @@ import os
 
 os.environ.setdefault("OMP_NUM_THREADS", "1")  # batched predictions of ≤ 50 rows: threads only cost
 
-import argparse  # noqa: E402
 import json  # noqa: E402
 import statistics  # noqa: E402
 
+from _benchmark_run import arguments, opened  # noqa: E402
 from polymimic.baselines import training  # noqa: E402
-from polymimic.baselines.evaluation import attempts_of, play  # noqa: E402
+from polymimic.baselines.evaluation import play  # noqa: E402
 from polymimic.baselines.hyperparameters import Hyperparameters  # noqa: E402
 from polymimic.baselines.labels import command_labels  # noqa: E402
-from polymimic.benchmark.rundir import BenchmarkDir  # noqa: E402
 from polymimic.datasets import load_demonstrations  # noqa: E402
 
 CHOSEN = Hyperparameters("hist_gradient_boosting", (("learning_rate", 0.1), ("max_iter", 100), ("max_leaf_nodes", 31)),
@@ -35,15 +34,9 @@ def without_first(demonstrations, **kwargs):
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("run_dir", help="a finished `polymimic benchmark` run directory")
-    parser.add_argument("--profiles", nargs="+", help="default: every profile of the run")
-    parser.add_argument("--fits", type=int, default=8, help="fit seeds 0, 1, …")
-    args = parser.parse_args()
-    run = BenchmarkDir(args.run_dir)
-    config = run.open(None)
+    args = arguments(__doc__, fits=8)
+    run, config, evaluation = opened(args.run_dir)
     settings = config.benchmark
-    evaluation = attempts_of(settings.attempts_per_configuration, seed=config.seeds.evaluation)
     for profile in args.profiles or list(settings.profiles):
         items = command_labels(load_demonstrations(run.crowd_path(profile)))
         for way, rows in (("with_first_frames", WITH_FIRST), ("without", without_first)):

@@ -20,18 +20,16 @@ import os
 
 os.environ.setdefault("OMP_NUM_THREADS", "1")  # batched predictions of ≤ 50 rows: threads only cost
 
-import argparse  # noqa: E402
 import json  # noqa: E402
 
 import numpy as np  # noqa: E402
 from sklearn.ensemble import GradientBoostingClassifier  # noqa: E402
 
-from polymimic.baselines.evaluation import attempts_of, play  # noqa: E402
+from polymimic.baselines.evaluation import play  # noqa: E402
 from polymimic.baselines.features import features  # noqa: E402
 from polymimic.baselines.hyperparameters import FRAMES_PER_ACTION  # noqa: E402
 from polymimic.baselines.training import SAMPLE_STRIDE_FRAMES  # noqa: E402
 from polymimic.baselines.tuning import validation_attempts  # noqa: E402
-from polymimic.benchmark.rundir import BenchmarkDir  # noqa: E402
 from polymimic.datasets import load_demonstrations  # noqa: E402
 from polymimic.field import PRIMITIVES, command_primitives, primitives_sent  # noqa: E402
 from polymimic.step_names import repeat_last_good  # noqa: E402
@@ -96,17 +94,14 @@ def chosen_step(demonstrations, validation, *, max_samples: int, field_config=No
 
 
 def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("run_dir", help="a finished `polymimic benchmark` run directory")
-    parser.add_argument("--profiles", nargs="+", help="default: every profile of the run")
-    parser.add_argument("--fits", type=int, default=3, help="fit seeds 0, 1, …")
-    args = parser.parse_args()
-    run = BenchmarkDir(args.run_dir)
-    config = run.open(None)
+    # Here, not at the top: this file is also loaded by path, where benches/ is not importable.
+    from _benchmark_run import arguments, opened
+
+    args = arguments(__doc__, fits=3)
+    run, config, evaluation = opened(args.run_dir)
     settings = config.benchmark
     validation = validation_attempts(settings.validation_attempts_per_configuration,
                                      validation_seed=settings.validation_seed)
-    evaluation = attempts_of(settings.attempts_per_configuration, seed=config.seeds.evaluation)
     for profile in args.profiles or list(settings.profiles):
         demonstrations = load_demonstrations(run.crowd_path(profile))
         chosen, scores = chosen_step(demonstrations, validation, max_samples=settings.max_decision_samples,

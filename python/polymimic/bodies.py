@@ -42,7 +42,7 @@ from typing import Any, Union
 from polymimic import _native
 
 __all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Field", "Slip", "WheeledBody", "bodies_from_tables",
-           "field_of", "pitch_of"]
+           "field_of", "pitch_of", "thesis_field"]
 
 PRIMITIVE_NAMES = ("forward", "backward", "left", "right", "stop")
 FIELDS = ("large", "small")
@@ -207,7 +207,7 @@ class WheeledBody:
     def _check_fits_its_field(self) -> None:
         """The robot must fit between its start and the ball: a third of the field's length
         apart in both configurations."""
-        field = self.field if isinstance(self.field, Field) else _thesis_field(self.field)
+        field = self.field if isinstance(self.field, Field) else thesis_field(self.field)
         room_mm = field.length_mm / 3 - field.ball_diameter_mm / 2
         if self.length_mm / 2 >= room_mm or self.width_mm >= field.width_mm:
             raise ValueError(f"a {self.length_mm:g} × {self.width_mm:g} mm body does not fit the {field.length_mm:g} × "
@@ -334,8 +334,13 @@ class WheeledBody:
 
 
 @functools.cache
-def _thesis_field(name: str) -> Field:
-    """A thesis field's sizes, as the simulated field has them (its bodies play on it)."""
+def thesis_field(name: str) -> Field:
+    """A thesis field's sizes (``"large"`` or ``"small"``), as the simulated field has them (its
+    bodies play on it).
+
+    >>> thesis_field("small").length_mm, thesis_field("large").length_mm
+    (560.0, 1020.0)
+    """
     seen = _native.Episode("lego" if name == "large" else "tiny").observation()
     length_mm, width_mm = seen["field"]
     return Field(length_mm, width_mm, seen["goal_mouth_mm"], seen["ball_diameter_mm"])

@@ -53,7 +53,7 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.bodies import Field, field_of
+from polymimic.bodies import Field, field_of, thesis_field
 from polymimic.field import PRIMITIVES, Demonstration, command_primitives, command_table, primitives_sent
 from polymimic.step_names import NO_NAME, WINDOW_FRAMES, name_windows, repeat_last_good
 
@@ -76,8 +76,7 @@ CLONING_EQUIVALENTS = {"Kick Left": "forward", "Kick Right": "forward"}
 """Commands whose label for cloning is not the primitive they look like from above: a kick
 moves the ball forward, which the wheeled imitator does by driving into it."""
 
-_FIELD_LENGTH_MM = {"large": 1020.0, "small": 560.0}
-_IMITATOR_LENGTH_MM = _FIELD_LENGTH_MM["large"]
+_IMITATOR_FIELD = "large"
 _SEGMENT_LABELS = {"F": 0, "B": 1, "L": 2, "R": 3, "S": 4, **{p: i for i, p in enumerate(PRIMITIVES)}}
 
 
@@ -138,7 +137,7 @@ def onto_imitator_field(observations: np.ndarray, *, field_length_mm: float) -> 
     >>> onto_imitator_field(seen, field_length_mm=2040.0).tolist()
     [[30.0, -25.0, 0.3, 70.0, -25.0]]
     """
-    scale = _IMITATOR_LENGTH_MM / field_length_mm
+    scale = thesis_field(_IMITATOR_FIELD).length_mm / field_length_mm
     mapped = np.array(observations, dtype=np.float64)
     offset = mapped[:, [0, 1]] - mapped[:, [3, 4]]
     mapped[:, [3, 4]] *= scale
@@ -154,8 +153,9 @@ def observations_of(demo: Demonstration) -> np.ndarray:
     obs = repeat_last_good(np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
                                                                  "ball_x_mm", "ball_y_mm")]).astype(np.float64))
     field = field_of(demo.body)
-    length_mm = field.length_mm if isinstance(field, Field) else _FIELD_LENGTH_MM[field]
-    return obs if length_mm <= _IMITATOR_LENGTH_MM else onto_imitator_field(obs, field_length_mm=length_mm)
+    length_mm = (field if isinstance(field, Field) else thesis_field(field)).length_mm
+    imitator_mm = thesis_field(_IMITATOR_FIELD).length_mm
+    return obs if length_mm <= imitator_mm else onto_imitator_field(obs, field_length_mm=length_mm)
 
 
 def cloning_primitives() -> np.ndarray:

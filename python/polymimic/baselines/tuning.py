@@ -38,7 +38,7 @@ from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples
 from polymimic.field import Demonstration
 
-__all__ = ["Tuning", "tune", "validation_attempts"]
+__all__ = ["Tuning", "tune", "validation_attempts", "validation_rank"]
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -71,6 +71,12 @@ def validation_attempts(attempts_per_configuration: int, *, validation_seed: int
     """The (configuration, episode seed) of every validation attempt under ``validation_seed``."""
     seed = _check_seed(validation_seed, low=0, high=2**63 - VALIDATION_SEED_BASE, what="added to 2**62")
     return attempts_of(attempts_per_configuration, seed=VALIDATION_SEED_BASE + seed)
+
+
+def validation_rank(score: Mapping[str, Any]) -> tuple[int, int]:
+    """How :func:`tune` ranks a candidate's validation ``{"goals", "own_goals"}``: by net goals,
+    then goals (the first of the best is chosen)."""
+    return int(score["goals"]) - int(score["own_goals"]), int(score["goals"])
 
 
 def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Sequence[Hyperparameters] | None = None,
@@ -136,7 +142,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         result = play(policy, attempts, field_config=field_config)
         scores.append({"hyperparameters": _chosen(method, hyperparameters), "goals": result.goals,
                        "own_goals": result.own_goals})
-        key = (result.goals - result.own_goals, result.goals)
+        key = validation_rank(scores[-1])
         if best is None or key > best[0]:
             best = (key, index, policy)
     assert best is not None

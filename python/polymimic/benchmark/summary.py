@@ -20,6 +20,7 @@ import numpy as np
 
 from polymimic._native import __version__
 from polymimic.baselines.ppo import steps_to_reach
+from polymimic.baselines.tuning import validation_rank
 from polymimic.benchmark.config import BenchmarkConfig
 from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_tuning
 from polymimic.benchmark.rundir import BenchmarkDir
@@ -144,9 +145,8 @@ def _score(entry: Mapping[str, Any]) -> ValidationScore:
 
 
 def validation(tuning: Mapping[str, Any]) -> Validation:
-    """The chosen candidate's validation score and the runner-up's, from a saved tuning: the
-    first candidate of the best (net goals, goals) is the one chosen, as
-    :func:`polymimic.baselines.tune` chooses.
+    """The chosen candidate's validation score and the runner-up's, from a saved tuning, ranked
+    as :func:`polymimic.baselines.tune` ranks them (:func:`~polymimic.baselines.tuning.validation_rank`).
 
     >>> scores = [{"goals": 5, "own_goals": 1}, {"goals": 7, "own_goals": 1}, {"goals": 6, "own_goals": 0}]
     >>> v = validation({"scores": scores, "validation_attempts": 20})
@@ -154,8 +154,8 @@ def validation(tuning: Mapping[str, Any]) -> Validation:
     (6, 6, 3)
     """
     scores = list(tuning["scores"])
-    ranked = sorted(range(len(scores)), key=lambda i: (-(scores[i]["goals"] - scores[i]["own_goals"]),
-                                                        -scores[i]["goals"], i))
+    # A stable sort keeps the first of equals first, as tune keeps the first best.
+    ranked = sorted(range(len(scores)), key=lambda i: validation_rank(scores[i]), reverse=True)
     return Validation(attempts=int(tuning["validation_attempts"]), candidates=len(scores),
                       chosen=_score(scores[ranked[0]]),
                       runner_up=_score(scores[ranked[1]]) if len(ranked) > 1 else None)

@@ -85,6 +85,10 @@ def test_import_tracks_refuses_bad_logs_in_one_line(tmp_path, capsys, monkeypatc
         (["import-tracks", str(log), "--as", "al/ice", "--out", str(tmp_path / "a.parquet")], "letters, digits"),
         (["import-tracks", str(log), "--as", "alice", "--column", "robot_x", "--out", str(tmp_path / "a.parquet")],
          "expected polymimic_name=file_column"),
+        (["import-tracks", str(log), "--as", "alice", "--length-unit", "m", "--max-gap-s", "-1", "--out",
+          str(tmp_path / "a.parquet")], "max_gap_s must be a finite number"),
+        (["import-tracks", str(log), "--as", "alice", "--length-unit", "m", "--max-gap-s", "nan", "--out",
+          str(tmp_path / "a.parquet")], "max_gap_s must be a finite number"),
     ]
     for argv, message in cases:
         assert cli.main(argv) == 2

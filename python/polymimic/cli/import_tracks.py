@@ -34,6 +34,9 @@ def add(commands: Any) -> None:
         tracks.add_argument(option, dest=f"{quantity}_unit", choices=list(UNITS[quantity]),
                             help=f"the log's {quantity} unit (default {next(iter(UNITS[quantity]))})")
     tracks.add_argument("--rate-hz", type=float, help="the log's nominal rate, checked against its timestamps")
+    tracks.add_argument("--max-gap-s", type=float, metavar="SECONDS",
+                        help="the longest lapse in tracking (no reading, or NaN readings) bridged by interpolation "
+                             "(default: a pause of three reading periods at most, and no NaN reading)")
     tracks.add_argument("--configuration", type=int, choices=(1, 2), help="every episode's field configuration "
                                                                           "(default: the log's, else inferred)")
     tracks.add_argument("--column", action="append", default=[], metavar="NAME=FILE_COLUMN",
@@ -84,7 +87,7 @@ def _import_tracks(args: argparse.Namespace) -> int:
             warnings.simplefilter("ignore", LostTrackingWarning)  # the summary line says which were invalid
             imported = import_tracks(args.file, demonstrator=args.name, columns=columns, units=units,
                                      rate_hz=args.rate_hz, body=body, configuration=args.configuration,
-                                     ignore=args.ignore)
+                                     ignore=args.ignore, max_gap_s=args.max_gap_s)
     except (TrackLogError, OSError, ValueError, TypeError) as error:  # the log or the options: bad input, named
         raise RunError(str(error)) from error
     if not imported.demonstrations:

@@ -6,6 +6,14 @@ the ball moving more than :data:`RESET_SHARE` of the field's length from one rea
 (a reset: at 30 readings a second that would be over 7 m/s on the large field). Inside an
 episode, a stretch of NaN readings, or no reading for more than :data:`LOST_PERIODS` nominal
 periods, is lost tracking: the episode is invalid (SPEC §3.2.1).
+
+Real trackers drop frames, so a longest gap may be given instead (``max_gap_s``,
+:func:`bridged_gaps`): a gap (a pause, or a run of readings with a NaN, the robot's or the
+ball's alike) lasting at most that long is bridged by the resampling's interpolation, and a
+longer one is lost tracking. Gaps do not change how a log is cut into episodes: without an
+episode column a pause of more than :data:`EPISODE_GAP_S` still starts a new episode, and a run
+of NaN readings that long, or one across which the robot or the ball moved as far as a reset,
+is never bridged (it may hide the experimenter's hand).
 """
 
 from __future__ import annotations
@@ -20,8 +28,8 @@ from polymimic.tracks.errors import TrackLogError
 from polymimic.tracks.reading import Log
 from polymimic.tracks.units import REQUIRED, UNITS, unit_hint
 
-__all__ = ["EPISODE_GAP_S", "LOST_PERIODS", "RESET_SHARE", "Stretch", "lost_tracking", "nominal_period_s",
-           "split_episodes"]
+__all__ = ["EPISODE_GAP_S", "LOST_PERIODS", "RESET_SHARE", "Stretch", "bridged_gaps", "lost_tracking",
+           "nominal_period_s", "split_episodes"]
 
 EPISODE_GAP_S = 0.5
 """Without an episode column, a longer pause between two readings starts a new episode."""
@@ -102,9 +110,7 @@ def lost_tracking(log: Log, stretch: Stretch, period_s: float) -> str | None:
     :data:`LOST_PERIODS` periods), or ``None`` if it was tracked throughout."""
     rows = slice(stretch.start, stretch.stop)
     t_s = log.measured["t"][rows]
-    unseen = np.zeros(len(t_s), dtype=bool)
-    for name in REQUIRED[1:]:
-        unseen |= np.isnan(log.measured[name][rows])
+    unseen = _unseen(log, rows)
     gaps = np.flatnonzero(np.diff(t_s) > LOST_PERIODS * period_s)
     first_unseen = int(np.argmax(unseen)) if unseen.any() else len(t_s)
     first_gap = int(gaps[0]) if gaps.size else len(t_s)
@@ -116,6 +122,89 @@ def lost_tracking(log: Log, stretch: Stretch, period_s: float) -> str | None:
                 f"no {', '.join(columns)})")
     return (f"lost tracking at {t_s[first_gap] - t_s[0]:.2f} s (no reading for "
             f"{t_s[first_gap + 1] - t_s[first_gap]:.2f} s after data row {stretch.start + first_gap + 1})")
+
+
+def bridged_gaps(log: Log, stretch: Stretch, period_s: float, max_gap_s: float, *,
+                 field_length_mm: float) -> tuple[int, str | None]:
+    """How many gaps inside ``stretch`` interpolation bridges when gaps of up to ``max_gap_s``
+    are allowed, and why the stretch is invalid (its first gap that is not bridged) or ``None``.
+
+    A gap is what :func:`lost_tracking` calls lost tracking: a run of readings with a NaN, or
+    no reading for more than :data:`LOST_PERIODS` periods. It lasts from the last reading with
+    every value before it to the first one after. It is bridged if it lasts at most
+    ``max_gap_s`` and, in a log without an episode column, at most :data:`EPISODE_GAP_S` with
+    neither the robot nor the ball moving more than :data:`RESET_SHARE` of ``field_length_mm``
+    across it (either would cut an episode there, were it a pause). NaN readings at the start or
+    the end of the episode have no reading beyond them to interpolate from: never bridged. A
+    pause longer than ``max_gap_s`` is lost tracking, gap or not.
+    """
+    rows = slice(stretch.start, stretch.stop)
+    t_s = log.measured["t"][rows]
+    known = np.flatnonzero(~_unseen(log, rows))
+    if known.size == 0 or known[0] > 0:
+        last = len(t_s) if known.size == 0 else int(known[0])
+        return 0, _unseen_reason(log, stretch, 0, last, "at the episode's start, no reading before to interpolate from")
+    spans_s = np.diff(t_s[known])
+    gaps = (np.diff(known) > 1) | (spans_s > LOST_PERIODS * period_s)
+    reset_mm = RESET_SHARE * field_length_mm if "episode" not in log.labels else None
+    for i in np.flatnonzero(gaps | (spans_s > max_gap_s)):
+        before, after = stretch.start + int(known[i]), stretch.start + int(known[i + 1])
+        why = _not_bridged(log, before, after, max_gap_s, reset_mm)
+        if why is not None:
+            return 0, _gap_reason(log, stretch, before, after, why)
+    if known[-1] < len(t_s) - 1:
+        return 0, _unseen_reason(log, stretch, int(known[-1]) + 1, len(t_s),
+                                 "at the episode's end, no reading after to interpolate from")
+    return int(gaps.sum()), None
+
+
+def _unseen(log: Log, rows: slice) -> np.ndarray:
+    """Which of ``rows`` lack a value (NaN) in any measured column."""
+    unseen = np.zeros(len(log.measured["t"][rows]), dtype=bool)
+    for name in REQUIRED[1:]:
+        unseen |= np.isnan(log.measured[name][rows])
+    return unseen
+
+
+def _not_bridged(log: Log, before: int, after: int, max_gap_s: float, reset_mm: float | None) -> str | None:
+    """Why the gap between rows ``before`` and ``after`` (readings with every value) is not
+    bridged, or ``None``; ``reset_mm`` for a log cut into episodes by pauses and resets."""
+    m = log.measured
+    span_s = m["t"][after] - m["t"][before]
+    if span_s > max_gap_s:
+        return f"longer than max_gap_s={max_gap_s:g}"
+    if reset_mm is None:
+        return None
+    if span_s > EPISODE_GAP_S:
+        return f"longer than the {EPISODE_GAP_S:g} s pause that starts an episode in a log without an episode column"
+    moved_mm = max(math.hypot(m[x][after] - m[x][before], m[y][after] - m[y][before])
+                   for x, y in (("robot_x", "robot_y"), ("ball_x", "ball_y")))
+    if moved_mm > reset_mm:
+        return (f"the robot or the ball moved {moved_mm:.0f} mm across it, as far as a reset by hand (over "
+                f"{RESET_SHARE:.0%} of the field's length)")
+    return None
+
+
+def _gap_reason(log: Log, stretch: Stretch, before: int, after: int, why: str) -> str:
+    """Lost tracking between rows ``before`` and ``after``, worded as :func:`lost_tracking` does."""
+    t_s = log.measured["t"]
+    span_s = t_s[after] - t_s[before]
+    if after == before + 1:
+        return (f"lost tracking at {t_s[before] - t_s[stretch.start]:.2f} s (no reading for {span_s:.2f} s after data "
+                f"row {before + 1}, {why})")
+    return _unseen_reason(log, stretch, before + 1 - stretch.start, after - stretch.start,
+                          f"{span_s:.2f} s between readings, {why}")
+
+
+def _unseen_reason(log: Log, stretch: Stretch, first: int, stop: int, why: str) -> str:
+    """Lost tracking over the stretch's readings ``first`` to ``stop`` (indices within it), each
+    with a NaN: the rows and the columns without values."""
+    rows = slice(stretch.start + first, stretch.start + stop)
+    columns = [log.file_names[n] for n in REQUIRED[1:] if np.isnan(log.measured[n][rows]).any()]
+    named = (f"data row {rows.start + 1}" if stop - first == 1 else f"data rows {rows.start + 1}–{rows.stop}")
+    t_s = log.measured["t"]
+    return (f"lost tracking at {t_s[rows.start] - t_s[stretch.start]:.2f} s ({named}: no {', '.join(columns)}; "
+            f"{why})")
 
 
 def _check_times_known(log: Log) -> None:

@@ -24,7 +24,7 @@ from polymimic._arguments import integer
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelResult, SegmentedDemonstrations, TrialResult
 from polymimic._toml import loads, write_value
-from polymimic.bodies import pitch_of
+from polymimic.bodies import WheeledBody, pitch_of, resolve
 from polymimic.field import Demonstration, _field_config, as_frames, record
 
 __all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
@@ -178,7 +178,8 @@ def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRe
 
 
 class ImitatorPolicy(_native.ImitatorPolicy):
-    """The imitator's final model driving the Lego robot.
+    """The imitator's final model driving ``body`` (by default the thesis's Lego robot; any
+    built-in body's name or a :class:`polymimic.bodies.WheeledBody`) on that body's field.
 
     ``control="thesis"`` is the thesis's rule (§3.4): behaviours whose preconditions hold
     (else all) predict their outcome with their own ball statistics, and the best by the
@@ -196,7 +197,10 @@ class ImitatorPolicy(_native.ImitatorPolicy):
     than through it. With ``config.imitator_weighting == "lp"`` what the improved control learns
     from a demonstration weighs its demonstrator's final LP relative to the best in ``trial``
     (see :class:`LearningConfig`); a demonstration whose demonstrator has no model in ``trial``
-    is a ``ValueError`` naming it.
+    is a ``ValueError`` naming it. The improved control learns the ball's response from the
+    demonstrations played on the imitator's own field; if none was, that is a ``ValueError``.
+    The motion of each primitive is the recogniser's (learned from the imitator's own
+    self-observation: give it the recogniser of the body it drives).
 
     The policy itself is the compiled one; this class only segments recordings it is given.
     """
@@ -205,12 +209,13 @@ class ImitatorPolicy(_native.ImitatorPolicy):
 
     def __new__(cls, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
                 config: LearningConfig | None = None, control: str = "thesis",
-                demonstrations: Demonstrations | None = None) -> ImitatorPolicy:
+                demonstrations: Demonstrations | None = None,
+                body: str | WheeledBody = "lego") -> ImitatorPolicy:
         batch = None
         if demonstrations is not None and control == "improved":
             batch = as_segmented(demonstrations, recognizer)
         return super().__new__(cls, trial, recognizer=recognizer, config=config, control=control,
-                               demonstrations=batch)
+                               demonstrations=batch, body=resolve(body))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -227,19 +232,20 @@ class Evaluation:
 def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0,
              field_config: dict[str, Any] | str | None = None) -> Evaluation:
     """``attempts_per_configuration`` attempts from each field configuration, in parallel, on the
-    field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's)."""
+    field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's),
+    with the policy's body; the attempts are recorded as that body's."""
     attempts_per_configuration = integer("attempts_per_configuration", attempts_per_configuration, 1)
     seed = integer("seed", seed, 0, 2**64 - 1)
     raw = policy.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
-    attempts = _attempts(raw, "imitator")
+    attempts = _attempts(raw, "imitator", body=policy.body)
     return Evaluation(goals=sum(a.outcome == "goal" for a in attempts),
                       own_goals=sum(a.outcome == "own_goal" for a in attempts), attempts=attempts,
                       behaviours=[a["behaviours"] for a in raw])
 
 
-def _attempts(raw: list[dict[str, Any]], demonstrator: str) -> list[Demonstration]:
+def _attempts(raw: list[dict[str, Any]], demonstrator: str, *, body: str = "lego") -> list[Demonstration]:
     return [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator=demonstrator,
-                          configuration=a["configuration"], seed=a["seed"], body="lego") for a in raw]
+                          configuration=a["configuration"], seed=a["seed"], body=body) for a in raw]
 
 
 def spare_attempts(n: int) -> int:

@@ -7,14 +7,13 @@
 
 use std::borrow::Borrow;
 
-use polymimic_field::{Configuration, FieldConfig, Frame};
+use polymimic_field::{BodyKind, Configuration, FieldConfig, Frame};
 
 use crate::config::LearningConfig;
 use crate::control::{Attempt, ControlMode, ImitatorPolicy};
 use crate::laboratory::LaboratoryError;
 use crate::prediction::MotionTable;
 use crate::round::{Ending, SegmentedDemonstration};
-use crate::state::Pitch;
 use crate::trial::TrialResult;
 
 /// Attempts made beyond those needed, to stand in for any whose tracking is lost.
@@ -94,7 +93,7 @@ impl AverageSearch<'_> {
                 model: &trial.borrow().imitator,
                 motion: self.motion,
                 config: self.config,
-                pitch: Pitch::LARGE,
+                body: BodyKind::Lego,
                 mode: ControlMode::Thesis,
                 world: None,
             };

@@ -8,8 +8,9 @@
 //! primitive by primitive, stopping early if the next primitive would take the robot off the
 //! field.
 
+use polymimic_field::controller::primitive_command;
 use polymimic_field::{
-    BodyKind, Command, Configuration, Episode, EpisodeSetup, FieldConfig, FieldError, Frame, Outcome, derive_seed,
+    BodyKind, Configuration, Episode, EpisodeSetup, FieldConfig, FieldError, Frame, Outcome, derive_seed,
 };
 use polymimic_types::{Primitive, TrackedFrame};
 use rand::SeedableRng;
@@ -62,12 +63,13 @@ pub enum ControlMode {
     Improved,
 }
 
-/// The imitator's model with what it needs to predict.
+/// The imitator's model with what it needs to predict, and the body it drives (on that body's
+/// field: [`Self::pitch`]).
 pub struct ImitatorPolicy<'a> {
     pub model: &'a ForwardModel,
     pub motion: &'a MotionTable,
     pub config: &'a LearningConfig,
-    pub pitch: Pitch,
+    pub body: BodyKind,
     pub mode: ControlMode,
     /// What the improved mode predicts and rates with (without it the ball is predicted to
     /// stay and every state is safe).
@@ -75,16 +77,22 @@ pub struct ImitatorPolicy<'a> {
 }
 
 impl ImitatorPolicy<'_> {
+    /// The field the imitator's body plays on.
+    #[must_use]
+    pub const fn pitch(&self) -> Pitch {
+        Pitch::of_body(self.body)
+    }
+
     /// The behaviour to execute next from `state`, by the thesis's rule; `None` if every
     /// behaviour's first primitive would leave the field.
     pub fn choose(&self, state: &TrackedFrame, rng: &mut ChaCha8Rng) -> Option<usize> {
         let behaviours = &self.model.behaviours;
         let mut stays = |i: &usize| {
             let first = self.motion.step(state.robot, behaviours[*i].primitives[0], f64::INFINITY, rng);
-            self.pitch.contains(first.x_mm(), first.y_mm())
+            self.pitch().contains(first.x_mm(), first.y_mm())
         };
         let mut candidates: Vec<usize> = (0..behaviours.len())
-            .filter(|&i| behaviours[i].applies_to(state, &self.pitch))
+            .filter(|&i| behaviours[i].applies_to(state, &self.pitch()))
             .filter(&mut stays)
             .collect();
         if candidates.is_empty() {
@@ -110,13 +118,13 @@ impl ImitatorPolicy<'_> {
         let ball = prediction.ball_position().unwrap_or((state.ball_x_mm, state.ball_y_mm));
         let after = TrackedFrame { robot: prediction.end(), ball_x_mm: ball.0, ball_y_mm: ball.1 };
         let (bx, by) = ball;
-        if self.pitch.in_target_goal(bx, by) {
+        if self.pitch().in_target_goal(bx, by) {
             return (config.lp_goal, 0.0);
         }
-        if self.pitch.in_own_goal(bx, by) {
+        if self.pitch().in_own_goal(bx, by) {
             return (-config.lp_goal, 0.0);
         }
-        let score = approach_shaping(state, &after, &self.pitch, config);
+        let score = approach_shaping(state, &after, &self.pitch(), config);
         (score, robot_to_ball_mm(state) - robot_to_ball_mm(&after))
     }
 }
@@ -138,7 +146,7 @@ impl ImitatorPolicy<'_> {
                 },
             )?;
         let approach = self.world.and_then(|w| w.approach.as_ref()).filter(|_| rating.goal <= 0.0);
-        approach.and_then(|plan| plan.next(state, self.motion, &self.pitch)).or(Some(behaviours[best].primitives[0]))
+        approach.and_then(|plan| plan.next(state, self.motion, &self.pitch())).or(Some(behaviours[best].primitives[0]))
     }
 
     /// Every behaviour's rated outcome from `state` (see [`Self::walk`]), by index; `tree` holds
@@ -178,13 +186,13 @@ impl ImitatorPolicy<'_> {
         let mut settle =
             |behaviours: &[usize], rating: Option<Rating>| behaviours.iter().for_each(|&b| ratings[b] = rating);
         let robot = self.motion.step(now.robot, primitive, f64::INFINITY, &mut rng);
-        if !self.pitch.contains(robot.x_mm(), robot.y_mm()) {
+        if !self.pitch().contains(robot.x_mm(), robot.y_mm()) {
             settle(&here.below, (depth > 0).then(|| self.rate_end(start, &now, depth)));
             return;
         }
         let ball = self.world.map_or((now.ball_x_mm, now.ball_y_mm), |w| w.ball_response.predict(&now, primitive));
         let next = TrackedFrame { robot, ball_x_mm: ball.0, ball_y_mm: ball.1 };
-        if self.pitch.in_target_goal(ball.0, ball.1) || self.pitch.in_own_goal(ball.0, ball.1) {
+        if self.pitch().in_target_goal(ball.0, ball.1) || self.pitch().in_own_goal(ball.0, ball.1) {
             settle(&here.below, Some(self.rate_end(start, &next, depth + 1)));
             return;
         }
@@ -202,7 +210,7 @@ impl ImitatorPolicy<'_> {
     /// then millimetres the robot comes nearer the ball.
     fn rate_end(&self, start: &TrackedFrame, end: &TrackedFrame, primitives: usize) -> Rating {
         let value = self.world.map_or(0.0, |w| w.state_value.estimate(end));
-        Rating::of(start, end, value, primitives, &self.pitch, self.config)
+        Rating::of(start, end, value, primitives, &self.pitch(), self.config)
     }
 }
 
@@ -272,12 +280,13 @@ fn tracked(episode: &Episode, last_ball: &mut (f64, f64)) -> TrackedFrame {
 }
 
 impl ImitatorPolicy<'_> {
-    /// One attempt from `configuration` with the Lego robot.
+    /// One attempt from `configuration` with the imitator's body (a primitive runs as
+    /// [`primitive_command`] has the body execute it).
     ///
     /// # Errors
     /// A field configuration that does not validate.
     pub fn attempt(&self, configuration: Configuration, field: &FieldConfig, seed: u64) -> Result<Attempt, FieldError> {
-        let setup = EpisodeSetup::configuration(BodyKind::Lego, configuration, field);
+        let setup = EpisodeSetup::configuration(self.body, configuration, field);
         let mut episode = Episode::new(&setup, field, seed)?;
         let mut rng = ChaCha8Rng::seed_from_u64(derive_seed(seed, 7, 0));
         let mut last_ball = setup.ball.map_or((0.0, 0.0), |b| (b.x_mm(), b.y_mm()));
@@ -290,12 +299,12 @@ impl ImitatorPolicy<'_> {
             if let Some(tree) = &tree {
                 let primitive = self.choose_primitive(tree, &state).unwrap_or(Primitive::Stop);
                 executed.push(primitive.letter().to_string());
-                run_primitive(&mut episode, primitive)?;
+                run_primitive(&mut episode, primitive, self.body)?;
                 continue;
             }
             let Some(index) = self.choose(&state, &mut rng) else {
                 // Nothing can move without leaving the field: wait a second.
-                run_primitive(&mut episode, Primitive::Stop)?;
+                run_primitive(&mut episode, Primitive::Stop, self.body)?;
                 continue;
             };
             let behaviour = &self.model.behaviours[index];
@@ -306,10 +315,10 @@ impl ImitatorPolicy<'_> {
                 }
                 let now = tracked(&episode, &mut last_ball).robot;
                 let next = self.motion.step(now, primitive, f64::INFINITY, &mut rng);
-                if k > 0 && !self.pitch.contains(next.x_mm(), next.y_mm()) {
+                if k > 0 && !self.pitch().contains(next.x_mm(), next.y_mm()) {
                     break;
                 }
-                run_primitive(&mut episode, primitive)?;
+                run_primitive(&mut episode, primitive, self.body)?;
             }
         }
         let outcome = episode.outcome().unwrap_or(Outcome::TimeUp);
@@ -347,12 +356,13 @@ pub fn attempt_seeds(attempts_per_configuration: usize, seed: u64) -> Vec<(Confi
         .collect()
 }
 
-fn run_primitive(episode: &mut Episode, primitive: Primitive) -> Result<(), FieldError> {
+fn run_primitive(episode: &mut Episode, primitive: Primitive, body: BodyKind) -> Result<(), FieldError> {
+    let command = primitive_command(primitive, body);
     for _ in 0..FRAMES_PER_PRIMITIVE {
         if episode.is_finished() {
             break;
         }
-        episode.step(Command::Primitive(primitive))?;
+        episode.step(command)?;
     }
     Ok(())
 }
@@ -373,7 +383,7 @@ mod tests {
             let mut chained = 0;
             for (k, &primitive) in self.model.behaviours[index].primitives.iter().enumerate() {
                 let robot = self.motion.step(now.robot, primitive, f64::INFINITY, &mut rng);
-                if !self.pitch.contains(robot.x_mm(), robot.y_mm()) {
+                if !self.pitch().contains(robot.x_mm(), robot.y_mm()) {
                     if k == 0 {
                         return None;
                     }
@@ -383,7 +393,7 @@ mod tests {
                     self.world.map_or((now.ball_x_mm, now.ball_y_mm), |w| w.ball_response.predict(&now, primitive));
                 now = TrackedFrame { robot, ball_x_mm: ball.0, ball_y_mm: ball.1 };
                 chained = k + 1;
-                if self.pitch.in_target_goal(ball.0, ball.1) || self.pitch.in_own_goal(ball.0, ball.1) {
+                if self.pitch().in_target_goal(ball.0, ball.1) || self.pitch().in_own_goal(ball.0, ball.1) {
                     break;
                 }
             }
@@ -427,7 +437,7 @@ mod tests {
             model: &trial.imitator,
             motion: &lab.motion,
             config: &lab.config,
-            pitch: Pitch::LARGE,
+            body: BodyKind::Lego,
             mode: ControlMode::Improved,
             world: Some(&world),
         };

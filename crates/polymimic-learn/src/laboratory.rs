@@ -3,7 +3,9 @@
 //! the trained imitators scored on the field. Python's `polymimic.experiments` orchestrates the
 //! same steps at scale; this is the quick path for studying learning itself.
 
-use polymimic_field::{Demonstrator, FieldConfig, FieldError, Frame, LapseRate, Outcome, record_all, self_observation};
+use polymimic_field::{
+    BodyKind, Demonstrator, FieldConfig, FieldError, Frame, LapseRate, Outcome, record_all, self_observation,
+};
 use polymimic_perceive::{LabelledSequence, PerceiveError, Recognizer, RecognizerConfig, SegmenterConfig, segment};
 use polymimic_types::TrackedFrame;
 use thiserror::Error;
@@ -154,7 +156,7 @@ impl Laboratory {
             model: &trial.imitator,
             motion: &self.motion,
             config: &self.config,
-            pitch: Pitch::LARGE,
+            body: BodyKind::Lego,
             mode,
             world: Some(world),
         };

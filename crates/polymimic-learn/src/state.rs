@@ -1,5 +1,6 @@
 //! The field as learning sees it: the robot's pose and the ball, on a pitch of known size.
 
+use polymimic_field::BodyKind;
 use polymimic_types::{Pose, TrackedFrame, wrap_angle_euclid_rad};
 use serde::{Deserialize, Serialize};
 
@@ -17,6 +18,13 @@ impl Pitch {
     /// The thesis's fields: their mouths are half their width.
     pub const LARGE: Self = Self { length_mm: 1020.0, width_mm: 810.0, goal_mouth_mm: 405.0 };
     pub const SMALL: Self = Self { length_mm: 560.0, width_mm: 345.0, goal_mouth_mm: 172.5 };
+
+    /// The field `body` plays on.
+    #[must_use]
+    pub const fn of_body(body: BodyKind) -> Self {
+        let field = body.field();
+        Self { length_mm: field.length_mm, width_mm: field.width_mm, goal_mouth_mm: field.goal_mouth_mm }
+    }
 
     /// A pitch from its sizes as JSON (`{"length_mm", "width_mm", "goal_mouth_mm"}`), if they
     /// are all there, nothing else is, and they are valid.

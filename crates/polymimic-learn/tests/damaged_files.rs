@@ -4,7 +4,7 @@
 //! nominated behaviours with statistics.
 
 use polymimic_damage::{arbitrary, config, flipped, reshaped, truncated};
-use polymimic_field::{Configuration, FieldConfig};
+use polymimic_field::{BodyKind, Configuration, FieldConfig};
 use polymimic_learn::{
     ControlMode, ForwardModel, ImitatorPolicy, LearningConfig, LpBounds, LpCause, MotionTable, Pitch,
 };
@@ -79,7 +79,7 @@ fn short_field() -> FieldConfig {
 fn drive(model: &ForwardModel, config: &LearningConfig) -> Result<(), TestCaseError> {
     let motion = motion_table();
     for mode in [ControlMode::Thesis, ControlMode::Improved] {
-        let policy = ImitatorPolicy { model, motion: &motion, config, pitch: Pitch::LARGE, mode, world: None };
+        let policy = ImitatorPolicy { model, motion: &motion, config, body: BodyKind::Lego, mode, world: None };
         let mut rng = ChaCha8Rng::seed_from_u64(5);
         if let Some(index) = policy.choose(&frame(-150.0, 0.0, 150.0), &mut rng) {
             prop_assert!(index < model.behaviours.len());

@@ -1,7 +1,8 @@
-//! `polymimic.ImitatorPolicy`: a trial's imitator driving the Lego robot on the field.
+//! `polymimic.ImitatorPolicy`: a trial's imitator driving its body on the field.
 
 use std::sync::Arc;
 
+use polymimic_field::BodyKind;
 use polymimic_learn::{
     Attempt, ControlMode, ForwardModel, ImitatorPolicy, ImitatorWeighting, LearningConfig, MotionTable, Pitch,
     WorldModel, demonstration_weights,
@@ -14,6 +15,7 @@ use super::config::{PyLearningConfig, config_or_default, weighting_name};
 use super::motion_table;
 use super::segments::batch;
 use super::trial::PyTrialResult;
+use crate::bodies::Body;
 use crate::convert::{non_negative, one_of};
 use crate::perceive::PyPrimitiveRecognizer;
 
@@ -33,7 +35,7 @@ pub(crate) fn attempt_list<'py>(py: Python<'py>, attempts: &[Attempt]) -> PyResu
     Ok(out)
 }
 
-/// The imitator's final model driving the Lego robot.
+/// The imitator's final model driving ``body`` (default the Lego robot) on that body's field.
 ///
 /// ``control="thesis"`` is the thesis's rule (§3.4): behaviours whose preconditions hold
 /// (else all) predict their outcome with their own ball statistics, and the best by the
@@ -43,13 +45,15 @@ pub(crate) fn attempt_list<'py>(py: Python<'py>, attempts: &[Attempt]) -> PyResu
 /// scoring demonstrations pushed from, and chooses again after every primitive. With
 /// ``config.imitator_weighting == "lp"`` each demonstration's samples weigh
 /// ``LP / max LP`` of its demonstrator's model in ``trial`` (the final LPs); a demonstration
-/// whose demonstrator has no model there is a ``ValueError``.
+/// whose demonstrator has no model there is a ``ValueError``. The improved control learns the
+/// ball's response from the demonstrations played on the imitator's field only.
 #[pyclass(name = "ImitatorPolicy", module = "polymimic", frozen, subclass)]
 pub struct PyImitatorPolicy {
     model: Arc<ForwardModel>,
     motion: MotionTable,
     config: LearningConfig,
     mode: ControlMode,
+    body: BodyKind,
     /// Shared by the policies [`Self::for_trial`] makes from this one.
     world: Option<Arc<WorldModel>>,
 }
@@ -57,7 +61,7 @@ pub struct PyImitatorPolicy {
 #[pymethods]
 impl PyImitatorPolicy {
     #[new]
-    #[pyo3(signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None))]
+    #[pyo3(signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None, body=Body(BodyKind::Lego)))]
     fn new(
         py: Python<'_>,
         trial: &PyTrialResult,
@@ -65,7 +69,10 @@ impl PyImitatorPolicy {
         config: Option<&Bound<'_, PyLearningConfig>>,
         control: &str,
         demonstrations: Option<&Bound<'_, PyAny>>,
+        body: Body,
     ) -> PyResult<Self> {
+        let body = body.0;
+        let pitch = Pitch::of_body(body);
         let mode =
             one_of("control mode", control, &[("thesis", ControlMode::Thesis), ("improved", ControlMode::Improved)])?;
         let model = trial.imitator_forward_model()?;
@@ -80,10 +87,13 @@ impl PyImitatorPolicy {
             }
             (ControlMode::Improved, Some(items)) => {
                 let demos = batch(items)?;
-                if !demos.iter().any(|d| d.pitch == Pitch::LARGE) {
-                    return Err(PyValueError::new_err(
-                        "demonstrations: none was played on the imitator's (large) field, so there is nothing to learn the ball's response from",
-                    ));
+                if !demos.iter().any(|d| d.pitch == pitch) {
+                    return Err(PyValueError::new_err(format!(
+                        "demonstrations: none was played on the imitator's field (the {} body's, {} × {} mm), so there is nothing to learn the ball's response from",
+                        body.name(),
+                        pitch.length_mm,
+                        pitch.width_mm
+                    )));
                 }
                 let weights = match config.imitator_weighting {
                     ImitatorWeighting::Even => Vec::new(),
@@ -94,12 +104,10 @@ impl PyImitatorPolicy {
                             .map_err(crate::errors::learn_params_error)?
                     }
                 };
-                Some(Arc::new(
-                    py.detach(|| WorldModel::learn_weighted(&demos, &weights, &Pitch::LARGE, &motion, &config)),
-                ))
+                Some(Arc::new(py.detach(|| WorldModel::learn_weighted(&demos, &weights, &pitch, &motion, &config))))
             }
         };
-        Ok(Self { model, motion, config, mode, world })
+        Ok(Self { model, motion, config, mode, body, world })
     }
 
     /// Attempts from each configuration; one dict per attempt with `frames`, `outcome`,
@@ -118,7 +126,7 @@ impl PyImitatorPolicy {
             model: &self.model,
             motion: &self.motion,
             config: &self.config,
-            pitch: Pitch::LARGE,
+            body: self.body,
             mode: self.mode,
             world: self.world.as_deref(),
         };
@@ -145,6 +153,7 @@ impl PyImitatorPolicy {
             motion: self.motion.clone(),
             config: self.config.clone(),
             mode: self.mode,
+            body: self.body,
             world: self.world.clone(),
         })
     }
@@ -158,12 +167,23 @@ impl PyImitatorPolicy {
         }
     }
 
+    /// The name of the body the imitator drives.
+    #[getter]
+    fn body(&self) -> &'static str {
+        self.body.name()
+    }
+
     /// How many behaviours the model holds.
     fn __len__(&self) -> usize {
         self.model.behaviours.len()
     }
 
     fn __repr__(&self) -> String {
-        format!("ImitatorPolicy(control={:?}, behaviours={})", self.control(), self.model.behaviours.len())
+        format!(
+            "ImitatorPolicy(control={:?}, body={:?}, behaviours={})",
+            self.control(),
+            self.body(),
+            self.model.behaviours.len()
+        )
     }
 }

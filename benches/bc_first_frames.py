@@ -1,12 +1,14 @@
-"""Whether a cloned policy needs each demonstration's first frame among its decision samples,
-measured on a finished benchmark run's crowds.
+"""Whose first frames a cloned policy should take among its decision samples, measured on a
+finished benchmark run's crowds.
 
 ``bc`` with fixed hyperparameters (histogram gradient boosting, ball-relative features, 15
 frames a step, unbalanced) is fitted under ``--fits`` seeds with the decision samples
-:func:`polymimic.baselines.training.sample_rows` draws (each demonstration's first frame, then
-every stride-th from a drawn frame) and with the same samples less the first frames, and plays
-the run's evaluation attempts. Prints one JSON line per profile and way: net goals per fit.
-Run: ``python benches/bc_first_frames.py RUN_DIR [--profiles one_good half] [--fits 8]``.
+:func:`polymimic.baselines.training.sample_rows` draws (every stride-th frame from a drawn one)
+and three ways with the demonstrations' first frames: those of the imitator's own body only
+(the rule), every demonstration's, and none. Each fit plays the run's evaluation attempts.
+Prints one JSON line per profile and way: net goals per fit. A crowd of the imitator's body
+alone gives the same samples the first two ways. Run:
+``python benches/bc_first_frames.py RUN_DIR [--profiles one_good half] [--fits 8]``.
 """
 
 import os
@@ -25,12 +27,17 @@ from polymimic.datasets import load_demonstrations  # noqa: E402
 
 CHOSEN = Hyperparameters("hist_gradient_boosting", (("learning_rate", 0.1), ("max_iter", 100), ("max_leaf_nodes", 31)),
                          "ball_relative", 15, False)
-WITH_FIRST = training.sample_rows
+RULE = training.sample_rows
 
 
-def without_first(demonstrations, **kwargs):
-    """The frames :func:`~polymimic.baselines.training.sample_rows` draws, less each first frame."""
-    return [rows[1:] for rows in WITH_FIRST(demonstrations, **kwargs)]
+def every_demonstrations(demonstrations, **kwargs):
+    """The frames :func:`~polymimic.baselines.training.sample_rows` draws with every first frame."""
+    return RULE(demonstrations, **{**kwargs, "first_frames": [True] * len(demonstrations)})
+
+
+def no_demonstrations(demonstrations, **kwargs):
+    """The frames :func:`~polymimic.baselines.training.sample_rows` draws with no first frame."""
+    return RULE(demonstrations, **{**kwargs, "first_frames": [False] * len(demonstrations)})
 
 
 def main() -> None:
@@ -39,7 +46,8 @@ def main() -> None:
     settings = config.benchmark
     for profile in args.profiles or list(settings.profiles):
         items = command_labels(load_demonstrations(run.crowd_path(profile)))
-        for way, rows in (("with_first_frames", WITH_FIRST), ("without", without_first)):
+        for way, rows in (("own_body_first_frames", RULE), ("every_first_frame", every_demonstrations),
+                          ("no_first_frame", no_demonstrations)):
             training.sample_rows = rows  # decision_samples looks it up when called
             nets = []
             for seed in range(args.fits):
@@ -49,7 +57,7 @@ def main() -> None:
                 nets.append(played.goals - played.own_goals)
             print(json.dumps({"profile": profile, "way": way, "net": nets, "net_mean": statistics.mean(nets)}),
                   flush=True)
-    training.sample_rows = WITH_FIRST
+    training.sample_rows = RULE
 
 
 if __name__ == "__main__":

@@ -446,6 +446,23 @@ def test_max_samples_widens_the_stride_evenly():
     assert BenchmarkSettings().max_decision_samples == MAX_DECISION_SAMPLES
 
 
+def test_only_the_imitators_own_body_gives_its_first_frame():
+    from polymimic.baselines.labels import Labelled
+    from polymimic.baselines.training import decision_samples, sample_rows
+
+    # Frame k of each item holds k; the first frame is 0, and a strided sample never is.
+    items = [Labelled(f"d_{body}", np.tile(np.arange(300.0)[:, None], (1, 5)), np.zeros(300, dtype=np.int64),
+                      body=body) for body in ("lego", "tiny", "humanoid")]
+    X, _, _ = decision_samples(items, seed=4)
+    starts = X[X[:, 0] == 0.0]
+    assert len(starts) == 1  # the Lego's alone
+    named = [(item.demonstrator, 300) for item in items]
+    with_all = sample_rows(named, seed=4)
+    assert sum(len(rows) for rows in with_all) == len(X) + 2  # the same strided frames, two first frames more
+    with pytest.raises(ValueError, match=r"first_frames must hold one flag per demonstration \(3\), got 2"):
+        sample_rows(named, first_frames=[True, False])
+
+
 @pytest.mark.parametrize("bad", [0, -5, 2.5, True, "1000"])
 def test_a_bad_sample_cap_is_refused_before_any_work(mixed_demos, bad):
     with pytest.raises(ValueError, match=r"max_samples must be an integer ≥ 1 .*got"):

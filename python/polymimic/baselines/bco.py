@@ -29,7 +29,7 @@ from typing import Any
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
-from polymimic.baselines.labels import Labelled, check_demonstrations, segment_labels, step_labels
+from polymimic.baselines.labels import Labelled, check_demonstrations, segment_labels, starts_as_imitator, step_labels
 from polymimic.baselines.policy import ClonedPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, sample_rows, train
 from polymimic.field import Demonstration
@@ -58,7 +58,8 @@ def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRe
     settings = segmenter_settings(segmenter)
     if labels == "steps":
         demos = check_demonstrations(demonstrations)
-        rows = sample_rows([(d.demonstrator, len(d.frames)) for d in demos], max_samples=max_samples, seed=seed)
+        rows = sample_rows([(d.demonstrator, len(d.frames)) for d in demos], max_samples=max_samples, seed=seed,
+                           first_frames=[starts_as_imitator(d.body) for d in demos])
         return step_labels(demos, recognizer, frames=rows, **step_settings(settings))
     if labels == "segments":
         return segment_labels(demonstrations, recognizer, **settings)

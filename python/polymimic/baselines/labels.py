@@ -57,9 +57,9 @@ from polymimic.bodies import Field, field_of, thesis_field
 from polymimic.field import PRIMITIVES, Demonstration, command_primitives, command_table, primitives_sent
 from polymimic.step_names import NO_NAME, WINDOW_FRAMES, name_windows, repeat_last_good
 
-__all__ = ["CLONING_EQUIVALENTS", "NO_LABEL", "STEP_STRIDE_FRAMES", "STEP_WINDOW_FRAMES", "Labelled",
+__all__ = ["CLONING_EQUIVALENTS", "IMITATOR_BODY", "NO_LABEL", "STEP_STRIDE_FRAMES", "STEP_WINDOW_FRAMES", "Labelled",
            "check_demonstrations", "check_weights", "cloning_primitives", "command_labels", "onto_imitator_field",
-           "segment_labels", "step_labels"]
+           "segment_labels", "starts_as_imitator", "step_labels"]
 
 NO_LABEL = NO_NAME
 """The label of a frame that gives no training sample (a gap, or no segment)."""
@@ -75,6 +75,9 @@ STEP_STRIDE_FRAMES = 3
 CLONING_EQUIVALENTS = {"Kick Left": "forward", "Kick Right": "forward"}
 """Commands whose label for cloning is not the primitive they look like from above: a kick
 moves the ball forward, which the wheeled imitator does by driving into it."""
+
+IMITATOR_BODY = "lego"
+"""The body of the imitator the cloning baselines play with."""
 
 _IMITATOR_FIELD = "large"
 _SEGMENT_LABELS = {"F": 0, "B": 1, "L": 2, "R": 3, "S": 4, **{p: i for i, p in enumerate(PRIMITIVES)}}
@@ -92,16 +95,25 @@ class Labelled:
         imitator's field.
     labels : ndarray of int, shape (n_frames,)
         Index into :data:`polymimic.field.PRIMITIVES` per frame, or :data:`NO_LABEL`.
+    body : str, default the imitator's
+        The demonstrator's body's name.
     """
 
     demonstrator: str
     observations: np.ndarray
     labels: np.ndarray
+    body: str = IMITATOR_BODY
 
     def __post_init__(self) -> None:
         if self.observations.shape != (len(self.labels), 5):
             raise ValueError(f"observations must be ({len(self.labels)}, 5) for {len(self.labels)} labels, "
                              f"got {self.observations.shape}")
+
+
+def starts_as_imitator(body: str) -> bool:
+    """Whether a demonstrator of ``body`` starts its attempts as the imitator starts its own:
+    from the same state, deciding as the same body would (only the imitator's own body does)."""
+    return body == IMITATOR_BODY
 
 
 def check_demonstrations(demonstrations: Sequence[Demonstration]) -> list[Demonstration]:
@@ -175,7 +187,8 @@ def command_labels(demonstrations: Sequence[Demonstration]) -> list[Labelled]:
     demos = check_demonstrations(demonstrations)
     for d in demos:
         primitives_sent(d)  # refuses a demonstration whose commands were never recorded
-    return [Labelled(d.demonstrator, observations_of(d), index[d.frames["command"].astype(np.int64)]) for d in demos]
+    return [Labelled(d.demonstrator, observations_of(d), index[d.frames["command"].astype(np.int64)], d.body)
+            for d in demos]
 
 
 def segment_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer,
@@ -189,7 +202,7 @@ def segment_labels(demonstrations: Sequence[Demonstration], recognizer: Primitiv
         labels = np.full(len(demo.frames), NO_LABEL, dtype=np.int64)
         for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
             labels[int(first):int(last) + 1] = _SEGMENT_LABELS.get(label, NO_LABEL)
-        labelled.append(Labelled(demo.demonstrator, observations_of(demo), labels))
+        labelled.append(Labelled(demo.demonstrator, observations_of(demo), labels, demo.body))
     return labelled
 
 
@@ -226,5 +239,5 @@ def step_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRe
         else:
             labels = np.full(n, NO_LABEL, dtype=np.int64)
             labels[starts] = named
-        labelled.append(Labelled(demo.demonstrator, observations_of(demo), labels))
+        labelled.append(Labelled(demo.demonstrator, observations_of(demo), labels, demo.body))
     return labelled

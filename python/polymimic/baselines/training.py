@@ -4,17 +4,22 @@ A decision sample is one frame's observation and its label, taken every
 :data:`SAMPLE_STRIDE_FRAMES` frames (any frame is a moment the policy may decide at); frames
 without a label give none. Where that would give more than :data:`MAX_DECISION_SAMPLES` (a
 crowd of ten members gives about 100 000), the stride widens evenly for every demonstration
-until it does not, so that a fit costs the same whatever the crowd's size. Every
-demonstration's first frame gives a sample, since every attempt starts in such a state; where
-its strided samples start is drawn with the fit's seed (:func:`sample_rows`): fits under other
-seeds learn from other frames, so that even a deterministic classifier (gradient boosting
-without early stopping, k-NN, logistic regression) gives a spread over fits, not one draw.
-With fixed hyperparameters (``python benches/bc_first_frames.py RUN_DIR``: histogram gradient
-boosting, ball-relative features, 15 frames a step, eight fits on the benchmark's evaluation
-attempts), the first frames raised ``bc``'s mean net goals per 50 from 2.1 to 11.6 on
-``one_good``, 4.0 to 8.6 on ``half``, 17.9 to 22.1 on ``equal`` and 6.9 to 15.4 on ``linear``,
-and lowered them from 14.6 to 8.5 on ``mixed_bodies``, whose tiny and humanoid make their own
-first moves from the same starts.
+until it does not, so that a fit costs the same whatever the crowd's size. A
+demonstration's first frame gives a sample when its demonstrator has the imitator's body
+(:func:`~polymimic.baselines.labels.starts_as_imitator`), since every attempt starts in such a
+state; where its strided samples start is drawn with the fit's seed (:func:`sample_rows`): fits
+under other seeds learn from other frames, so that even a deterministic classifier (gradient
+boosting without early stopping, k-NN, logistic regression) gives a spread over fits, not one
+draw. With fixed hyperparameters (``python benches/bc_first_frames.py RUN_DIR``: histogram
+gradient boosting, ball-relative features, 15 frames a step, eight fits on the benchmark's
+evaluation attempts), the first frames raised ``bc``'s mean net goals per 50 from 2.1 to 11.6 on
+``one_good``, 4.0 to 8.6 on ``half``, 17.9 to 22.1 on ``equal`` and 6.9 to 15.4 on ``linear``.
+On ``mixed_bodies`` every member's first frame lowered them to 11.6 from 16.9 without any; the
+humanoid's did the harm. It starts where the Lego starts, but a walker's first move from there
+(turning on the spot, waiting) is not a wheeled robot's, and a first frame is the one state
+every attempt meets. The tiny starts elsewhere, on its small field. Only the first frames of
+the imitator's own body, then, give samples: 19.4 on ``mixed_bodies`` in the same fits (the
+other profiles are all of the Lego's body).
 
 Each sample weighs its demonstrator's weight (1 unless a method says otherwise: ``bco_lp`` uses
 the LP), and, when the hyperparameters ask for balance, its
@@ -41,7 +46,7 @@ import numpy as np
 from polymimic.baselines.classifiers import fit_weighted, make_classifier
 from polymimic.baselines.features import features
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
-from polymimic.baselines.labels import NO_LABEL, Labelled
+from polymimic.baselines.labels import NO_LABEL, Labelled, starts_as_imitator
 from polymimic.baselines.policy import ClonedPolicy
 
 __all__ = ["DEFAULT", "MAX_DECISION_SAMPLES", "SAMPLE_STRIDE_FRAMES", "check_fit_seed", "check_max_samples",
@@ -86,25 +91,33 @@ def stride_for_frames(frames: int, *, max_samples: int = MAX_DECISION_SAMPLES) -
 
 
 def sample_rows(demonstrations: Sequence[tuple[str, int]], *, max_samples: int = MAX_DECISION_SAMPLES,
-                seed: int = 0) -> list[np.ndarray]:
+                seed: int = 0, first_frames: Sequence[bool] | None = None) -> list[np.ndarray]:
     """The frames each demonstration, given as (demonstrator, frames), gives a decision sample
-    at: its first frame, where every attempt starts, then every stride-th
+    at: its first frame, where every attempt starts (unless ``first_frames``, one flag per
+    demonstration, says no; by default every one), then every stride-th
     (:func:`stride_for_frames` over them all) from a frame in ``[1, stride]`` drawn with
     ``seed``, the demonstrator's name and the demonstration's place among that demonstrator's.
     Leaving a demonstrator out changes no other one's frames (so a member weighted 0 is a
     member left out).
 
-    >>> [rows.tolist() for rows in sample_rows([("a", 10), ("a", 10)], max_samples=5, seed=0)]
+    >>> two = [("a", 10), ("a", 10)]
+    >>> [rows.tolist() for rows in sample_rows(two, max_samples=5, seed=0)]
     [[0, 1, 5, 9], [0, 3, 7]]
+    >>> [rows.tolist() for rows in sample_rows(two, max_samples=5, seed=0, first_frames=[True, False])]
+    [[0, 1, 5, 9], [3, 7]]
     """
+    if first_frames is not None and len(first_frames) != len(demonstrations):
+        raise ValueError(f"first_frames must hold one flag per demonstration ({len(demonstrations)}), "
+                         f"got {len(first_frames)}")
     stride = stride_for_frames(sum(length for _, length in demonstrations), max_samples=max_samples)
     seed = check_fit_seed(seed)
     seen: dict[str, int] = {}
     rows = []
-    for name, length in demonstrations:
+    for i, (name, length) in enumerate(demonstrations):
         place = seen[name] = seen.get(name, -1) + 1
         first = 1 + np.random.default_rng([seed, zlib.crc32(name.encode()), place]).integers(stride)
-        rows.append(np.concatenate([np.arange(min(length, 1)), np.arange(first, length, stride)]))
+        starts = min(length, 1) if first_frames is None or first_frames[i] else 0
+        rows.append(np.concatenate([np.arange(starts), np.arange(first, length, stride)]))
     return rows
 
 
@@ -115,7 +128,7 @@ def decision_samples(labelled: Sequence[Labelled], *, weights: Mapping[str, floa
     at most about ``max_samples`` of them, at the frames :func:`sample_rows` draws with ``seed``."""
     observations, labels, sample_weight = [], [], []
     every = sample_rows([(item.demonstrator, len(item.labels)) for item in labelled], max_samples=max_samples,
-                        seed=seed)
+                        seed=seed, first_frames=[starts_as_imitator(item.body) for item in labelled])
     for item, rows in zip(labelled, every):
         rows = rows[item.labels[rows] != NO_LABEL]
         observations.append(item.observations[rows])

@@ -12,8 +12,8 @@ them. Run: ``python benches/plain_cloner_vs_bc.py RUN_DIR [--profiles mixed_bodi
 
 Measured on the full benchmark's run (default seeds and sizes), net goals per fit seed 0, 1, 2:
 the plain cloner netted 3, 5, 11 on ``one_good``; 6, 6, 2 on ``half``; 18, 19, 18 on ``equal``;
-6, 6, 8 on ``linear``; 12, 21, 13 on ``mixed_bodies``; ``bc`` 8, 6, 0; 19, 19, 14; 21, 23, 24;
-22, 26, 11; 11, 11, 16.
+6, 6, 8 on ``linear``; 12, 21, 13 on ``mixed_bodies``; ``bc`` 18, 20, 18; 13, 18, 15; 22, 24, 26;
+16, 8, 17; 24, 24, 20.
 """
 
 import os

@@ -1,7 +1,7 @@
 """The penalty kick as a Gymnasium environment, so standard imitation and RL tools can play it.
 
-The imitator (the Lego robot) faces the ball in configuration 1 or 2 of the field, and each
-action is one of its five primitives. Importing this module registers ``PenaltyKick-v0`` when
+The imitator (the Lego robot, or the ``body`` given) faces the ball in configuration 1 or 2 of
+its field, and each action is one of its five primitives. Importing this module registers ``PenaltyKick-v0`` when
 Gymnasium is installed (``pip install "polymimic[gym]"``);
 ``gymnasium.make("polymimic.env:PenaltyKick-v0")`` imports it and makes the environment in one
 call.
@@ -10,7 +10,9 @@ call.
   ball x mm, ball y mm]`` as float32, in field coordinates (origin at the centre, +x toward the
   target goal). During a tracking dropout the last good reading is repeated, as the field's
   own controllers see it.
-- **Action**: ``Discrete(5)``: 0 forward, 1 backward, 2 left, 3 right, 4 stop.
+- **Action**: ``Discrete(5)``: 0 forward, 1 backward, 2 left, 3 right, 4 stop (on the
+  humanoid, which takes no primitives, the command that executes it:
+  :func:`polymimic.field.primitive_command`).
 - **Step**: one primitive held for one second (30 tracker frames, via ``Episode.run``), as the
   thesis's imitator executes primitives (§3.1.1); the motors' lag carries motion from one step
   into the next. ``frames_per_action`` changes it.
@@ -39,7 +41,8 @@ from typing import Any, ClassVar
 import numpy as np
 
 from polymimic._native import Episode, FieldRunError
-from polymimic.field import PRIMITIVES, _field_config
+from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, body_name, field_of, resolve
+from polymimic.field import PRIMITIVES, _field_config, primitive_command
 from polymimic.plots import state_image
 
 try:
@@ -53,7 +56,6 @@ __all__ = ["ENV_ID", "PenaltyKickEnv", "register"]
 ENV_ID = "PenaltyKick-v0"
 """The id under which :func:`register` makes the environment known to Gymnasium."""
 
-_FIELD_LENGTH_MM, _FIELD_WIDTH_MM = 1020.0, 810.0
 _REWARDS = {"goal": 1.0, "own_goal": -1.0}
 _TRUNCATING = frozenset({"time_up"})
 _Base: Any = gymnasium.Env if gymnasium is not None else object
@@ -72,6 +74,9 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         Tracker frames (1/30 s each) one action is held for.
     config : dict or str, optional
         Field configuration overrides (see :func:`polymimic.field.default_config`).
+    body : str or polymimic.bodies.WheeledBody, default "lego"
+        The imitator's body: a built-in body's name or a described wheeled body; it plays on its
+        own field, which the observation space spans.
     render_mode : {None, "rgb_array"}
         ``"rgb_array"``: :meth:`render` returns a picture of the field now.
 
@@ -88,7 +93,8 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
     metadata: ClassVar[dict[str, Any]] = {"render_modes": ["rgb_array"], "render_fps": 1}
 
     def __init__(self, *, configuration: int | str = "random", frames_per_action: int = 30,
-                 config: dict[str, Any] | str | None = None, render_mode: str | None = None) -> None:
+                 config: dict[str, Any] | str | None = None, body: str | WheeledBody = "lego",
+                 render_mode: str | None = None) -> None:
         if gymnasium is None:
             raise ModuleNotFoundError("PenaltyKickEnv needs gymnasium: pip install \"polymimic[gym]\"")
         super().__init__()
@@ -102,8 +108,11 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         self.frames_per_action = int(frames_per_action)
         self.render_mode = render_mode
         self._config = _field_config(config)
-        Episode("lego", configuration=1, seed=0, config=self._config)  # fail now on a bad config
-        self.observation_space = observation_space()
+        self.body, self._body = body_name(body), resolve(body)
+        self._commands = [primitive_command(p, self._body) for p in PRIMITIVES]
+        # Fails now on a bad config, and tells the body's field.
+        field_mm = Episode(self._body, configuration=1, seed=0, config=self._config).observation()["field"]
+        self.observation_space = observation_space(field_mm)
         self.action_space = spaces.Discrete(len(PRIMITIVES))
         self._episode: Episode | None = None
 
@@ -120,7 +129,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         if configuration == "random":
             configuration = int(self.np_random.integers(1, 3))
         episode_seed = int(self.np_random.integers(0, 2**63))
-        self._episode = Episode("lego", configuration=configuration, seed=episode_seed, config=self._config)
+        self._episode = Episode(self._body, configuration=configuration, seed=episode_seed, config=self._config)
         return self._observation(), self._info()
 
     def step(self, action: int) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
@@ -131,7 +140,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
             raise FieldRunError(f"the episode has ended ({self._episode.outcome}); call reset()")
         if not self.action_space.contains(action):
             raise ValueError(f"action must be an integer in 0..4 ({', '.join(PRIMITIVES)}), got {action!r}")
-        _, outcome = self._episode.run([PRIMITIVES[int(action)]] * self.frames_per_action)
+        _, outcome = self._episode.run([self._commands[int(action)]] * self.frames_per_action)
         reward = _REWARDS.get(outcome, 0.0) if outcome is not None else 0.0
         terminated = outcome is not None and outcome not in _TRUNCATING
         truncated = outcome in _TRUNCATING
@@ -142,7 +151,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         if self.render_mode is None or self._episode is None:
             return None
         seen = self._episode.observation()
-        return state_image("lego", seen["robot"], seen["ball"], f"t = {seen['t_s']:.1f} s")
+        return state_image(_drawn_as(self.body), seen["robot"], seen["ball"], f"t = {seen['t_s']:.1f} s")
 
     def _observation(self) -> np.ndarray:
         assert self._episode is not None
@@ -156,13 +165,21 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
                 "valid": self._episode.valid}
 
 
-def observation_space() -> Any:
-    """The observation's space: the field with a quarter of its size around it (a robot or ball
-    leaving the field is seen a little beyond the line), and the heading in [−π, π]."""
-    margin_x, margin_y = 0.25 * _FIELD_LENGTH_MM, 0.25 * _FIELD_WIDTH_MM
-    high = np.array([_FIELD_LENGTH_MM / 2 + margin_x, _FIELD_WIDTH_MM / 2 + margin_y, math.pi,
-                     _FIELD_LENGTH_MM / 2 + margin_x, _FIELD_WIDTH_MM / 2 + margin_y], dtype=np.float32)
+def observation_space(field_mm: tuple[float, float] = (1020.0, 810.0)) -> Any:
+    """The observation's space on a field of ``field_mm`` (length, width; the thesis's large
+    field by default): the field with a quarter of its size around it (a robot or ball leaving
+    the field is seen a little beyond the line), and the heading in [−π, π]."""
+    length_mm, width_mm = field_mm
+    half_x, half_y = 0.75 * length_mm, 0.75 * width_mm
+    high = np.array([half_x, half_y, math.pi, half_x, half_y], dtype=np.float32)
     return spaces.Box(low=-high, high=high, dtype=np.float32)
+
+
+def _drawn_as(body: str) -> str:
+    """The thesis body whose picture stands for ``body``: itself, or the one of its field."""
+    if body in THESIS_BODY_FIELDS:
+        return body
+    return "tiny" if field_of(body) == "small" else "lego"
 
 
 def register() -> None:

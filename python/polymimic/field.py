@@ -345,6 +345,16 @@ def command_table() -> list[dict[str, Any]]:
     return list(_native.commands())
 
 
+def primitive_command(primitive: str, body: str | WheeledBody = "lego") -> str:
+    """The name of the command that has ``body`` execute ``primitive``: the primitive itself on
+    a wheeled body, its walking, turning or waiting equivalent on the humanoid.
+
+    >>> primitive_command("left"), primitive_command("left", "humanoid"), primitive_command("stop", "humanoid")
+    ('left', 'Turn Left', 'Wait')
+    """
+    return _native.primitive_command(primitive, native_body(body))
+
+
 def command_primitives() -> np.ndarray:
     """A lookup array: ``command_primitives()[frames["command"]]`` names each frame's primitive.
 

@@ -27,7 +27,8 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from polymimic._native import EpisodeBatch
+from polymimic._native import Episode, EpisodeBatch
+from polymimic.bodies import WheeledBody, body_name, resolve
 from polymimic.env import _check_configuration, observation_space
 from polymimic.field import OUTCOMES, _field_config
 
@@ -53,7 +54,7 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
     ----------
     num_envs : int
         Sub-environments.
-    configuration, frames_per_action, config
+    configuration, frames_per_action, config, body
         As for :class:`~polymimic.env.PenaltyKickEnv`, for every sub-environment.
     """
 
@@ -61,7 +62,7 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
         "autoreset_mode": AutoresetMode.NEXT_STEP if gymnasium is not None else None, "render_modes": []}
 
     def __init__(self, num_envs: int = 8, *, configuration: int | str = "random", frames_per_action: int = 30,
-                 config: dict[str, Any] | str | None = None) -> None:
+                 config: dict[str, Any] | str | None = None, body: str | WheeledBody = "lego") -> None:
         if gymnasium is None:
             raise ModuleNotFoundError("PenaltyKickVectorEnv needs gymnasium: pip install \"polymimic[gym]\"")
         if not isinstance(num_envs, (int, np.integer)) or isinstance(num_envs, bool) or num_envs < 1:
@@ -69,9 +70,12 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
         _check_configuration(configuration)
         self.num_envs = int(num_envs)
         self.configuration = configuration
-        self._batch = EpisodeBatch(self.num_envs, frames_per_action=frames_per_action, config=_field_config(config))
+        self._batch = EpisodeBatch(self.num_envs, frames_per_action=frames_per_action, config=_field_config(config),
+                                   body=resolve(body))
+        self.body = body_name(body)
         self.frames_per_action = int(frames_per_action)
-        self.single_observation_space = observation_space()
+        self.single_observation_space = observation_space(
+            Episode(resolve(body), configuration=1, seed=0, config=_field_config(config)).observation()["field"])
         self.single_action_space = gymnasium.spaces.Discrete(5)
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
         self.action_space = batch_space(self.single_action_space, self.num_envs)

@@ -41,6 +41,20 @@ def test_the_same_as_sync_vector_env_step_by_step_through_autoresets(configurati
     assert ended >= n
 
 
+@pytest.mark.parametrize("body", ["tiny", "humanoid"])
+def test_another_body_is_the_same_as_its_single_environments(body):
+    n = 3
+    ours, theirs = PenaltyKickVectorEnv(n, body=body), _sync(n, body=body)
+    assert ours.body == body and ours.single_observation_space == theirs.single_observation_space
+    a_obs, _ = ours.reset(seed=2)
+    b_obs, _ = theirs.reset(seed=2)
+    np.testing.assert_array_equal(a_obs, b_obs)
+    rng = np.random.default_rng(5)
+    for t in range(70):
+        actions = rng.integers(0, 5, size=n)
+        _assert_same(ours.step(actions), theirs.step(actions), f"{body} at step {t}")
+
+
 def test_seeds_per_sub_environment_and_partial_resets():
     ours, theirs = PenaltyKickVectorEnv(3), _sync(3)
     for seed in ([4, None, 9], 2):

@@ -1,12 +1,12 @@
-//! Many Lego-robot episodes stepped together, one primitive held for a number of frames in
-//! each: the engine of the vector environment. Every episode is its own, seeded as a single
+//! Many episodes of one body (the Lego robot unless told otherwise) stepped together, one
+//! primitive held for a number of frames in each: the engine of the vector environment. Every episode is its own, seeded as a single
 //! one is, so a batch gives the same frames as the episodes run one by one, on any number of
 //! threads.
 
 use rayon::prelude::*;
 
 use crate::body::BodyKind;
-use crate::command::Command;
+use crate::controller::primitive_command;
 use crate::episode::Episode;
 use crate::error::{FieldError, FieldParamError};
 use crate::setup::{Configuration, EpisodeSetup, FieldConfig};
@@ -17,6 +17,7 @@ pub struct EpisodeBatch {
     episodes: Vec<Option<Episode>>,
     config: FieldConfig,
     frames_per_action: usize,
+    body: BodyKind,
 }
 
 impl EpisodeBatch {
@@ -33,7 +34,20 @@ impl EpisodeBatch {
             return Err(FieldParamError::OutOfRange { name: "frames_per_action", value: 0.0, expected }.into());
         }
         config.check()?;
-        Ok(Self { episodes: (0..n).map(|_| None).collect(), config: *config, frames_per_action })
+        Ok(Self { episodes: (0..n).map(|_| None).collect(), config: *config, frames_per_action, body: BodyKind::Lego })
+    }
+
+    /// The same slots for `body`'s episodes, on its field, each primitive sent as
+    /// [`primitive_command`] has the body execute it.
+    #[must_use]
+    pub fn with_body(self, body: BodyKind) -> Self {
+        Self { body, ..self }
+    }
+
+    /// The body every episode of the batch drives.
+    #[must_use]
+    pub const fn body(&self) -> BodyKind {
+        self.body
     }
 
     /// How many slots.
@@ -48,7 +62,7 @@ impl EpisodeBatch {
         self.episodes.is_empty()
     }
 
-    /// Starts a new episode of the Lego robot in slot `index`, from `configuration`, seeded
+    /// Starts a new episode of the batch's body in slot `index`, from `configuration`, seeded
     /// with `seed` (as `Episode::new` is).
     ///
     /// # Errors
@@ -60,7 +74,7 @@ impl EpisodeBatch {
             value: index as f64,
             expected: if n == 1 { "0, the batch's one slot" } else { "a slot of the batch, from 0" },
         })?;
-        let setup = EpisodeSetup::configuration(BodyKind::Lego, configuration, &self.config);
+        let setup = EpisodeSetup::configuration(self.body, configuration, &self.config);
         *slot = Some(Episode::new(&setup, &self.config, seed)?);
         Ok(())
     }
@@ -83,15 +97,16 @@ impl EpisodeBatch {
         if let Some(index) = self.episodes.iter().zip(actions).position(|(slot, a)| a.is_some() && slot.is_none()) {
             return Err(FieldError::NotStarted { index });
         }
-        let frames = self.frames_per_action;
+        let (frames, body) = (self.frames_per_action, self.body);
         self.episodes.par_iter_mut().zip(actions.par_iter()).enumerate().try_for_each(|(index, (slot, &action))| {
             let Some(action) = action else { return Ok(()) };
+            let command = primitive_command(action, body);
             let episode = slot.as_mut().ok_or(FieldError::NotStarted { index })?;
             for frame in 0..frames {
                 if frame > 0 && episode.is_finished() {
                     break;
                 }
-                episode.step(Command::Primitive(action))?;
+                episode.step(command)?;
             }
             Ok(())
         })
@@ -107,11 +122,13 @@ impl EpisodeBatch {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::command::Command;
 
-    #[test]
-    fn a_batch_gives_the_frames_of_its_episodes_run_one_by_one() {
+    /// A batch of `body`'s episodes against the same episodes run one by one, each primitive
+    /// sent as the body executes it.
+    fn batch_matches_episodes_alone(body: BodyKind) {
         let config = FieldConfig::default();
-        let mut batch = EpisodeBatch::new(3, 30, &config).unwrap();
+        let mut batch = EpisodeBatch::new(3, 30, &config).unwrap().with_body(body);
         let starts = [(Configuration::One, 5), (Configuration::Two, 6), (Configuration::One, 7)];
         for (i, &(configuration, seed)) in starts.iter().enumerate() {
             batch.reset(i, configuration, seed).unwrap();
@@ -122,15 +139,39 @@ mod tests {
             batch.step(&actions).unwrap();
         }
         for (i, &(configuration, seed)) in starts.iter().enumerate() {
-            let setup = EpisodeSetup::configuration(BodyKind::Lego, configuration, &config);
+            let setup = EpisodeSetup::configuration(body, configuration, &config);
             let mut alone = Episode::new(&setup, &config, seed).unwrap();
             for k in 0..plan.len() {
                 for _ in 0..30 {
-                    alone.step(Command::Primitive(plan[(k + i) % plan.len()])).unwrap();
+                    if alone.is_finished() {
+                        break;
+                    }
+                    alone.step(primitive_command(plan[(k + i) % plan.len()], body)).unwrap();
                 }
             }
-            assert_eq!(batch.episodes()[i].as_ref().unwrap().frames(), alone.frames(), "episode {i}");
+            assert_eq!(batch.episodes()[i].as_ref().unwrap().frames(), alone.frames(), "{} episode {i}", body.name());
         }
+    }
+
+    #[test]
+    fn a_batch_gives_the_frames_of_its_episodes_run_one_by_one() {
+        batch_matches_episodes_alone(BodyKind::Lego);
+        let lego = EpisodeBatch::new(1, 30, &FieldConfig::default()).unwrap();
+        assert_eq!(lego.body(), BodyKind::Lego);
+        // A wheeled primitive is the command itself on the Lego robot.
+        assert_eq!(primitive_command(Primitive::Left, BodyKind::Lego), Command::Primitive(Primitive::Left));
+    }
+
+    #[test]
+    fn a_batch_of_another_body_plays_that_body_on_its_field() {
+        for body in [BodyKind::Tiny, BodyKind::Humanoid] {
+            batch_matches_episodes_alone(body);
+        }
+        let mut tiny = EpisodeBatch::new(1, 30, &FieldConfig::default()).unwrap().with_body(BodyKind::Tiny);
+        tiny.reset(0, Configuration::One, 1).unwrap();
+        let start_x_mm = tiny.episodes()[0].as_ref().unwrap().observation().robot.x_mm();
+        // The tiny's field is 560 mm long: it starts a sixth of that behind the centre.
+        assert!((start_x_mm + 560.0 / 6.0).abs() < 5.0, "{start_x_mm}");
     }
 
     #[test]

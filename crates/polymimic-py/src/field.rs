@@ -6,7 +6,7 @@ use polymimic_field::{
     BodyKind, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, LapseRate, Outcome,
     THESIS_TABLE_3_1, command_table, record_on, self_observation_of,
 };
-use polymimic_types::Pose;
+use polymimic_types::{Pose, Primitive};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -143,6 +143,19 @@ pub fn commands(py: Python<'_>) -> PyResult<Bound<'_, PyList>> {
         out.append(row)?;
     }
     Ok(out)
+}
+
+/// The name of the command that has `body` execute `primitive` (a primitive's name): the
+/// primitive itself on a wheeled body, its walking, turning or waiting equivalent on the
+/// humanoid.
+#[pyfunction]
+pub fn primitive_command(primitive: &str, body: Body) -> PyResult<&'static str> {
+    let p = Primitive::from_name(primitive).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "unknown primitive {primitive:?}; expected one of forward, backward, left, right, stop"
+        ))
+    })?;
+    Ok(polymimic_field::controller::primitive_command(p, body.0).name())
 }
 
 /// The thesis's Table 3.1 as stored by the field's calibration.

@@ -3,10 +3,11 @@
 use std::sync::Mutex;
 
 use numpy::{PyArray1, PyArray2};
-use polymimic_field::{EpisodeBatch, Outcome, Primitive};
+use polymimic_field::{BodyKind, EpisodeBatch, Outcome, Primitive};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
+use crate::bodies::Body;
 use crate::convert::{matrix, non_negative};
 use crate::errors::field_error;
 use crate::field::{configuration, field_config};
@@ -41,16 +42,24 @@ impl PyEpisodeBatch {
 
 #[pymethods]
 impl PyEpisodeBatch {
-    /// `n` slots of the Lego robot's penalty kick; each step holds one primitive for
-    /// `frames_per_action` tracker frames in every slot.
+    /// `n` slots of `body`'s penalty kick (the Lego robot's by default), on its field; each
+    /// step holds one primitive for `frames_per_action` tracker frames in every slot (on the
+    /// humanoid, the primitive's walking, turning or waiting equivalent).
     #[new]
-    #[pyo3(signature = (n, *, frames_per_action=30, config=None))]
-    fn new(n: i64, frames_per_action: i64, config: Option<&str>) -> PyResult<Self> {
+    #[pyo3(signature = (n, *, frames_per_action=30, config=None, body=Body(BodyKind::Lego)))]
+    fn new(n: i64, frames_per_action: i64, config: Option<&str>, body: Body) -> PyResult<Self> {
         let config = field_config(config)?;
         let batch =
             EpisodeBatch::new(non_negative("n", n)?, non_negative("frames_per_action", frames_per_action)?, &config)
-                .map_err(field_error)?;
+                .map_err(field_error)?
+                .with_body(body.0);
         Ok(Self { batch: Mutex::new(batch) })
+    }
+
+    /// The name of the body every slot drives.
+    #[getter]
+    fn body(&self) -> &'static str {
+        self.with(|b| b.body().name())
     }
 
     fn __len__(&self) -> usize {

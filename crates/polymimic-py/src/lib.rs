@@ -25,8 +25,8 @@ mod _native {
     use super::bodies::thesis_wheeled_bodies;
     #[pymodule_export]
     use super::field::{
-        PyEpisode, check_field_config, commands, default_field_config, record_demonstrations, record_self_observation,
-        thesis_table_3_1,
+        PyEpisode, check_field_config, commands, default_field_config, primitive_command, record_demonstrations,
+        record_self_observation, thesis_table_3_1,
     };
     #[pymodule_export]
     use super::field_batch::PyEpisodeBatch;

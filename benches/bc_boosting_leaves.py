@@ -16,13 +16,12 @@ import os
 os.environ.setdefault("OMP_NUM_THREADS", "1")  # batched predictions of ≤ 50 rows: threads only cost
 
 import dataclasses  # noqa: E402
-import importlib.util  # noqa: E402
 import json  # noqa: E402
-import pathlib  # noqa: E402
 import statistics  # noqa: E402
 
 from sklearn.ensemble import GradientBoostingClassifier  # noqa: E402
 
+import plain_cloner_small_crowd as bench  # noqa: E402
 from polymimic.baselines.classifiers import SmallBatchBoosting  # noqa: E402
 from polymimic.baselines.evaluation import attempts_of  # noqa: E402
 from polymimic.baselines.features import features  # noqa: E402
@@ -42,21 +41,11 @@ CLASSIFIERS = {
 }
 
 
-def small_crowd_bench():
-    path = pathlib.Path(__file__).with_name("plain_cloner_small_crowd.py")
-    spec = importlib.util.spec_from_file_location("plain_cloner_small_crowd", path)
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
 def line(way: str, nets: list[int]) -> str:
     return json.dumps({"way": way, "net": nets, "mean": statistics.mean(nets), "sd": statistics.stdev(nets)})
 
 
 def main() -> None:
-    bench = small_crowd_bench()
     demos = record_crowd(PROFILES["mixed_bodies"], n=3, seed=0)
     evaluation = attempts_of(25, seed=bench.EVALUATION_SEED)
     plain = bench.plain_cloner()

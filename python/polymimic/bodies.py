@@ -42,7 +42,7 @@ from typing import Any, Union
 from polymimic import _native
 
 __all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Field", "Slip", "WheeledBody", "bodies_from_tables",
-           "field_of", "pitch_of", "thesis_field"]
+           "field_length_mm", "field_of", "pitch_of", "playing_field", "thesis_field"]
 
 PRIMITIVE_NAMES = ("forward", "backward", "left", "right", "stop")
 FIELDS = ("large", "small")
@@ -430,6 +430,34 @@ def field_of(body: str) -> FieldSpec:
         raise ValueError(f"unknown body {body!r}: describe it (polymimic.bodies.WheeledBody, or its [bodies.{body}] "
                          f"table) before learning from its demonstrations")
     return known.field
+
+
+def playing_field(body: str | WheeledBody) -> Field:
+    """The size of the field ``body`` plays on (``lego`` and ``humanoid``: 1020 × 810 mm;
+    ``tiny``: 560 × 345 mm; a :class:`WheeledBody`, its own field's).
+
+    >>> playing_field("tiny")
+    Field(length_mm=560.0, width_mm=345.0, goal_mouth_mm=172.5, ball_diameter_mm=25.0)
+    """
+    seen = _native.Episode(resolve(body)).observation()
+    length_mm, width_mm = seen["field"]
+    return Field(float(length_mm), float(width_mm), float(seen["goal_mouth_mm"]), float(seen["ball_diameter_mm"]))
+
+
+@functools.lru_cache(maxsize=2)
+def _thesis_length_mm(field: str) -> float:
+    return thesis_field(field).length_mm
+
+
+def field_length_mm(body: str | WheeledBody) -> float:
+    """The length (goal to goal, mm) of the field ``body`` plays on: a built-in body's name, a
+    :class:`WheeledBody` or the name of one made in this process.
+
+    >>> field_length_mm("humanoid"), field_length_mm("tiny")
+    (1020.0, 560.0)
+    """
+    field = field_of(body_name(body))
+    return field.length_mm if isinstance(field, Field) else _thesis_length_mm(field)
 
 
 def pitch_of(body: str) -> str:

@@ -77,3 +77,31 @@ def test_an_unknown_imitator_body_is_named(tiny_learned, body, match):
     recognizer, _, trial = tiny_learned
     with pytest.raises(ValueError, match=match):
         learning.ImitatorPolicy(trial, recognizer=recognizer, body=body)
+
+
+@pytest.fixture(scope="module")
+def tiny_demos():
+    return [d for c in (1, 2) for d in polymimic.record("tiny", configuration=c, n=10, seed=0)]
+
+
+def test_a_cloned_policy_drives_the_imitators_body_and_keeps_it_in_its_file(tiny_demos, tmp_path):
+    pytest.importorskip("sklearn")
+    from polymimic import baselines
+    from polymimic.baselines.hyperparameters import PLAIN_BOOSTING
+    from polymimic.baselines.policy import load_policy
+
+    policy = baselines.fit("bc", tiny_demos, hyperparameters=PLAIN_BOOSTING, imitator="tiny")
+    assert policy.body == "tiny"
+    played = baselines.evaluate_policy(policy, attempts_per_configuration=10, seed=1000)
+    assert {a.body for a in played.attempts} == {"tiny"}
+    assert np.abs([a.frames["robot_x_mm"][0] for a in played.attempts]).max() < thesis_field("small").length_mm / 2
+    assert played.goals >= 5 and played.own_goals <= 1, (played.goals, played.own_goals)
+    policy.save(tmp_path / "tiny.pmp")
+    again = load_policy(tmp_path / "tiny.pmp")
+    replayed = baselines.evaluate_policy(again, attempts_per_configuration=10, seed=1000)
+    assert again.body == "tiny"
+    assert all(a.frames.tobytes() == b.frames.tobytes() for a, b in zip(played.attempts, replayed.attempts))
+    humanoid = baselines.evaluate_policy(baselines.fit("random", [], imitator="humanoid"), attempts_per_configuration=1)
+    assert {a.body for a in humanoid.attempts} == {"humanoid"}
+    with pytest.raises(ValueError, match="unknown body 'tinny'"):
+        baselines.fit("bc", tiny_demos, imitator="tinny")

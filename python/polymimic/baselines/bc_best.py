@@ -14,9 +14,10 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
-from polymimic.baselines.labels import Labelled, check_demonstrations, command_labels
+from polymimic.baselines.labels import IMITATOR_BODY, Labelled, check_demonstrations, command_labels
 from polymimic.baselines.policy import ClonedPolicy
 from polymimic.baselines.training import train
+from polymimic.bodies import WheeledBody
 from polymimic.field import Demonstration
 
 __all__ = ["fit", "labelled", "member_demonstrations"]
@@ -35,9 +36,11 @@ def member_demonstrations(demonstrations: Sequence[Demonstration], member: str |
     return [d for d in demos if d.demonstrator in names]
 
 
-def labelled(demonstrations: Sequence[Demonstration], *, member: str | Sequence[str]) -> list[Labelled]:
-    """``member``'s demonstrations with every frame labelled by its command's primitive."""
-    return command_labels(member_demonstrations(demonstrations, member))
+def labelled(demonstrations: Sequence[Demonstration], *, member: str | Sequence[str],
+             imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
+    """``member``'s demonstrations with every frame labelled by its command's primitive, seen
+    on the field of body ``imitator``."""
+    return command_labels(member_demonstrations(demonstrations, member), imitator=imitator)
 
 
 def fit(demonstrations: Sequence[Demonstration], *, member: str | Sequence[str],

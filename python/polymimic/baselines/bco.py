@@ -29,9 +29,17 @@ from typing import Any
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
-from polymimic.baselines.labels import Labelled, check_demonstrations, segment_labels, starts_as_imitator, step_labels
+from polymimic.baselines.labels import (
+    IMITATOR_BODY,
+    Labelled,
+    check_demonstrations,
+    segment_labels,
+    starts_as_imitator,
+    step_labels,
+)
 from polymimic.baselines.policy import ClonedPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, sample_rows, train
+from polymimic.bodies import WheeledBody, body_name
 from polymimic.field import Demonstration
 from polymimic.step_names import LABELS, segmenter_settings, step_settings
 
@@ -49,20 +57,22 @@ def check_recognizer(recognizer: Any) -> PrimitiveRecognizer:
 
 def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecognizer,
              segmenter: Mapping[str, Any] | None = None, labels: str = "steps",
-             max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0) -> list[Labelled]:
+             max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0,
+             imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
     """The demonstrations labelled by the recogniser: by the step from each frame
     (``labels="steps"``; only the frames a fit of at most ``max_samples`` decision samples
     under ``seed`` takes are named, :func:`~polymimic.baselines.training.sample_rows`) or every
-    frame by its segment (``"segments"``); gaps give no label."""
+    frame by its segment (``"segments"``); gaps give no label. Observations are on the field of
+    body ``imitator``, whose self-observation the recogniser should have learned from."""
     recognizer = check_recognizer(recognizer)
     settings = segmenter_settings(segmenter)
     if labels == "steps":
         demos = check_demonstrations(demonstrations)
         rows = sample_rows([(d.demonstrator, len(d.frames)) for d in demos], max_samples=max_samples, seed=seed,
-                           first_frames=[starts_as_imitator(d.body) for d in demos])
-        return step_labels(demos, recognizer, frames=rows, **step_settings(settings))
+                           first_frames=[starts_as_imitator(d.body, body_name(imitator)) for d in demos])
+        return step_labels(demos, recognizer, frames=rows, imitator=imitator, **step_settings(settings))
     if labels == "segments":
-        return segment_labels(demonstrations, recognizer, **settings)
+        return segment_labels(demonstrations, recognizer, imitator=imitator, **settings)
     raise ValueError(f"unknown labels {labels!r}; expected one of {', '.join(map(repr, LABELS))}")
 
 

@@ -26,7 +26,8 @@ from threadpoolctl import threadpool_limits  # type: ignore[import-untyped, unus
 
 from polymimic import _native
 from polymimic.baselines.policy import Policy
-from polymimic.field import PRIMITIVES, Demonstration, _field_config, as_frames
+from polymimic.bodies import resolve
+from polymimic.field import PRIMITIVES, Demonstration, _field_config, as_frames, primitive_command
 from polymimic.learning import Evaluation
 
 __all__ = ["VALIDATION_SEED_BASE", "attempts_of", "evaluate_policy", "play"]
@@ -61,22 +62,25 @@ def attempts_of(attempts_per_configuration: int, *, seed: int) -> list[tuple[int
 
 def play(policy: Policy, attempts: list[tuple[int, int]], *,
          field_config: dict[str, Any] | str | None = None) -> Evaluation:
-    """``policy`` on the given (configuration, episode seed) attempts, all stepped together."""
+    """``policy`` on the given (configuration, episode seed) attempts, all stepped together,
+    with the body the policy drives (its ``body``: the Lego robot if it names none)."""
     if not isinstance(policy, Policy):
         raise ValueError(f"policy must have frames_per_action, predict, reset and save; got {type(policy).__name__}")
     config = _field_config(field_config)
-    episodes = [_native.Episode("lego", configuration=c, seed=s, config=config) for c, s in attempts]
+    body = str(getattr(policy, "body", "lego"))
+    episodes = [_native.Episode(resolve(body), configuration=c, seed=s, config=config) for c, s in attempts]
     policy.reset()
     with threadpool_limits(limits=1):  # a batch of ≤ 50 rows gains nothing from threads, and loses on a busy node
-        executed = _step_together(policy, episodes)
+        executed = _step_together(policy, episodes, [primitive_command(p, resolve(body)) for p in PRIMITIVES])
     demos = [Demonstration(frames=as_frames(e.frames), outcome=str(e.outcome), demonstrator=_name(policy),
-                           configuration=c, seed=s, body="lego") for e, (c, s) in zip(episodes, attempts)]
+                           configuration=c, seed=s, body=body) for e, (c, s) in zip(episodes, attempts)]
     return Evaluation(goals=sum(d.outcome == "goal" for d in demos),
                       own_goals=sum(d.outcome == "own_goal" for d in demos), attempts=demos, behaviours=executed)
 
 
-def _step_together(policy: Policy, episodes: list[_native.Episode]) -> list[list[str]]:
-    """Every episode to its end, one batched decision at a time; the primitives each chose."""
+def _step_together(policy: Policy, episodes: list[_native.Episode], commands: list[str]) -> list[list[str]]:
+    """Every episode to its end, one batched decision at a time, primitive i sent as
+    ``commands[i]``; the primitives each chose."""
     hold = int(policy.frames_per_action)
     last_seen = [_observation(e, None) for e in episodes]
     executed: list[list[str]] = [[] for _ in episodes]
@@ -91,7 +95,7 @@ def _step_together(policy: Policy, episodes: list[_native.Episode]) -> list[list
             if not 0 <= action < len(PRIMITIVES):
                 raise ValueError(f"policy.predict returned {action!r}; actions are 0..4 ({', '.join(PRIMITIVES)})")
             executed[i].append(_LETTERS[action])
-            episodes[i].run([PRIMITIVES[action]] * hold)
+            episodes[i].run([commands[action]] * hold)
         active = [i for i in active if not episodes[i].finished]
     return executed
 

@@ -24,7 +24,10 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["FEATURE_NAMES", "FEATURE_SETS", "OBSERVATION_SIZE", "TARGET_GOAL_MM", "check_observations", "features"]
+from polymimic.bodies import field_length_mm
+
+__all__ = ["FEATURE_NAMES", "FEATURE_SETS", "OBSERVATION_SIZE", "TARGET_GOAL_MM", "check_observations", "features",
+           "target_goal_of"]
 
 FEATURE_SETS = ("raw", "ball_relative", "goal_relative")
 OBSERVATION_SIZE = 5
@@ -52,8 +55,20 @@ def check_observations(observations: object, *, name: str = "observations") -> n
     return array
 
 
-def features(observations: np.ndarray, *, feature_set: str) -> np.ndarray:
-    """The ``(n, k)`` features of feature set ``feature_set`` for an ``(n, 5)`` batch."""
+def target_goal_of(body: str) -> tuple[float, float]:
+    """The target goal's centre (mm) on the field the body named ``body`` plays on.
+
+    >>> target_goal_of("lego"), target_goal_of("tiny")
+    ((510.0, 0.0), (280.0, 0.0))
+    """
+    return (field_length_mm(body) / 2, 0.0)
+
+
+def features(observations: np.ndarray, *, feature_set: str,
+             target_goal_mm: tuple[float, float] = TARGET_GOAL_MM) -> np.ndarray:
+    """The ``(n, k)`` features of feature set ``feature_set`` for an ``(n, 5)`` batch, on a
+    field whose target goal's centre is ``target_goal_mm`` (the thesis's large field's by
+    default)."""
     obs = check_observations(observations)
     if feature_set not in FEATURE_SETS:
         raise ValueError(f"unknown feature_set {feature_set!r}; expected one of {', '.join(FEATURE_SETS)}")
@@ -68,7 +83,7 @@ def features(observations: np.ndarray, *, feature_set: str) -> np.ndarray:
     columns += [cos_t * dx + sin_t * dy, -sin_t * dx + cos_t * dy]
     if feature_set == "ball_relative":
         return np.column_stack(columns)
-    gx, gy = TARGET_GOAL_MM[0] - ball_x, TARGET_GOAL_MM[1] - ball_y
+    gx, gy = target_goal_mm[0] - ball_x, target_goal_mm[1] - ball_y
     goal_bearing = np.arctan2(gy, gx) - theta
     goal_dist = np.hypot(gx, gy)
     rx, ry = -dx, -dy  # ball → robot

@@ -53,7 +53,7 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.bodies import Field, field_of, thesis_field
+from polymimic.bodies import Field, WheeledBody, body_name, field_length_mm, field_of, thesis_field
 from polymimic.field import PRIMITIVES, Demonstration, command_primitives, command_table, primitives_sent
 from polymimic.step_names import NO_NAME, WINDOW_FRAMES, name_windows, repeat_last_good
 
@@ -77,9 +77,8 @@ CLONING_EQUIVALENTS = {"Kick Left": "forward", "Kick Right": "forward"}
 moves the ball forward, which the wheeled imitator does by driving into it."""
 
 IMITATOR_BODY = "lego"
-"""The body of the imitator the cloning baselines play with."""
+"""The imitator's body unless a cloning baseline is told another (``imitator=``)."""
 
-_IMITATOR_FIELD = "large"
 _SEGMENT_LABELS = {"F": 0, "B": 1, "L": 2, "R": 3, "S": 4, **{p: i for i, p in enumerate(PRIMITIVES)}}
 
 
@@ -97,12 +96,15 @@ class Labelled:
         Index into :data:`polymimic.field.PRIMITIVES` per frame, or :data:`NO_LABEL`.
     body : str, default the imitator's
         The demonstrator's body's name.
+    imitator : str, default :data:`IMITATOR_BODY`
+        The name of the body the observations are on the field of, the one that learns.
     """
 
     demonstrator: str
     observations: np.ndarray
     labels: np.ndarray
     body: str = IMITATOR_BODY
+    imitator: str = IMITATOR_BODY
 
     def __post_init__(self) -> None:
         if self.observations.shape != (len(self.labels), 5):
@@ -110,10 +112,11 @@ class Labelled:
                              f"got {self.observations.shape}")
 
 
-def starts_as_imitator(body: str) -> bool:
-    """Whether a demonstrator of ``body`` starts its attempts as the imitator starts its own:
-    from the same state, deciding as the same body would (only the imitator's own body does)."""
-    return body == IMITATOR_BODY
+def starts_as_imitator(body: str, imitator: str = IMITATOR_BODY) -> bool:
+    """Whether a demonstrator of ``body`` starts its attempts as an imitator of body
+    ``imitator`` starts its own: from the same state, deciding as the same body would (only the
+    imitator's own body does)."""
+    return body == imitator
 
 
 def check_demonstrations(demonstrations: Sequence[Demonstration]) -> list[Demonstration]:
@@ -140,16 +143,18 @@ def check_weights(weights: Mapping[str, float], demonstrations: Sequence[Demonst
     return checked
 
 
-def onto_imitator_field(observations: np.ndarray, *, field_length_mm: float) -> np.ndarray:
+def onto_imitator_field(observations: np.ndarray, *, field_length_mm: float,
+                        imitator_length_mm: float | None = None) -> np.ndarray:
     """``(n, 5)`` observations of a field ``field_length_mm`` long (goal to goal), on the
-    imitator's: the ball's position scaled by the lengths' ratio, the robot at the same offset
-    from the ball (mm) and the same heading.
+    imitator's (``imitator_length_mm`` long; the thesis's large field by default): the ball's
+    position scaled by the lengths' ratio, the robot at the same offset from the ball (mm) and
+    the same heading.
 
     >>> seen = np.array([[100.0, -50.0, 0.3, 140.0, -50.0]])   # 40 mm behind the ball
     >>> onto_imitator_field(seen, field_length_mm=2040.0).tolist()
     [[30.0, -25.0, 0.3, 70.0, -25.0]]
     """
-    scale = thesis_field(_IMITATOR_FIELD).length_mm / field_length_mm
+    scale = (thesis_field("large").length_mm if imitator_length_mm is None else imitator_length_mm) / field_length_mm
     mapped = np.array(observations, dtype=np.float64)
     offset = mapped[:, [0, 1]] - mapped[:, [3, 4]]
     mapped[:, [3, 4]] *= scale
@@ -157,7 +162,7 @@ def onto_imitator_field(observations: np.ndarray, *, field_length_mm: float) -> 
     return mapped
 
 
-def observations_of(demo: Demonstration) -> np.ndarray:
+def observations_of(demo: Demonstration, imitator: str | WheeledBody = IMITATOR_BODY) -> np.ndarray:
     """The ``(n, 5)`` observations of a demonstration's frames: NaN readings (lost tracking,
     a ball out of sight) repeat the last good one, and a field longer than the imitator's comes
     onto it (:func:`onto_imitator_field`)."""
@@ -166,8 +171,9 @@ def observations_of(demo: Demonstration) -> np.ndarray:
                                                                  "ball_x_mm", "ball_y_mm")]).astype(np.float64))
     field = field_of(demo.body)
     length_mm = (field if isinstance(field, Field) else thesis_field(field)).length_mm
-    imitator_mm = thesis_field(_IMITATOR_FIELD).length_mm
-    return obs if length_mm <= imitator_mm else onto_imitator_field(obs, field_length_mm=length_mm)
+    imitator_mm = field_length_mm(imitator)
+    return obs if length_mm <= imitator_mm else onto_imitator_field(obs, field_length_mm=length_mm,
+                                                                    imitator_length_mm=imitator_mm)
 
 
 def cloning_primitives() -> np.ndarray:
@@ -180,21 +186,23 @@ def cloning_primitives() -> np.ndarray:
     return index
 
 
-def command_labels(demonstrations: Sequence[Demonstration]) -> list[Labelled]:
+def command_labels(demonstrations: Sequence[Demonstration], *,
+                   imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
     """Each frame labelled with the imitator's primitive for the command sent (privileged):
-    :func:`cloning_primitives`."""
+    :func:`cloning_primitives`; observations on the field of body ``imitator``."""
     index = cloning_primitives()
     demos = check_demonstrations(demonstrations)
     for d in demos:
         primitives_sent(d)  # refuses a demonstration whose commands were never recorded
-    return [Labelled(d.demonstrator, observations_of(d), index[d.frames["command"].astype(np.int64)], d.body)
-            for d in demos]
+    return [Labelled(d.demonstrator, observations_of(d, imitator), index[d.frames["command"].astype(np.int64)],
+                     d.body, body_name(imitator)) for d in demos]
 
 
-def segment_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer,
-                   **segmenter: Any) -> list[Labelled]:
+def segment_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer, *,
+                   imitator: str | WheeledBody = IMITATOR_BODY, **segmenter: Any) -> list[Labelled]:
     """Each frame labelled with the primitive of the recogniser's segment covering it (none in
-    a gap or outside every segment); ``segmenter`` passes the segmenter's settings."""
+    a gap or outside every segment); ``segmenter`` passes the segmenter's settings, and the
+    observations are on the field of body ``imitator``."""
     demos = check_demonstrations(demonstrations)
     segmented = recognizer.segment_many([d.frames for d in demos], **segmenter)
     labelled = []
@@ -202,14 +210,16 @@ def segment_labels(demonstrations: Sequence[Demonstration], recognizer: Primitiv
         labels = np.full(len(demo.frames), NO_LABEL, dtype=np.int64)
         for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
             labels[int(first):int(last) + 1] = _SEGMENT_LABELS.get(label, NO_LABEL)
-        labelled.append(Labelled(demo.demonstrator, observations_of(demo), labels, demo.body))
+        labelled.append(Labelled(demo.demonstrator, observations_of(demo, imitator), labels, demo.body,
+                                 body_name(imitator)))
     return labelled
 
 
 def step_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer, *,
                 window_frames: int = STEP_WINDOW_FRAMES, stride_frames: int = STEP_STRIDE_FRAMES,
                 frames: Sequence[np.ndarray] | None = None, stop_distance_mm: float = 1.0,
-                stop_rotation_deg: float = 20.0, gap_margin: float = 2.0) -> list[Labelled]:
+                stop_rotation_deg: float = 20.0, gap_margin: float = 2.0,
+                imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
     """Frames labelled with the primitive of the ``window_frames`` frames from them (from the
     demonstration's last full window near its end), named as the segmenter names a segment
     (:func:`polymimic.step_names.name_windows`): a stop if the robot ends the window within
@@ -220,7 +230,7 @@ def step_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRe
     label of the one named before them. Naming costs a reading of a whole window, so a caller
     that samples some frames only names just those: ``frames`` gives, per demonstration, the
     frames to name (as :func:`~polymimic.baselines.training.sample_rows` draws them), and every
-    other frame is left without a label."""
+    other frame is left without a label. Observations are on the field of body ``imitator``."""
     demos = check_demonstrations(demonstrations)
     if isinstance(stride_frames, bool) or not isinstance(stride_frames, (int, np.integer)) or stride_frames < 1:
         raise ValueError(f"stride_frames must be an integer ≥ 1, got {stride_frames!r}")
@@ -239,5 +249,6 @@ def step_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRe
         else:
             labels = np.full(n, NO_LABEL, dtype=np.int64)
             labels[starts] = named
-        labelled.append(Labelled(demo.demonstrator, observations_of(demo), labels, demo.body))
+        labelled.append(Labelled(demo.demonstrator, observations_of(demo, imitator), labels, demo.body,
+                                 body_name(imitator)))
     return labelled

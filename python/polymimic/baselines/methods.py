@@ -22,9 +22,10 @@ from polymimic.baselines.bc import labelled as bc_labelled
 from polymimic.baselines.bc_best import labelled as bc_best_labelled
 from polymimic.baselines.bco import labelled as bco_labelled
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
-from polymimic.baselines.labels import Labelled, check_demonstrations, check_weights
+from polymimic.baselines.labels import IMITATOR_BODY, Labelled, check_demonstrations, check_weights
 from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_fit_seed, check_max_samples, train
+from polymimic.bodies import WheeledBody, body_name, resolve
 from polymimic.field import Demonstration
 
 __all__ = ["METHODS", "Prepared", "check_method", "fit", "fit_prepared", "prepare"]
@@ -51,14 +52,17 @@ class Prepared:
     seed: int
     max_samples: int
     weights: dict[str, float] | None = None
+    imitator: str = IMITATOR_BODY
 
 
 def prepare(method: str, demonstrations: Sequence[Demonstration], *,
             recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
             member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
-            max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0) -> Prepared:
+            max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0,
+            imitator: str | WheeledBody = IMITATOR_BODY) -> Prepared:
     """Label the demonstrations as ``method`` does (reading them once with the recogniser, for
-    ``bco``, at the frames fits of at most ``max_samples`` decision samples under ``seed`` take).
+    ``bco``, at the frames fits of at most ``max_samples`` decision samples under ``seed`` take),
+    for an imitator of body ``imitator`` (its field, its first frames; the policy drives it).
 
     ``recognizer`` is needed by ``bco`` and ``bco_lp``, ``weights`` by ``bco_lp``, ``member``
     by ``bc_best``; ``random`` needs nothing (and takes an empty list).
@@ -66,23 +70,26 @@ def prepare(method: str, demonstrations: Sequence[Demonstration], *,
     method = check_method(method)
     check_max_samples(max_samples)
     check_fit_seed(seed)
+    body = body_name(resolve(imitator))  # refuses a body no one described
     if method == "random":
-        return Prepared(method, [], seed, max_samples)
+        return Prepared(method, [], seed, max_samples, imitator=body)
     demos = check_demonstrations(demonstrations)
     if method == "bc":
-        return Prepared(method, bc_labelled(demos), seed, max_samples)
+        return Prepared(method, bc_labelled(demos, imitator=imitator), seed, max_samples, imitator=body)
     if method == "bc_best":
         if member is None:
             raise ValueError("bc_best needs member: the name of the demonstrator to clone")
-        return Prepared(method, bc_best_labelled(demos, member=member), seed, max_samples)
+        return Prepared(method, bc_best_labelled(demos, member=member, imitator=imitator), seed, max_samples,
+                        imitator=body)
     if recognizer is None:
         raise ValueError(f"{method} needs recognizer: a polymimic.PrimitiveRecognizer trained on self-observation")
-    labelled = bco_labelled(demos, recognizer=recognizer, segmenter=segmenter, max_samples=max_samples, seed=seed)
+    labelled = bco_labelled(demos, recognizer=recognizer, segmenter=segmenter, max_samples=max_samples, seed=seed,
+                            imitator=imitator)
     if method == "bco":
-        return Prepared(method, labelled, seed, max_samples)
+        return Prepared(method, labelled, seed, max_samples, imitator=body)
     if weights is None:
         raise ValueError("bco_lp needs weights: a weight in [0, 1] for every demonstrator (e.g. its final LP)")
-    return Prepared(method, labelled, seed, max_samples, check_weights(weights, demos))
+    return Prepared(method, labelled, seed, max_samples, check_weights(weights, demos), imitator=body)
 
 
 def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None = None) -> ClonedPolicy | RandomPolicy:
@@ -92,7 +99,7 @@ def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None 
     each primitive for the environment's one second."""
     if prepared.method == "random":
         return RandomPolicy(seed=prepared.seed, frames_per_action=30 if hyperparameters is None
-                            else hyperparameters.frames_per_action)
+                            else hyperparameters.frames_per_action, body=prepared.imitator)
     return train(prepared.method, prepared.labelled, hyperparameters=hyperparameters or DEFAULT, seed=prepared.seed,
                  weights=prepared.weights, max_samples=prepared.max_samples)
 
@@ -100,7 +107,8 @@ def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None 
 def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters: Hyperparameters | None = None,
         seed: int = 0, recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
         member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
-        max_samples: int = MAX_DECISION_SAMPLES) -> ClonedPolicy | RandomPolicy:
+        max_samples: int = MAX_DECISION_SAMPLES,
+        imitator: str | WheeledBody = IMITATOR_BODY) -> ClonedPolicy | RandomPolicy:
     """Fit baseline ``method`` (one of :data:`METHODS`) on ``demonstrations``.
 
     The same as the method's own ``fit`` (:func:`polymimic.baselines.bc.fit`, …), by name.
@@ -108,7 +116,8 @@ def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters
     ``random``: one primitive a second, the environment's step). ``max_samples`` caps the
     decision samples (:data:`~polymimic.baselines.training.MAX_DECISION_SAMPLES`: the sample
     stride widens evenly to stay under it); ``seed`` draws which frames they are
-    (:func:`~polymimic.baselines.training.sample_rows`) and seeds the classifier.
+    (:func:`~polymimic.baselines.training.sample_rows`) and seeds the classifier. ``imitator``
+    is the body the policy drives (the Lego robot by default), on its own field.
 
     Raises
     ------
@@ -117,5 +126,5 @@ def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters
         ``max_samples`` is not an integer ≥ 1.
     """
     prepared = prepare(method, demonstrations, recognizer=recognizer, weights=weights, member=member,
-                       segmenter=segmenter, max_samples=max_samples, seed=seed)
+                       segmenter=segmenter, max_samples=max_samples, seed=seed, imitator=imitator)
     return fit_prepared(prepared, hyperparameters=hyperparameters)

@@ -25,7 +25,7 @@ from typing import Any, Protocol, runtime_checkable
 import numpy as np
 
 from polymimic._native import ModelFileError
-from polymimic.baselines.features import check_observations, features
+from polymimic.baselines.features import check_observations, features, target_goal_of
 from polymimic.baselines.files import read_policy_file, write_policy_file
 from polymimic.baselines.hyperparameters import Hyperparameters
 from polymimic.field import PRIMITIVES
@@ -56,14 +56,19 @@ class ClonedPolicy:
         The method that learned it (``"bc"``, ``"bco"``, …), for the record.
     hyperparameters : Hyperparameters
     classifier : fitted scikit-learn classifier
-        Maps ``features(observations, feature_set=hyperparameters.feature_set)`` to indices
-        into :data:`polymimic.field.PRIMITIVES`.
+        Maps ``features(observations, feature_set=hyperparameters.feature_set)`` (on the body's
+        field) to indices into :data:`polymimic.field.PRIMITIVES`.
+    body : str, default "lego"
+        The name of the body the policy drives, on that body's field.
     """
 
-    def __init__(self, method: str, hyperparameters: Hyperparameters, classifier: Any) -> None:
+    body = "lego"  # what a policy saved before bodies were named drives
+
+    def __init__(self, method: str, hyperparameters: Hyperparameters, classifier: Any, *, body: str = "lego") -> None:
         self.method = method
         self.hyperparameters = hyperparameters
         self.classifier = classifier
+        self.body = body
 
     @property
     def frames_per_action(self) -> int:
@@ -74,18 +79,19 @@ class ClonedPolicy:
         obs = check_observations(observations)
         if len(obs) == 0:
             return np.empty(0, dtype=np.int64)
-        return np.asarray(self.classifier.predict(features(obs, feature_set=self.hyperparameters.feature_set)),
-                          dtype=np.int64)
+        seen = features(obs, feature_set=self.hyperparameters.feature_set, target_goal_mm=target_goal_of(self.body))
+        return np.asarray(self.classifier.predict(seen), dtype=np.int64)
 
     def reset(self) -> None:
         """Nothing to restart: a cloned policy is deterministic."""
 
     def save(self, path: str | os.PathLike[str]) -> None:
-        write_policy_file(path, {"kind": "cloned", "method": self.method,
+        write_policy_file(path, {"kind": "cloned", "method": self.method, "body": self.body,
                                  "hyperparameters": self.hyperparameters.to_dict()}, self)
 
     def __repr__(self) -> str:
-        return f"ClonedPolicy({self.method}, {self.hyperparameters})"
+        body = "" if self.body == "lego" else f", body={self.body!r}"
+        return f"ClonedPolicy({self.method}, {self.hyperparameters}{body})"
 
 
 class RandomPolicy:
@@ -96,15 +102,20 @@ class RandomPolicy:
     seed : int, default 0
     frames_per_action : int, default 30
         The environment's step: one primitive a second.
+    body : str, default "lego"
+        The name of the body the policy drives.
     """
 
-    def __init__(self, *, seed: int = 0, frames_per_action: int = 30) -> None:
+    body = "lego"  # what a policy saved before bodies were named drives
+
+    def __init__(self, *, seed: int = 0, frames_per_action: int = 30, body: str = "lego") -> None:
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
             raise ValueError(f"seed must be an integer ≥ 0, got {seed!r}")
         if isinstance(frames_per_action, bool) or not isinstance(frames_per_action, (int, np.integer)) \
                 or frames_per_action < 1:
             raise ValueError(f"frames_per_action must be an integer ≥ 1, got {frames_per_action!r}")
         self.method = "random"
+        self.body = body
         self.seed = int(seed)
         self._frames_per_action = int(frames_per_action)
         self.reset()
@@ -123,7 +134,7 @@ class RandomPolicy:
         self._rng = np.random.default_rng(self.seed)
 
     def save(self, path: str | os.PathLike[str]) -> None:
-        write_policy_file(path, {"kind": "random", "method": "random", "seed": self.seed,
+        write_policy_file(path, {"kind": "random", "method": "random", "seed": self.seed, "body": self.body,
                                  "frames_per_action": self._frames_per_action}, self)
 
     def __repr__(self) -> str:

@@ -44,7 +44,7 @@ from typing import Any
 import numpy as np
 
 from polymimic.baselines.classifiers import fit_weighted, make_classifier
-from polymimic.baselines.features import features
+from polymimic.baselines.features import features, target_goal_of
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import NO_LABEL, Labelled, starts_as_imitator
 from polymimic.baselines.policy import ClonedPolicy
@@ -128,7 +128,7 @@ def decision_samples(labelled: Sequence[Labelled], *, weights: Mapping[str, floa
     at most about ``max_samples`` of them, at the frames :func:`sample_rows` draws with ``seed``."""
     observations, labels, sample_weight = [], [], []
     every = sample_rows([(item.demonstrator, len(item.labels)) for item in labelled], max_samples=max_samples,
-                        seed=seed, first_frames=[starts_as_imitator(item.body) for item in labelled])
+                        seed=seed, first_frames=[starts_as_imitator(item.body, item.imitator) for item in labelled])
     for item, rows in zip(labelled, every):
         rows = rows[item.labels[rows] != NO_LABEL]
         observations.append(item.observations[rows])
@@ -163,5 +163,11 @@ def train(method: str, labelled: Sequence[Labelled], *, hyperparameters: Hyperpa
     if not (w > 0).any():
         raise ValueError(f"{method}: no decision sample to learn from (no labelled frame, or every weight 0)")
     model = make_classifier(hyperparameters.classifier, dict(hyperparameters.params), seed=seed)
-    classifier = fit_weighted(model, features(X, feature_set=hyperparameters.feature_set), y, w)
-    return ClonedPolicy(method, hyperparameters, classifier)
+    imitators = {item.imitator for item in labelled}
+    if len(imitators) != 1:
+        raise ValueError(f"{method}: the demonstrations are labelled for imitators {sorted(imitators)}; one policy "
+                         f"has one body")
+    imitator = imitators.pop()
+    goal = target_goal_of(imitator)
+    classifier = fit_weighted(model, features(X, feature_set=hyperparameters.feature_set, target_goal_mm=goal), y, w)
+    return ClonedPolicy(method, hyperparameters, classifier, body=imitator)

@@ -33,9 +33,11 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.evaluation import VALIDATION_SEED_BASE, _check_seed, attempts_of, play
 from polymimic.baselines.hyperparameters import Hyperparameters
 from polymimic.baselines.hyperparameters import candidates as draw_candidates
+from polymimic.baselines.labels import IMITATOR_BODY
 from polymimic.baselines.methods import check_method, fit_prepared, prepare
 from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples
+from polymimic.bodies import WheeledBody
 from polymimic.field import Demonstration
 
 __all__ = ["Tuning", "tune", "validation_attempts", "validation_rank"]
@@ -84,7 +86,8 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
          evaluation_seed: int = 0, evaluation_attempts_per_configuration: int = 25, seed: int = 0,
          recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
          member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
-         field_config: dict[str, Any] | str | None = None, max_samples: int = MAX_DECISION_SAMPLES) -> Tuning:
+         field_config: dict[str, Any] | str | None = None, max_samples: int = MAX_DECISION_SAMPLES,
+         imitator: str | WheeledBody = IMITATOR_BODY) -> Tuning:
     """Choose ``method``'s hyperparameters on validation attempts.
 
     Parameters
@@ -110,6 +113,8 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         The field of the validation attempts.
     max_samples : int, default :data:`~polymimic.baselines.training.MAX_DECISION_SAMPLES`
         The most decision samples each fit takes.
+    imitator : str or polymimic.bodies.WheeledBody, default "lego"
+        The body the tuned policy drives, on its own field (validation attempts included).
 
     Raises
     ------
@@ -134,7 +139,8 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         steps = list(dict.fromkeys(h.frames_per_action for h in tried))
         tried = [next(h for h in tried if h.frames_per_action == k) for k in steps]
     prepared = prepare(method, list(demonstrations) if method != "random" else [], recognizer=recognizer,
-                       weights=weights, member=member, segmenter=segmenter, max_samples=max_samples, seed=seed)
+                       weights=weights, member=member, segmenter=segmenter, max_samples=max_samples, seed=seed,
+                       imitator=imitator)
     scores: list[dict[str, Any]] = []
     best: tuple[tuple[int, int], int, ClonedPolicy | RandomPolicy] | None = None
     for index, hyperparameters in enumerate(tried):

@@ -13,8 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from polymimic._native import Episode
-from polymimic.bodies import Field, WheeledBody, body_name, resolve
+from polymimic.bodies import WheeledBody, body_name, playing_field
 from polymimic.field import FRAME_DTYPE, OUTCOMES, UNKNOWN_COMMAND, Demonstration, command_table
 from polymimic.tracks.episodes import Stretch, bridged_gaps, lost_tracking, nominal_period_s, split_episodes
 from polymimic.tracks.errors import LostTrackingWarning, TrackLogError
@@ -68,18 +67,6 @@ class ImportedTracks:
 
 MIN_READINGS = 2
 """An episode of fewer readings shows no motion: it is left out, and counted, as invalid."""
-
-
-def playing_field(body: str | WheeledBody) -> Field:
-    """The size of the field ``body`` plays on (``lego`` and ``humanoid``: 1020 × 810 mm;
-    ``tiny``: 560 × 345 mm; a :class:`polymimic.bodies.WheeledBody`, its own field's).
-
-    >>> playing_field("tiny")
-    Field(length_mm=560.0, width_mm=345.0, goal_mouth_mm=172.5, ball_diameter_mm=25.0)
-    """
-    seen = Episode(resolve(body)).observation()
-    length_mm, width_mm = seen["field"]
-    return Field(float(length_mm), float(width_mm), float(seen["goal_mouth_mm"]), float(seen["ball_diameter_mm"]))
 
 
 def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: Mapping[str, str] | None = None,

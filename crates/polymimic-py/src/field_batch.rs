@@ -46,7 +46,8 @@ impl PyEpisodeBatch {
     /// step holds one primitive for `frames_per_action` tracker frames in every slot (on the
     /// humanoid, the primitive's walking, turning or waiting equivalent).
     #[new]
-    #[pyo3(signature = (n, *, frames_per_action=30, config=None, body=Body(BodyKind::Lego)))]
+    #[pyo3(signature = (n, *, frames_per_action=30, config=None, body=Body(BodyKind::Lego)),
+           text_signature = "(n, *, frames_per_action=30, config=None, body='lego')")]
     fn new(n: i64, frames_per_action: i64, config: Option<&str>, body: Body) -> PyResult<Self> {
         let config = field_config(config)?;
         let batch =

@@ -61,7 +61,10 @@ pub struct PyImitatorPolicy {
 #[pymethods]
 impl PyImitatorPolicy {
     #[new]
-    #[pyo3(signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None, body=Body(BodyKind::Lego)))]
+    #[pyo3(
+        signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None, body=Body(BodyKind::Lego)),
+        text_signature = "(trial, *, recognizer, config=None, control='thesis', demonstrations=None, body='lego')"
+    )]
     fn new(
         py: Python<'_>,
         trial: &PyTrialResult,

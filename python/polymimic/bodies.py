@@ -207,7 +207,7 @@ class WheeledBody:
     def _check_fits_its_field(self) -> None:
         """The robot must fit between its start and the ball: a third of the field's length
         apart in both configurations."""
-        field = self.field if isinstance(self.field, Field) else thesis_field(self.field)
+        field = _field_of(self)
         room_mm = field.length_mm / 3 - field.ball_diameter_mm / 2
         if self.length_mm / 2 >= room_mm or self.width_mm >= field.width_mm:
             raise ValueError(f"a {self.length_mm:g} × {self.width_mm:g} mm body does not fit the {field.length_mm:g} × "
@@ -346,6 +346,12 @@ def thesis_field(name: str) -> Field:
     return Field(length_mm, width_mm, seen["goal_mouth_mm"], seen["ball_diameter_mm"])
 
 
+def _field_of(body: str | WheeledBody) -> Field:
+    """The sizes of the field ``body`` (or the body so named) plays on."""
+    field = body.field if isinstance(body, WheeledBody) else field_of(body)
+    return field if isinstance(field, Field) else thesis_field(field)
+
+
 def _slip_from(value: Any, where: str) -> SlipSpec:
     def one(table: Any, key: str) -> Slip:
         if not isinstance(table, Mapping):
@@ -439,14 +445,9 @@ def playing_field(body: str | WheeledBody) -> Field:
     >>> playing_field("tiny")
     Field(length_mm=560.0, width_mm=345.0, goal_mouth_mm=172.5, ball_diameter_mm=25.0)
     """
-    seen = _native.Episode(resolve(body)).observation()
-    length_mm, width_mm = seen["field"]
-    return Field(float(length_mm), float(width_mm), float(seen["goal_mouth_mm"]), float(seen["ball_diameter_mm"]))
-
-
-@functools.lru_cache(maxsize=2)
-def _thesis_length_mm(field: str) -> float:
-    return thesis_field(field).length_mm
+    if not isinstance(body, WheeledBody):
+        resolve(body)  # a name no body has is refused as the simulated field refuses it
+    return _field_of(body)
 
 
 def field_length_mm(body: str | WheeledBody) -> float:
@@ -456,8 +457,7 @@ def field_length_mm(body: str | WheeledBody) -> float:
     >>> field_length_mm("humanoid"), field_length_mm("tiny")
     (1020.0, 560.0)
     """
-    field = field_of(body_name(body))
-    return field.length_mm if isinstance(field, Field) else _thesis_length_mm(field)
+    return _field_of(body).length_mm
 
 
 def pitch_of(body: str) -> str:

@@ -27,8 +27,8 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from polymimic._native import Episode, EpisodeBatch
-from polymimic.bodies import WheeledBody, body_name, resolve
+from polymimic._native import EpisodeBatch
+from polymimic.bodies import WheeledBody, body_name, playing_field, resolve
 from polymimic.env import _check_configuration, observation_space
 from polymimic.field import OUTCOMES, _field_config
 
@@ -74,8 +74,8 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
                                    body=resolve(body))
         self.body = body_name(body)
         self.frames_per_action = int(frames_per_action)
-        self.single_observation_space = observation_space(
-            Episode(resolve(body), configuration=1, seed=0, config=_field_config(config)).observation()["field"])
+        field = playing_field(body)
+        self.single_observation_space = observation_space((field.length_mm, field.width_mm))
         self.single_action_space = gymnasium.spaces.Discrete(5)
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
         self.action_space = batch_space(self.single_action_space, self.num_envs)

@@ -68,10 +68,11 @@ def play(policy: Policy, attempts: list[tuple[int, int]], *,
         raise ValueError(f"policy must have frames_per_action, predict, reset and save; got {type(policy).__name__}")
     config = _field_config(field_config)
     body = str(getattr(policy, "body", "lego"))
-    episodes = [_native.Episode(resolve(body), configuration=c, seed=s, config=config) for c, s in attempts]
+    driven = resolve(body)
+    episodes = [_native.Episode(driven, configuration=c, seed=s, config=config) for c, s in attempts]
     policy.reset()
     with threadpool_limits(limits=1):  # a batch of ≤ 50 rows gains nothing from threads, and loses on a busy node
-        executed = _step_together(policy, episodes, [primitive_command(p, resolve(body)) for p in PRIMITIVES])
+        executed = _step_together(policy, episodes, [primitive_command(p, driven) for p in PRIMITIVES])
     demos = [Demonstration(frames=as_frames(e.frames), outcome=str(e.outcome), demonstrator=_name(policy),
                            configuration=c, seed=s, body=body) for e, (c, s) in zip(episodes, attempts)]
     return Evaluation(goals=sum(d.outcome == "goal" for d in demos),

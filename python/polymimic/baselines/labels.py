@@ -53,7 +53,7 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.bodies import Field, WheeledBody, body_name, field_length_mm, field_of, thesis_field
+from polymimic.bodies import WheeledBody, body_name, field_length_mm, thesis_field
 from polymimic.field import PRIMITIVES, Demonstration, command_primitives, command_table, primitives_sent
 from polymimic.step_names import NO_NAME, WINDOW_FRAMES, name_windows, repeat_last_good
 
@@ -169,9 +169,7 @@ def observations_of(demo: Demonstration, imitator: str | WheeledBody = IMITATOR_
     frames = demo.frames
     obs = repeat_last_good(np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
                                                                  "ball_x_mm", "ball_y_mm")]).astype(np.float64))
-    field = field_of(demo.body)
-    length_mm = (field if isinstance(field, Field) else thesis_field(field)).length_mm
-    imitator_mm = field_length_mm(imitator)
+    length_mm, imitator_mm = field_length_mm(demo.body), field_length_mm(imitator)
     return obs if length_mm <= imitator_mm else onto_imitator_field(obs, field_length_mm=length_mm,
                                                                     imitator_length_mm=imitator_mm)
 

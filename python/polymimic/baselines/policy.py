@@ -79,8 +79,13 @@ class ClonedPolicy:
         obs = check_observations(observations)
         if len(obs) == 0:
             return np.empty(0, dtype=np.int64)
-        seen = features(obs, feature_set=self.hyperparameters.feature_set, target_goal_mm=target_goal_of(self.body))
-        return np.asarray(self.classifier.predict(seen), dtype=np.int64)
+        return np.asarray(self.classifier.predict(self.features(obs)), dtype=np.int64)
+
+    def features(self, observations: np.ndarray) -> np.ndarray:
+        """What the classifier reads of an ``(n, 5)`` observation batch: its feature set's
+        features, on the field of the policy's body."""
+        return features(observations, feature_set=self.hyperparameters.feature_set,
+                        target_goal_mm=target_goal_of(self.body))
 
     def reset(self) -> None:
         """Nothing to restart: a cloned policy is deterministic."""

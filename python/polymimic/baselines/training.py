@@ -44,7 +44,6 @@ from typing import Any
 import numpy as np
 
 from polymimic.baselines.classifiers import fit_weighted, make_classifier
-from polymimic.baselines.features import features, target_goal_of
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import NO_LABEL, Labelled, starts_as_imitator
 from polymimic.baselines.policy import ClonedPolicy
@@ -167,7 +166,6 @@ def train(method: str, labelled: Sequence[Labelled], *, hyperparameters: Hyperpa
     if len(imitators) != 1:
         raise ValueError(f"{method}: the demonstrations are labelled for imitators {sorted(imitators)}; one policy "
                          f"has one body")
-    imitator = imitators.pop()
-    goal = target_goal_of(imitator)
-    classifier = fit_weighted(model, features(X, feature_set=hyperparameters.feature_set, target_goal_mm=goal), y, w)
-    return ClonedPolicy(method, hyperparameters, classifier, body=imitator)
+    policy = ClonedPolicy(method, hyperparameters, model, body=imitators.pop())
+    policy.classifier = fit_weighted(model, policy.features(X), y, w)
+    return policy

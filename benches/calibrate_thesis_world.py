@@ -89,6 +89,7 @@ import time
 from collections.abc import Iterable, Mapping
 from typing import Any
 
+from polymimic._atomic import atomic_path
 from polymimic.reproduce import thesis
 from polymimic.runs.config import ConfigError, RunConfig
 from polymimic.runs.roster import HETEROGENEOUS
@@ -447,12 +448,10 @@ def write_best(study: Any, *, size: str, storage: str, command: str, path: pathl
     best = study.best_trial
     text = best_toml(best, size=size, storage=storage, command=command, path=path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    temporary = path.with_name(f".{path.name}.tmp")
-    temporary.write_text(text, encoding="utf-8")
-    if constants_of(RunConfig.load(temporary).field) != best.params:
-        temporary.unlink()
-        raise RuntimeError(f"{path} would not read back as trial {best.number}'s world")
-    os.replace(temporary, path)
+    with atomic_path(path) as temporary:  # left as it was if the check below refuses
+        temporary.write_text(text, encoding="utf-8")
+        if constants_of(RunConfig.load(temporary).field) != best.params:
+            raise RuntimeError(f"{path} would not read back as trial {best.number}'s world")
 
 
 def log_line(log: Any, record: Mapping[str, Any]) -> None:

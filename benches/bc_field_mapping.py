@@ -8,11 +8,13 @@ attempts. The ways:
 
 - ``stretch``: the whole small field stretched per axis, x by 1020/560 and y by 810/345 (what
   the cloning baselines once did);
-- ``mapped``: :func:`polymimic.baselines.labels.onto_imitator_field`, the ball's position
-  scaled by the fields' lengths and the robot at its true offset from it (what they do with a
-  field longer than the imitator's);
+- ``mapped``: the ball's position scaled by the fields' lengths alone and the robot at its
+  true offset from it (what they once did with a field longer than the imitator's);
+- ``correspondence``: :func:`polymimic.bodies.onto_field`, the learner's one correspondence
+  between fields (what every part of polymimic does now): the ball by the lengths along and
+  goal mouth onto goal mouth across, the robot at its offset from the ball;
 - ``recorded``: the tiny's frames as recorded, its field centred on the imitator's (what they
-  do with a field no longer than it).
+  once did with a field no longer than it).
 
 Kicks are labelled ``backward`` (as they look from above, Table 4.4) or ``forward`` (what
 ``bc`` does). Prints one JSON line per way and label: net goals, goals and own goals per fit.
@@ -31,9 +33,9 @@ import numpy as np  # noqa: E402
 from _benchmark_run import arguments, opened  # noqa: E402
 from polymimic.baselines.evaluation import play  # noqa: E402
 from polymimic.baselines.hyperparameters import Hyperparameters  # noqa: E402
-from polymimic.baselines.labels import Labelled, command_labels, onto_imitator_field  # noqa: E402
+from polymimic.baselines.labels import Labelled, command_labels  # noqa: E402
 from polymimic.baselines.training import train  # noqa: E402
-from polymimic.bodies import field_of  # noqa: E402
+from polymimic.bodies import field_of, onto_field  # noqa: E402
 from polymimic.datasets import load_demonstrations  # noqa: E402
 from polymimic.field import PRIMITIVES, command_table  # noqa: E402
 from polymimic.step_names import repeat_last_good  # noqa: E402
@@ -48,8 +50,13 @@ def observations(demo, way: str) -> np.ndarray:
     seen = repeat_last_good(np.column_stack([demo.frames[c] for c in OBSERVATION]).astype(np.float64))
     if field_of(demo.body) != "small" or way == "recorded":
         return seen
+    if way == "correspondence":
+        return onto_field(seen, recorded_by=demo.body)
     if way == "mapped":
-        return onto_imitator_field(seen, field_length_mm=560.0)
+        mapped = seen.copy()
+        mapped[:, [3, 4]] *= 1020.0 / 560.0
+        mapped[:, [0, 1]] = mapped[:, [3, 4]] + (seen[:, [0, 1]] - seen[:, [3, 4]])
+        return mapped
     stretched = seen.copy()
     stretched[:, [0, 3]] *= 1020.0 / 560.0
     stretched[:, [1, 4]] *= 810.0 / 345.0
@@ -70,7 +77,7 @@ def main() -> None:
     run, config, evaluation = opened(args.run_dir)
     settings = config.benchmark
     demonstrations = load_demonstrations(run.crowd_path(args.profile))
-    for way in ("stretch", "mapped", "recorded"):
+    for way in ("stretch", "mapped", "correspondence", "recorded"):
         for kick in ("backward", "forward"):
             items = labelled(demonstrations, way, kick)
             fits = []

@@ -2,13 +2,13 @@
 
 For each imitator body (lego, tiny, humanoid) a recogniser is trained on that body's own
 self-observation (``--self-observation`` sequences per primitive, seed 1); then, for each
-demonstrator whose demonstrations were played on that body's field, one learning trial (seed 0)
-on ``--demonstrations`` of its demonstrations per configuration (seed 0), and the trained
+demonstrator, one learning trial (seed 0) on that body's setting from ``--demonstrations`` of its
+demonstrations per configuration (seed 0; another field's brought onto the imitator's by
+:func:`polymimic.bodies.onto_field`), and the trained
 imitator plays the same 50 evaluation attempts (seed 1000) under the thesis's control and the
 improved one. The humanoid takes no primitives: each is sent as the command that executes it
 (``polymimic.field.primitive_command``). Prints one JSON line per (imitator, demonstrator):
-goals and own goals under each control. Demonstrations from another field are left out (the
-improved control learns the ball's response on the imitator's own field).
+goals and own goals under each control.
 Run: ``python benches/imitator_bodies.py [--demonstrations 25] [--self-observation 200]``.
 """
 
@@ -17,8 +17,6 @@ import json
 
 import polymimic
 from polymimic import recognition
-from polymimic.bodies import field_length_mm
-from polymimic.field import BODIES
 from polymimic.learning import ImitatorPolicy, evaluate, run_trial, segmented
 
 IMITATORS = ("lego", "tiny", "humanoid")
@@ -34,11 +32,9 @@ def main() -> None:
         recognizer = recognition.train_recognizer(polymimic.self_observation(args.self_observation, seed=1,
                                                                              body=imitator))
         for who in DEMONSTRATORS:
-            if field_length_mm(BODIES[who]) != field_length_mm(imitator):
-                continue
             demos = [d for c in (1, 2) for d in polymimic.record(who, configuration=c, n=args.demonstrations, seed=0)]
             batch = segmented(demos, recognizer)
-            trial = run_trial(batch, recognizer=recognizer, ordering=[who], seed=0)
+            trial = run_trial(batch, recognizer=recognizer, ordering=[who], seed=0, body=imitator)
             scores = {}
             for control in ("thesis", "improved"):
                 policy = ImitatorPolicy(trial, recognizer=recognizer, control=control, demonstrations=batch,

@@ -27,7 +27,7 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover - exercised on Python 3.9 and 3.10 only
     import tomli as tomllib
 
-__all__ = ["loads", "write_table", "write_value"]
+__all__ = ["dumps", "loads", "write_table", "write_value"]
 
 
 def loads(text: str) -> dict[str, Any]:
@@ -36,6 +36,11 @@ def loads(text: str) -> dict[str, Any]:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as error:
         raise ValueError(f"not valid TOML: {error}") from error
+
+
+def dumps(values: Mapping[str, Any]) -> str:
+    """One ``key = value`` line per value: a TOML document of plain values, no tables."""
+    return "".join(f"{key} = {write_value(value)}\n" for key, value in values.items())
 
 
 def write_table(lines: list[str], name: str, values: Mapping[str, Any], docs: Mapping[str, str]) -> None:

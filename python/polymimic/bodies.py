@@ -39,10 +39,13 @@ import threading
 from collections.abc import Mapping
 from typing import Any, Union
 
+import numpy as np
+import numpy.typing as npt
+
 from polymimic import _native
 
 __all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Field", "Slip", "WheeledBody", "bodies_from_tables",
-           "field_length_mm", "field_of", "pitch_of", "playing_field", "thesis_field"]
+           "field_length_mm", "field_of", "onto_field", "pitch_of", "playing_field", "reach_mm", "thesis_field"]
 
 PRIMITIVE_NAMES = ("forward", "backward", "left", "right", "stop")
 FIELDS = ("large", "small")
@@ -460,20 +463,57 @@ def field_length_mm(body: str | WheeledBody) -> float:
     return _field_of(body).length_mm
 
 
-def pitch_of(body: str) -> str:
+def pitch_of(body: str | WheeledBody) -> str:
     """The field a body plays on as the learner reads it: ``"large"``, ``"small"``, or the
     sizes of a :class:`Field` as JSON.
 
     >>> pitch_of("tiny")
     'small'
     """
-    field = field_of(body)
+    field = body.field if isinstance(body, WheeledBody) else field_of(body)
     if isinstance(field, str):
         return field
     sizes = field.sizes()
     return json.dumps({k: sizes[k] for k in ("length_mm", "width_mm", "goal_mouth_mm")})
 
 
+
+def reach_mm(body: str | WheeledBody, *, imitating: bool = False) -> float:
+    """How far from its centre ``body`` moves the ball, mm: the ball's radius beyond a wheeled
+    body's front (half its length), or, demonstrating, beyond the humanoid's kicking foot at full
+    reach (``imitating``, the humanoid walks into the ball: its primitives have no kick). The
+    learner's correspondence between bodies keeps a touch a touch (:func:`onto_field`).
+
+    >>> reach_mm("lego"), reach_mm("tiny"), reach_mm("humanoid"), reach_mm("humanoid", imitating=True)
+    (120.0, 20.0, 160.0, 85.0)
+    """
+    return _native.body_reach_mm(resolve(body), imitating=imitating)
+
+
+def onto_field(observations: npt.ArrayLike, *, recorded_by: str | WheeledBody,
+               imitator: str | WheeledBody = "lego") -> npt.NDArray[np.float64]:
+    """Observations ``(n, 5)`` (robot x, y (mm), heading (rad), ball x, y (mm)) of a demonstration
+    by the body ``recorded_by`` on its field, as an imitator of body ``imitator`` sees them on its
+    own: the learner's one correspondence, which every part of polymimic that learns from a
+    demonstration applies (the learning trial, the improved control, the cloning baselines).
+
+    The ball carries the field: along it, its position scales with the fields' lengths (goal
+    line onto goal line); across it, the goal mouth maps onto the goal mouth and the rest of each
+    half onto the rest, so a goal stays a goal, an own goal an own goal and a ball in play in
+    play, whatever the mouths' share of the widths. The robot keeps its heading and its bearing
+    from the ball; its distance from the ball maps by the bodies' :func:`reach_mm` (the
+    demonstrator's as it played, the imitator's as it imitates) up to the demonstrator's reach,
+    so a touch stays a touch, and beyond it at the fields' scale. Without the ball (NaN) the
+    robot maps as a point of the field. Mapped back, a frame is itself (to rounding); in its own
+    setting (the same field and reach), it is itself exactly.
+
+    >>> import numpy as np
+    >>> seen = np.array([[260.0, -86.25, 0.3, 280.0, -86.25]])  # the tiny touching the ball on the far post
+    >>> onto_field(seen, recorded_by="tiny").tolist()           # the Lego's touch, on the large field's post
+    [[390.0, -202.5, 0.3, 510.0, -202.5]]
+    """
+    return _native.observations_onto(observations, pitch_of(recorded_by), reach_mm(recorded_by), pitch_of(imitator),
+                                     reach_mm(imitator, imitating=True))
 
 def resolve(body: str | WheeledBody) -> str | WheeledBody:
     """``body`` as the field takes it: a thesis body's name as it is, a :class:`WheeledBody`

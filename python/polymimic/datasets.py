@@ -43,9 +43,10 @@ from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, Pr
 
 __all__ = ["load_demonstrations", "load_self_observation", "save_demonstrations", "save_self_observation"]
 
-FORMAT_VERSION = 2
+FORMAT_VERSION = 3
 """The version written; files of a later version are refused. Version 2 added the demonstrations'
-``body`` column; a version-1 file (without it) is read with each demonstrator's known body."""
+``body`` column (a version-1 file is read with each demonstrator's known body), version 3 the
+self-observation's (an earlier one is the Lego imitator's, the only body it then recorded)."""
 
 DEMONSTRATIONS = "polymimic.demonstrations"
 SELF_OBSERVATION = "polymimic.self_observation"
@@ -56,7 +57,8 @@ _FRAME_TYPES = {name: ("uint16" if name == "command" else "double") for name in 
 _DEMONSTRATION_TYPES = {"episode": "int32", **_FRAME_TYPES, "demonstrator": "string", "configuration": "int8",
                         "seed": "uint64", "outcome": "string", "body": "string"}
 _DEMONSTRATION_TYPES_V1 = {k: v for k, v in _DEMONSTRATION_TYPES.items() if k != "body"}
-_SELF_OBSERVATION_TYPES = {"sequence": "int32", **_FRAME_TYPES, "primitive": "string"}
+_SELF_OBSERVATION_TYPES = {"sequence": "int32", **_FRAME_TYPES, "primitive": "string", "body": "string"}
+_SELF_OBSERVATION_TYPES_V2 = {k: v for k, v in _SELF_OBSERVATION_TYPES.items() if k != "body"}
 
 
 def save_demonstrations(demos: Sequence[Demonstration], path: str | os.PathLike[str]) -> None:
@@ -128,7 +130,8 @@ def load_demonstrations(path: str | os.PathLike[str]) -> list[Demonstration]:
     >>> [(d.demonstrator, d.configuration, d.seed) for d in load_demonstrations(path)][0][:2]
     ('tiny', 2)
     """
-    columns, starts, stops = _read(path, DEMONSTRATIONS, {2: _DEMONSTRATION_TYPES, 1: _DEMONSTRATION_TYPES_V1},
+    columns, starts, stops = _read(path, DEMONSTRATIONS, {3: _DEMONSTRATION_TYPES, 2: _DEMONSTRATION_TYPES,
+                                                         1: _DEMONSTRATION_TYPES_V1},
                                    "episode")
     names = ("demonstrator", "configuration", "seed", "outcome") + (("body",) if "body" in columns else ())
     meta = {name: _per_group(columns, name, starts, stops, path, "episode") for name in names}
@@ -162,9 +165,6 @@ def save_self_observation(seqs: Sequence[PrimitiveSequence], path: str | os.Path
     """
     items = _checked_items(seqs, PrimitiveSequence, "self-observation sequences", "PrimitiveSequence")
     for i, seq in enumerate(items):
-        if seq.body != "lego":
-            raise ValueError(f"sequence {i} is the {seq.body!r}'s self-observation; the self-observation file "
-                             f"records the Lego imitator's only (its body would be lost on reading)")
         _check_frames(seq.frames, f"sequence {i}")
         if seq.primitive not in PRIMITIVES:
             raise ValueError(f"sequence {i} has primitive {seq.primitive!r}; expected one of {', '.join(PRIMITIVES)}")
@@ -173,6 +173,7 @@ def save_self_observation(seqs: Sequence[PrimitiveSequence], path: str | os.Path
         "sequence": _repeat(np.arange(len(items)), lengths, "int32"),
         **_frame_columns([s.frames for s in items]),
         "primitive": _repeat([s.primitive for s in items], lengths, object),
+        "body": _repeat([s.body for s in items], lengths, object),
     }
     _write(columns, _SELF_OBSERVATION_TYPES, SELF_OBSERVATION, path)
 
@@ -190,13 +191,18 @@ def load_self_observation(path: str | os.PathLike[str]) -> list[PrimitiveSequenc
     >>> [len(s.frames) for s in load_self_observation(path)]
     [30, 30, 30, 30, 30]
     """
-    columns, starts, stops = _read(path, SELF_OBSERVATION, {1: _SELF_OBSERVATION_TYPES, 2: _SELF_OBSERVATION_TYPES},
+    columns, starts, stops = _read(path, SELF_OBSERVATION, {1: _SELF_OBSERVATION_TYPES_V2,
+                                                            2: _SELF_OBSERVATION_TYPES_V2, 3: _SELF_OBSERVATION_TYPES},
                                    "sequence")
     primitives = _per_group(columns, "primitive", starts, stops, path, "sequence")
     _check_values(primitives, PRIMITIVES, "primitive", path)
+    bodies = _per_group(columns, "body", starts, stops, path, "sequence") if "body" in columns else None
+    if bodies is not None:
+        _check_names(bodies, "body", path)
     frames = _frames(columns)
-    return [PrimitiveSequence(primitive=str(p), frames=frames[a:b].copy())
-            for p, a, b in zip(primitives, starts, stops)]
+    return [PrimitiveSequence(primitive=str(p), frames=frames[a:b].copy(),
+                              body=str(bodies[i]) if bodies is not None else "lego")
+            for i, (p, a, b) in enumerate(zip(primitives, starts, stops))]
 
 
 # Saving.

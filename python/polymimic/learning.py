@@ -22,10 +22,11 @@ from typing import Any, Union
 from polymimic import _native
 from polymimic._arguments import integer
 from polymimic._atomic import atomic_write_text
-from polymimic._native import ModelResult, SegmentedDemonstrations, TrialResult
-from polymimic._toml import loads, write_value
-from polymimic.bodies import WheeledBody, pitch_of, resolve
+from polymimic._native import ModelFileError, ModelResult, SegmentedDemonstrations, TrialResult
+from polymimic._toml import dumps, loads
+from polymimic.bodies import WheeledBody, body_name, pitch_of, reach_mm, resolve
 from polymimic.field import Demonstration, _field_config, as_frames, record
+from polymimic.imitator_file import PolicyInputs, read_policy_file, write_policy_file
 
 __all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
            "SegmentedDemonstrations", "TrialResult", "as_segmented", "average_demonstrator", "evaluate",
@@ -106,7 +107,7 @@ class LearningConfig(_native.LearningConfig):
 
     def to_toml(self) -> str:
         """One ``name = value`` line per constant."""
-        return "".join(f"{name} = {write_value(value)}\n" for name, value in self.to_dict().items())
+        return dumps(self.to_dict())
 
     @classmethod
     def from_toml(cls, text: str) -> LearningConfig:
@@ -141,7 +142,7 @@ def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.Primi
     segments = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
     return SegmentedDemonstrations(
         [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
-          "pitch": pitch_of(d.body)}
+          "pitch": pitch_of(d.body), "reach_mm": reach_mm(d.body)}
          for d, s in zip(demonstrations, segments)],
         frame_counts=[len(d.frames) for d in demonstrations])
 
@@ -163,18 +164,21 @@ def as_segmented(demonstrations: Demonstrations, recognizer: _native.PrimitiveRe
 
 
 def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRecognizer, ordering: Sequence[str],
-              config: LearningConfig | None = None, phase_one: str = "by-model", seed: int = 0) -> TrialResult:
+              config: LearningConfig | None = None, phase_one: str = "by-model", seed: int = 0,
+              body: str | WheeledBody = "lego") -> TrialResult:
     """One learning trial: phase 1 (each demonstrator's model learns its own demonstrations;
     ``phase_one="interleaved"`` mixes them at random), phase 2 (every demonstration, in random
     order, to every demonstrator's model and then to the imitator's), and the final pruning.
 
     ``demonstrations`` may be already segmented (a :class:`SegmentedDemonstrations`, as
-    :func:`segmented` returns), so that many trials share one segmentation.
+    :func:`segmented` returns), so that many trials share one segmentation. The trial learns on
+    the field of ``body``, the imitator's (the Lego robot's by default): a demonstration played
+    on another field is brought onto it first (:func:`polymimic.bodies.onto_field`).
     """
     if len(demonstrations) == 0:
         raise ValueError("no demonstrations: a trial needs at least one")
     return _native.learning_trial(as_segmented(demonstrations, recognizer), list(ordering), recognizer,
-                                  config=config, phase_one=phase_one, seed=seed)
+                                  config=config, phase_one=phase_one, seed=seed, body=resolve(body))
 
 
 class ImitatorPolicy(_native.ImitatorPolicy):
@@ -197,15 +201,37 @@ class ImitatorPolicy(_native.ImitatorPolicy):
     than through it. With ``config.imitator_weighting == "lp"`` what the improved control learns
     from a demonstration weighs its demonstrator's final LP relative to the best in ``trial``
     (see :class:`LearningConfig`); a demonstration whose demonstrator has no model in ``trial``
-    is a ``ValueError`` naming it. The improved control learns the ball's response from the
-    demonstrations played on the imitator's own field; if none was, that is a ``ValueError``.
+    is a ``ValueError`` naming it. What the improved control learns, it learns on the imitator's
+    own field: a demonstration played on another is brought onto it first
+    (:func:`polymimic.bodies.onto_field`).
     The motion of each primitive is the recogniser's (learned from the imitator's own
     self-observation: give it the recogniser of the body it drives).
 
-    The policy itself is the compiled one; this class only segments recordings it is given.
+    The policy itself is the compiled one; this class segments recordings it is given, and
+    keeps what the policy is made from so that :meth:`save` can write it to one file and
+    :meth:`load` make it again, playing the same episodes bit for bit (the format:
+    :mod:`polymimic.imitator_file`). A policy :meth:`for_trial` makes is the compiled one alone,
+    sharing what this one learned, and has no file: to save one, make it with the constructor.
+
+    >>> import pathlib, tempfile
+    >>> import polymimic
+    >>> from polymimic import recognition
+    >>> recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
+    >>> demos = polymimic.record("expert", configuration=1, n=2, seed=0)
+    >>> trial = run_trial(demos, recognizer=recognizer, ordering=["expert"])
+    >>> policy = ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=demos)
+    >>> path = pathlib.Path(tempfile.mkdtemp()) / "imitator.zip"
+    >>> policy.save(path)
+    >>> again = ImitatorPolicy.load(path)
+    >>> again.control, again.body
+    ('improved', 'lego')
+    >>> played = [evaluate(p, attempts_per_configuration=1, seed=3).attempts for p in (policy, again)]
+    >>> all(a.frames.tobytes() == b.frames.tobytes() for a, b in zip(*played))
+    True
     """
 
-    __slots__ = ()
+    __slots__ = ("_made_from",)
+    _made_from: PolicyInputs
 
     def __new__(cls, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
                 config: LearningConfig | None = None, control: str = "thesis",
@@ -214,8 +240,36 @@ class ImitatorPolicy(_native.ImitatorPolicy):
         batch = None
         if demonstrations is not None and control == "improved":
             batch = as_segmented(demonstrations, recognizer)
-        return super().__new__(cls, trial, recognizer=recognizer, config=config, control=control,
-                               demonstrations=batch, body=resolve(body))
+        resolved = resolve(body)
+        policy = super().__new__(cls, trial, recognizer=recognizer, config=config, control=control,
+                                 demonstrations=batch, body=resolved)
+        policy._made_from = PolicyInputs(trial=trial, recognizer=recognizer, config=config or LearningConfig(),
+                                         control=control, body=resolved, demonstrations=batch)
+        return policy
+
+    def save(self, path: str | os.PathLike[str]) -> None:
+        """Write the policy to ``path``, atomically: one zip archive of its trial, recogniser,
+        learning constants, body (one of your own) and, for the improved control, the segmented
+        demonstrations it learns from (:mod:`polymimic.imitator_file`)."""
+        write_policy_file(path, self._made_from)
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str]) -> ImitatorPolicy:
+        """The policy :meth:`save` wrote to ``path``, made again from its parts.
+
+        Raises
+        ------
+        polymimic.ModelFileError
+            If ``path`` is not a policy file, is damaged or cut short, lacks a part, or was
+            written in a later format version; the message names the file and the problem.
+        """
+        made_from = read_policy_file(path)
+        try:
+            return cls(made_from.trial, recognizer=made_from.recognizer,
+                       config=LearningConfig(**made_from.config.to_dict()),
+                       control=made_from.control, demonstrations=made_from.demonstrations, body=made_from.body)
+        except ValueError as error:
+            raise ModelFileError(f"{os.fspath(path)}: its parts make no policy ({error})") from None
 
 
 @dataclasses.dataclass(frozen=True)
@@ -271,7 +325,8 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
                          max_trials: int = 10, config: LearningConfig | None = None,
                          recorded: Mapping[str, Sequence[Demonstration]] | None = None,
                          field_config: dict[str, Any] | str | None = None,
-                         segmenter: dict[str, Any] | None = None) -> tuple[list[Demonstration], TrialResult]:
+                         segmenter: dict[str, Any] | None = None,
+                         body: str | WheeledBody = "lego") -> tuple[list[Demonstration], TrialResult]:
     """The thesis's Average demonstrator (§4.4.2): an imitator trained in the heterogeneous
     experiment (Expert, Tiny, Humanoid; ordering RCB) and driven by the thesis's control rule.
 
@@ -283,7 +338,9 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
     tie). Net goals, not goals, because that is what put the thesis's own Average between its
     Poor and its Expert: it scored fewer goals than the Poor but far fewer own goals. Its
     attempts, renamed ``"average"``, are returned with the trial that made it. The choice is
-    the one the Rust ``Laboratory`` makes, in the same compiled function.
+    the one the Rust ``Laboratory`` makes, in the same compiled function. The imitators drive
+    ``body`` (the Lego robot, the thesis's, by default) and learn on its field; the Average's
+    attempts are that body's.
 
     ``recorded`` gives the Expert's, Tiny's, Humanoid's and Poor's demonstrations (``n`` per
     configuration each) when they exist already; otherwise they are recorded with ``seed`` on
@@ -304,5 +361,5 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
     trial, raw = _native.average_demonstrator(
         batch, recognizer, ordering=ordering, poor_net_goals=net_goals(recorded["poor"]),
         expert_net_goals=net_goals(recorded["expert"]), per_configuration=n, first_seed=seed, max_trials=max_trials,
-        config=config, field_config=_field_config(field_config))
-    return _attempts(raw, "average"), trial
+        config=config, field_config=_field_config(field_config), body=resolve(body))
+    return _attempts(raw, "average", body=body_name(body)), trial

@@ -93,21 +93,29 @@ def test_bc_on_an_always_forward_demonstrator_plays_forward_at_every_step(forwar
     assert all(set(chosen) == {"F"} for chosen in result.behaviours)
 
 
-def test_a_small_field_is_taken_as_recorded_and_a_longer_one_keeps_the_robots_offset_from_the_ball():
-    """The tiny's field (560 mm) lies within the imitator's (1020 mm): its frames are taken as
-    they were. A longer field's ball position scales by the lengths' ratio while the robot stays
-    as far from the ball, in the same direction, with the same heading; and back again is itself."""
+def test_a_demonstration_from_another_field_is_seen_on_the_imitators_by_the_one_correspondence():
+    """The tiny's field (560 × 345 mm, a 172.5 mm mouth) onto the imitator's (1020 × 810 mm, a
+    405 mm mouth): the ball's x scales by 1020/560 and its y by the mouths' ratio (the mouths are
+    half the widths on both), the robot keeps its offset from the ball and its heading, and the
+    samples bc learns from are exactly those observations."""
+    from polymimic.bodies import onto_field
+
     (tiny,) = polymimic.record("tiny", configuration=1, n=1, seed=0)
     raw = np.column_stack([tiny.frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
                                                      "ball_x_mm", "ball_y_mm")])
     assert np.isfinite(raw).all()
-    np.testing.assert_array_equal(labels.command_labels([tiny])[0].observations, raw)
-    onto = labels.onto_imitator_field(raw, field_length_mm=3060.0)
-    np.testing.assert_allclose(onto[:, 3:], raw[:, 3:] / 3.0)
+    onto = onto_field(raw, recorded_by="tiny")
+    np.testing.assert_allclose(onto[:, 3], raw[:, 3] * 1020.0 / 560.0)
+    np.testing.assert_allclose(onto[:, 4], raw[:, 4] * 405.0 / 172.5)
     np.testing.assert_allclose(onto[:, :2] - onto[:, 3:], raw[:, :2] - raw[:, 3:], atol=1e-9)
     np.testing.assert_array_equal(onto[:, 2], raw[:, 2])
-    back = labels.onto_imitator_field(onto, field_length_mm=340.0)
-    np.testing.assert_allclose(back, raw, atol=1e-9)
+    np.testing.assert_array_equal(labels.command_labels([tiny])[0].observations, onto)
+    (lego,) = polymimic.record("expert", configuration=1, n=1, seed=0)
+    np.testing.assert_allclose(onto_field(onto_field(raw, recorded_by="tiny"), recorded_by="lego", imitator="tiny"),
+                               raw, atol=1e-9)
+    seen = np.column_stack([lego.frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
+                                                      "ball_x_mm", "ball_y_mm")])
+    np.testing.assert_array_equal(onto_field(seen, recorded_by=lego.body), seen)
 
 
 def test_a_humanoids_kick_is_labelled_forward_and_every_other_command_as_it_looks():

@@ -55,13 +55,21 @@ def test_special_floats_and_large_seeds_round_trip(tmp_path, demos):
     assert_same_demonstrations(load_demonstrations(tmp_path / "odd.parquet"), [odd])
 
 
-def test_another_bodys_self_observation_is_refused_rather_than_saved_as_the_legos(tmp_path):
+def test_another_bodys_self_observation_keeps_its_body_and_an_older_file_is_the_legos(tmp_path):
+    import pyarrow.parquet as pq
+
     tiny = polymimic.self_observation(1, seed=0, body="tiny")
     path = tmp_path / "tiny.parquet"
-    with pytest.raises(ValueError, match="sequence 0 is the 'tiny''s self-observation; the self-observation file "
-                                         "records the Lego imitator's only"):
-        save_self_observation(tiny, path)
-    assert not path.exists()
+    save_self_observation(tiny, path)
+    again = load_self_observation(path)
+    assert [s.body for s in again] == ["tiny"] * 5
+    assert all(a.frames.tobytes() == s.frames.tobytes() for a, s in zip(again, tiny))
+    # A version-2 file, written before self-observation recorded its body, was always the Lego's.
+    table = pq.read_table(path)
+    header = json.loads(table.schema.metadata[b"polymimic"])
+    older = table.drop(["body"]).replace_schema_metadata({"polymimic": json.dumps({**header, "version": 2})})
+    pq.write_table(older, tmp_path / "v2.parquet")
+    assert {s.body for s in load_self_observation(tmp_path / "v2.parquet")} == {"lego"}
 
 
 def test_self_observation_round_trips_exactly(tmp_path, sequences):
@@ -87,7 +95,7 @@ def test_file_is_one_row_per_frame_with_versioned_metadata(tmp_path, demos):
     assert table.column_names == ["episode", *polymimic.field.FRAME_DTYPE.names, "demonstrator", "configuration",
                                   "seed", "outcome", "body"]
     header = json.loads(table.schema.metadata[b"polymimic"])
-    assert header["format"] == "polymimic.demonstrations" and header["version"] == 2
+    assert header["format"] == "polymimic.demonstrations" and header["version"] == 3
     assert table.column("episode").to_pylist()[-1] == len(demos) - 1
 
 
@@ -156,7 +164,7 @@ def rewrite(path, *, header=None, table=None):
 @pytest.mark.parametrize(
     "header, match",
     [
-        ({"format": "polymimic.demonstrations", "version": 3}, "is format version 3, written by a newer polymimic"),
+        ({"format": "polymimic.demonstrations", "version": 4}, "is format version 4, written by a newer polymimic"),
         ({"format": "polymimic.demonstrations", "version": 0}, "invalid format version 0"),
         ({"format": "polymimic.demonstrations", "version": "1"}, "invalid format version '1'"),
         ({"format": "polymimic.codebook", "version": 1}, "holds polymimic.codebook, not polymimic.demonstrations$"),

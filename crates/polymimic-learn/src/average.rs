@@ -64,6 +64,8 @@ pub struct AverageSearch<'a> {
     pub config: &'a LearningConfig,
     /// The field the candidates play on.
     pub field: &'a FieldConfig,
+    /// The body the candidates drive.
+    pub body: BodyKind,
     /// Attempts from each configuration that must hold tracking throughout.
     pub per_configuration: usize,
     /// Net goals of the Poor's and the Expert's demonstrations.
@@ -93,7 +95,7 @@ impl AverageSearch<'_> {
                 model: &trial.borrow().imitator,
                 motion: self.motion,
                 config: self.config,
-                body: BodyKind::Lego,
+                body: self.body,
                 mode: ControlMode::Thesis,
                 world: None,
             };
@@ -143,6 +145,7 @@ mod tests {
             motion: &motion,
             config: &config,
             field: &field,
+            body: BodyKind::Lego,
             per_configuration: 1,
             poor_net_goals: -2,
             expert_net_goals: 5,

@@ -150,6 +150,7 @@ mod tests {
         SegmentedDemonstration {
             demonstrator: "expert".to_owned(),
             pitch: Pitch::LARGE,
+            reach_mm: None,
             ending: Ending::Other,
             segments: vec![segment],
         }

@@ -13,6 +13,7 @@ use thiserror::Error;
 use crate::average::AverageSearch;
 use crate::config::LearningConfig;
 use crate::control::{Attempt, ControlMode, ImitatorPolicy};
+use crate::correspondence::{Setting, onto_setting};
 use crate::error::LearnError;
 use crate::prediction::MotionTable;
 use crate::record::TrialRecord;
@@ -97,14 +98,20 @@ impl Laboratory {
     pub fn segmented(
         &self,
         who: &str,
-        pitch: Pitch,
+        setting: Setting,
         outcome: Outcome,
         frames: &[Frame],
     ) -> Result<SegmentedDemonstration, LaboratoryError> {
         let tracked: Vec<TrackedFrame> = frames.iter().map(Frame::tracked).collect();
         let ending = Ending::from(outcome);
         let segments = segment(&tracked, &self.recognizer, &SegmenterConfig::default())?;
-        Ok(SegmentedDemonstration { demonstrator: who.to_owned(), pitch, ending, segments })
+        Ok(SegmentedDemonstration {
+            demonstrator: who.to_owned(),
+            pitch: setting.pitch,
+            reach_mm: setting.reach_mm,
+            ending,
+            segments,
+        })
     }
 
     /// `per_configuration` valid demonstrations from each configuration by each demonstrator.
@@ -119,7 +126,9 @@ impl Laboratory {
     ) -> Result<Vec<SegmentedDemonstration>, LaboratoryError> {
         record_all(demonstrators, per_configuration, seed, LapseRate::NONE, &self.field)?
             .iter()
-            .map(|d| self.segmented(d.demonstrator.name(), pitch_of(d.demonstrator), d.outcome, &d.frames))
+            .map(|d| {
+                self.segmented(d.demonstrator.name(), Setting::of_body(d.demonstrator.body()), d.outcome, &d.frames)
+            })
             .collect()
     }
 
@@ -135,6 +144,8 @@ impl Laboratory {
         trials: u64,
     ) -> Result<Vec<TrialResult>, LaboratoryError> {
         let ordering: Vec<String> = ordering.iter().map(|s| (*s).to_owned()).collect();
+        // The laboratory's imitator is the Lego robot: it learns on its own field.
+        let demonstrations = &onto_setting(demonstrations, &Setting::of_imitator(BodyKind::Lego));
         (0..trials)
             .map(|seed| Ok(run_trial(demonstrations, &ordering, &self.motion, &self.config, phase_one, seed)?))
             .collect()
@@ -185,13 +196,18 @@ impl Laboratory {
             motion: &self.motion,
             config: &self.config,
             field: &self.field,
+            body: BodyKind::Lego,
             per_configuration,
             poor_net_goals,
             expert_net_goals,
         };
         let candidates = heterogeneous.iter().enumerate().map(|(i, trial)| Ok((i as u64, trial)));
         let chosen = search.choose(candidates)?;
-        chosen.attempts.iter().map(|a| self.segmented("average", Pitch::LARGE, a.outcome, &a.frames)).collect()
+        chosen
+            .attempts
+            .iter()
+            .map(|a| self.segmented("average", Setting::of_body(BodyKind::Lego), a.outcome, &a.frames))
+            .collect()
     }
 }
 

@@ -213,7 +213,13 @@ mod tests {
     }
 
     fn demo(ending: Ending, segments: Vec<Segment>) -> SegmentedDemonstration {
-        SegmentedDemonstration { demonstrator: "expert".to_owned(), pitch: Pitch::LARGE, ending, segments }
+        SegmentedDemonstration {
+            demonstrator: "expert".to_owned(),
+            pitch: Pitch::LARGE,
+            reach_mm: None,
+            ending,
+            segments,
+        }
     }
 
     #[test]

@@ -40,6 +40,10 @@ impl From<polymimic_field::Outcome> for Ending {
 pub struct SegmentedDemonstration {
     pub demonstrator: String,
     pub pitch: Pitch,
+    /// How far from its centre the demonstrator's body moves the ball (see
+    /// [`crate::reach_mm`]), where known.
+    #[serde(default)]
+    pub reach_mm: Option<f64>,
     pub ending: Ending,
     pub segments: Vec<Segment>,
 }

@@ -116,7 +116,7 @@ mod tests {
             end: frame(x_mm + 50.0),
             scores: [0.0; 4],
         };
-        SegmentedDemonstration { demonstrator: "d".to_owned(), pitch, ending, segments: vec![segment] }
+        SegmentedDemonstration { demonstrator: "d".to_owned(), pitch, reach_mm: None, ending, segments: vec![segment] }
     }
 
     #[test]

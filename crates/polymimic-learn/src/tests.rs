@@ -25,7 +25,7 @@ fn straight(count: usize, name: &str, ending: Ending) -> SegmentedDemonstration 
             scores: [0.0; 4],
         })
         .collect();
-    SegmentedDemonstration { demonstrator: name.to_owned(), pitch: Pitch::LARGE, ending, segments }
+    SegmentedDemonstration { demonstrator: name.to_owned(), pitch: Pitch::LARGE, reach_mm: None, ending, segments }
 }
 
 fn letters(model: &ForwardModel) -> Vec<String> {

@@ -76,6 +76,7 @@ mod tests {
         SegmentedDemonstration {
             demonstrator: name.to_owned(),
             pitch: Pitch::LARGE,
+            reach_mm: None,
             ending: Ending::Other,
             segments: Vec::new(),
         }

@@ -83,6 +83,7 @@ mod tests {
             scores: [0.0; 4],
         };
         let demo = SegmentedDemonstration {
+            reach_mm: None,
             demonstrator: "expert".to_owned(),
             pitch: Pitch::LARGE,
             ending: Ending::Goal,

@@ -35,7 +35,8 @@ mod _native {
     #[pymodule_export]
     use super::learn::{
         PyImitatorPolicy, PyLearningConfig, PyModelResult, PySegmentedDemonstrations, PyTrialResult, attempt_seeds,
-        average_demonstrator, learning_trial, lp_order_hits, net_goals, spare_attempts,
+        average_demonstrator, body_reach_mm, learning_trial, lp_order_hits, net_goals, observations_onto,
+        spare_attempts,
     };
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;

@@ -16,18 +16,10 @@ Frames the recogniser calls a gap (its two best scores too close to call), or th
 covers, carry no label and give no training sample.
 
 Observations are the frames' tracker readings (a dropout repeats the last good reading, as the
-environment does), on the imitator's field. A demonstration from a field no longer than the
-imitator's (the ``tiny`` body's small field, a small field of the user's) is taken as recorded:
-its frames, centred on the imitator's field, already lie on it, and the robot's approach to the
-ball keeps its true distances. A demonstration from a longer field (a RoboCup-size field read
-from a tracker log) comes onto the imitator's by :func:`onto_imitator_field`: the ball's
-position scales with the fields' lengths (goal to goal) and the robot keeps its offset from the
-ball in millimetres. Measured on ``mixed_bodies`` (``python benches/bc_field_mapping.py
-RUN_DIR``: histogram gradient boosting on the ball-relative features, 5 frames a step, ten fits
-on the benchmark's evaluation attempts, kicks labelled as they look): the tiny's frames as
-recorded netted 18.6 ± 3.5 goals per 50 (1.2 own goals), mapped by :func:`onto_imitator_field`
-17.9 ± 5.2 (2.8), and stretched per axis onto the large field (x by 1020/560, y by 810/345, what
-the cloning baselines once did) 13.2 ± 4.0 (8.2).
+environment does), brought onto the imitator's field by the learner's one correspondence between
+fields (:func:`polymimic.bodies.onto_field`: the ball's position by the fields' lengths along and
+goal mouth onto goal mouth across, the robot at its offset from the ball in millimetres with its
+heading), as every other part of polymimic that learns from a demonstration takes it.
 
 Labels are the imitator's own primitive for what the command did: the primitive that looks the
 same from above (:func:`polymimic.field.command_primitives`, the thesis's Table 4.4), except
@@ -53,12 +45,12 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.bodies import WheeledBody, body_name, field_length_mm, thesis_field
+from polymimic.bodies import WheeledBody, body_name, onto_field
 from polymimic.field import PRIMITIVES, Demonstration, command_primitives, command_table, primitives_sent
 from polymimic.step_names import NO_NAME, WINDOW_FRAMES, name_windows, repeat_last_good
 
 __all__ = ["CLONING_EQUIVALENTS", "IMITATOR_BODY", "NO_LABEL", "STEP_STRIDE_FRAMES", "STEP_WINDOW_FRAMES", "Labelled",
-           "check_demonstrations", "check_weights", "cloning_primitives", "command_labels", "onto_imitator_field",
+           "check_demonstrations", "check_weights", "cloning_primitives", "command_labels",
            "segment_labels", "starts_as_imitator", "step_labels"]
 
 NO_LABEL = NO_NAME
@@ -143,35 +135,14 @@ def check_weights(weights: Mapping[str, float], demonstrations: Sequence[Demonst
     return checked
 
 
-def onto_imitator_field(observations: np.ndarray, *, field_length_mm: float,
-                        imitator_length_mm: float | None = None) -> np.ndarray:
-    """``(n, 5)`` observations of a field ``field_length_mm`` long (goal to goal), on the
-    imitator's (``imitator_length_mm`` long; the thesis's large field by default): the ball's
-    position scaled by the lengths' ratio, the robot at the same offset from the ball (mm) and
-    the same heading.
-
-    >>> seen = np.array([[100.0, -50.0, 0.3, 140.0, -50.0]])   # 40 mm behind the ball
-    >>> onto_imitator_field(seen, field_length_mm=2040.0).tolist()
-    [[30.0, -25.0, 0.3, 70.0, -25.0]]
-    """
-    scale = (thesis_field("large").length_mm if imitator_length_mm is None else imitator_length_mm) / field_length_mm
-    mapped = np.array(observations, dtype=np.float64)
-    offset = mapped[:, [0, 1]] - mapped[:, [3, 4]]
-    mapped[:, [3, 4]] *= scale
-    mapped[:, [0, 1]] = mapped[:, [3, 4]] + offset
-    return mapped
-
-
 def observations_of(demo: Demonstration, imitator: str | WheeledBody = IMITATOR_BODY) -> np.ndarray:
     """The ``(n, 5)`` observations of a demonstration's frames: NaN readings (lost tracking,
-    a ball out of sight) repeat the last good one, and a field longer than the imitator's comes
-    onto it (:func:`onto_imitator_field`)."""
+    a ball out of sight) repeat the last good one, on the imitator's field
+    (:func:`polymimic.bodies.onto_field`)."""
     frames = demo.frames
     obs = repeat_last_good(np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
                                                                  "ball_x_mm", "ball_y_mm")]).astype(np.float64))
-    length_mm, imitator_mm = field_length_mm(demo.body), field_length_mm(imitator)
-    return obs if length_mm <= imitator_mm else onto_imitator_field(obs, field_length_mm=length_mm,
-                                                                    imitator_length_mm=imitator_mm)
+    return onto_field(obs, recorded_by=demo.body, imitator=imitator)
 
 
 def cloning_primitives() -> np.ndarray:

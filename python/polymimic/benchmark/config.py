@@ -108,6 +108,9 @@ class BenchmarkConfig:
     profiles: dict[str, Crowd] = dataclasses.field(default_factory=lambda: dict(PROFILES))
 
     def __post_init__(self) -> None:
+        if "ppo" in self.benchmark.methods and not self.run.thesis_imitator:
+            raise ConfigError(f"[benchmark] methods: ppo learns the Lego robot's policy only; the imitator is the "
+                              f"{self.run.imitator.body}")
         for name in self.benchmark.profiles:
             if name not in self.profiles:
                 raise ConfigError(f"[benchmark] profiles: unknown profile {name!r}; expected one of "
@@ -133,6 +136,10 @@ class BenchmarkConfig:
     @property
     def learning(self) -> Any:
         return self.run.learning
+
+    def imitator_body(self) -> Any:
+        """The imitator's body (``[imitator] body``), as the library takes it."""
+        return self.run.imitator_body()
 
     def trial_seeds(self) -> list[int]:
         """Every profile's trial seeds: ``first_trial``, ``first_trial + 1``, …"""

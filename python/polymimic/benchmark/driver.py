@@ -119,7 +119,7 @@ class Benchmark:
         if not self.run.finished(path, lambda p: _counted(load_self_observation(p), count)):
             save_self_observation(self_observation(settings.train_per_primitive,
                                                    seed=self.config.seeds.self_observation_train,
-                                                   config=self.config.field), path)
+                                                   config=self.config.field, body=self.config.imitator_body()), path)
         settings.train(load_self_observation(path)).save(self.run.recognizer_path)
         return 1
 

@@ -90,7 +90,9 @@ def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, floa
     """The report of a ``benchmark.json``; ``seconds`` are the steps' times, from the manifest."""
     sizes = summary["sizes"]
     lines = ["# polymimic against the baselines", "",
-             f"{sizes['trials']} trials per profile; every member records {sizes['demonstrations_per_configuration']} "
+             f"The imitator is the {summary.get('imitator', 'lego')} robot: every method learns to drive it, on its "
+             f"own field. {sizes['trials']} trials per profile; every member records "
+             f"{sizes['demonstrations_per_configuration']} "
              f"valid demonstrations per field configuration; every method plays the same "
              f"{2 * sizes['attempts_per_configuration']} evaluation attempts (seed {sizes['evaluation_seed']}) after "
              f"every trial. Every baseline's hyperparameters were chosen among {sizes['tuning_budget']} candidates "

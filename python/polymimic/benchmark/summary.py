@@ -234,7 +234,8 @@ def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
              "validation_seed": settings.validation_seed}
     # ppo's runs serve every profile: read once.
     curves = _ppo_curves(run, config) if "ppo" in settings.methods else None
-    summary = {"format": FORMAT, "version": VERSION, "polymimic_version": __version__, "sizes": sizes,
+    summary = {"format": FORMAT, "version": VERSION, "polymimic_version": __version__,
+               "imitator": config.run.imitator.body, "sizes": sizes,
                "profiles": {crowd.name: _profile(run, config, crowd, curves) for crowd in config.crowds()}}
     if curves is not None:
         runs = [{"seed": c["seed"], "checkpoints": c["checkpoints"]} for c in curves]

@@ -52,7 +52,8 @@ def trial_task(shared: Shared, job: tuple[str, int, bool]) -> str:
     profile, seed, uniform_lp = job
     inputs = shared.profiles[profile]
     return run_trial(inputs.segmented, recognizer=shared.recognizer, ordering=list(inputs.crowd.names),
-                     config=shared.learning(uniform_lp), phase_one="interleaved", seed=seed).to_json()
+                     config=shared.learning(uniform_lp), phase_one="interleaved", seed=seed,
+                     body=shared.config.imitator_body()).to_json()
 
 
 def final_lps(trial: TrialResult) -> dict[str, float]:
@@ -64,7 +65,8 @@ def _baseline_inputs(shared: Shared, profile: str, method: str, trial_json: str 
     """What :func:`polymimic.baselines.fit` needs for ``method`` beyond the demonstrations."""
     inputs = shared.profiles[profile]
     extra: dict[str, Any] = {"recognizer": shared.recognizer,
-                             "segmenter": dataclasses.asdict(shared.config.segmenter)}
+                             "segmenter": dataclasses.asdict(shared.config.segmenter),
+                             "imitator": shared.config.imitator_body()}
     if method == "bco_lp":
         assert trial_json is not None, "bco_lp weighs by a trial's LPs"
         extra["weights"] = final_lps(TrialResult.from_json(trial_json))
@@ -106,7 +108,8 @@ def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[s
         assert trial_json is not None
         policy = ImitatorPolicy(TrialResult.from_json(trial_json), recognizer=shared.recognizer,
                                 config=shared.learning(uniform_lp), control=control,
-                                demonstrations=inputs.segmented if control == "improved" else None)
+                                demonstrations=inputs.segmented if control == "improved" else None,
+                                body=shared.config.imitator_body())
         result = evaluate(policy, attempts_per_configuration=settings.attempts_per_configuration,
                           seed=seeds.evaluation, field_config=shared.config.field)
         return _evaluation(shared, profile, method, trial_seed, result)
@@ -115,7 +118,8 @@ def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[s
     demos = inputs.demonstrations if method != "random" else []
     fitted = baselines.fit(method, demos, hyperparameters=chosen, seed=trial_seed,
                            max_samples=settings.max_decision_samples,
-                           **(_baseline_inputs(shared, profile, method, trial_json) if method != "random" else {}))
+                           **(_baseline_inputs(shared, profile, method, trial_json) if method != "random"
+                              else {"imitator": shared.config.imitator_body()}))
     return _evaluated(shared, profile, method, trial_seed, fitted)
 
 

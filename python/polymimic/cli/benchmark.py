@@ -26,15 +26,21 @@ def add(commands: Any) -> None:
                                 "--config's [profiles.<name>])")
     benchmark.add_argument("--methods", nargs="+", metavar="METHOD",
                            help=f"only these methods (of {' '.join(METHODS)})")
+    benchmark.add_argument("--imitator", metavar="BODY",
+                           help="the imitator's body: lego (the default), tiny, humanoid, or a [bodies.<name>] of "
+                                "--config")
     benchmark.set_defaults(handler=_benchmark)
 
 
 def _requested_benchmark(args: argparse.Namespace) -> BenchmarkConfig | None:
     """The benchmark config asked for on the command line, or None when none was."""
     config = benchmark_config(args)
-    if args.profiles is None and args.methods is None:
+    if args.profiles is None and args.methods is None and args.imitator is None:
         return config
     config = config or BenchmarkConfig()
+    if args.imitator is not None:
+        config = dataclasses.replace(config, run=dataclasses.replace(
+            config.run, imitator=dataclasses.replace(config.run.imitator, body=args.imitator)))
     settings = config.benchmark
     if args.profiles is not None:
         settings = dataclasses.replace(settings, profiles=tuple(args.profiles))

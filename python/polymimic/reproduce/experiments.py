@@ -24,6 +24,7 @@ from typing import Any, TypedDict
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ImitatorPolicy as CompiledPolicy
 from polymimic._native import ModelFileError, PrimitiveRecognizer
+from polymimic.bodies import WheeledBody
 from polymimic.datasets import load_demonstrations, save_demonstrations
 from polymimic.field import OUTCOMES
 from polymimic.learning import (
@@ -57,13 +58,14 @@ def evaluated_seeds(config: RunConfig) -> list[int]:
 
 
 def imitator_policy(trial: TrialResult, *, recognizer: PrimitiveRecognizer, config: LearningConfig,
-                    control: str, demonstrations: SegmentedDemonstrations) -> ImitatorPolicy:
-    """The trial's imitator driving the robot by ``control``; the improved control also learns
+                    control: str, demonstrations: SegmentedDemonstrations,
+                    body: str | WheeledBody = "lego") -> ImitatorPolicy:
+    """The trial's imitator driving ``body`` by ``control``; the improved control also learns
     from the (segmented) ``demonstrations`` the imitator watched."""
     if control not in CONTROLS:
         raise ValueError(f"control must be one of {', '.join(CONTROLS)}, got {control!r}")
     return ImitatorPolicy(trial, recognizer=recognizer, config=config, control=control,
-                          demonstrations=demonstrations if control == "improved" else None)
+                          demonstrations=demonstrations if control == "improved" else None, body=body)
 
 
 # Tasks: module-level, so that process-pool and Ray workers can import them.
@@ -77,12 +79,14 @@ class TrialInputs:
     ordering: tuple[str, ...]
     phase_one: str
     learning: LearningConfig
+    body: str | WheeledBody = "lego"
+    """The imitator's body, on whose setting the trial learns."""
 
 
 def trial_task(inputs: TrialInputs, seed: int) -> str:
     """One trial, as the JSON :meth:`TrialResult.save` writes (it depends on ``seed`` alone)."""
     return run_trial(inputs.items, recognizer=inputs.recognizer, ordering=list(inputs.ordering),
-                     config=inputs.learning, phase_one=inputs.phase_one, seed=seed).to_json()
+                     config=inputs.learning, phase_one=inputs.phase_one, seed=seed, body=inputs.body).to_json()
 
 
 @dataclasses.dataclass(frozen=True)
@@ -97,6 +101,8 @@ class EvaluationInputs:
     """The experiment's segmented demonstrations: what its imitators watched."""
     field: dict[str, Any]
     """The field the imitators play on (the run's)."""
+    body: str | WheeledBody = "lego"
+    """The imitators' body."""
 
 
 _first_policies: dict[str, tuple[EvaluationInputs, ImitatorPolicy]] = {}
@@ -112,7 +118,7 @@ def _policy(inputs: EvaluationInputs, trial: TrialResult, control: str) -> Compi
     if first is not None and first[0] is inputs and inputs.learning.imitator_weighting == "even":
         return first[1].for_trial(trial)
     policy = imitator_policy(trial, recognizer=inputs.recognizer, config=inputs.learning, control=control,
-                             demonstrations=inputs.items)
+                             demonstrations=inputs.items, body=inputs.body)
     _first_policies[control] = (inputs, policy)
     return policy
 
@@ -164,7 +170,8 @@ def learn(run: RunDir, config: RunConfig, runner: TaskRunner, *, experiments: Se
             continue
         run.experiment_dir(experiment.name).mkdir(parents=True, exist_ok=True)
         inputs = TrialInputs(items=experiment_items(run, experiment), recognizer=recognizer,
-                             ordering=experiment.ordering, phase_one=experiment.phase_one, learning=config.learning)
+                             ordering=experiment.ordering, phase_one=experiment.phase_one, learning=config.learning,
+                             body=config.imitator_body())
         with progress(total=len(missing), desc=f"learn {experiment.name}", quiet=quiet) as bar:
             for seed, text in runner.map(trial_task, inputs, missing):
                 atomic_write_text(run.trial_path(experiment.name, seed), text)
@@ -261,7 +268,7 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
         inputs = EvaluationInputs(recognizer=recognizer, learning=config.learning,
                                   attempts_per_configuration=config.experiments.attempts_per_configuration,
                                   seed=config.seeds.evaluation, items=experiment_items(run, experiment),
-                                  field=config.field)
+                                  field=config.field, body=config.imitator_body())
         with progress(total=len(jobs), desc=f"evaluate {experiment.name}", quiet=quiet) as bar:
             for _, result in runner.map(evaluation_task, inputs, jobs):
                 kept = result.pop("attempt_list")

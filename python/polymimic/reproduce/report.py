@@ -104,6 +104,15 @@ class _Report:
 def render(results: Results, figures: dict[str, str], *, manifest: dict[str, Any] | None = None) -> str:
     """The whole report as Markdown."""
     report = _Report(results, figures)
+    imitator = results.get("imitator", "lego")
+    if imitator != "lego":
+        # The thesis's numbers are a Lego imitator's: beside another body's they would compare nothing.
+        _imitator_primitives(report, imitator)
+        _experiments_without_thesis(report, list(results["experiments"]))
+        head = _header(results, manifest)
+        note = [f"The imitator is the {imitator}, not the thesis's Lego robot: the thesis's columns and shape checks "
+                "are left out.", ""]
+        return "\n".join(head + note + report.lines).rstrip() + "\n"
     for section in (_recognition, _segments, _demonstrators, _heterogeneous, _varying_skill, _own_experiments,
                     _appendix_b):
         section(report)
@@ -401,9 +410,16 @@ def _varying_skill(report: _Report) -> None:
 def _own_experiments(report: _Report) -> None:
     """The run config's own experiments: the tables that apply, without thesis columns (the
     thesis has no numbers for them), and no shape checks."""
+    _experiments_without_thesis(report, [name for name in report.r["experiments"] if name not in EXPERIMENTS])
+
+
+def _experiments_without_thesis(report: _Report, names: Sequence[str]) -> None:
+    """Each of the experiments ``names``: its demonstrators' goals, final LPs and match rates, and
+    its imitators' goals under both controls."""
     d = report.r["demonstrators"]
-    for e in (e for name, e in report.r["experiments"].items() if name not in EXPERIMENTS):
-        report.heading(f"Your experiment: {e['title']}")
+    for name in names:
+        e = report.r["experiments"][name]
+        report.heading(f"{'Experiment' if name in EXPERIMENTS else 'Your experiment'}: {e['title']}")
         report.say(f"Phase one {e['phase_one']}, ordering {', '.join(e['ordering'])}; {e['trials']} trials. "
                    "Goals of each demonstrator over its own demonstrations; final LP and match rate mean (sd) "
                    "over trials.")
@@ -417,6 +433,19 @@ def _own_experiments(report: _Report) -> None:
                        f"{num(cell['own_goals'])} ({num(cell['own_goals_sd'])})", cell["attempts"], cell["imitators"])
                       for control, cell in (("improved", e["imitator"]), ("thesis control",
                                                                           e["imitator_thesis_control"]))])
+
+
+def _imitator_primitives(report: _Report, imitator: str) -> None:
+    """The imitator's own Table 3.1 and its recogniser's accuracy, ours alone."""
+    r = report.r
+    report.heading(f"What each of the {imitator}'s primitives does")
+    report.say("Distance travelled (mm) and rotation (deg) in one second of each primitive, over the imitator's "
+               "self-observation; share of its held-out sequences each HMM names right.")
+    stats = r["primitive_stats"]
+    report.table(["primitive", "distance", "rotation", "held-out accuracy"],
+                 [(p, f"{stats[p]['distance_mean_mm']:.2f} ({stats[p]['distance_sd_mm']:.2f})",
+                   f"{stats[p]['rotation_mean_deg']:.2f} ({stats[p]['rotation_sd_deg']:.2f})",
+                   pct(r["hmm_accuracy"].get(p), 2)) for p in MOVING])
 
 
 def _appendix_b(report: _Report) -> None:

@@ -217,6 +217,7 @@ def gather(run: RunDir, config: RunConfig) -> Results:
         "format": FORMAT,
         "version": FORMAT_VERSION,
         "polymimic_version": __version__,
+        "imitator": config.imitator.body,
         "sizes": {"train_per_primitive": config.recognizer.train_per_primitive,
                   "test_per_primitive": config.recognizer.test_per_primitive,
                   "codebook_size": config.recognizer.codebook_size,

@@ -7,7 +7,7 @@ trial) is the plots' own, so that the summaries go to the bar charts as they are
 
 from __future__ import annotations
 
-from typing import TypedDict
+from typing import NotRequired, TypedDict
 
 from polymimic.plots import MeanSd
 
@@ -127,6 +127,8 @@ class Results(TypedDict):
     format: str
     version: int
     polymimic_version: str
+    imitator: NotRequired[str]
+    """The imitator's body (the Lego robot's, the thesis's, where absent)."""
     sizes: Sizes
     primitive_stats: dict[str, PrimitiveStats]
     hmm_accuracy: dict[str, float | None]

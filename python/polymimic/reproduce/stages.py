@@ -85,7 +85,8 @@ def _self_observe(ctx: Context) -> int:
                            ("test", settings.test_per_primitive, seeds.self_observation_test)):
         path = ctx.run.self_observation_path(split)
         if not ctx.finished(path, load_self_observation, count=len(PRIMITIVES) * n):
-            save_self_observation(self_observation(n, seed=seed, config=ctx.config.field), path)
+            save_self_observation(self_observation(n, seed=seed, config=ctx.config.field,
+                                                   body=ctx.config.imitator_body()), path)
             made += 1
     return made
 
@@ -154,7 +155,8 @@ def _record_average(ctx: Context) -> int:
                                             seed=ctx.config.seeds.demonstrations,
                                             max_trials=settings.average_max_trials, config=ctx.config.learning,
                                             recorded=recorded, field_config=ctx.config.field,
-                                            segmenter=dataclasses.asdict(ctx.config.segmenter))
+                                            segmenter=dataclasses.asdict(ctx.config.segmenter),
+                                            body=ctx.config.imitator_body())
     except _native.PolymimicError as error:
         raise RunError(f"no Average demonstrator: {error}; raise [experiments] average_max_trials") from error
     trial.save(ctx.run.average_trial_path)

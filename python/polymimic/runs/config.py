@@ -1,10 +1,10 @@
 """Every parameter of a run, with the thesis's values as defaults; TOML in and out, and the
 checks every application's config is read with.
 
-Sections: ``[seeds]``, ``[field]`` (the simulated field), ``[recognizer]`` (self-observation
-sizes and the HMM bank), ``[segmenter]``, ``[learning]`` (:class:`~polymimic.LearningConfig`)
-and ``[experiments]`` (trials, demonstrations, attempts). A file may give only some keys; the
-rest take their defaults. Unknown keys and values of the wrong type are refused.
+Sections: ``[seeds]``, ``[field]`` (the simulated field), ``[imitator]`` (the learner's body),
+``[recognizer]`` (self-observation sizes and the HMM bank), ``[segmenter]``, ``[learning]``
+(:class:`~polymimic.LearningConfig`) and ``[experiments]`` (trials, demonstrations, attempts). A
+file may give only some keys; the rest take their defaults. Unknown keys and values of the wrong type are refused.
 
 >>> config = RunConfig()
 >>> config.recognizer.codebook_size, config.experiments.trials
@@ -44,8 +44,9 @@ from polymimic.runs.roster_config import (
     spec_table,
 )
 
-__all__ = ["ConfigError", "ExperimentSettings", "RecognizerSettings", "RunConfig", "SeedSettings", "SegmenterSettings",
-           "as_table", "checked_section", "in_range", "read_config", "toml_tables"]
+__all__ = ["IMITATOR_BODIES", "ConfigError", "ExperimentSettings", "ImitatorSettings", "RecognizerSettings",
+           "RunConfig", "SeedSettings", "SegmenterSettings", "as_table", "checked_section", "in_range", "read_config",
+           "toml_tables"]
 
 
 Loaded = TypeVar("Loaded")
@@ -161,8 +162,20 @@ class ExperimentSettings:
         in_range("experiments", "evaluated_imitators", self.evaluated_imitators, 0)
 
 
-_SECTIONS = {"seeds": SeedSettings, "recognizer": RecognizerSettings, "segmenter": SegmenterSettings,
-             "experiments": ExperimentSettings}
+IMITATOR_BODIES = ("lego", "tiny", "humanoid")
+"""The built-in bodies an imitator may have; a ``[bodies.<name>]`` table of the run's adds its own."""
+
+
+@dataclasses.dataclass(frozen=True)
+class ImitatorSettings:
+    """Who learns: the body that observes itself, learns and plays."""
+
+    body: str = _doc("the imitator's body: lego (the thesis's), tiny, humanoid, or the name of a [bodies.<name>] "
+                     "table", "lego")
+
+
+_SECTIONS = {"seeds": SeedSettings, "imitator": ImitatorSettings, "recognizer": RecognizerSettings,
+             "segmenter": SegmenterSettings, "experiments": ExperimentSettings}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -171,6 +184,7 @@ class RunConfig:
 
     seeds: SeedSettings = dataclasses.field(default_factory=SeedSettings)
     field: dict[str, Any] = dataclasses.field(default_factory=default_config)
+    imitator: ImitatorSettings = dataclasses.field(default_factory=ImitatorSettings)
     recognizer: RecognizerSettings = dataclasses.field(default_factory=RecognizerSettings)
     segmenter: SegmenterSettings = dataclasses.field(default_factory=SegmenterSettings)
     learning: LearningConfig = dataclasses.field(default_factory=LearningConfig)
@@ -183,6 +197,30 @@ class RunConfig:
     """``[demonstrators.<name>]``: demonstrators of the user's, recorded or imported with the thesis's."""
     own_experiments: dict[str, Experiment] = dataclasses.field(default_factory=dict)
     """``[experiments.<name>]``: experiments of the user's, run, evaluated and reported with the thesis's."""
+
+    def __post_init__(self) -> None:
+        name = self.imitator.body
+        if name not in IMITATOR_BODIES and name not in self.bodies:
+            own = [n for n in self.bodies if n not in IMITATOR_BODIES]
+            raise ConfigError(f"[imitator] body = {name!r} is not a body: one of {', '.join(IMITATOR_BODIES)}"
+                              + (f" or of the run's [bodies.<name>] tables ({', '.join(own)})" if own else
+                                 ", or describe it in a [bodies.<name>] table"))
+
+    def imitator_body(self) -> str | WheeledBody:
+        """The imitator's body as the library takes it: a built-in body's name, or the run's
+        :class:`~polymimic.bodies.WheeledBody` of that name.
+
+        >>> RunConfig().imitator_body()
+        'lego'
+        """
+        name = self.imitator.body
+        return name if name in IMITATOR_BODIES else self.bodies[name]
+
+    @property
+    def thesis_imitator(self) -> bool:
+        """Whether the imitator is the thesis's, the Lego robot: only then do the thesis's figures
+        compare."""
+        return self.imitator.body == "lego"
 
     def all_experiments(self) -> dict[str, Experiment]:
         """The thesis's three experiments, then the user's."""
@@ -208,7 +246,8 @@ class RunConfig:
         """Plain data, section by section (what ``manifest.json`` keeps); the user's
         demonstrators and experiments only where there are some."""
         data = {"seeds": dataclasses.asdict(self.seeds), "field": json.loads(json.dumps(self.field)),
-                "recognizer": dataclasses.asdict(self.recognizer), "segmenter": dataclasses.asdict(self.segmenter),
+                "imitator": dataclasses.asdict(self.imitator), "recognizer": dataclasses.asdict(self.recognizer),
+                "segmenter": dataclasses.asdict(self.segmenter),
                 "learning": self.learning.to_dict(),
                 "experiments": {**dataclasses.asdict(self.experiments),
                                 **{n: _experiment_table(e) for n, e in self.own_experiments.items()}}}
@@ -264,7 +303,7 @@ class RunConfig:
     def to_toml(self) -> str:
         """Every parameter, one ``key = value`` line each, with what it means beside it."""
         lines = ["# polymimic run configuration: the thesis's values unless changed", ""]
-        for name in ("seeds", "field", "recognizer", "segmenter", "learning", "experiments"):
+        for name in ("seeds", "field", "imitator", "recognizer", "segmenter", "learning", "experiments"):
             section: Any = getattr(self, name)
             if isinstance(section, LearningConfig):
                 write_table(lines, name, section.to_dict(), {})

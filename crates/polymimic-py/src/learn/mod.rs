@@ -7,11 +7,13 @@ mod policy;
 mod segments;
 mod trial;
 
-use polymimic_field::Outcome;
+use polymimic_field::{BodyKind, Outcome};
 use polymimic_learn::{
-    AverageSearch, Ending, LaboratoryError, MotionTable, PhaseOne, TrialRecord, lp_order_hits as count_lp_order_hits,
-    net_goals as count_net_goals, run_trial, spare_attempts as spares,
+    AverageSearch, Ending, LaboratoryError, MotionTable, PhaseOne, Setting, TrialRecord, imitator_reach_mm,
+    lp_order_hits as count_lp_order_hits, net_goals as count_net_goals, onto_setting, reach_mm, run_trial,
+    spare_attempts as spares,
 };
+use polymimic_types::{Pose, TrackedFrame};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyList;
@@ -21,6 +23,7 @@ pub use policy::PyImitatorPolicy;
 pub use segments::PySegmentedDemonstrations;
 pub use trial::{PyModelResult, PyTrialResult};
 
+use crate::bodies::Body;
 use crate::convert::{non_negative, one_of};
 use crate::errors::laboratory_error;
 use crate::perceive::PyPrimitiveRecognizer;
@@ -32,10 +35,13 @@ fn motion_table(recognizer: &PyPrimitiveRecognizer) -> PyResult<MotionTable> {
     MotionTable::new(recognizer.recognizer.motion_stats()).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
-/// One learning trial on segmented demonstrations; the recogniser's Table 3.1 moves the
-/// predictions. Returns every model's result and the imitator's final model.
+/// One learning trial on segmented demonstrations, each brought onto the field of `body` (the
+/// imitator's); the recogniser's Table 3.1 moves the predictions. Returns every model's result
+/// and the imitator's final model.
 #[pyfunction]
-#[pyo3(signature = (demonstrations, ordering, recognizer, *, config=None, phase_one="by-model", seed=0))]
+#[pyo3(signature = (demonstrations, ordering, recognizer, *, config=None, phase_one="by-model", seed=0,
+                    body=Body(BodyKind::Lego)),
+       text_signature = "(demonstrations, ordering, recognizer, *, config=None, phase_one='by-model', seed=0, body='lego')")]
 #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the ordering by value
 pub fn learning_trial(
     py: Python<'_>,
@@ -45,8 +51,9 @@ pub fn learning_trial(
     config: Option<&Bound<'_, PyLearningConfig>>,
     phase_one: &str,
     seed: i64,
+    body: Body,
 ) -> PyResult<PyTrialResult> {
-    let demos = batch(demonstrations)?;
+    let demos = onto_setting(&batch(demonstrations)?, &Setting::of_imitator(body.0));
     let config = config_or_default(config);
     let phase_one =
         one_of("phase_one", phase_one, &[("by-model", PhaseOne::ByModel), ("interleaved", PhaseOne::Interleaved)])?;
@@ -62,11 +69,13 @@ pub fn learning_trial(
 /// it: trials with seeds `first_seed` … `first_seed + max_trials - 1` on `demonstrations`
 /// (phase one by model, in `ordering`), each imitator driven by the thesis's rule with its
 /// trial's seed; the one whose net goals lie nearest the middle of the Poor's and the Expert's,
-/// strictly between. Returns its trial and its attempts (as `ImitatorPolicy.evaluate` gives
-/// them).
+/// strictly between. The candidates are imitators of `body`, learning on its field. Returns its
+/// trial and its attempts (as `ImitatorPolicy.evaluate` gives them).
 #[pyfunction]
 #[pyo3(signature = (demonstrations, recognizer, *, ordering, poor_net_goals, expert_net_goals,
-                    per_configuration, first_seed, max_trials, config=None, field_config=None))]
+                    per_configuration, first_seed, max_trials, config=None, field_config=None,
+                    body=Body(BodyKind::Lego)),
+       text_signature = "(demonstrations, recognizer, *, ordering, poor_net_goals, expert_net_goals, per_configuration, first_seed, max_trials, config=None, field_config=None, body='lego')")]
 #[allow(clippy::too_many_arguments, clippy::needless_pass_by_value)] // pyo3 extracts by value
 pub fn average_demonstrator<'py>(
     py: Python<'py>,
@@ -80,8 +89,9 @@ pub fn average_demonstrator<'py>(
     max_trials: i64,
     config: Option<&Bound<'py, PyLearningConfig>>,
     field_config: Option<&str>,
+    body: Body,
 ) -> PyResult<(PyTrialResult, Bound<'py, PyList>)> {
-    let demos = batch(demonstrations)?;
+    let demos = onto_setting(&batch(demonstrations)?, &Setting::of_imitator(body.0));
     let config = config_or_default(config);
     let motion = motion_table(recognizer)?;
     let field = crate::field::field_config(field_config)?;
@@ -91,6 +101,7 @@ pub fn average_demonstrator<'py>(
         motion: &motion,
         config: &config,
         field: &field,
+        body: body.0,
         per_configuration: non_negative("per_configuration", per_configuration)?,
         poor_net_goals,
         expert_net_goals,
@@ -149,4 +160,51 @@ pub fn attempt_seeds(attempts_per_configuration: i64, seed: i64) -> PyResult<Vec
         .into_iter()
         .map(|(configuration, s)| (crate::field::configuration_number(configuration), s))
         .collect())
+}
+
+/// How far from its centre `body` moves the ball, mm, as a demonstrator (a wheeled body's front,
+/// the humanoid's kicking foot) or as an imitator (its front), with the ball's radius.
+#[pyfunction]
+#[pyo3(signature = (body, *, imitating=false))]
+#[allow(clippy::needless_pass_by_value)] // pyo3 extracts the body by value
+pub fn body_reach_mm(body: Body, imitating: bool) -> f64 {
+    if imitating { imitator_reach_mm(body.0) } else { reach_mm(body.0) }
+}
+
+/// Observations `(n, 5)` (robot x, y (mm), heading (rad), ball x, y (mm)) recorded on the pitch
+/// named `recorded_on` by a body of reach `recorded_reach_mm`, brought onto the pitch `onto` of a
+/// body of reach `imitator_reach_mm` by the learner's one correspondence.
+#[pyfunction]
+pub fn observations_onto<'py>(
+    py: Python<'py>,
+    observations: &Bound<'py, PyAny>,
+    recorded_on: &str,
+    recorded_reach_mm: f64,
+    onto: &str,
+    imitator_reach_mm: f64,
+) -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
+    let setting = |pitch: &str, what: &str, reach: f64| -> PyResult<Setting> {
+        if !(reach.is_finite() && reach > 0.0) {
+            return Err(PyValueError::new_err(format!("{what}: reach must be a positive number of mm, got {reach}")));
+        }
+        Ok(Setting { pitch: segments::pitch_from(pitch, what)?, reach_mm: Some(reach) })
+    };
+    let from = setting(recorded_on, "recorded_on", recorded_reach_mm)?;
+    let to = setting(onto, "onto", imitator_reach_mm)?;
+    let (values, shape) = crate::convert::floats(observations, "observations", 2)?;
+    if shape[1] != 5 {
+        return Err(PyValueError::new_err(format!(
+            "observations must have 5 columns (robot_x_mm, robot_y_mm, robot_theta_rad, ball_x_mm, ball_y_mm), got {}",
+            shape[1]
+        )));
+    }
+    let mapped: Vec<f64> = values
+        .chunks_exact(5)
+        .flat_map(|row| {
+            let seen = TrackedFrame { robot: Pose::new(row[0], row[1], row[2]), ball_x_mm: row[3], ball_y_mm: row[4] };
+            let on = from.frame_onto(&to, &seen);
+            [on.robot.x_mm(), on.robot.y_mm(), on.robot.theta_rad(), on.ball_x_mm, on.ball_y_mm]
+        })
+        .collect();
+    crate::convert::matrix(py, mapped, shape[0], 5)
 }

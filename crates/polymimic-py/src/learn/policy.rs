@@ -4,8 +4,8 @@ use std::sync::Arc;
 
 use polymimic_field::BodyKind;
 use polymimic_learn::{
-    Attempt, ControlMode, ForwardModel, ImitatorPolicy, ImitatorWeighting, LearningConfig, MotionTable, Pitch,
-    WorldModel, demonstration_weights,
+    Attempt, ControlMode, ForwardModel, ImitatorPolicy, ImitatorWeighting, LearningConfig, MotionTable, Pitch, Setting,
+    WorldModel, demonstration_weights, onto_setting,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -89,15 +89,7 @@ impl PyImitatorPolicy {
                 ));
             }
             (ControlMode::Improved, Some(items)) => {
-                let demos = batch(items)?;
-                if !demos.iter().any(|d| d.pitch == pitch) {
-                    return Err(PyValueError::new_err(format!(
-                        "demonstrations: none was played on the imitator's field (the {} body's, {} × {} mm), so there is nothing to learn the ball's response from",
-                        body.name(),
-                        pitch.length_mm,
-                        pitch.width_mm
-                    )));
-                }
+                let demos = onto_setting(&batch(items)?, &Setting::of_imitator(body));
                 let weights = match config.imitator_weighting {
                     ImitatorWeighting::Even => Vec::new(),
                     weighting => {

@@ -73,7 +73,7 @@ fn pitch_name(pitch: &Pitch) -> String {
 }
 
 /// A pitch from its name or its sizes as JSON (`{"length_mm", "width_mm", "goal_mouth_mm"}`).
-fn pitch_from(text: &str, what: &str) -> PyResult<Pitch> {
+pub fn pitch_from(text: &str, what: &str) -> PyResult<Pitch> {
     if let Some((_, p)) = PITCHES.iter().find(|(n, _)| *n == text) {
         return Ok(*p);
     }
@@ -117,8 +117,25 @@ fn demonstration(
         ))
     })?;
     let pitch = pitch_from(&text("pitch")?, what)?;
+    let reach_mm = reach(item, what)?;
     let segments = segments(&get("segments")?, what, frame_count)?;
-    Ok((SegmentedDemonstration { demonstrator, pitch, ending: Ending::from(outcome), segments }, outcome))
+    Ok((SegmentedDemonstration { demonstrator, pitch, reach_mm, ending: Ending::from(outcome), segments }, outcome))
+}
+
+/// The optional `reach_mm` of an item: how far from its centre its demonstrator's body moves
+/// the ball, a positive number of millimetres (`None` or absent where unknown).
+fn reach(item: &Bound<'_, PyAny>, what: &str) -> PyResult<Option<f64>> {
+    let Ok(value) = item.get_item("reach_mm") else { return Ok(None) };
+    if value.is_none() {
+        return Ok(None);
+    }
+    match value.extract::<f64>() {
+        Ok(mm) if mm.is_finite() && mm > 0.0 && !value.is_instance_of::<pyo3::types::PyBool>() => Ok(Some(mm)),
+        _ => Err(PyValueError::new_err(format!(
+            "{what}: reach_mm must be a positive number of millimetres or None, got {}",
+            value.repr().map_or_else(|_| "?".into(), |r| r.to_string())
+        ))),
+    }
 }
 
 fn label(name: &str, what: &str) -> PyResult<Label> {
@@ -225,6 +242,7 @@ impl PySegmentedDemonstrations {
         out.set_item("outcome", self.outcomes[i].name())?;
         out.set_item("segments", segment_columns(py, &d.segments)?)?;
         out.set_item("pitch", pitch_name(&d.pitch))?;
+        out.set_item("reach_mm", d.reach_mm)?;
         Ok(out)
     }
 

@@ -96,8 +96,9 @@ def test_bc_on_an_always_forward_demonstrator_plays_forward_at_every_step(forwar
 def test_a_demonstration_from_another_field_is_seen_on_the_imitators_by_the_one_correspondence():
     """The tiny's field (560 × 345 mm, a 172.5 mm mouth) onto the imitator's (1020 × 810 mm, a
     405 mm mouth): the ball's x scales by 1020/560 and its y by the mouths' ratio (the mouths are
-    half the widths on both), the robot keeps its offset from the ball and its heading, and the
-    samples bc learns from are exactly those observations."""
+    half the widths on both); the robot keeps its bearing from the ball and its heading, its
+    distance from the ball mapped by the reaches (20 mm onto 120 mm, beyond at the fields'
+    scale); and the samples bc learns from are exactly those observations."""
     from polymimic.bodies import onto_field
 
     (tiny,) = polymimic.record("tiny", configuration=1, n=1, seed=0)
@@ -107,7 +108,11 @@ def test_a_demonstration_from_another_field_is_seen_on_the_imitators_by_the_one_
     onto = onto_field(raw, recorded_by="tiny")
     np.testing.assert_allclose(onto[:, 3], raw[:, 3] * 1020.0 / 560.0)
     np.testing.assert_allclose(onto[:, 4], raw[:, 4] * 405.0 / 172.5)
-    np.testing.assert_allclose(onto[:, :2] - onto[:, 3:], raw[:, :2] - raw[:, 3:], atol=1e-9)
+    seen, mapped = raw[:, :2] - raw[:, 3:], onto[:, :2] - onto[:, 3:]
+    distance = np.hypot(seen[:, 0], seen[:, 1])
+    expected = np.where(distance <= 20.0, distance * 6.0, 120.0 + (distance - 20.0) * 1020.0 / 560.0)
+    np.testing.assert_allclose(np.hypot(mapped[:, 0], mapped[:, 1]), expected)
+    np.testing.assert_allclose(np.arctan2(mapped[:, 1], mapped[:, 0]), np.arctan2(seen[:, 1], seen[:, 0]))
     np.testing.assert_array_equal(onto[:, 2], raw[:, 2])
     np.testing.assert_array_equal(labels.command_labels([tiny])[0].observations, onto)
     (lego,) = polymimic.record("expert", configuration=1, n=1, seed=0)

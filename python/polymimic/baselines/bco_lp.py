@@ -28,10 +28,11 @@ from polymimic.field import Demonstration
 __all__ = ["fit"]
 
 
-def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecognizer, weights: Mapping[str, float],
-        hyperparameters: Hyperparameters = DEFAULT, seed: int = 0,
+def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecognizer | None = None,
+        weights: Mapping[str, float], hyperparameters: Hyperparameters = DEFAULT, seed: int = 0,
         segmenter: Mapping[str, Any] | None = None) -> ClonedPolicy:
-    """:func:`polymimic.baselines.bco.fit` with every sample weighted by ``weights[demonstrator]``.
+    """:func:`polymimic.baselines.bco.fit` with every sample weighted by ``weights[demonstrator]``
+    (labelled as ``hyperparameters.labels`` says).
 
     Raises
     ------
@@ -40,5 +41,6 @@ def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecogni
         every weight is 0.
     """
     checked = check_weights(weights, check_demonstrations(demonstrations))
-    return train("bco_lp", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter),
+    return train("bco_lp", labelled(demonstrations, recognizer=recognizer, segmenter=segmenter,
+                                    labels=hyperparameters.labels, seed=seed),
                  hyperparameters=hyperparameters, seed=seed, weights=checked)

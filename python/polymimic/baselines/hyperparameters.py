@@ -1,11 +1,16 @@
-"""What a cloning method may tune: classifier family and parameters, features, step length.
+"""What a cloning method may tune: classifier family and parameters, features, step length,
+and for ``bco`` how the demonstrations are labelled.
 
 :func:`candidates` draws the same number of candidates for every method from one grid, with a
 seed, so that every method gets the same tuning effort (SPEC §6.2); the first two candidates
-are always :data:`DEFAULT` and :data:`PLAIN_BOOSTING`.
+are always :data:`DEFAULT` and :data:`PLAIN_BOOSTING`. ``bco`` tries the first half of them
+with each of its two labellings in turn (:func:`with_labellings`): as many candidates, paired
+so that the labellings meet the same classifiers.
 
 >>> [h.classifier for h in candidates(4, seed=0)]
 ['mlp', 'hist_gradient_boosting', 'hist_gradient_boosting', 'random_forest']
+>>> [(h.classifier, h.labels) for h in with_labellings(candidates(2, seed=0))]
+[('mlp', 'steps'), ('mlp', 'inverse_dynamics')]
 >>> Hyperparameters.from_dict(DEFAULT.to_dict()) == DEFAULT
 True
 """
@@ -15,7 +20,7 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import json
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -23,11 +28,22 @@ import numpy as np
 from polymimic.baselines.classifiers import FAMILIES
 from polymimic.baselines.features import FEATURE_SETS
 
-__all__ = ["DEFAULT", "FRAMES_PER_ACTION", "GRID", "PLAIN_BOOSTING", "Hyperparameters", "candidates"]
+__all__ = ["DEFAULT", "FRAMES_PER_ACTION", "GRID", "LABELS", "PLAIN_BOOSTING", "TUNED_LABELS", "Hyperparameters",
+           "candidates", "with_labellings"]
 
 FRAMES_PER_ACTION = (5, 10, 15, 30)
 """Step lengths (tracker frames a primitive is held for) a candidate may take; 30 is the
 environment's default one-second primitive."""
+
+LABELS = ("steps", "segments", "inverse_dynamics")
+"""How ``bco`` and ``bco_lp`` may label the demonstrations' frames: by the recogniser's name for
+the second of motion from each (:func:`polymimic.baselines.labels.step_labels`), by the
+segment each lies in (:func:`~polymimic.baselines.labels.segment_labels`), or by the inverse
+dynamics model learned from the imitator's exploration
+(:func:`polymimic.baselines.inverse_dynamics.inverse_dynamics_labels`)."""
+
+TUNED_LABELS = ("steps", "inverse_dynamics")
+"""The labellings ``bco``'s tuning chooses between (:func:`with_labellings`)."""
 
 
 @dataclasses.dataclass(frozen=True)
@@ -47,6 +63,9 @@ class Hyperparameters:
     balanced : bool
         Whether every primitive's samples weigh the same in total (the Expert stops rarely, the
         Poor never turns: unbalanced, a rare primitive is never chosen).
+    labels : str, default "steps"
+        How ``bco`` and ``bco_lp`` label the frames (one of :data:`LABELS`); the other methods
+        learn from the commands sent and ignore it.
     """
 
     classifier: str
@@ -54,6 +73,7 @@ class Hyperparameters:
     feature_set: str
     frames_per_action: int
     balanced: bool
+    labels: str = "steps"
 
     def __post_init__(self) -> None:
         if self.classifier not in FAMILIES:
@@ -63,18 +83,22 @@ class Hyperparameters:
         if isinstance(self.frames_per_action, bool) or not isinstance(self.frames_per_action, (int, np.integer)) \
                 or self.frames_per_action < 1:
             raise ValueError(f"frames_per_action must be an integer ≥ 1, got {self.frames_per_action!r}")
+        if self.labels not in LABELS:
+            raise ValueError(f"unknown labels {self.labels!r}; expected one of {', '.join(map(repr, LABELS))}")
 
     def to_dict(self) -> dict[str, Any]:
-        """Plain data for a report (JSON-ready)."""
-        return {"classifier": self.classifier, "params": dict(self.params), "feature_set": self.feature_set,
+        """Plain data for a report (JSON-ready). The labelling is left out at its default, the
+        recogniser's steps, so that a method that ignores it is recorded as before."""
+        data = {"classifier": self.classifier, "params": dict(self.params), "feature_set": self.feature_set,
                 "frames_per_action": int(self.frames_per_action), "balanced": self.balanced}
+        return data if self.labels == "steps" else {**data, "labels": self.labels}
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Hyperparameters:
         params = {k: tuple(v) if isinstance(v, list) else v for k, v in dict(data["params"]).items()}
         return cls(classifier=data["classifier"], params=tuple(sorted(params.items())),
                    feature_set=data["feature_set"], frames_per_action=int(data["frames_per_action"]),
-                   balanced=bool(data["balanced"]))
+                   balanced=bool(data["balanced"]), labels=str(data.get("labels", "steps")))
 
     def __str__(self) -> str:
         return json.dumps(self.to_dict(), sort_keys=True)
@@ -135,3 +159,11 @@ def candidates(budget: int, *, seed: int = 0) -> list[Hyperparameters]:
             chosen.append(candidate)
             turn += 1
     return chosen
+
+
+def with_labellings(candidates: Sequence[Hyperparameters]) -> list[Hyperparameters]:
+    """As many candidates as ``candidates``: the first half of them (rounded up), each with
+    every labelling of :data:`TUNED_LABELS` in turn, so that the labellings are compared on the
+    same classifiers at the same tuning effort (``bco``'s candidates)."""
+    paired = [dataclasses.replace(h, labels=labels) for h in candidates for labels in TUNED_LABELS]
+    return paired[:len(candidates)]

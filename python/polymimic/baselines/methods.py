@@ -21,7 +21,7 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.bc import labelled as bc_labelled
 from polymimic.baselines.bc_best import labelled as bc_best_labelled
 from polymimic.baselines.bco import labelled as bco_labelled
-from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
+from polymimic.baselines.hyperparameters import DEFAULT, LABELS, Hyperparameters
 from polymimic.baselines.labels import IMITATOR_BODY, Labelled, check_demonstrations, check_weights
 from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_fit_seed, check_max_samples, train
@@ -45,7 +45,9 @@ def check_method(method: Any) -> str:
 class Prepared:
     """What a method learns from: labelled demonstrations and per-demonstrator weights, for
     fits of at most about ``max_samples`` decision samples drawn with ``seed`` (``bco`` names
-    only the frames those fits take, so a fit of another seed or size needs another preparation)."""
+    only the frames those fits take, so a fit of another seed or size needs another preparation).
+    ``bco`` and ``bco_lp`` hold each labelling asked for in ``by_labels`` (``labelled`` is the
+    first), and a fit takes the one its hyperparameters name."""
 
     method: str
     labelled: list[Labelled]
@@ -53,19 +55,32 @@ class Prepared:
     max_samples: int
     weights: dict[str, float] | None = None
     imitator: str = IMITATOR_BODY
+    by_labels: dict[str, list[Labelled]] = dataclasses.field(default_factory=dict)
+
+    def labelled_for(self, hyperparameters: Hyperparameters) -> list[Labelled]:
+        """The labelled demonstrations a fit with ``hyperparameters`` learns from."""
+        if not self.by_labels:
+            return self.labelled
+        if hyperparameters.labels not in self.by_labels:
+            raise ValueError(f"{self.method} was prepared with labels {', '.join(map(repr, self.by_labels))}, not "
+                             f"{hyperparameters.labels!r}: prepare it with labels=[{hyperparameters.labels!r}, …]")
+        return self.by_labels[hyperparameters.labels]
 
 
 def prepare(method: str, demonstrations: Sequence[Demonstration], *,
             recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
             member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
             max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0,
-            imitator: str | WheeledBody = IMITATOR_BODY) -> Prepared:
+            imitator: str | WheeledBody = IMITATOR_BODY, labels: Sequence[str] = ("steps",)) -> Prepared:
     """Label the demonstrations as ``method`` does (reading them once with the recogniser, for
     ``bco``, at the frames fits of at most ``max_samples`` decision samples under ``seed`` take),
     for an imitator of body ``imitator`` (its field, its first frames; the policy drives it).
 
-    ``recognizer`` is needed by ``bco`` and ``bco_lp``, ``weights`` by ``bco_lp``, ``member``
-    by ``bc_best``; ``random`` needs nothing (and takes an empty list).
+    ``recognizer`` is needed by ``bco`` and ``bco_lp`` (unless every labelling of ``labels``
+    is the inverse dynamics model's), ``weights`` by ``bco_lp``, ``member`` by ``bc_best``;
+    ``random`` needs nothing (and takes an empty list). ``bco`` and ``bco_lp`` are labelled in
+    each way of ``labels`` (:data:`~polymimic.baselines.hyperparameters.LABELS`) the fits will
+    ask for.
     """
     method = check_method(method)
     check_max_samples(max_samples)
@@ -81,15 +96,20 @@ def prepare(method: str, demonstrations: Sequence[Demonstration], *,
             raise ValueError("bc_best needs member: the name of the demonstrator to clone")
         return Prepared(method, bc_best_labelled(demos, member=member, imitator=imitator), seed, max_samples,
                         imitator=body)
-    if recognizer is None:
+    wanted = list(dict.fromkeys([labels] if isinstance(labels, str) else labels))
+    if not wanted:
+        raise ValueError(f"labels is empty: {method} needs at least one way to label (one of {', '.join(LABELS)})")
+    if recognizer is None and any(name != "inverse_dynamics" for name in wanted):
         raise ValueError(f"{method} needs recognizer: a polymimic.PrimitiveRecognizer trained on self-observation")
-    labelled = bco_labelled(demos, recognizer=recognizer, segmenter=segmenter, max_samples=max_samples, seed=seed,
-                            imitator=imitator)
+    by_labels = {name: bco_labelled(demos, recognizer=recognizer, segmenter=segmenter, labels=name,
+                                    max_samples=max_samples, seed=seed, imitator=imitator) for name in wanted}
+    first = by_labels[wanted[0]]
     if method == "bco":
-        return Prepared(method, labelled, seed, max_samples, imitator=body)
+        return Prepared(method, first, seed, max_samples, imitator=body, by_labels=by_labels)
     if weights is None:
         raise ValueError("bco_lp needs weights: a weight in [0, 1] for every demonstrator (e.g. its final LP)")
-    return Prepared(method, labelled, seed, max_samples, check_weights(weights, demos), imitator=body)
+    return Prepared(method, first, seed, max_samples, check_weights(weights, demos), imitator=body,
+                    by_labels=by_labels)
 
 
 def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None = None) -> ClonedPolicy | RandomPolicy:
@@ -100,8 +120,9 @@ def fit_prepared(prepared: Prepared, *, hyperparameters: Hyperparameters | None 
     if prepared.method == "random":
         return RandomPolicy(seed=prepared.seed, frames_per_action=30 if hyperparameters is None
                             else hyperparameters.frames_per_action, body=prepared.imitator)
-    return train(prepared.method, prepared.labelled, hyperparameters=hyperparameters or DEFAULT, seed=prepared.seed,
-                 weights=prepared.weights, max_samples=prepared.max_samples)
+    hyperparameters = hyperparameters or DEFAULT
+    return train(prepared.method, prepared.labelled_for(hyperparameters), hyperparameters=hyperparameters,
+                 seed=prepared.seed, weights=prepared.weights, max_samples=prepared.max_samples)
 
 
 def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters: Hyperparameters | None = None,
@@ -113,7 +134,8 @@ def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters
 
     The same as the method's own ``fit`` (:func:`polymimic.baselines.bc.fit`, …), by name.
     ``hyperparameters`` default to :data:`~polymimic.baselines.hyperparameters.DEFAULT` (for
-    ``random``: one primitive a second, the environment's step). ``max_samples`` caps the
+    ``random``: one primitive a second, the environment's step); ``bco`` and ``bco_lp`` label
+    the demonstrations as they say (``hyperparameters.labels``). ``max_samples`` caps the
     decision samples (:data:`~polymimic.baselines.training.MAX_DECISION_SAMPLES`: the sample
     stride widens evenly to stay under it); ``seed`` draws which frames they are
     (:func:`~polymimic.baselines.training.sample_rows`) and seeds the classifier. ``imitator``
@@ -126,5 +148,6 @@ def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters
         ``max_samples`` is not an integer ≥ 1.
     """
     prepared = prepare(method, demonstrations, recognizer=recognizer, weights=weights, member=member,
-                       segmenter=segmenter, max_samples=max_samples, seed=seed, imitator=imitator)
+                       segmenter=segmenter, max_samples=max_samples, seed=seed, imitator=imitator,
+                       labels=((hyperparameters or DEFAULT).labels,))
     return fit_prepared(prepared, hyperparameters=hyperparameters)

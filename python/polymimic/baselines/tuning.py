@@ -12,7 +12,10 @@ evaluation's under ``evaluation_seed``, and refuses to tune if one were.
 the same draws for every method); each is fitted on all the demonstrations and scored by its net
 goals (goals − own goals) over the validation attempts, then by goals; the first best wins.
 ``random`` has only its step length to choose, so it tries the distinct step lengths among the
-candidates.
+candidates. ``bco`` chooses how its demonstrations are labelled too, by the recogniser's steps
+or by the inverse dynamics model: it tries the first half of the drawn candidates with each
+(:func:`~polymimic.baselines.hyperparameters.with_labellings`), as many candidates in all, and
+its choice names the labelling (``labels``).
 
 >>> import polymimic
 >>> demos = polymimic.record("poor", configuration=1, n=2, seed=0)
@@ -31,7 +34,7 @@ from typing import Any
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.evaluation import VALIDATION_SEED_BASE, _check_seed, attempts_of, play
-from polymimic.baselines.hyperparameters import Hyperparameters
+from polymimic.baselines.hyperparameters import Hyperparameters, with_labellings
 from polymimic.baselines.hyperparameters import candidates as draw_candidates
 from polymimic.baselines.labels import IMITATOR_BODY
 from polymimic.baselines.methods import check_method, fit_prepared, prepare
@@ -40,7 +43,10 @@ from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples
 from polymimic.bodies import WheeledBody
 from polymimic.field import Demonstration
 
-__all__ = ["Tuning", "tune", "validation_attempts", "validation_rank"]
+__all__ = ["LABELLING_TUNED", "Tuning", "tune", "validation_attempts", "validation_rank"]
+
+LABELLING_TUNED = ("bco", "bco_lp")
+"""The methods whose tuning chooses how the demonstrations are labelled as well."""
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -96,7 +102,8 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         One of :data:`polymimic.baselines.METHODS`.
     demonstrations : sequence of polymimic.Demonstration
     candidates : sequence of Hyperparameters, optional
-        The candidates to try; default ``candidates(budget, seed=candidate_seed)``.
+        The candidates to try, as they are; default ``candidates(budget, seed=candidate_seed)``
+        (for ``bco``, :func:`~polymimic.baselines.hyperparameters.with_labellings` of them).
     budget : int, default 12
         How many candidates (the same for every method).
     validation_seed : int, default 0
@@ -132,7 +139,11 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
     if shared:
         raise ValueError(f"validation attempts share episode seeds {shared} with the evaluation; "
                          f"choose another validation_seed")
-    tried = list(draw_candidates(budget, seed=candidate_seed) if candidates is None else candidates)
+    if candidates is None:
+        drawn = draw_candidates(budget, seed=candidate_seed)
+        tried = with_labellings(drawn) if method in LABELLING_TUNED else drawn
+    else:
+        tried = list(candidates)
     if not tried:
         raise ValueError("candidates is empty: tuning needs at least one candidate")
     if method == "random":
@@ -140,7 +151,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         tried = [next(h for h in tried if h.frames_per_action == k) for k in steps]
     prepared = prepare(method, list(demonstrations) if method != "random" else [], recognizer=recognizer,
                        weights=weights, member=member, segmenter=segmenter, max_samples=max_samples, seed=seed,
-                       imitator=imitator)
+                       imitator=imitator, labels=list(dict.fromkeys(h.labels for h in tried)))
     scores: list[dict[str, Any]] = []
     best: tuple[tuple[int, int], int, ClonedPolicy | RandomPolicy] | None = None
     for index, hyperparameters in enumerate(tried):
@@ -160,4 +171,6 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
 def _chosen(method: str, hyperparameters: Hyperparameters) -> dict[str, Any]:
     if method == "random":
         return {"frames_per_action": int(hyperparameters.frames_per_action)}
+    if method in LABELLING_TUNED:
+        return {**hyperparameters.to_dict(), "labels": hyperparameters.labels}
     return hyperparameters.to_dict()

@@ -33,7 +33,7 @@ def _imports():
 
 GRAPH = _imports()
 RUNS = ("polymimic.runs",)
-APPLICATIONS = ("polymimic.reproduce", "polymimic.benchmark")
+APPLICATIONS = ("polymimic.reproduce", "polymimic.benchmark", "polymimic.matrix")
 COMMAND = ("polymimic.cli", "polymimic.__main__")
 APPLICATION = RUNS + APPLICATIONS + COMMAND
 

@@ -4,7 +4,9 @@
 is given) and writes report.html beside results.json; `polymimic config` prints every parameter.
 `polymimic benchmark` compares polymimic with the baselines on crowds of demonstrators and
 writes benchmark.html beside benchmark.json (runs/benchmark/<timestamp> unless --run-dir).
-`polymimic import-tracks` turns a tracker log into a run's demonstrations.
+`polymimic matrix` shows who learns what from whom: imitator bodies against sets of demonstrators
+(runs/matrix/<timestamp> unless --run-dir). `polymimic import-tracks` turns a tracker log into a
+run's demonstrations.
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ import time
 
 from polymimic import __version__
 from polymimic._native import PolymimicError
-from polymimic.cli import benchmark, demo, export, import_tracks, replay, stages
+from polymimic.cli import benchmark, demo, export, import_tracks, matrix, replay, stages
 from polymimic.runs.config import ConfigError
 
 __all__ = ["EXIT_INTERRUPTED", "EXIT_USAGE", "build_parser", "main"]
@@ -30,7 +32,7 @@ def build_parser() -> argparse.ArgumentParser:
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
-    for command in (demo, stages, replay, export, benchmark, import_tracks):
+    for command in (demo, stages, replay, export, benchmark, matrix, import_tracks):
         command.add(commands)
     return parser
 

@@ -1,0 +1,226 @@
+"""Every parameter of a matrix run; TOML in and out.
+
+The sections a reproduction has (``[seeds]``, ``[field]``, ``[recognizer]``, ``[segmenter]``,
+``[learning]``, ``[bodies.<name>]``, read by :class:`~polymimic.runs.config.RunConfig`), then
+``[matrix]``: the imitator bodies that make its rows, its sizes and ``bco``'s tuning effort. The
+rows are the thesis's three bodies and ``wagon``, a wheeled body of its own field described in
+``docs/configs/matrix_wagon.toml`` (the default config's own body, :data:`WAGON`); a
+``[bodies.<name>]`` table adds another that ``imitators`` may name.
+
+>>> config = MatrixConfig()
+>>> config.matrix.imitators, config.matrix.trials
+(('lego', 'tiny', 'humanoid', 'wagon'), 20)
+>>> MatrixConfig.from_toml('[matrix]\\nimitators = ["lego", "tinny"]\\n')
+Traceback (most recent call last):
+...
+polymimic.runs.config.ConfigError: [matrix] imitators: 'tinny' is not a body: one of lego, tiny, humanoid, wagon
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from typing import Any
+
+from polymimic._toml import write_table
+from polymimic.bodies import Field, WheeledBody
+from polymimic.runs.config import (
+    IMITATOR_BODIES,
+    ConfigError,
+    RunConfig,
+    as_table,
+    checked_section,
+    in_range,
+    read_config,
+    toml_tables,
+)
+
+__all__ = ["COLUMNS", "WAGON", "DemonstratorSet", "MatrixConfig", "MatrixSettings", "demonstrator_sets"]
+
+COLUMNS = ("expert", "tiny", "humanoid", "own_body", "mixed_bodies")
+"""The demonstrator sets, in the matrix's order: the Expert on the Lego, the Tiny controller on
+the tiny, the Humanoid controller, the row's own body (a built-in controller on it) and the
+benchmark's ``mixed_bodies`` crowd (three bodies at three skills)."""
+
+WAGON = WheeledBody("wagon", length_mm=80, width_mm=80, wheel_base_mm=70, top_wheel_speed_mm_s=120,
+                    field=Field(800, 560, goal_mouth_mm=320, ball_diameter_mm=60))
+"""A wheeled body between the Lego and the tiny, on an 800 × 560 mm field of its own whose
+mouths (320 mm) are not half its width: the matrix's described body."""
+
+OWN_CONTROLLER = {"lego": "expert", "tiny": "tiny", "humanoid": "humanoid"}
+"""The built-in controller that demonstrates on a built-in body; any other body's is the Tiny
+controller's, which drives any wheeled body."""
+
+MIXED_BODIES = tuple((controller, lapse) for controller in ("expert", "tiny", "humanoid") for lapse in (0.05, 0.5, 0.9))
+"""The ``mixed_bodies`` crowd of the benchmark: each controller at three lapses."""
+
+
+def _doc(text: str, default: Any) -> Any:
+    return dataclasses.field(default=default, metadata={"doc": text})
+
+
+@dataclasses.dataclass(frozen=True)
+class MatrixSettings:
+    """The rows, the sizes, and how hard ``bco`` is tuned in each cell."""
+
+    imitators: tuple[str, ...] = _doc("the imitator bodies, one row each: lego, tiny, humanoid, or a "
+                                      "[bodies.<name>]", ("lego", "tiny", "humanoid", "wagon"))
+    trials: int = _doc("learning trials per cell (seeds first_trial, first_trial + 1, …)", 20)
+    demonstrations_per_configuration: int = _doc("valid demonstrations per member and field configuration", 25)
+    attempts_per_configuration: int = _doc("evaluation attempts per method, trial and field configuration", 25)
+    bco_fits: int = _doc("fits of bco per cell, each evaluated, under seeds first_trial, first_trial + 1, …", 3)
+    tuning_budget: int = _doc("bco's candidates per cell, chosen on validation attempts: plain boosted trees with "
+                              "each labelling, then the benchmark's others", 2)
+    validation_attempts_per_configuration: int = _doc("bco's tuning attempts per configuration (never evaluated)",
+                                                      25)
+    validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
+    max_decision_samples: int = _doc("the most decision samples a bco fit takes", 20_000)
+
+    def __post_init__(self) -> None:
+        for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration", "bco_fits",
+                     "tuning_budget", "validation_attempts_per_configuration", "max_decision_samples"):
+            in_range("matrix", name, getattr(self, name), 1)
+        in_range("matrix", "validation_seed", self.validation_seed, 0, 2**62 - 1)
+        rows = self.imitators
+        if not isinstance(rows, (list, tuple)) or not rows or not all(isinstance(r, str) for r in rows):
+            raise ConfigError(f"[matrix] imitators must be a non-empty list of body names, got {rows!r}")
+        if len(set(rows)) != len(rows):
+            raise ConfigError(f"[matrix] imitators names {next(r for r in rows if rows.count(r) > 1)!r} twice")
+        object.__setattr__(self, "imitators", tuple(rows))
+
+
+@dataclasses.dataclass(frozen=True)
+class DemonstratorSet:
+    """One column's demonstrators for one row: ``(name, controller, body, lapse)`` each."""
+
+    column: str
+    name: str
+    members: tuple[tuple[str, str, str, float], ...]
+
+    @property
+    def names(self) -> tuple[str, ...]:
+        return tuple(m[0] for m in self.members)
+
+
+def demonstrator_sets(row: str) -> dict[str, DemonstratorSet]:
+    """Every column's demonstrators for the imitator ``row``. A built-in body's own-body column is
+    the column of its own controller (the same set: its cells are one); another body's is the Tiny
+    controller on that body, named ``own_<body>``."""
+    sets = {"expert": DemonstratorSet("expert", "expert", (("expert", "expert", "lego", 0.0),)),
+            "tiny": DemonstratorSet("tiny", "tiny", (("tiny", "tiny", "tiny", 0.0),)),
+            "humanoid": DemonstratorSet("humanoid", "humanoid", (("humanoid", "humanoid", "humanoid", 0.0),)),
+            "mixed_bodies": DemonstratorSet("mixed_bodies", "mixed_bodies", tuple(
+                (f"{controller}_{i:02d}", controller, OWN_BODY_OF[controller], lapse)
+                for i, (controller, lapse) in enumerate(MIXED_BODIES)))}
+    if row in OWN_CONTROLLER:
+        sets["own_body"] = dataclasses.replace(sets[OWN_CONTROLLER[row]], column="own_body")
+    else:
+        sets["own_body"] = DemonstratorSet("own_body", f"own_{row}", ((f"tiny_{row}", "tiny", row, 0.0),))
+    return {column: sets[column] for column in COLUMNS}
+
+
+OWN_BODY_OF = {"expert": "lego", "tiny": "tiny", "humanoid": "humanoid"}
+"""The body each built-in controller of the crowd demonstrates on."""
+
+
+def _default_run() -> RunConfig:
+    run = RunConfig()
+    # The benchmark's polymimic: it learns more from members of higher LP (SPEC §6.3).
+    return dataclasses.replace(run, bodies={**run.bodies, "wagon": WAGON},
+                               learning=run.learning.replace(imitator_weighting="lp"))
+
+
+@dataclasses.dataclass(frozen=True)
+class MatrixConfig:
+    """The whole matrix. ``MatrixConfig()`` is the full one; :meth:`quick` is small."""
+
+    run: RunConfig = dataclasses.field(default_factory=_default_run)
+    matrix: MatrixSettings = dataclasses.field(default_factory=MatrixSettings)
+
+    def __post_init__(self) -> None:
+        known = [*IMITATOR_BODIES, *(n for n in self.run.bodies if n not in IMITATOR_BODIES)]
+        for row in self.matrix.imitators:
+            if row not in known:
+                raise ConfigError(f"[matrix] imitators: {row!r} is not a body: one of {', '.join(known)}")
+        if not self.run.thesis_imitator:
+            raise ConfigError("[imitator] has no place in a matrix: its rows are [matrix] imitators")
+
+    @property
+    def seeds(self) -> Any:
+        return self.run.seeds
+
+    def body(self, row: str) -> str | WheeledBody:
+        """The imitator ``row`` as the library takes it."""
+        return row if row in IMITATOR_BODIES else self.run.bodies[row]
+
+    def trial_seeds(self) -> list[int]:
+        return [self.seeds.first_trial + i for i in range(self.matrix.trials)]
+
+    def fit_seeds(self) -> list[int]:
+        return [self.seeds.first_trial + i for i in range(self.matrix.bco_fits)]
+
+    @classmethod
+    def quick(cls) -> MatrixConfig:
+        """A small matrix: 2 trials and 1 bco fit per cell, 5 demonstrations per member and
+        configuration, 5 evaluation attempts per configuration, bco's 2 candidates on 3 validation
+        attempts, fits of at most 1000 samples, the quick reproduction's recogniser."""
+        full = cls()
+        quick_run = RunConfig.quick()
+        return dataclasses.replace(
+            full, run=dataclasses.replace(full.run, recognizer=quick_run.recognizer),
+            matrix=dataclasses.replace(full.matrix, trials=2, bco_fits=1, demonstrations_per_configuration=5,
+                                       attempts_per_configuration=5, tuning_budget=2,
+                                       validation_attempts_per_configuration=3, max_decision_samples=1000))
+
+    def to_dict(self) -> dict[str, Any]:
+        run = self.run.to_dict()
+        for section in ("experiments", "imitator"):
+            del run[section]
+        return {**run, "matrix": {k: list(v) if isinstance(v, tuple) else v
+                                  for k, v in dataclasses.asdict(self.matrix).items()}}
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], *, base: MatrixConfig | None = None) -> MatrixConfig:
+        base = base or cls()
+        for section in ("experiments", "imitator", "demonstrators"):
+            if section in data:
+                raise ConfigError(f"[{section}] has no place in a matrix: its rows are [matrix] imitators and its "
+                                  "columns are fixed")
+        run = RunConfig.from_dict({k: v for k, v in data.items() if k != "matrix"}, base=base.run)
+        settings = base.matrix
+        if "matrix" in data:
+            defaults = {k: list(v) if isinstance(v, tuple) else v for k, v in dataclasses.asdict(base.matrix).items()}
+            settings = dataclasses.replace(base.matrix, **checked_section("matrix", as_table("matrix", data["matrix"]),
+                                                                          defaults))
+        return cls(run=run, matrix=settings)
+
+    def to_toml(self) -> str:
+        lines = self.run.to_toml().split("\n[experiments]")[0].rstrip().split("\n")
+        lines = [line for line in _without_table(lines, "imitator")]
+        lines[0] = "# polymimic matrix configuration"
+        lines.append("")
+        docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(MatrixSettings)}
+        write_table(lines, "matrix", {k: list(v) if isinstance(v, tuple) else v
+                                      for k, v in dataclasses.asdict(self.matrix).items()}, docs)
+        for name, body in self.run.bodies.items():
+            write_table(lines, f"bodies.{name}", body.to_table(), {})
+        return "\n".join(lines).rstrip() + "\n"
+
+    @classmethod
+    def from_toml(cls, text: str, *, base: MatrixConfig | None = None) -> MatrixConfig:
+        return cls.from_dict(toml_tables(text), base=base)
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str], *, base: MatrixConfig | None = None) -> MatrixConfig:
+        return read_config(path, lambda text: cls.from_toml(text, base=base))
+
+
+def _without_table(lines: list[str], name: str) -> list[str]:
+    """``lines`` of TOML without the table ``[name]``."""
+    out, skipping = [], False
+    for line in lines:
+        if line.startswith("["):
+            skipping = line.strip() == f"[{name}]"
+        if not skipping:
+            out.append(line)
+    return out

@@ -1,0 +1,232 @@
+"""``polymimic matrix``: each imitator's own recogniser, each set of demonstrators recorded once,
+polymimic and bco in every cell, and the summary and report.
+
+Steps, each resumable (every result is written to the run directory, atomically, as it
+arrives, and a rerun redoes only what is missing or damaged):
+
+1. **recognise** — each row's self-observation on its own body and field, and its recogniser;
+2. **record** — each set's demonstrations, 25 valid ones per member and configuration (the
+   ``mixed_bodies`` crowd as the benchmark records it);
+3. **polymimic** — every cell's trials, each imitator learning on its own setting and played by
+   the improved control on the evaluation attempts of its own field;
+4. **tune** — bco's hyperparameters in every cell, on validation attempts; the chosen fit is
+   evaluated there and then;
+5. **bco** — the other bco fits of every cell, evaluated;
+6. **report** — ``matrix.json``, ``matrix.md``, ``matrix.html`` and the heat map.
+
+A built-in body's own-body cell is the cell of its own controller's column (the same
+demonstrations and imitator): it is computed once.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import functools
+import json
+import pathlib
+import sys
+import time
+from collections.abc import Callable
+from typing import Any
+
+from polymimic._atomic import atomic_write_text
+from polymimic._native import PrimitiveRecognizer
+from polymimic.crowds import member_seed
+from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
+from polymimic.field import PRIMITIVES, Demonstration, record, self_observation
+from polymimic.matrix.config import COLUMNS, DemonstratorSet, MatrixConfig, demonstrator_sets
+from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning
+from polymimic.matrix.report import matrix_html, matrix_markdown
+from polymimic.matrix.rundir import MatrixDir
+from polymimic.matrix.summary import draw_heat_map, gather
+from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, tuning_task
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.progress import progress
+
+__all__ = ["Matrix"]
+
+
+@dataclasses.dataclass
+class Matrix:
+    """One matrix run: its directory, config, where tasks run, and whether to keep quiet."""
+
+    run: MatrixDir
+    config: MatrixConfig
+    runner: TaskRunner
+    quiet: bool = False
+
+    def say(self, message: str) -> None:
+        if not self.quiet:
+            print(message, file=sys.stderr)
+
+    def _step(self, name: str, work: Callable[[], int]) -> int:
+        started = time.perf_counter()
+        self.run.stage_started(name)
+        made = work()
+        self.run.stage_finished(name, time.perf_counter() - started, made=made)
+        self.say(f"{name}: {made} made in {time.perf_counter() - started:.1f} s")
+        return made
+
+    def run_all(self) -> float:
+        """Every step, in order; the seconds they took."""
+        started = time.perf_counter()
+        self._step("recognise", self.recognise)
+        self._step("record", self.record)
+        shared = self.shared()
+        self._step("polymimic", lambda: self.polymimic(shared))
+        self._step("tune", lambda: self.tune(shared))
+        self._step("bco", lambda: self.bco(shared))
+        self._step("report", self.report)
+        return time.perf_counter() - started
+
+    def rows(self) -> tuple[str, ...]:
+        return self.config.matrix.imitators
+
+    def sets(self) -> dict[str, dict[str, DemonstratorSet]]:
+        return {row: demonstrator_sets(row) for row in self.rows()}
+
+    def cells(self) -> list[tuple[str, str]]:
+        """The cells computed: each row's columns, a built-in body's own-body cell being another's."""
+        return [(row, column) for row, sets in self.sets().items() for column in COLUMNS
+                if column != "own_body" or sets["own_body"].name.startswith("own_")]
+
+    # 1. Each imitator's recogniser.
+
+    def recognise(self) -> int:
+        made, settings = 0, self.config.run.recognizer
+        count = len(PRIMITIVES) * settings.train_per_primitive
+        with progress(total=len(self.rows()), desc="recognise", quiet=self.quiet) as bar:
+            for row in self.rows():
+                path, model = self.run.own_self_observation_path(row), self.run.recognizer_of(row)
+                if not self.run.finished(model, PrimitiveRecognizer.load):
+                    if not self.run.finished(path, lambda p: _counted(load_self_observation(p), count)):
+                        save_self_observation(self_observation(settings.train_per_primitive,
+                                                               seed=self.config.seeds.self_observation_train,
+                                                               config=self.config.run.field,
+                                                               body=self.config.body(row)), path)
+                    settings.train(load_self_observation(path)).save(model)
+                    made += 1
+                bar.update(1)
+        return made
+
+    # 2. The demonstrations.
+
+    def _unique_sets(self) -> dict[str, DemonstratorSet]:
+        return {s.name: s for sets in self.sets().values() for s in sets.values()}
+
+    def record(self) -> int:
+        made, n = 0, self.config.matrix.demonstrations_per_configuration
+        unique = self._unique_sets()
+        with progress(total=len(unique), desc="record", quiet=self.quiet) as bar:
+            for name, chosen in unique.items():
+                path = self.run.set_path(name)
+                if not self.run.finished(path, functools.partial(_set_loaded, chosen=chosen, n=n)):
+                    save_demonstrations(self._recorded(chosen, n), path)
+                    made += 1
+                bar.update(1)
+        return made
+
+    def _recorded(self, chosen: DemonstratorSet, n: int) -> list[Demonstration]:
+        """Every member's ``n`` demonstrations per configuration, member by member, each member
+        under its own seed (as :func:`polymimic.crowds.record_crowd` seeds a crowd's)."""
+        out: list[Demonstration] = []
+        for index, (name, controller, body, lapse) in enumerate(chosen.members):
+            for configuration in (1, 2):
+                demos = record(controller, configuration=configuration, n=n,
+                               seed=member_seed(self.config.seeds.demonstrations, index), lapse=lapse,
+                               config=self.config.run.field, body=self.config.body(body))
+                out += [dataclasses.replace(d, demonstrator=name) for d in demos]
+        return out
+
+    def shared(self) -> Shared:
+        recognizers = {row: PrimitiveRecognizer.load(self.run.require(self.run.recognizer_of(row), "matrix"))
+                       for row in self.rows()}
+        demonstrations = {name: load_demonstrations(self.run.require(self.run.set_path(name), "matrix"))
+                          for name in self._unique_sets()}
+        return Shared(self.config, recognizers, demonstrations, self.sets())
+
+    # 3-5. polymimic and bco in every cell.
+
+    def _done(self, row: str, column: str, method: str, seed: int) -> bool:
+        saved = self.run.loaded(self.run.evaluation_path(row, column, method, seed), load_cell_evaluation)
+        return saved is not None and (saved["attempts"], saved["evaluation_seed"]) == (
+            2 * self.config.matrix.attempts_per_configuration, self.config.seeds.evaluation)
+
+    def _write(self, result: dict[str, Any]) -> None:
+        path = self.run.evaluation_path(result["row"], result["column"], result["method"], result["seed"])
+        atomic_write_text(path, dumps(result))
+
+    def polymimic(self, shared: Shared) -> int:
+        jobs = [(row, column, seed) for row, column in self.cells() for seed in self.config.trial_seeds()
+                if not self._done(row, column, "polymimic", seed)]
+        for row, column in self.cells():
+            self.run.cell_dir(row, column).mkdir(parents=True, exist_ok=True)
+        # The mixed crowd's cells are the longest: first, so that no worker idles at the end.
+        jobs.sort(key=lambda job: job[1] != "mixed_bodies")
+        with progress(total=len(jobs), desc="polymimic", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(polymimic_task, shared, jobs):
+                self._write(result)
+                bar.update(1)
+        return len(jobs)
+
+    def tune(self, shared: Shared) -> int:
+        jobs = [(row, column) for row, column in self.cells()
+                if not self.run.finished(self.run.tuning_path(row, column), load_cell_tuning)]
+        jobs.sort(key=lambda job: job[1] != "mixed_bodies")
+        with progress(total=len(jobs), desc="tune bco", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(tuning_task, shared, jobs):
+                # The evaluation first: a tuning on disk is done, and a lost evaluation is redone.
+                self._write(result.pop("evaluation"))
+                atomic_write_text(self.run.tuning_path(result["row"], result["column"]), dumps(result))
+                bar.update(1)
+        return len(jobs)
+
+    def bco(self, shared: Shared) -> int:
+        jobs = []
+        for row, column in self.cells():
+            tuned = load_cell_tuning(self.run.require(self.run.tuning_path(row, column), "matrix"))["hyperparameters"]
+            jobs += [(row, column, seed, tuned) for seed in self.config.fit_seeds()
+                     if not self._done(row, column, "bco", seed)]
+        jobs.sort(key=lambda job: job[1] != "mixed_bodies")
+        with progress(total=len(jobs), desc="bco", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(bco_task, shared, jobs):
+                self._write(result)
+                bar.update(1)
+        return len(jobs)
+
+    # 6. The summary and the report.
+
+    def report(self) -> int:
+        summary = gather(self.run, self.config)
+        atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
+        draw_heat_map(summary, self.run.plots)
+        stages = self.run.manifest()["stages"]
+        seconds = {name: float(stages[name]["seconds"]) for name in ("recognise", "record", "polymimic", "tune", "bco")
+                   if isinstance(stages.get(name, {}).get("seconds"), (int, float))}
+        markdown = matrix_markdown(summary, seconds=seconds)
+        atomic_write_text(self.run.report_md_path, markdown + "\n")
+        atomic_write_text(self.run.report_html_path, matrix_html(markdown, images_from=str(self.run.path)))
+        return 3
+
+
+def _counted(items: list[Any], count: int) -> list[Any]:
+    if len(items) != count:
+        raise ValueError(f"it holds {len(items)} items where the config asks for {count}")
+    return items
+
+
+def _set_loaded(path: pathlib.Path, *, chosen: DemonstratorSet, n: int) -> list[Demonstration]:
+    """A set's demonstrations at ``path``, if they are ``n`` per configuration of every member."""
+    demos = _counted(load_demonstrations(path), 2 * n * len(chosen.members))
+    found = [d.demonstrator for d in demos]
+    for name in chosen.names:
+        if found.count(name) != 2 * n:
+            raise ValueError(f"it holds {found.count(name)} demonstrations of {name!r}, not {2 * n}")
+    return demos
+
+
+def run_matrix(run: MatrixDir, config: MatrixConfig, runner: TaskRunner, *, quiet: bool = False) -> float:
+    """Every step of a matrix run in ``run`` (opened with ``config``); the seconds it took."""
+    with run.lock("polymimic matrix"):
+        matrix = Matrix(run=run, config=config, runner=runner, quiet=quiet)
+        return matrix.run_all()

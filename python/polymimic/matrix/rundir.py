@@ -1,0 +1,58 @@
+"""A matrix's run directory.
+
+::
+
+    manifest.json                                  version, config, start and finish of every step
+    datasets/self_observation_<row>.parquet, models/recognizer_<row>.json   each imitator's own
+    datasets/demonstrations_<set>.parquet          a set's demonstrations (load_demonstrations reads it)
+    models/matrix/<row>/<column>/polymimic_<seed>.json   polymimic's evaluation after one trial
+    models/matrix/<row>/<column>/bco_tuning.json   bco's candidates on validation, the choice
+    models/matrix/<row>/<column>/bco_<seed>.json   one bco fit's evaluation
+    matrix.json, matrix.md, matrix.html, plots/matrix_heat_map.png
+
+>>> import tempfile
+>>> run = MatrixDir(tempfile.mkdtemp())
+>>> run.evaluation_path("tiny", "expert", "polymimic", 3).name
+'polymimic_3.json'
+"""
+
+from __future__ import annotations
+
+import os
+import pathlib
+
+from polymimic.matrix.config import MatrixConfig
+from polymimic.runs.rundir import RunHouse
+
+__all__ = ["MatrixDir"]
+
+
+class MatrixDir(RunHouse[MatrixConfig]):
+    """Paths of a matrix's files."""
+
+    manifest_format = "polymimic.matrix_run"
+    config_type = MatrixConfig
+
+    def __init__(self, path: str | os.PathLike[str]) -> None:
+        super().__init__(path)
+        self.results_path = self.path / "matrix.json"
+        self.report_md_path = self.path / "matrix.md"
+        self.report_html_path = self.path / "matrix.html"
+
+    def own_self_observation_path(self, row: str) -> pathlib.Path:
+        return self.datasets / f"self_observation_{row}.parquet"
+
+    def recognizer_of(self, row: str) -> pathlib.Path:
+        return self.models / f"recognizer_{row}.json"
+
+    def set_path(self, name: str) -> pathlib.Path:
+        return self.datasets / f"demonstrations_{name}.parquet"
+
+    def cell_dir(self, row: str, column: str) -> pathlib.Path:
+        return self.models / "matrix" / row / column
+
+    def evaluation_path(self, row: str, column: str, method: str, seed: int) -> pathlib.Path:
+        return self.cell_dir(row, column) / f"{method}_{seed}.json"
+
+    def tuning_path(self, row: str, column: str) -> pathlib.Path:
+        return self.cell_dir(row, column) / "bco_tuning.json"

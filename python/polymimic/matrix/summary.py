@@ -1,0 +1,112 @@
+"""``matrix.json``: every cell's net goals, polymimic's and bco's, mean and sd over trials or fits,
+and its transfer ratio (the cell over its row's own-body cell, SPEC §7.1), and the heat map.
+
+>>> transfer(30.0, 40.0), transfer(30.0, 0.0), transfer(None, 40.0)
+(0.75, None, None)
+"""
+
+from __future__ import annotations
+
+import pathlib
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+from polymimic import __version__
+from polymimic.bodies import pitch_of, playing_field, reach_mm
+from polymimic.matrix.config import COLUMNS, MatrixConfig, demonstrator_sets
+from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning
+from polymimic.matrix.rundir import MatrixDir
+from polymimic.runs.stats import mean_sd
+
+__all__ = ["FORMAT", "HEAT_MAP", "VERSION", "draw_heat_map", "gather", "transfer"]
+
+FORMAT, VERSION = "polymimic.matrix", 1
+HEAT_MAP = "matrix_heat_map.png"
+
+
+def transfer(cell: float | None, own: float | None) -> float | None:
+    """A cell's net goals over its row's own-body cell's: none where either is missing or the
+    own-body cell nets nothing."""
+    if cell is None or own is None or own <= 0:
+        return None
+    return round(cell / own, 4)
+
+
+def _scores(evaluations: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
+    nets = [e["goals"] - e["own_goals"] for e in evaluations]
+    return {"net_goals": mean_sd(nets), "goals": mean_sd(e["goals"] for e in evaluations),
+            "own_goals": mean_sd(e["own_goals"] for e in evaluations), "per_seed": nets,
+            "evaluated": len(evaluations), "attempts": evaluations[0]["attempts"] if evaluations else None}
+
+
+def _cell(run: MatrixDir, config: MatrixConfig, row: str, column: str) -> dict[str, Any]:
+    chosen = demonstrator_sets(row)[column]
+    # A built-in body's own-body cell is its own controller's column: read there.
+    stored = column if column != "own_body" or chosen.name.startswith("own_") else chosen.name
+    polymimic = [load_cell_evaluation(run.require(run.evaluation_path(row, stored, "polymimic", s), "matrix"))
+                 for s in config.trial_seeds()]
+    bco = [load_cell_evaluation(run.require(run.evaluation_path(row, stored, "bco", s), "matrix"))
+           for s in config.fit_seeds()]
+    tuning = load_cell_tuning(run.require(run.tuning_path(row, stored), "matrix"))
+    return {"set": chosen.name, "demonstrators": list(chosen.names), "polymimic": _scores(polymimic),
+            "bco": {**_scores(bco), "hyperparameters": tuning["hyperparameters"]}}
+
+
+def gather(run: MatrixDir, config: MatrixConfig) -> dict[str, Any]:
+    """The whole ``matrix.json`` of a finished run (the same seeds give the same bytes)."""
+    settings = config.matrix
+    sizes = {"trials": settings.trials, "demonstrations_per_configuration": settings.demonstrations_per_configuration,
+             "attempts_per_configuration": settings.attempts_per_configuration, "bco_fits": settings.bco_fits,
+             "tuning_budget": settings.tuning_budget,
+             "validation_attempts_per_configuration": settings.validation_attempts_per_configuration,
+             "evaluation_seed": config.seeds.evaluation, "validation_seed": settings.validation_seed}
+    imitators = {}
+    cells: dict[str, dict[str, Any]] = {}
+    for row in settings.imitators:
+        body = config.body(row)
+        field = playing_field(body)
+        imitators[row] = {"field": {"length_mm": field.length_mm, "width_mm": field.width_mm,
+                                    "goal_mouth_mm": field.goal_mouth_mm, "ball_diameter_mm": field.ball_diameter_mm},
+                          "pitch": pitch_of(body), "reach_mm": reach_mm(body, imitating=True)}
+        cells[row] = {column: _cell(run, config, row, column) for column in COLUMNS}
+        own = {m: cells[row]["own_body"][m]["net_goals"]["mean"] for m in ("polymimic", "bco")}
+        for cell in cells[row].values():
+            ours, theirs = cell["polymimic"]["net_goals"]["mean"], cell["bco"]["net_goals"]["mean"]
+            cell["transfer"] = {m: transfer(cell[m]["net_goals"]["mean"], own[m]) for m in ("polymimic", "bco")}
+            cell["polymimic_over_bco"] = None if theirs is None or theirs <= 0 else round(ours / theirs, 4)
+    return {"format": FORMAT, "version": VERSION, "polymimic_version": __version__, "sizes": sizes,
+            "imitators": imitators, "columns": list(COLUMNS), "cells": cells}
+
+
+def draw_heat_map(summary: Mapping[str, Any], folder: pathlib.Path) -> pathlib.Path:
+    """Net goals of every cell, polymimic's and bco's side by side, on one colour scale."""
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    from polymimic.plots import save_figure
+
+    rows, columns = list(summary["cells"]), summary["columns"]
+    attempts = 2 * summary["sizes"]["attempts_per_configuration"]
+    figure = Figure(figsize=(4.2 + 1.3 * len(columns), 1.2 + 0.75 * len(rows)), layout="constrained")
+    axes = figure.subplots(1, 2, sharey=True)
+    images = []
+    for ax, method in zip(axes, ("polymimic", "bco")):
+        values = np.array([[_mean(summary["cells"][r][c][method]) for c in columns] for r in rows], dtype=float)
+        images.append(ax.imshow(values, cmap="RdYlGn", vmin=-attempts, vmax=attempts, aspect="auto"))
+        for (i, j), value in np.ndenumerate(values):
+            ratio = summary["cells"][rows[i]][columns[j]]["transfer"][method]
+            text = "—" if np.isnan(value) else f"{value:.1f}" + ("" if ratio is None else f"\n×{ratio:.2f}")
+            ax.text(j, i, text, ha="center", va="center", fontsize="small")
+        ax.set_xticks(range(len(columns)), [c.replace("_", " ") for c in columns], rotation=30, ha="right")
+        ax.set_yticks(range(len(rows)), rows)
+        ax.set_title(f"{method}: net goals per {attempts} (× transfer)", fontsize="medium")
+    axes[0].set_ylabel("imitator body")
+    figure.colorbar(images[0], ax=axes, shrink=0.8, label="net goals")
+    path = folder / HEAT_MAP
+    save_figure(figure, path)
+    return path
+
+
+def _mean(method: Mapping[str, Any]) -> float:
+    mean = method["net_goals"]["mean"]
+    return float("nan") if mean is None else float(mean)

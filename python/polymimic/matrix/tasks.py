@@ -1,0 +1,127 @@
+"""The work of a matrix, as tasks a process pool or Ray can run: one cell's trial and its
+evaluation (polymimic), one cell's bco tuning, one bco fit and its evaluation. Each depends on
+its arguments alone, so the same seeds give the same bits on any worker."""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+from typing import Any
+
+from polymimic import baselines
+from polymimic._native import PrimitiveRecognizer, SegmentedDemonstrations
+from polymimic.baselines.hyperparameters import (
+    DEFAULT,
+    PLAIN_BOOSTING,
+    TUNED_LABELS,
+    Hyperparameters,
+    candidates,
+)
+from polymimic.field import Demonstration
+from polymimic.learning import ImitatorPolicy, evaluate, run_trial, segmented
+from polymimic.matrix.config import DemonstratorSet, MatrixConfig
+
+__all__ = ["Shared", "bco_task", "dumps", "polymimic_task", "tuning_task"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Shared:
+    """What every task of a matrix shares: the config, each row's recogniser, each set's
+    demonstrations and each (row, column)'s set."""
+
+    config: MatrixConfig
+    recognizers: dict[str, PrimitiveRecognizer]
+    demonstrations: dict[str, list[Demonstration]]
+    sets: dict[str, dict[str, DemonstratorSet]]
+
+    def cell(self, row: str, column: str) -> tuple[DemonstratorSet, list[Demonstration]]:
+        chosen = self.sets[row][column]
+        return chosen, self.demonstrations[chosen.name]
+
+
+_segmented: dict[tuple[int, str, str], SegmentedDemonstrations] = {}
+"""In each process, a cell's demonstrations segmented by its row's recogniser, once for all its
+trials."""
+
+
+def _cell_segments(shared: Shared, row: str, column: str) -> SegmentedDemonstrations:
+    key = (id(shared), row, column)
+    if key not in _segmented:
+        _, demos = shared.cell(row, column)
+        _segmented[key] = segmented(demos, shared.recognizers[row], **dataclasses.asdict(shared.config.run.segmenter))
+    return _segmented[key]
+
+
+def polymimic_task(shared: Shared, job: tuple[str, str, int]) -> dict[str, Any]:
+    """``(row, column, trial seed)`` → polymimic's evaluation after that trial: the row's imitator,
+    learning on its own setting, driven by the improved control."""
+    row, column, seed = job
+    config, settings = shared.config, shared.config.matrix
+    chosen, _ = shared.cell(row, column)
+    batch, body = _cell_segments(shared, row, column), config.body(row)
+    trial = run_trial(batch, recognizer=shared.recognizers[row], ordering=list(chosen.names),
+                      config=config.run.learning, phase_one="interleaved", seed=seed, body=body)
+    policy = ImitatorPolicy(trial, recognizer=shared.recognizers[row], config=config.run.learning, control="improved",
+                            demonstrations=batch, body=body)
+    played = evaluate(policy, attempts_per_configuration=settings.attempts_per_configuration,
+                      seed=config.seeds.evaluation, field_config=config.run.field)
+    return _evaluation(shared, row, column, "polymimic", seed, played)
+
+
+def _bco_inputs(shared: Shared, row: str) -> dict[str, Any]:
+    return {"recognizer": shared.recognizers[row], "segmenter": dataclasses.asdict(shared.config.run.segmenter),
+            "imitator": shared.config.body(row), "max_samples": shared.config.matrix.max_decision_samples}
+
+
+def bco_candidates(budget: int) -> list[Hyperparameters]:
+    """``budget`` candidates for bco in a cell: plain boosted trees (what made ``bc`` as strong as
+    a plain scikit-learn cloner) with each labelling first, then the benchmark's other candidates,
+    each with each labelling. Boosted trees fit a cell's crowd in seconds where the benchmark's
+    first candidate, a network, takes a minute: twenty cells could not afford it."""
+    drawn = [c for c in candidates(budget + 2) if c not in (PLAIN_BOOSTING, DEFAULT)]
+    pool = [PLAIN_BOOSTING, *drawn]
+    return [dataclasses.replace(h, labels=labels) for h in pool for labels in TUNED_LABELS][:budget]
+
+
+def tuning_task(shared: Shared, job: tuple[str, str]) -> dict[str, Any]:
+    """``(row, column)`` → bco's hyperparameters chosen on validation attempts (labelled by the
+    row's recogniser, played by the row's body), every candidate's score, and (``"evaluation"``)
+    the chosen fit's evaluation under the first fit seed: the fit the evaluation would make."""
+    row, column = job
+    config, settings = shared.config, shared.config.matrix
+    _, demos = shared.cell(row, column)
+    tuning = baselines.tune("bco", demos, candidates=bco_candidates(settings.tuning_budget),
+                            validation_seed=settings.validation_seed,
+                            attempts_per_configuration=settings.validation_attempts_per_configuration,
+                            evaluation_seed=config.seeds.evaluation,
+                            evaluation_attempts_per_configuration=settings.attempts_per_configuration,
+                            seed=config.seeds.first_trial, field_config=config.run.field, **_bco_inputs(shared, row))
+    return {"row": row, "column": column, "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
+            "evaluation": _bco_evaluation(shared, row, column, config.seeds.first_trial, tuning.policy)}
+
+
+def bco_task(shared: Shared, job: tuple[str, str, int, dict[str, Any]]) -> dict[str, Any]:
+    """``(row, column, fit seed, the tuned hyperparameters)`` → that bco fit's evaluation."""
+    row, column, seed, hyperparameters = job
+    _, demos = shared.cell(row, column)
+    fitted = baselines.fit("bco", demos, hyperparameters=Hyperparameters.from_dict(hyperparameters),
+                           seed=seed, **_bco_inputs(shared, row))
+    return _bco_evaluation(shared, row, column, seed, fitted)
+
+
+def _bco_evaluation(shared: Shared, row: str, column: str, seed: int, policy: Any) -> dict[str, Any]:
+    settings = shared.config.matrix
+    played = baselines.evaluate_policy(policy, attempts_per_configuration=settings.attempts_per_configuration,
+                                       seed=shared.config.seeds.evaluation, field_config=shared.config.run.field)
+    return _evaluation(shared, row, column, "bco", seed, played)
+
+
+def _evaluation(shared: Shared, row: str, column: str, method: str, seed: int, played: Any) -> dict[str, Any]:
+    outcomes = [a.outcome for a in played.attempts]
+    return {"row": row, "column": column, "method": method, "seed": seed,
+            "evaluation_seed": shared.config.seeds.evaluation, "goals": played.goals, "own_goals": played.own_goals,
+            "attempts": len(outcomes), "outcomes": outcomes}
+
+
+def dumps(data: dict[str, Any]) -> str:
+    return json.dumps(data, sort_keys=True) + "\n"

@@ -1,0 +1,66 @@
+"""Reading a run's small JSON files, checked key by key: a damaged one is a
+:class:`~polymimic.ModelFileError` naming the file and the key, so that a stage redoes it rather
+than counts it.
+
+>>> import pathlib, tempfile
+>>> path = pathlib.Path(tempfile.mkdtemp()) / "evaluation.json"
+>>> _ = path.write_text('{"goals": -1}')
+>>> integer_key(json_object(path, "evaluation"), "goals", str(path), 0)
+Traceback (most recent call last):
+...
+polymimic.ModelFileError: .../evaluation.json: key 'goals' must be an integer at least 0, got -1
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import pathlib
+from typing import Any
+
+from polymimic._native import ModelFileError
+from polymimic.field import OUTCOMES
+
+__all__ = ["checked_outcomes", "integer_key", "json_object", "name_key"]
+
+
+def json_object(path: str | os.PathLike[str], what: str) -> dict[str, Any]:
+    """The JSON object in the file at ``path``, a saved ``what``."""
+    where = os.fspath(path)
+    try:
+        data = json.loads(pathlib.Path(path).read_bytes().decode("utf-8"))
+    except (OSError, ValueError) as error:
+        raise ModelFileError(f"{where}: not a saved {what} ({error})") from error
+    if not isinstance(data, dict):
+        raise ModelFileError(f"{where}: not a saved {what} (a JSON object is expected)")
+    return data
+
+
+def integer_key(data: dict[str, Any], key: str, where: str, low: int, high: int | None = None) -> int:
+    value = data.get(key)
+    if type(value) is not int or value < low or (high is not None and value > high):
+        span = f"{low}..{high}" if high is not None else f"at least {low}"
+        raise ModelFileError(f"{where}: key {key!r} must be an integer {span}, got {value!r}")
+    return value
+
+
+def name_key(data: dict[str, Any], key: str, where: str, allowed: tuple[str, ...] | None = None) -> str:
+    value = data.get(key)
+    if not isinstance(value, str) or (allowed is not None and value not in allowed):
+        expected = f"one of {', '.join(allowed)}" if allowed else "a string"
+        raise ModelFileError(f"{where}: key {key!r} must be {expected}, got {value!r}")
+    return value
+
+
+def checked_outcomes(data: dict[str, Any], where: str) -> tuple[int, list[str], int, int]:
+    """An evaluation's attempts, outcomes, goals and own goals, the last two as its outcomes count
+    them."""
+    attempts, outcomes = integer_key(data, "attempts", where, 1), data.get("outcomes")
+    if not isinstance(outcomes, list) or len(outcomes) != attempts or not all(o in OUTCOMES for o in outcomes):
+        raise ModelFileError(f"{where}: key 'outcomes' must list {attempts} outcomes, each one of "
+                             f"{', '.join(OUTCOMES)}")
+    goals, own = integer_key(data, "goals", where, 0, attempts), integer_key(data, "own_goals", where, 0, attempts)
+    for key, value, outcome in (("goals", goals, "goal"), ("own_goals", own, "own_goal")):
+        if value != outcomes.count(outcome):
+            raise ModelFileError(f"{where}: key {key!r} is {value} but its outcomes count {outcomes.count(outcome)}")
+    return attempts, outcomes, goals, own

@@ -4,7 +4,8 @@ polymimic and bco in every cell, and the summary and report.
 Steps, each resumable (every result is written to the run directory, atomically, as it
 arrives, and a rerun redoes only what is missing or damaged):
 
-1. **recognise** — each row's self-observation on its own body and field, and its recogniser;
+1. **recognise** — each row's self-observation on its own body and field, and its recogniser
+   (the rows side by side);
 2. **record** — each set's demonstrations, 25 valid ones per member and configuration (the
    ``mixed_bodies`` crowd as the benchmark records it);
 3. **polymimic** — every cell's trials, each imitator learning on its own setting and played by
@@ -32,14 +33,14 @@ from typing import Any
 from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
 from polymimic.crowds import member_seed
-from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
-from polymimic.field import PRIMITIVES, Demonstration, record, self_observation
+from polymimic.datasets import load_demonstrations, save_demonstrations, save_self_observation
+from polymimic.field import Demonstration, record
 from polymimic.matrix.config import COLUMNS, DemonstratorSet, MatrixConfig, demonstrator_sets
 from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning
 from polymimic.matrix.report import matrix_html, matrix_markdown
 from polymimic.matrix.rundir import MatrixDir
 from polymimic.matrix.summary import draw_heat_map, gather
-from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, tuning_task
+from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, recognise_task, tuning_task
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
 
@@ -93,21 +94,15 @@ class Matrix:
     # 1. Each imitator's recogniser.
 
     def recognise(self) -> int:
-        made, settings = 0, self.config.run.recognizer
-        count = len(PRIMITIVES) * settings.train_per_primitive
-        with progress(total=len(self.rows()), desc="recognise", quiet=self.quiet) as bar:
-            for row in self.rows():
-                path, model = self.run.own_self_observation_path(row), self.run.recognizer_of(row)
-                if not self.run.finished(model, PrimitiveRecognizer.load):
-                    if not self.run.finished(path, lambda p: _counted(load_self_observation(p), count)):
-                        save_self_observation(self_observation(settings.train_per_primitive,
-                                                               seed=self.config.seeds.self_observation_train,
-                                                               config=self.config.run.field,
-                                                               body=self.config.body(row)), path)
-                    settings.train(load_self_observation(path)).save(model)
-                    made += 1
+        rows = [row for row in self.rows()
+                if not self.run.finished(self.run.recognizer_of(row), PrimitiveRecognizer.load)]
+        with progress(total=len(rows), desc="recognise", quiet=self.quiet) as bar:
+            for row, (sequences, recognizer) in self.runner.map(recognise_task, self.config, rows):
+                # The self-observation first: a recogniser on disk is done.
+                save_self_observation(sequences, self.run.own_self_observation_path(row))
+                recognizer.save(self.run.recognizer_of(row))
                 bar.update(1)
-        return made
+        return len(rows)
 
     # 2. The demonstrations.
 

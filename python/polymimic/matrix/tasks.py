@@ -17,11 +17,11 @@ from polymimic.baselines.hyperparameters import (
     Hyperparameters,
     candidates,
 )
-from polymimic.field import Demonstration
+from polymimic.field import Demonstration, PrimitiveSequence, self_observation
 from polymimic.learning import ImitatorPolicy, evaluate, run_trial, segmented
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig
 
-__all__ = ["Shared", "bco_task", "dumps", "polymimic_task", "tuning_task"]
+__all__ = ["Shared", "bco_task", "dumps", "polymimic_task", "recognise_task", "tuning_task"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -37,6 +37,14 @@ class Shared:
     def cell(self, row: str, column: str) -> tuple[DemonstratorSet, list[Demonstration]]:
         chosen = self.sets[row][column]
         return chosen, self.demonstrations[chosen.name]
+
+
+def recognise_task(config: MatrixConfig, row: str) -> tuple[list[PrimitiveSequence], PrimitiveRecognizer]:
+    """``row`` → its self-observation on its own body and field, and the recogniser trained on it."""
+    settings = config.run.recognizer
+    sequences = self_observation(settings.train_per_primitive, seed=config.seeds.self_observation_train,
+                                 config=config.run.field, body=config.body(row))
+    return sequences, settings.train(sequences)
 
 
 _segmented: dict[tuple[int, str, str], SegmentedDemonstrations] = {}

@@ -93,34 +93,28 @@ def test_bc_on_an_always_forward_demonstrator_plays_forward_at_every_step(forwar
     assert all(set(chosen) == {"F"} for chosen in result.behaviours)
 
 
-def test_a_demonstration_from_another_field_is_seen_on_the_imitators_by_the_one_correspondence():
-    """The tiny's field (560 × 345 mm, a 172.5 mm mouth) onto the imitator's (1020 × 810 mm, a
-    405 mm mouth): the ball's x scales by 1020/560 and its y by the mouths' ratio (the mouths are
-    half the widths on both); the robot keeps its bearing from the ball and its heading, its
-    distance from the ball mapped by the reaches (20 mm onto 120 mm, beyond at the fields'
-    scale); and the samples bc learns from are exactly those observations."""
-    from polymimic.bodies import onto_field
+def test_a_smaller_field_is_taken_as_recorded_and_a_longer_ones_ball_crosses_by_the_correspondence():
+    """The tiny's field (560 mm) lies within the imitator's (1020 mm): the cloning baselines take
+    its frames as recorded (the correspondence weakens them: see polymimic.baselines.labels). A
+    longer field's ball comes across by the correspondence, goal mouth onto goal mouth, while the
+    robot keeps its offset from the ball in millimetres and its heading."""
+    from polymimic.bodies import Field, WheeledBody, onto_field
 
     (tiny,) = polymimic.record("tiny", configuration=1, n=1, seed=0)
     raw = np.column_stack([tiny.frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
                                                      "ball_x_mm", "ball_y_mm")])
     assert np.isfinite(raw).all()
-    onto = onto_field(raw, recorded_by="tiny")
-    np.testing.assert_allclose(onto[:, 3], raw[:, 3] * 1020.0 / 560.0)
-    np.testing.assert_allclose(onto[:, 4], raw[:, 4] * 405.0 / 172.5)
-    seen, mapped = raw[:, :2] - raw[:, 3:], onto[:, :2] - onto[:, 3:]
-    distance = np.hypot(seen[:, 0], seen[:, 1])
-    expected = np.where(distance <= 20.0, distance * 6.0, 120.0 + (distance - 20.0) * 1020.0 / 560.0)
-    np.testing.assert_allclose(np.hypot(mapped[:, 0], mapped[:, 1]), expected)
-    np.testing.assert_allclose(np.arctan2(mapped[:, 1], mapped[:, 0]), np.arctan2(seen[:, 1], seen[:, 0]))
-    np.testing.assert_array_equal(onto[:, 2], raw[:, 2])
-    np.testing.assert_array_equal(labels.command_labels([tiny])[0].observations, onto)
-    (lego,) = polymimic.record("expert", configuration=1, n=1, seed=0)
-    np.testing.assert_allclose(onto_field(onto_field(raw, recorded_by="tiny"), recorded_by="lego", imitator="tiny"),
-                               raw, atol=1e-9)
-    seen = np.column_stack([lego.frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
-                                                      "ball_x_mm", "ball_y_mm")])
-    np.testing.assert_array_equal(onto_field(seen, recorded_by=lego.body), seen)
+    np.testing.assert_array_equal(labels.command_labels([tiny])[0].observations, raw)
+    robocup = WheeledBody("robocup", length_mm=180, width_mm=180, wheel_base_mm=150, top_wheel_speed_mm_s=500,
+                          field=Field(3060.0, 2430.0, goal_mouth_mm=1215.0))
+    (far,) = polymimic.record("poor", body=robocup, name="far", configuration=1, n=1, seed=0)
+    seen = np.column_stack([far.frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
+                                                     "ball_x_mm", "ball_y_mm")])
+    onto = labels.observations_of(far)
+    np.testing.assert_allclose(onto[:, 3:], onto_field(seen, recorded_by=robocup)[:, 3:])
+    np.testing.assert_allclose(onto[:, 3:], seen[:, 3:] / 3.0)
+    np.testing.assert_allclose(onto[:, :2] - onto[:, 3:], seen[:, :2] - seen[:, 3:], atol=1e-9)
+    np.testing.assert_array_equal(onto[:, 2], seen[:, 2])
 
 
 def test_a_humanoids_kick_is_labelled_forward_and_every_other_command_as_it_looks():

@@ -28,7 +28,7 @@ def test_config_to_dict_lists_every_constant_in_order_with_python_types():
     values = polymimic.LearningConfig().to_dict()
     assert list(values)[:3] == ["creation_threshold", "default_permanency", "permanency_threshold"]
     assert list(values)[-4:] == ["lp_bounds", "lp_scope", "lp_criteria", "lp_approach_weight"]
-    assert len(values) == 30
+    assert len(values) == 31
     assert type(values["prefer_sooner_goals"]) is bool and values["prefer_sooner_goals"] is False
     assert type(values["push_heading_tail"]) is float and values["push_heading_tail"] == 0.1
     assert type(values["deletion_threshold"]) is float and values["deletion_threshold"] == 0.0
@@ -64,6 +64,7 @@ def test_config_pickles_compares_and_hashes_by_value():
     (dict(ball_min_samples=2.5), TypeError, "ball_min_samples must be a whole number, got 2.5"),
     (dict(ball_min_samples=-1), ValueError, "ball_min_samples = -1 must be ≥ 0"),
     (dict(initial_lp=float("nan")), ValueError, "initial_lp = NaN must be in"),
+    (dict(lp_own_goal_weight=-1.0), ValueError, "lp_own_goal_weight = -1 must be a finite number ≥ 0"),
 ])
 def test_bad_config_values_are_named(change, error, match):
     with pytest.raises(error, match=match):
@@ -85,7 +86,8 @@ def test_a_batch_gives_back_what_it_was_given():
     assert (batch.demonstrators, batch.outcomes, batch.pitches) == (
         ["expert", "tiny"], ["goal", "time_up"], ["large", "small"])
     first = batch[0]
-    assert list(first) == ["demonstrator", "outcome", "segments", "pitch"]
+    assert list(first) == ["demonstrator", "outcome", "segments", "pitch", "reach_mm"]
+    assert first["reach_mm"] is None, "a reach not given is unknown"
     assert first["segments"]["label"] == ("forward", "gap")
     assert first["segments"]["first_frame"].dtype == np.int64
     assert (first["segments"]["end"] == 1.0).all() and (first["segments"]["scores"] == -3.0).all()
@@ -93,6 +95,15 @@ def test_a_batch_gives_back_what_it_was_given():
     with pytest.raises(IndexError):
         batch[2]
     assert [d["pitch"] for d in batch] == ["large", "small"]
+
+
+def test_a_demonstrations_reach_is_kept_and_a_bad_one_refused_naming_it():
+    batch = polymimic.SegmentedDemonstrations([_item(reach_mm=120.0)])
+    assert batch[0]["reach_mm"] == 120.0
+    for bad in (-1.0, 0.0, float("nan"), True, "far"):
+        with pytest.raises(ValueError, match=r"demonstration 0: reach_mm must be a positive number of millimetres "
+                                             r"or None"):
+            polymimic.SegmentedDemonstrations([_item(reach_mm=bad)])
 
 
 def _change_label(item):

@@ -6,9 +6,10 @@
 //! or, prefixed `field.`, a [`FieldConfig`] value by its path (`field.tracker.heading_sigma_rad=0.0026`).
 //!
 //! Prints, per experiment, the mean (sd) final LP, match rate and candidates made permanent of
-//! each model, what changed the LPs, the trials whose final LPs follow the true skill order,
-//! and the goals and own goals of the trained imitators under the thesis's control rule and
-//! with each part of the improved control added in turn.
+//! each model, what changed the LPs, the trials whose final LPs follow the true skill order
+//! (and those whose Poor ends below the initial LP), and the goals and own goals of the
+//! trained imitators under the thesis's control rule and with each part of the improved
+//! control added in turn.
 
 use std::collections::BTreeMap;
 
@@ -126,5 +127,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     report("varying skill", &lab, &varying, &world, attempts);
     let hits = lp_order_hits(&varying, &["poor", "average", "expert"]);
     println!("final LP in the true order (poor < average < expert): {hits} of {}", varying.len());
+    let below =
+        varying.iter().filter(|t| t.models.iter().any(|m| m.name == "poor" && m.lp < lab.config.initial_lp)).count();
+    println!("poor's final LP below the initial {}: {below} of {}", lab.config.initial_lp, varying.len());
     Ok(())
 }

@@ -107,6 +107,14 @@ pub struct LearningConfig {
     /// *Choice*: how much each demonstration counts for the imitator.
     pub imitator_weighting: ImitatorWeighting,
     pub lp_goal: f64,
+    /// *Choice*: an own goal lowers the LP by this many times `lp_goal` (1, the thesis: an own
+    /// goal mirrors a goal). Under soft bounds a demonstrator scoring g and conceding o times
+    /// settles, by its outcomes alone, near `g / (g + lp_own_goal_weight · o)`; at 1 one that
+    /// concedes as often as it scores sits at 0.5, where the skill-blind rises (accurate ball
+    /// predictions) lift it above `initial_lp`; at 3 it settles near 0.25 (about 0.3 with the
+    /// other steps), where the thesis's Poor hovered. Shapes the LP only: control already
+    /// rates a predicted own goal worst.
+    pub lp_own_goal_weight: f64,
     pub lp_ball_to_goal: f64,
     pub lp_robot_to_ball: f64,
     /// LP change for the non-criteria events of Table 3.3 (accurate ball prediction, a
@@ -165,6 +173,7 @@ impl Default for LearningConfig {
             hold_lp: false,
             imitator_weighting: ImitatorWeighting::Even,
             lp_goal: 0.01,
+            lp_own_goal_weight: 1.0,
             lp_ball_to_goal: 0.005,
             lp_robot_to_ball: 0.002,
             lp_event: 0.001,
@@ -239,6 +248,7 @@ impl LearningConfig {
         }
         let non_negative = [
             ("lp_goal", self.lp_goal),
+            ("lp_own_goal_weight", self.lp_own_goal_weight),
             ("lp_ball_to_goal", self.lp_ball_to_goal),
             ("lp_robot_to_ball", self.lp_robot_to_ball),
             ("lp_event", self.lp_event),
@@ -288,6 +298,19 @@ mod tests {
         let gain = LearningConfig::from_json(r#"{"imitator_weighting": "lp_gain"}"#).expect("a valid config");
         assert_eq!(gain.imitator_weighting, ImitatorWeighting::LpGain);
         assert_eq!(LearningConfig::from_json(&gain.to_json()), Ok(gain));
+    }
+
+    #[test]
+    fn an_own_goal_mirrors_a_goal_by_default_and_its_weight_is_a_finite_number_at_least_0() {
+        assert_eq!(LearningConfig::default().lp_own_goal_weight, 1.0);
+        let heavy = LearningConfig::from_json(r#"{"lp_own_goal_weight": 3.0}"#).expect("a valid config");
+        assert_eq!(heavy, LearningConfig { lp_own_goal_weight: 3.0, ..LearningConfig::default() });
+        assert_eq!(LearningConfig::from_json(&heavy.to_json()), Ok(heavy));
+        assert!(LearningConfig::from_json(r#"{"lp_own_goal_weight": 0.0}"#).is_ok(), "own goals may not count");
+        let refused = LearningConfig { lp_own_goal_weight: -1.0, ..LearningConfig::default() }.check().unwrap_err();
+        assert!(refused.to_string().contains("lp_own_goal_weight = -1 must be a finite number ≥ 0"), "{refused}");
+        let infinite = LearningConfig { lp_own_goal_weight: f64::INFINITY, ..LearningConfig::default() };
+        assert!(infinite.check().is_err());
     }
 
     #[test]

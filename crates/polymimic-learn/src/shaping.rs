@@ -24,12 +24,12 @@ pub enum LpCause {
 }
 
 impl LpCause {
-    /// The signed change of eq 3.13.
+    /// The signed change of eq 3.13, an own goal's weighted by `lp_own_goal_weight`.
     #[must_use]
     pub fn amount(self, config: &LearningConfig) -> f64 {
         match self {
             Self::Goal => config.lp_goal,
-            Self::OwnGoal => -config.lp_goal,
+            Self::OwnGoal => -config.lp_goal * config.lp_own_goal_weight,
             Self::BallNearerGoal => config.lp_ball_to_goal,
             Self::BallFartherFromGoal => -config.lp_ball_to_goal,
             Self::RobotNearerBall => config.lp_robot_to_ball,

@@ -166,6 +166,38 @@ fn soft_bounds_settle_where_gains_balance_losses() {
 }
 
 #[test]
+fn an_own_goal_weighs_lp_own_goal_weight_goals() {
+    let heavy = LearningConfig { lp_own_goal_weight: 3.0, ..LearningConfig::default() };
+    assert_eq!(LpCause::OwnGoal.amount(&LearningConfig::default()), -0.01, "the thesis's mirror of a goal");
+    assert!((LpCause::OwnGoal.amount(&heavy) + 0.03).abs() < 1e-15);
+    assert_eq!(LpCause::Goal.amount(&heavy), 0.01, "a goal is unchanged");
+    assert_eq!(LpCause::BallFartherFromGoal.amount(&heavy), -0.005, "so is every other fall");
+    // From 0.5, under soft bounds, the fall is 0.03 · 2 · 0.5.
+    let mut model = ForwardModel::new("x", 0.5, false, &heavy);
+    model.shape_lp(LpCause::OwnGoal, &heavy);
+    assert!((model.lp - 0.47).abs() < 1e-15, "{}", model.lp);
+    assert_eq!(model.metrics.lp_causes.own_goal, 1);
+}
+
+#[test]
+fn a_heavier_own_goal_settles_one_who_concedes_as_often_as_it_scores_below_the_start() {
+    // A goal then an own goal, a = 0.01, k = 3: LP' = (LP(1 − 2a) + 2a)(1 − 2ka), whose fixed
+    // point is (1 − 2ka) / (1 + k − 2ka) = 0.94 / 3.94 (≈ 1 / (1 + k) for small steps).
+    let heavy = LearningConfig { lp_own_goal_weight: 3.0, ..LearningConfig::default() };
+    let settle = |config: &LearningConfig| {
+        let mut model = ForwardModel::new("x", 0.5, false, config);
+        for _ in 0..2000 {
+            model.shape_lp(LpCause::Goal, config);
+            model.shape_lp(LpCause::OwnGoal, config);
+        }
+        model.lp
+    };
+    assert!((settle(&heavy) - 0.94 / 3.94).abs() < 1e-12, "{}", settle(&heavy));
+    // The thesis's mirror: (1 − 2a) / (2 − 2a) = 0.98 / 1.98, just below the start.
+    assert!((settle(&LearningConfig::default()) - 0.98 / 1.98).abs() < 1e-12);
+}
+
+#[test]
 fn only_the_models_own_demonstrator_shapes_its_lp_by_the_task_criteria() {
     let config = LearningConfig::default();
     let process = |config: &LearningConfig, who: &str| {

@@ -24,9 +24,7 @@ import dataclasses
 import functools
 import json
 import pathlib
-import sys
 import time
-from collections.abc import Callable
 from typing import Any
 
 from polymimic._atomic import atomic_write_text
@@ -54,6 +52,7 @@ from polymimic.learning import TrialResult, segmented
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.config import ConfigError
 from polymimic.runs.progress import progress
+from polymimic.runs.steps import Stepped, counted
 
 __all__ = ["Benchmark"]
 
@@ -64,25 +63,13 @@ the other finishes a long fit begun last."""
 
 
 @dataclasses.dataclass
-class Benchmark:
+class Benchmark(Stepped):
     """One benchmark run: its directory, config, where tasks run, and whether to keep quiet."""
 
     run: BenchmarkDir
     config: BenchmarkConfig
     runner: TaskRunner
     quiet: bool = False
-
-    def say(self, message: str) -> None:
-        if not self.quiet:
-            print(message, file=sys.stderr)
-
-    def _step(self, name: str, work: Callable[[], int]) -> int:
-        started = time.perf_counter()
-        self.run.stage_started(name)
-        made = work()
-        self.run.stage_finished(name, time.perf_counter() - started, made=made)
-        self.say(f"{name}: {made} made in {time.perf_counter() - started:.1f} s")
-        return made
 
     @staticmethod
     def check_extras(config: BenchmarkConfig) -> None:
@@ -116,7 +103,7 @@ class Benchmark:
             return 0
         settings, path = self.config.recognizer, self.run.self_observation_path("train")
         count = len(PRIMITIVES) * settings.train_per_primitive
-        if not self.run.finished(path, lambda p: _counted(load_self_observation(p), count)):
+        if not self.run.finished(path, lambda p: counted(load_self_observation(p), count)):
             save_self_observation(self_observation(settings.train_per_primitive,
                                                    seed=self.config.seeds.self_observation_train,
                                                    config=self.config.field, body=self.config.imitator_body()), path)
@@ -287,15 +274,9 @@ class Benchmark:
         return 3
 
 
-def _counted(items: list[Any], count: int) -> list[Any]:
-    if len(items) != count:
-        raise ValueError(f"it holds {len(items)} items where the config asks for {count}")
-    return items
-
-
 def _crowd_loaded(path: pathlib.Path, *, crowd: Crowd, n: int) -> list[Any]:
     """The crowd's demonstrations at ``path``, if they are ``n`` per configuration of every member."""
-    demos = _counted(load_demonstrations(path), 2 * n * len(crowd))
+    demos = counted(load_demonstrations(path), 2 * n * len(crowd))
     found = [d.demonstrator for d in demos]
     for member in crowd.members:
         if found.count(member.name) != 2 * n:

@@ -7,9 +7,8 @@ import os
 from typing import Any, TypedDict
 
 from polymimic._native import ModelFileError
-from polymimic.baselines import Hyperparameters
 from polymimic.benchmark.config import METHODS
-from polymimic.runs.files import checked_outcomes, integer_key, json_object, name_key
+from polymimic.runs.files import checked_outcomes, checked_tuning, integer_key, json_object, name_key
 
 __all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_method_evaluation", "load_ppo_curve",
            "load_tuning"]
@@ -69,21 +68,9 @@ def load_tuning(path: str | os.PathLike[str]) -> SavedTuning:
     for key in ("chosen", "hyperparameters"):
         if not isinstance(data.get(key), dict):
             raise ModelFileError(f"{where}: key {key!r} must be an object, got {data.get(key)!r}")
-    try:
-        Hyperparameters.from_dict(data["hyperparameters"])
-    except (KeyError, TypeError, ValueError) as error:
-        raise ModelFileError(f"{where}: key 'hyperparameters' is not a choice of hyperparameters "
-                             f"({error!r})") from error
-    scores = data.get("scores")
-    if not isinstance(scores, list) or not scores:
-        raise ModelFileError(f"{where}: key 'scores' must list every candidate tried, got {scores!r}")
-    for i, score in enumerate(scores):
-        if not isinstance(score, dict):
-            raise ModelFileError(f"{where}: scores[{i}] must be an object, got {score!r}")
-        for key in ("goals", "own_goals"):
-            integer_key(score, key, f"{where}: scores[{i}]", 0)
+    hyperparameters, scores = checked_tuning(data, where)
     return SavedTuning(profile=name_key(data, "profile", where), method=name_key(data, "method", where, METHODS),
-                       chosen=data["chosen"], hyperparameters=data["hyperparameters"], scores=scores,
+                       chosen=data["chosen"], hyperparameters=hyperparameters, scores=scores,
                        validation_attempts=integer_key(data, "validation_attempts", where, 1))
 
 

@@ -25,9 +25,7 @@ import dataclasses
 import functools
 import json
 import pathlib
-import sys
 import time
-from collections.abc import Callable
 from typing import Any
 
 from polymimic._atomic import atomic_write_text
@@ -43,30 +41,19 @@ from polymimic.matrix.summary import draw_heat_map, gather
 from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, recognise_task, tuning_task
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
+from polymimic.runs.steps import Stepped, counted
 
 __all__ = ["Matrix"]
 
 
 @dataclasses.dataclass
-class Matrix:
+class Matrix(Stepped):
     """One matrix run: its directory, config, where tasks run, and whether to keep quiet."""
 
     run: MatrixDir
     config: MatrixConfig
     runner: TaskRunner
     quiet: bool = False
-
-    def say(self, message: str) -> None:
-        if not self.quiet:
-            print(message, file=sys.stderr)
-
-    def _step(self, name: str, work: Callable[[], int]) -> int:
-        started = time.perf_counter()
-        self.run.stage_started(name)
-        made = work()
-        self.run.stage_finished(name, time.perf_counter() - started, made=made)
-        self.say(f"{name}: {made} made in {time.perf_counter() - started:.1f} s")
-        return made
 
     def run_all(self) -> float:
         """Every step, in order; the seconds they took."""
@@ -204,15 +191,9 @@ class Matrix:
         return 3
 
 
-def _counted(items: list[Any], count: int) -> list[Any]:
-    if len(items) != count:
-        raise ValueError(f"it holds {len(items)} items where the config asks for {count}")
-    return items
-
-
 def _set_loaded(path: pathlib.Path, *, chosen: DemonstratorSet, n: int) -> list[Demonstration]:
     """A set's demonstrations at ``path``, if they are ``n`` per configuration of every member."""
-    demos = _counted(load_demonstrations(path), 2 * n * len(chosen.members))
+    demos = counted(load_demonstrations(path), 2 * n * len(chosen.members))
     found = [d.demonstrator for d in demos]
     for name in chosen.names:
         if found.count(name) != 2 * n:

@@ -6,9 +6,7 @@ from __future__ import annotations
 import os
 from typing import Any, TypedDict
 
-from polymimic._native import ModelFileError
-from polymimic.baselines import Hyperparameters
-from polymimic.runs.files import checked_outcomes, integer_key, json_object, name_key
+from polymimic.runs.files import checked_outcomes, checked_tuning, integer_key, json_object, name_key
 
 __all__ = ["SavedCellEvaluation", "SavedCellTuning", "load_cell_evaluation", "load_cell_tuning"]
 
@@ -54,16 +52,6 @@ def load_cell_tuning(path: str | os.PathLike[str]) -> SavedCellTuning:
     """A tuning file, checked: its choice is a whole set of hyperparameters and every candidate
     has a score."""
     where, data = os.fspath(path), json_object(path, "tuning")
-    try:
-        Hyperparameters.from_dict(data["hyperparameters"])
-    except (KeyError, TypeError, ValueError) as error:
-        raise ModelFileError(f"{where}: key 'hyperparameters' is not a choice of hyperparameters "
-                             f"({error!r})") from error
-    scores = data.get("scores")
-    if not isinstance(scores, list) or not scores or not all(isinstance(s, dict) for s in scores):
-        raise ModelFileError(f"{where}: key 'scores' must list every candidate tried, got {scores!r}")
-    for i, score in enumerate(scores):
-        for key in ("goals", "own_goals"):
-            integer_key(score, key, f"{where}: scores[{i}]", 0)
+    hyperparameters, scores = checked_tuning(data, where)
     return SavedCellTuning(row=name_key(data, "row", where), column=name_key(data, "column", where),
-                           hyperparameters=data["hyperparameters"], scores=scores)
+                           hyperparameters=hyperparameters, scores=scores)

@@ -21,7 +21,7 @@ from typing import Any
 from polymimic._native import ModelFileError
 from polymimic.field import OUTCOMES
 
-__all__ = ["checked_outcomes", "integer_key", "json_object", "name_key"]
+__all__ = ["checked_outcomes", "checked_tuning", "integer_key", "json_object", "name_key"]
 
 
 def json_object(path: str | os.PathLike[str], what: str) -> dict[str, Any]:
@@ -64,3 +64,23 @@ def checked_outcomes(data: dict[str, Any], where: str) -> tuple[int, list[str], 
         if value != outcomes.count(outcome):
             raise ModelFileError(f"{where}: key {key!r} is {value} but its outcomes count {outcomes.count(outcome)}")
     return attempts, outcomes, goals, own
+
+
+def checked_tuning(data: dict[str, Any], where: str) -> tuple[dict[str, Any], list[dict[str, Any]]]:
+    """A baseline's tuning: the hyperparameters chosen (a whole choice) and every candidate's
+    score (its goals and own goals on validation)."""
+    from polymimic.baselines.hyperparameters import Hyperparameters
+
+    chosen = data.get("hyperparameters")
+    try:
+        Hyperparameters.from_dict(chosen)  # type: ignore[arg-type]
+    except (KeyError, TypeError, ValueError, AttributeError) as error:
+        raise ModelFileError(f"{where}: key 'hyperparameters' is not a choice of hyperparameters "
+                             f"({error!r})") from error
+    scores = data.get("scores")
+    if not isinstance(scores, list) or not scores or not all(isinstance(s, dict) for s in scores):
+        raise ModelFileError(f"{where}: key 'scores' must list every candidate tried, got {scores!r}")
+    for i, score in enumerate(scores):
+        for key in ("goals", "own_goals"):
+            integer_key(score, key, f"{where}: scores[{i}]", 0)
+    return chosen, scores  # type: ignore[return-value]

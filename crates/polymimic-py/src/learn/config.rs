@@ -12,7 +12,7 @@ use pyo3::types::{PyBool, PyDict, PyString, PyTuple, PyType};
 use crate::convert::one_of;
 
 /// Every constant, in the order `to_dict` and `repr` give them.
-const NAMES: [&str; 30] = [
+const NAMES: [&str; 31] = [
     "creation_threshold",
     "default_permanency",
     "permanency_threshold",
@@ -25,6 +25,7 @@ const NAMES: [&str; 30] = [
     "hold_lp",
     "imitator_weighting",
     "lp_goal",
+    "lp_own_goal_weight",
     "lp_ball_to_goal",
     "lp_robot_to_ball",
     "lp_event",
@@ -123,6 +124,7 @@ fn set(c: &mut LearningConfig, name: &str, value: &Bound<'_, PyAny>) -> PyResult
         "prefer_sooner_goals" => flag(name, value).map(|v| c.prefer_sooner_goals = v),
         "imitator_weighting" => choice(name, value, &WEIGHTINGS).map(|v| c.imitator_weighting = v),
         "lp_goal" => float(&mut c.lp_goal),
+        "lp_own_goal_weight" => float(&mut c.lp_own_goal_weight),
         "lp_ball_to_goal" => float(&mut c.lp_ball_to_goal),
         "lp_robot_to_ball" => float(&mut c.lp_robot_to_ball),
         "lp_event" => float(&mut c.lp_event),
@@ -215,6 +217,7 @@ impl PyLearningConfig {
             "initial_lp" => float(c.initial_lp),
             "imitator_lp" => float(c.imitator_lp),
             "lp_goal" => float(c.lp_goal),
+            "lp_own_goal_weight" => float(c.lp_own_goal_weight),
             "lp_ball_to_goal" => float(c.lp_ball_to_goal),
             "lp_robot_to_ball" => float(c.lp_robot_to_ball),
             "lp_event" => float(c.lp_event),
@@ -358,6 +361,11 @@ impl PyLearningConfig {
     #[getter]
     fn lp_goal(&self) -> f64 {
         self.config.lp_goal
+    }
+    /// How many times `lp_goal` an own goal lowers the LP by.
+    #[getter]
+    fn lp_own_goal_weight(&self) -> f64 {
+        self.config.lp_own_goal_weight
     }
     #[getter]
     fn lp_ball_to_goal(&self) -> f64 {

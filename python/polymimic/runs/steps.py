@@ -1,0 +1,50 @@
+"""How an application runs its steps: each one timed into the run's manifest and said when it
+ends, and a finished output recognised by how many items it holds.
+
+>>> counted([1, 2, 3], 3)
+[1, 2, 3]
+>>> counted([1, 2], 3)
+Traceback (most recent call last):
+...
+ValueError: it holds 2 items where the config asks for 3
+"""
+
+from __future__ import annotations
+
+import sys
+import time
+from collections.abc import Callable, Sized
+from typing import Any, TypeVar
+
+from polymimic.runs.rundir import RunHouse
+
+__all__ = ["Stepped", "counted"]
+
+Items = TypeVar("Items", bound=Sized)
+
+
+def counted(items: Items, count: int) -> Items:
+    """``items``, if there are ``count`` of them: a whole output, not one cut short."""
+    if len(items) != count:
+        raise ValueError(f"it holds {len(items)} items where the config asks for {count}")
+    return items
+
+
+class Stepped:
+    """What an application's run shares: saying what it does (unless ``quiet``) and running a
+    step timed into its run directory's manifest. Subclasses give ``run`` and ``quiet``."""
+
+    run: RunHouse[Any]
+    quiet: bool
+
+    def say(self, message: str) -> None:
+        if not self.quiet:
+            print(message, file=sys.stderr)
+
+    def _step(self, name: str, work: Callable[[], int]) -> int:
+        started = time.perf_counter()
+        self.run.stage_started(name)
+        made = work()
+        self.run.stage_finished(name, time.perf_counter() - started, made=made)
+        self.say(f"{name}: {made} made in {time.perf_counter() - started:.1f} s")
+        return made

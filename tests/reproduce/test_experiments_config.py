@@ -29,7 +29,8 @@ def test_toml_round_trip_is_exact(config):
     assert RunConfig.from_toml(text) == config
     # Every parameter is written, section by section.
     sections = tomllib.loads(text)
-    assert set(sections) == {"seeds", "field", "recognizer", "segmenter", "learning", "experiments", "bodies"}
+    assert set(sections) == {"seeds", "field", "imitator", "recognizer", "segmenter", "learning", "experiments",
+                             "bodies"}
     assert sections["learning"] == config.learning.to_dict()
     assert sections["field"] == config.field
 

@@ -55,9 +55,9 @@ def test_an_imitator_no_body_has_is_refused_naming_it(toml, match):
 
 
 def test_an_imitator_of_a_described_body_is_that_body():
-    config = RunConfig.from_toml('[bodies.wagon]\nlength_mm = 160\nwidth_mm = 150\nwheel_base_mm = 140\n'
-                                 'top_wheel_speed_mm_s = 140\n[imitator]\nbody = "wagon"\n')
-    assert config.imitator_body() == config.bodies["wagon"] and not config.thesis_imitator
+    config = RunConfig.from_toml('[bodies.van]\nlength_mm = 160\nwidth_mm = 150\nwheel_base_mm = 140\n'
+                                 'top_wheel_speed_mm_s = 140\n[imitator]\nbody = "van"\n')
+    assert config.imitator_body() == config.bodies["van"] and not config.thesis_imitator
     assert RunConfig.from_toml(config.to_toml()) == config
 
 

@@ -32,7 +32,7 @@ class Straight:
 '''
 
 ROSTER = '''
-[bodies.wagon]
+[bodies.van]
 length_mm = 160
 width_mm = 150
 wheel_base_mm = 140
@@ -40,12 +40,12 @@ top_wheel_speed_mm_s = 140
 
 [demonstrators.cart_poor]
 controller = "poor"
-body = "wagon"
+body = "van"
 lapse = 0.2
 
 [demonstrators.straight]
 policy = "policies.py:Straight"
-body = "wagon"
+body = "van"
 
 [demonstrators.logged]
 log = "logs/overhead.csv"
@@ -79,8 +79,8 @@ def own_run(tiny_run_toml, tmp_path_factory):
 def test_the_config_reads_and_round_trips(own_run):
     _, config, _ = own_run
     assert list(config.demonstrators) == ["cart_poor", "straight", "logged"]
-    assert config.bodies["wagon"].primitives_mm_s["forward"] == (56.0, 56.0) and set(config.bodies) == {
-        "lego", "tiny", "wagon"}
+    assert config.bodies["van"].primitives_mm_s["forward"] == (56.0, 56.0) and set(config.bodies) == {
+        "lego", "tiny", "van"}
     assert config.own_experiments["mine"].ordering == ("straight", "logged", "cart_poor", "expert")
     assert RunConfig.from_toml(config.to_toml()) == config
     assert RunConfig.from_dict(json.loads(json.dumps(config.to_dict()))) == config
@@ -93,7 +93,7 @@ def test_every_own_demonstrator_is_recorded_and_segmented(own_run):
     straight = load_demonstrations(run.demonstrations_path("straight"))
     imported = load_demonstrations(run.demonstrations_path("logged"))
     assert len(cart) == len(straight) == 2 * n and len(imported) == len(logged)
-    assert {d.body for d in cart + straight} == {"wagon"} and {d.demonstrator for d in imported} == {"logged"}
+    assert {d.body for d in cart + straight} == {"van"} and {d.demonstrator for d in imported} == {"logged"}
     assert [d.outcome for d in imported] == [d.outcome for d in logged]
     for who in ("cart_poor", "straight", "logged"):
         assert run.segments_path(who).exists()
@@ -154,7 +154,8 @@ def test_the_thesis_bodies_are_two_entries_of_the_bodies_table():
     from polymimic.bodies import THESIS_BODIES
 
     thesis = RunConfig()
-    assert set(thesis.to_dict()) == {"seeds", "field", "recognizer", "segmenter", "learning", "experiments", "bodies"}
+    assert set(thesis.to_dict()) == {"seeds", "field", "imitator", "recognizer", "segmenter", "learning", "experiments",
+                                     "bodies"}
     assert thesis.bodies == THESIS_BODIES and set(thesis.bodies) == {"lego", "tiny"}
     assert "[bodies.lego]" in thesis.to_toml() and RunConfig.from_toml(thesis.to_toml()) == thesis
     # An older manifest, which had no [bodies], reads as the same config.
@@ -194,19 +195,19 @@ def test_a_log_brought_in_with_import_tracks_is_the_runs_demonstrator(tiny_run_t
 def test_import_tracks_takes_the_body_the_runs_config_gives(tmp_path, capsys):
     from polymimic import cli
 
-    roster = ('[bodies.wagon]\nlength_mm = 160\nwidth_mm = 150\nwheel_base_mm = 140\ntop_wheel_speed_mm_s = 140\n'
-              '[demonstrators.bob]\nimported = true\nbody = "wagon"\n')
+    roster = ('[bodies.van]\nlength_mm = 160\nwidth_mm = 150\nwheel_base_mm = 140\ntop_wheel_speed_mm_s = 140\n'
+              '[demonstrators.bob]\nimported = true\nbody = "van"\n')
     run = RunDir(tmp_path / "run")
     run.open(RunConfig.from_toml(roster))
     write_tracks(record("poor", configuration=1, n=2, seed=3), tmp_path / "bob.csv", include=("episode",))
     base = ["import-tracks", str(tmp_path / "bob.csv"), "--run-dir", str(run.path)]
     assert cli.main([*base, "--as", "bob", "--body", "tiny"]) == 2
-    assert "--body 'tiny': the run's [demonstrators.bob] says body = 'wagon'" in capsys.readouterr().err
+    assert "--body 'tiny': the run's [demonstrators.bob] says body = 'van'" in capsys.readouterr().err
     assert cli.main([*base, "--as", "bob"]) == 0
-    assert {d.body for d in load_demonstrations(run.demonstrations_path("bob"))} == {"wagon"}
+    assert {d.body for d in load_demonstrations(run.demonstrations_path("bob"))} == {"van"}
     assert cli.main([*base, "--as", "carol", "--body", "kart"]) == 2
     error = capsys.readouterr().err
-    assert "--body 'kart': one of lego, tiny, humanoid, wagon (the thesis's and the run's [bodies])" in error
+    assert "--body 'kart': one of lego, tiny, humanoid, van (the thesis's and the run's [bodies])" in error
 
 
 def test_a_controller_drives_its_own_body_unless_told(tmp_path):

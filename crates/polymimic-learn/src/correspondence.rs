@@ -14,6 +14,8 @@
 //! touch, and beyond it at the fields' scale. Where either reach is unknown the robot keeps its offset from the ball in
 //! millimetres. A frame without the ball maps the robot as a point of the field.
 
+use std::borrow::Cow;
+
 use polymimic_field::BodyKind;
 use polymimic_field::body::HUMANOID;
 use polymimic_perceive::Segment;
@@ -143,10 +145,17 @@ impl SegmentedDemonstration {
     }
 }
 
-/// Every demonstration in `setting` (the imitator's).
+/// Every demonstration in `setting` (the imitator's): the same slice, uncopied, where every one
+/// was played there already (a trial's usual case, run once per trial).
 #[must_use]
-pub fn onto_setting(demonstrations: &[SegmentedDemonstration], setting: &Setting) -> Vec<SegmentedDemonstration> {
-    demonstrations.iter().map(|d| d.onto(setting)).collect()
+pub fn onto_setting<'a>(
+    demonstrations: &'a [SegmentedDemonstration],
+    setting: &Setting,
+) -> Cow<'a, [SegmentedDemonstration]> {
+    if demonstrations.iter().all(|d| d.setting() == *setting) {
+        return Cow::Borrowed(demonstrations);
+    }
+    Cow::Owned(demonstrations.iter().map(|d| d.onto(setting)).collect())
 }
 
 #[cfg(test)]

@@ -23,7 +23,6 @@ from __future__ import annotations
 import dataclasses
 import functools
 import json
-import pathlib
 import time
 from typing import Any
 
@@ -52,7 +51,7 @@ from polymimic.learning import TrialResult, segmented
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.config import ConfigError
 from polymimic.runs.progress import progress
-from polymimic.runs.steps import Stepped, counted
+from polymimic.runs.steps import Stepped, counted, each_member_recorded
 
 __all__ = ["Benchmark"]
 
@@ -118,7 +117,7 @@ class Benchmark(Stepped):
         with progress(total=len(crowds), desc="record", quiet=self.quiet) as bar:
             for crowd in crowds:
                 path = self.run.crowd_path(crowd.name)
-                if not self.run.finished(path, functools.partial(_crowd_loaded, crowd=crowd, n=n)):
+                if not self.run.finished(path, functools.partial(each_member_recorded, names=crowd.names, n=n)):
                     save_demonstrations(record_crowd(crowd, n=n, seed=self.config.seeds.demonstrations,
                                                      config=self.config.field), path)
                     made += 1
@@ -272,13 +271,3 @@ class Benchmark(Stepped):
         atomic_write_text(self.run.report_md_path, markdown + "\n")
         atomic_write_text(self.run.report_html_path, benchmark_html(markdown, images_from=str(self.run.path)))
         return 3
-
-
-def _crowd_loaded(path: pathlib.Path, *, crowd: Crowd, n: int) -> list[Any]:
-    """The crowd's demonstrations at ``path``, if they are ``n`` per configuration of every member."""
-    demos = counted(load_demonstrations(path), 2 * n * len(crowd))
-    found = [d.demonstrator for d in demos]
-    for member in crowd.members:
-        if found.count(member.name) != 2 * n:
-            raise ValueError(f"it holds {found.count(member.name)} demonstrations of {member.name!r}, not {2 * n}")
-    return demos

@@ -24,6 +24,7 @@ from typing import Any
 
 from polymimic._toml import write_table
 from polymimic.bodies import Field, WheeledBody
+from polymimic.crowds import PROFILES
 from polymimic.runs.config import (
     IMITATOR_BODIES,
     ConfigError,
@@ -50,10 +51,6 @@ mouths (320 mm) are not half its width: the matrix's described body."""
 OWN_CONTROLLER = {"lego": "expert", "tiny": "tiny", "humanoid": "humanoid"}
 """The built-in controller that demonstrates on a built-in body; any other body's is the Tiny
 controller's, which drives any wheeled body."""
-
-MIXED_BODIES = tuple((controller, lapse) for controller in ("expert", "tiny", "humanoid") for lapse in (0.05, 0.5, 0.9))
-"""The ``mixed_bodies`` crowd of the benchmark: each controller at three lapses."""
-
 
 def _doc(text: str, default: Any) -> Any:
     return dataclasses.field(default=default, metadata={"doc": text})
@@ -110,17 +107,12 @@ def demonstrator_sets(row: str) -> dict[str, DemonstratorSet]:
             "tiny": DemonstratorSet("tiny", "tiny", (("tiny", "tiny", "tiny", 0.0),)),
             "humanoid": DemonstratorSet("humanoid", "humanoid", (("humanoid", "humanoid", "humanoid", 0.0),)),
             "mixed_bodies": DemonstratorSet("mixed_bodies", "mixed_bodies", tuple(
-                (f"{controller}_{i:02d}", controller, OWN_BODY_OF[controller], lapse)
-                for i, (controller, lapse) in enumerate(MIXED_BODIES)))}
+                (m.name, m.controller, m.body, m.lapse) for m in PROFILES["mixed_bodies"].members))}
     if row in OWN_CONTROLLER:
         sets["own_body"] = dataclasses.replace(sets[OWN_CONTROLLER[row]], column="own_body")
     else:
         sets["own_body"] = DemonstratorSet("own_body", f"own_{row}", ((f"tiny_{row}", "tiny", row, 0.0),))
     return {column: sets[column] for column in COLUMNS}
-
-
-OWN_BODY_OF = {"expert": "lego", "tiny": "tiny", "humanoid": "humanoid"}
-"""The body each built-in controller of the crowd demonstrates on."""
 
 
 def _default_run() -> RunConfig:

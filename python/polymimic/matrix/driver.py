@@ -24,7 +24,6 @@ from __future__ import annotations
 import dataclasses
 import functools
 import json
-import pathlib
 import time
 from typing import Any
 
@@ -41,7 +40,7 @@ from polymimic.matrix.summary import draw_heat_map, gather
 from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, recognise_task, tuning_task
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
-from polymimic.runs.steps import Stepped, counted
+from polymimic.runs.steps import Stepped, each_member_recorded
 
 __all__ = ["Matrix"]
 
@@ -102,7 +101,7 @@ class Matrix(Stepped):
         with progress(total=len(unique), desc="record", quiet=self.quiet) as bar:
             for name, chosen in unique.items():
                 path = self.run.set_path(name)
-                if not self.run.finished(path, functools.partial(_set_loaded, chosen=chosen, n=n)):
+                if not self.run.finished(path, functools.partial(each_member_recorded, names=chosen.names, n=n)):
                     save_demonstrations(self._recorded(chosen, n), path)
                     made += 1
                 bar.update(1)
@@ -189,16 +188,6 @@ class Matrix(Stepped):
         atomic_write_text(self.run.report_md_path, markdown + "\n")
         atomic_write_text(self.run.report_html_path, matrix_html(markdown, images_from=str(self.run.path)))
         return 3
-
-
-def _set_loaded(path: pathlib.Path, *, chosen: DemonstratorSet, n: int) -> list[Demonstration]:
-    """A set's demonstrations at ``path``, if they are ``n`` per configuration of every member."""
-    demos = counted(load_demonstrations(path), 2 * n * len(chosen.members))
-    found = [d.demonstrator for d in demos]
-    for name in chosen.names:
-        if found.count(name) != 2 * n:
-            raise ValueError(f"it holds {found.count(name)} demonstrations of {name!r}, not {2 * n}")
-    return demos
 
 
 def run_matrix(run: MatrixDir, config: MatrixConfig, runner: TaskRunner, *, quiet: bool = False) -> float:

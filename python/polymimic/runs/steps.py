@@ -11,14 +11,17 @@ ValueError: it holds 2 items where the config asks for 3
 
 from __future__ import annotations
 
+import pathlib
 import sys
 import time
-from collections.abc import Callable, Sized
+from collections.abc import Callable, Sequence, Sized
 from typing import Any, TypeVar
 
+from polymimic.datasets import load_demonstrations
+from polymimic.field import Demonstration
 from polymimic.runs.rundir import RunHouse
 
-__all__ = ["Stepped", "counted"]
+__all__ = ["Stepped", "counted", "each_member_recorded"]
 
 Items = TypeVar("Items", bound=Sized)
 
@@ -28,6 +31,16 @@ def counted(items: Items, count: int) -> Items:
     if len(items) != count:
         raise ValueError(f"it holds {len(items)} items where the config asks for {count}")
     return items
+
+
+def each_member_recorded(path: pathlib.Path, *, names: Sequence[str], n: int) -> list[Demonstration]:
+    """The demonstrations at ``path``, if they are ``n`` per configuration of each member named."""
+    demos = counted(load_demonstrations(path), 2 * n * len(names))
+    found = [d.demonstrator for d in demos]
+    for name in names:
+        if found.count(name) != 2 * n:
+            raise ValueError(f"it holds {found.count(name)} demonstrations of {name!r}, not {2 * n}")
+    return demos
 
 
 class Stepped:

@@ -53,7 +53,8 @@ pub fn learning_trial(
     seed: i64,
     body: Body,
 ) -> PyResult<PyTrialResult> {
-    let demos = onto_setting(&batch(demonstrations)?, &Setting::of_imitator(body.0));
+    let given = batch(demonstrations)?;
+    let demos = onto_setting(&given, &Setting::of_imitator(body.0));
     let config = config_or_default(config);
     let phase_one =
         one_of("phase_one", phase_one, &[("by-model", PhaseOne::ByModel), ("interleaved", PhaseOne::Interleaved)])?;
@@ -91,7 +92,8 @@ pub fn average_demonstrator<'py>(
     field_config: Option<&str>,
     body: Body,
 ) -> PyResult<(PyTrialResult, Bound<'py, PyList>)> {
-    let demos = onto_setting(&batch(demonstrations)?, &Setting::of_imitator(body.0));
+    let given = batch(demonstrations)?;
+    let demos = onto_setting(&given, &Setting::of_imitator(body.0));
     let config = config_or_default(config);
     let motion = motion_table(recognizer)?;
     let field = crate::field::field_config(field_config)?;

@@ -89,7 +89,8 @@ impl PyImitatorPolicy {
                 ));
             }
             (ControlMode::Improved, Some(items)) => {
-                let demos = onto_setting(&batch(items)?, &Setting::of_imitator(body));
+                let given = batch(items)?;
+                let demos = onto_setting(&given, &Setting::of_imitator(body));
                 let weights = match config.imitator_weighting {
                     ImitatorWeighting::Even => Vec::new(),
                     weighting => {

@@ -529,6 +529,9 @@ class ImitatorPolicy:
         control: str = "thesis",
         demonstrations: SegmentedDemonstrations | Iterable[Mapping[str, Any]] | None = None,
         body: _Body = "lego",
+        practice: SegmentedDemonstrations | Iterable[Mapping[str, Any]] | None = None,
+        practice_weight: float = 1.0,
+        refines: Sequence[str] | None = None,
     ) -> Self: ...
     @property
     def control(self) -> str: ...

@@ -13,6 +13,9 @@ made from, each part in the format polymimic already gives it.
                             (:func:`polymimic.bodies.bodies_from_tables`)
 ``demonstrations.parquet``  only for the improved control: the segmented demonstrations it learns
                             from (:func:`polymimic.segments.load_segments`' Parquet)
+``practice.parquet``        only for a policy that practised (:func:`polymimic.practice`): its own
+                            attempts, segmented, in the same Parquet; the header then also holds
+                            ``"practice_weight"`` (version 2)
 ==========================  ==========================================================================
 
 Unzipped, each part loads on its own with the function named. Loading a policy makes it again
@@ -62,13 +65,15 @@ from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, bodies_from_tables
 __all__ = ["CONTROLS", "FORMAT", "FORMAT_VERSION", "PolicyInputs", "read_policy_file", "write_policy_file"]
 
 FORMAT = "polymimic.imitator_policy"
-FORMAT_VERSION = 1
-"""The version written; files of a later version are refused."""
+FORMAT_VERSION = 2
+"""The version written; files of a later version are refused. Version 2 added the practised
+policy's own attempts; version 1 files read as policies that never practised."""
 
 CONTROLS = ("thesis", "improved")
 
-HEADER, TRIAL, RECOGNIZER, LEARNING, BODY, DEMONSTRATIONS = (
-    "policy.json", "trial.json", "recognizer.json", "learning.toml", "body.toml", "demonstrations.parquet")
+HEADER, TRIAL, RECOGNIZER, LEARNING, BODY, DEMONSTRATIONS, PRACTICE = (
+    "policy.json", "trial.json", "recognizer.json", "learning.toml", "body.toml", "demonstrations.parquet",
+    "practice.parquet")
 
 T = TypeVar("T")
 
@@ -79,8 +84,9 @@ _WRITTEN_AT = (1980, 1, 1, 0, 0, 0)
 @dataclasses.dataclass(frozen=True)
 class PolicyInputs:
     """What an :class:`~polymimic.ImitatorPolicy` is made from, as its file keeps it: the
-    constructor's arguments, ``body`` a thesis body's name or a body of your own, and
-    ``demonstrations`` (segmented) only for the improved control."""
+    constructor's arguments, ``body`` a thesis body's name or a body of your own,
+    ``demonstrations`` (segmented) only for the improved control, and ``practice`` (its own
+    attempts, segmented) only for a policy that practised."""
 
     trial: TrialResult
     recognizer: PrimitiveRecognizer
@@ -88,6 +94,8 @@ class PolicyInputs:
     control: str
     body: str | WheeledBody
     demonstrations: SegmentedDemonstrations | None = None
+    practice: SegmentedDemonstrations | None = None
+    practice_weight: float = 1.0
 
 
 def write_policy_file(path: str | os.PathLike[str], inputs: PolicyInputs) -> None:
@@ -95,6 +103,8 @@ def write_policy_file(path: str | os.PathLike[str], inputs: PolicyInputs) -> Non
     body_name = inputs.body.name if isinstance(inputs.body, WheeledBody) else inputs.body
     header = {"format": FORMAT, "version": FORMAT_VERSION, "writer": f"polymimic {_native.__version__}",
               "control": inputs.control, "body": body_name}
+    if inputs.practice is not None:
+        header["practice_weight"] = inputs.practice_weight
     # The recogniser pickles as the JSON its save writes.
     parts: dict[str, str | bytes] = {HEADER: json.dumps(header, indent=2) + "\n", TRIAL: inputs.trial.to_json(),
                                      RECOGNIZER: inputs.recognizer.__reduce__()[1][0],
@@ -103,10 +113,11 @@ def write_policy_file(path: str | os.PathLike[str], inputs: PolicyInputs) -> Non
         lines: list[str] = []
         write_table(lines, f"bodies.{body_name}", inputs.body.to_table(), {})
         parts[BODY] = "\n".join(lines)
-    if inputs.demonstrations is not None:
-        buffer = io.BytesIO()
-        write_segments(inputs.demonstrations, buffer)
-        parts[DEMONSTRATIONS] = buffer.getvalue()
+    for name, batch in ((DEMONSTRATIONS, inputs.demonstrations), (PRACTICE, inputs.practice)):
+        if batch is not None:
+            buffer = io.BytesIO()
+            write_segments(batch, buffer)
+            parts[name] = buffer.getvalue()
     with atomic_path(path) as temporary, zipfile.ZipFile(temporary, "w") as archive:
         for name, data in parts.items():
             archive.writestr(zipfile.ZipInfo(name, _WRITTEN_AT), data, compress_type=zipfile.ZIP_DEFLATED)
@@ -139,12 +150,15 @@ def read_policy_file(path: str | os.PathLike[str]) -> PolicyInputs:
         body: str | WheeledBody = body_name
         if body_name not in THESIS_BODY_FIELDS:
             body = _checked(where, BODY, lambda: _body(loads(part(BODY)), body_name))
-        demonstrations = None
+        demonstrations = practice = None
         if control == "improved":
             demonstrations = read_segments(io.BytesIO(_part(archive, DEMONSTRATIONS, where)),
                                            f"{where}: {DEMONSTRATIONS}")
+        if "practice_weight" in header:
+            practice = read_segments(io.BytesIO(_part(archive, PRACTICE, where)), f"{where}: {PRACTICE}")
     return PolicyInputs(trial=trial, recognizer=recognizer, config=config, control=control, body=body,
-                        demonstrations=demonstrations)
+                        demonstrations=demonstrations, practice=practice,
+                        practice_weight=header.get("practice_weight", 1.0))
 
 
 def _header(archive: zipfile.ZipFile, where: str) -> dict[str, Any]:
@@ -173,6 +187,11 @@ def _header(archive: zipfile.ZipFile, where: str) -> dict[str, Any]:
                              f"{', '.join(CONTROLS)}")
     if not isinstance(header.get("body"), str):
         raise ModelFileError(f"{where}: {HEADER} has body {header.get('body')!r}; expected a body's name")
+    weight = header.get("practice_weight", 1.0)
+    if isinstance(weight, bool) or not isinstance(weight, (int, float)) or not 0 <= weight < float("inf"):
+        raise ModelFileError(f"{where}: {HEADER} has practice_weight {weight!r}; expected a number of at least 0")
+    if "practice_weight" in header and header["control"] != "improved":
+        raise ModelFileError(f"{where}: {HEADER} holds practice, which only the improved control learns from")
     return header
 
 

@@ -243,16 +243,35 @@ class ImitatorPolicy(_native.ImitatorPolicy):
     def __new__(cls, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
                 config: LearningConfig | None = None, control: str = "thesis",
                 demonstrations: Demonstrations | None = None,
-                body: str | WheeledBody = "lego") -> ImitatorPolicy:
+                body: str | WheeledBody = "lego", practice: SegmentedDemonstrations | None = None,
+                practice_weight: float = 1.0) -> ImitatorPolicy:
         batch = None
         if demonstrations is not None and control == "improved":
             batch = as_segmented(demonstrations, recognizer)
+        if practice is not None and control != "improved":
+            raise ValueError(f"practice refines the improved control's world model; control={control!r} has none")
         resolved = resolve(body)
         policy = super().__new__(cls, trial, recognizer=recognizer, config=config, control=control,
-                                 demonstrations=batch, body=resolved)
+                                 demonstrations=batch, body=resolved, practice=practice,
+                                 practice_weight=practice_weight)
         policy._made_from = PolicyInputs(trial=trial, recognizer=recognizer, config=config or LearningConfig(),
-                                         control=control, body=resolved, demonstrations=batch)
+                                         control=control, body=resolved, demonstrations=batch, practice=practice,
+                                         practice_weight=float(practice_weight))
         return policy
+
+    @property
+    def made_from(self) -> PolicyInputs:
+        """What the policy is made from: its constructor's arguments, demonstrations segmented."""
+        return self._made_from
+
+    def practised(self, attempts: SegmentedDemonstrations, *, weight: float = 1.0) -> ImitatorPolicy:
+        """This policy, its world model learned again with ``attempts`` (its own, segmented by
+        its own recogniser) beside the demonstrations: what :func:`polymimic.practice` makes
+        after each round. ``weight`` is what every sample of its own attempts weighs."""
+        made = self._made_from
+        return type(self)(made.trial, recognizer=made.recognizer, config=LearningConfig(**made.config.to_dict()),
+                          control=made.control, demonstrations=made.demonstrations, body=made.body,
+                          practice=attempts, practice_weight=weight)
 
     def save(self, path: str | os.PathLike[str]) -> None:
         """Write the policy to ``path``, atomically: one zip archive of its trial, recogniser,
@@ -274,7 +293,8 @@ class ImitatorPolicy(_native.ImitatorPolicy):
         try:
             return cls(made_from.trial, recognizer=made_from.recognizer,
                        config=LearningConfig(**made_from.config.to_dict()),
-                       control=made_from.control, demonstrations=made_from.demonstrations, body=made_from.body)
+                       control=made_from.control, demonstrations=made_from.demonstrations, body=made_from.body,
+                       practice=made_from.practice, practice_weight=made_from.practice_weight)
         except ValueError as error:
             raise ModelFileError(f"{os.fspath(path)}: its parts make no policy ({error})") from None
 

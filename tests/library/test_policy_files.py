@@ -192,8 +192,22 @@ def _refused(path, match):
 
 
 def test_a_later_format_version_is_refused(saved, tmp_path):
-    path = _rewritten(saved, tmp_path / "later.zip", replace={"policy.json": _header_with(saved, version=2)})
-    _refused(path, r"is format version 2, written by polymimic .*reads versions up to 1 \(upgrade polymimic\)")
+    path = _rewritten(saved, tmp_path / "later.zip", replace={"policy.json": _header_with(saved, version=3)})
+    _refused(path, r"is format version 3, written by polymimic .*reads versions up to 2 \(upgrade polymimic\)")
+
+
+def test_a_version_1_file_loads_as_a_policy_that_never_practised(saved, tmp_path):
+    path = _rewritten(saved, tmp_path / "first.zip", replace={"policy.json": _header_with(saved, version=1)})
+    policy = learning.ImitatorPolicy.load(path)
+    assert policy.made_from.practice is None
+    _assert_same_play(policy, learning.ImitatorPolicy.load(saved))
+
+
+@pytest.mark.parametrize("weight", [-1, "1", None, float("nan")])
+def test_a_bad_practice_weight_is_refused(saved, tmp_path, weight):
+    header = _header_with(saved, practice_weight=weight)
+    path = _rewritten(saved, tmp_path / "weight.zip", replace={"policy.json": header})
+    _refused(path, "has practice_weight")
 
 
 @pytest.mark.parametrize("version", [0, "1", None, True])

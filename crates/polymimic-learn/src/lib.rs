@@ -46,7 +46,7 @@ pub use state::{Pitch, ball_to_goal_mm, precondition_measures, range_bearing, ro
 pub use state_value::StateValue;
 pub use trial::{PhaseOne, TrialResult, run_trial};
 pub use weighting::{demonstration_weights, imitator_weights, lp_weights};
-pub use world::WorldModel;
+pub use world::{Practice, Refines, WorldModel};
 
 #[cfg(test)]
 mod tests;

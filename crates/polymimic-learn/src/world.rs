@@ -12,6 +12,35 @@ use crate::round::SegmentedDemonstration;
 use crate::state::Pitch;
 use crate::state_value::StateValue;
 
+/// Which parts of the [`WorldModel`] the imitator's own attempts refine.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Refines {
+    /// How the ball responds to each primitive: its own pushes are its own body's.
+    pub ball_response: bool,
+    /// How good each state is: how its own attempts through it ended.
+    pub state_value: bool,
+    /// Where pushes toward the goal begin: where its own scoring pushes began.
+    pub push_region: bool,
+}
+
+/// The imitator's own attempts, segmented by its own recogniser, as the world model learns them.
+#[derive(Debug, Clone, Copy)]
+pub struct Practice<'a> {
+    pub attempts: &'a [SegmentedDemonstration],
+    /// What every sample of an attempt weighs, beside the demonstrations' weights.
+    pub weight: f64,
+    pub refines: Refines,
+}
+
+impl Practice<'_> {
+    /// No practice.
+    pub const NONE: Practice<'static> = Practice {
+        attempts: &[],
+        weight: 1.0,
+        refines: Refines { ball_response: false, state_value: false, push_region: false },
+    };
+}
+
 /// The improved control mode's knowledge of the field.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct WorldModel {
@@ -47,6 +76,42 @@ impl WorldModel {
         motion: &MotionTable,
         config: &LearningConfig,
     ) -> Self {
+        Self::learn_practised(demonstrations, weights, &Practice::NONE, pitch, motion, config)
+    }
+
+    /// [`Self::learn_weighted`] with the imitator's own attempts (`practice`) beside the
+    /// demonstrations, in the parts of the model `practice.refines` names; the others learn from
+    /// the demonstrations alone. No attempts give exactly [`Self::learn_weighted`].
+    #[must_use]
+    pub fn learn_practised(
+        demonstrations: &[SegmentedDemonstration],
+        weights: &[f64],
+        practice: &Practice<'_>,
+        pitch: &Pitch,
+        motion: &MotionTable,
+        config: &LearningConfig,
+    ) -> Self {
+        let (with_own, with_own_weights);
+        let (mut ball, mut value, mut region) =
+            ((demonstrations, weights), (demonstrations, weights), (demonstrations, weights));
+        if !practice.attempts.is_empty() {
+            with_own = [demonstrations, practice.attempts].concat();
+            with_own_weights = (0..demonstrations.len())
+                .map(|i| weights.get(i).copied().unwrap_or(1.0))
+                .chain(std::iter::repeat_n(practice.weight, practice.attempts.len()))
+                .collect::<Vec<f64>>();
+            let both = (with_own.as_slice(), with_own_weights.as_slice());
+            let refines = practice.refines;
+            if refines.ball_response {
+                ball = both;
+            }
+            if refines.state_value {
+                value = both;
+            }
+            if refines.push_region {
+                region = both;
+            }
+        }
         let (min_mm, min_rad) = MIN_REGION_HALF_WIDTH;
         // Whole turns bring any heading within half a turn of the median, so a window narrower
         // than that could be turned past, back and forth, and never entered.
@@ -54,10 +119,10 @@ impl WorldModel {
             heading_tail: config.push_heading_tail,
             ..RegionShape::central((min_mm, min_rad.max(0.5 * motion.mean_turn_rad())))
         };
-        let push_region = PushRegion::learn_weighted(demonstrations, weights, pitch, config.ball_moved_mm, &shape);
+        let push_region = PushRegion::learn_weighted(region.0, region.1, pitch, config.ball_moved_mm, &shape);
         Self {
-            ball_response: BallResponse::learn_weighted(demonstrations, weights, pitch, config.ball_moved_mm),
-            state_value: StateValue::learn_weighted(demonstrations, weights, pitch),
+            ball_response: BallResponse::learn_weighted(ball.0, ball.1, pitch, config.ball_moved_mm),
+            state_value: StateValue::learn_weighted(value.0, value.1, pitch),
             approach: push_region.map(|p| ApproachPlan::new(p, motion)),
         }
     }
@@ -90,6 +155,86 @@ mod tests {
             segments: vec![push; 10],
         };
         vec![demo]
+    }
+
+    #[test]
+    fn own_attempts_refine_only_the_parts_named() {
+        let demos = straight_pushes();
+        let motion = MotionTable::exact(40.0, 30.0);
+        let config = LearningConfig::default();
+        let alone = WorldModel::learn(&demos, &Pitch::LARGE, &motion, &config);
+        let own = straight_pushes();
+        let none = Refines { ball_response: false, state_value: false, push_region: false };
+        let practised = |refines| {
+            let practice = Practice { attempts: &own, weight: 2.0, refines };
+            WorldModel::learn_practised(&demos, &[], &practice, &Pitch::LARGE, &motion, &config)
+        };
+        // Refining nothing, or practising nothing, is the model of the demonstrations alone.
+        assert_eq!(practised(none), alone);
+        assert_eq!(WorldModel::learn_practised(&demos, &[], &Practice::NONE, &Pitch::LARGE, &motion, &config), alone);
+        let ball = practised(Refines { ball_response: true, ..none });
+        let forward = |w: &WorldModel| w.ball_response.sample_count(Primitive::Forward);
+        assert_eq!((forward(&alone), forward(&ball)), (1, 2));
+        assert_eq!((ball.state_value.len(), &ball.approach), (alone.state_value.len(), &alone.approach));
+        let value = practised(Refines { state_value: true, ..none });
+        assert_eq!(value.state_value.len(), 2 * alone.state_value.len());
+        assert_eq!(value.ball_response, alone.ball_response);
+        let region = practised(Refines { push_region: true, ..none });
+        assert_eq!(region.approach.expect("a region").push_region.pushes, 20);
+    }
+
+    /// A push with the ball `ball_ahead_mm` ahead of a robot facing +x, carrying it 40 mm along
+    /// `direction_rad` (0: straight ahead), alone in its demonstration (so it never starts with
+    /// the ball still rolling from one before).
+    fn push_toward(ball_ahead_mm: f64, direction_rad: f64) -> SegmentedDemonstration {
+        let (dy, dx) = direction_rad.sin_cos();
+        let frame =
+            |ball: (f64, f64)| TrackedFrame { robot: Pose::new(0.0, 0.0, 0.0), ball_x_mm: ball.0, ball_y_mm: ball.1 };
+        let push = Segment {
+            label: Label::Primitive(Primitive::Forward),
+            first_frame: 0,
+            last_frame: 30,
+            start: frame((ball_ahead_mm, 0.0)),
+            end: frame((ball_ahead_mm + 40.0 * dx, 40.0 * dy)),
+            scores: [0.0; 4],
+        };
+        SegmentedDemonstration {
+            reach_mm: None,
+            demonstrator: "expert".to_owned(),
+            pitch: Pitch::LARGE,
+            ending: Ending::Other,
+            segments: vec![push],
+        }
+    }
+
+    #[test]
+    fn own_pushes_correct_pushes_that_all_went_wide() {
+        // The demonstrators' pushes all went 90° wide, with the ball 52 mm ahead; the
+        // imitator's own four went straight, with the ball 50 mm ahead.
+        let wide: Vec<_> = (0..8).map(|_| push_toward(52.0, std::f64::consts::FRAC_PI_2)).collect();
+        let own: Vec<_> = (0..4).map(|_| push_toward(50.0, 0.0)).collect();
+        let motion = MotionTable::exact(40.0, 30.0);
+        let config = LearningConfig::default();
+        // Where it stands now: the ball 50 mm ahead.
+        let state = TrackedFrame { robot: Pose::new(0.0, 0.0, 0.0), ball_x_mm: 50.0, ball_y_mm: 0.0 };
+        let moved = |world: &WorldModel| {
+            let (x, y) = world.ball_response.predict(&state, Primitive::Forward);
+            (x - 50.0, y)
+        };
+        let practised = |weight: f64| {
+            let refines = Refines { ball_response: true, state_value: true, push_region: false };
+            let practice = Practice { attempts: &own, weight, refines };
+            moved(&WorldModel::learn_practised(&wide, &[], &practice, &Pitch::LARGE, &motion, &config))
+        };
+        let close = |a: (f64, f64), b: (f64, f64)| (a.0 - b.0).abs() < 1e-9 && (a.1 - b.1).abs() < 1e-9;
+        // Before practice the ball is predicted to go 40 mm to the side.
+        let before = moved(&WorldModel::learn(&wide, &Pitch::LARGE, &motion, &config));
+        assert!(close(before, (0.0, 40.0)), "{before:?}");
+        // After: the eight nearest are its own four and four of theirs, so the prediction is
+        // their weighted mean, 40 mm · (4w, 4) / (4w + 4): half-way at weight 1…
+        assert!(close(practised(1.0), (20.0, 20.0)), "{:?}", practised(1.0));
+        // …and three quarters of the way to straight ahead at weight 3.
+        assert!(close(practised(3.0), (30.0, 10.0)), "{:?}", practised(3.0));
     }
 
     #[test]

@@ -155,9 +155,8 @@ pub fn spare_attempts(per_configuration: i64) -> PyResult<usize> {
 /// order: what `ImitatorPolicy.evaluate` plays, so other policies can meet the same attempts.
 #[pyfunction]
 #[pyo3(signature = (attempts_per_configuration, *, seed))]
-pub fn attempt_seeds(attempts_per_configuration: i64, seed: i64) -> PyResult<Vec<(u8, u64)>> {
+pub fn attempt_seeds(attempts_per_configuration: i64, seed: u64) -> PyResult<Vec<(u8, u64)>> {
     let n = non_negative("attempts_per_configuration", attempts_per_configuration)?;
-    let seed = non_negative("seed", seed)? as u64;
     Ok(polymimic_learn::attempt_seeds(n, seed)
         .into_iter()
         .map(|(configuration, s)| (crate::field::configuration_number(configuration), s))

@@ -4,8 +4,8 @@ use std::sync::Arc;
 
 use polymimic_field::BodyKind;
 use polymimic_learn::{
-    Attempt, ControlMode, ForwardModel, ImitatorPolicy, ImitatorWeighting, LearningConfig, MotionTable, Pitch, Setting,
-    WorldModel, demonstration_weights, onto_setting,
+    Attempt, ControlMode, ForwardModel, ImitatorPolicy, ImitatorWeighting, LearningConfig, MotionTable, Pitch,
+    Practice, Refines, Setting, WorldModel, demonstration_weights, onto_setting,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -62,9 +62,11 @@ pub struct PyImitatorPolicy {
 impl PyImitatorPolicy {
     #[new]
     #[pyo3(
-        signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None, body=Body(BodyKind::Lego)),
-        text_signature = "(trial, *, recognizer, config=None, control='thesis', demonstrations=None, body='lego')"
+        signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None, body=Body(BodyKind::Lego),
+                     practice=None, practice_weight=1.0, refines=None),
+        text_signature = "(trial, *, recognizer, config=None, control='thesis', demonstrations=None, body='lego', practice=None, practice_weight=1.0, refines=None)"
     )]
+    #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
         trial: &PyTrialResult,
@@ -73,6 +75,9 @@ impl PyImitatorPolicy {
         control: &str,
         demonstrations: Option<&Bound<'_, PyAny>>,
         body: Body,
+        practice: Option<&Bound<'_, PyAny>>,
+        practice_weight: f64,
+        refines: Option<Vec<String>>,
     ) -> PyResult<Self> {
         let body = body.0;
         let pitch = Pitch::of_body(body);
@@ -100,7 +105,16 @@ impl PyImitatorPolicy {
                             .map_err(crate::errors::learn_params_error)?
                     }
                 };
-                Some(Arc::new(py.detach(|| WorldModel::learn_weighted(&demos, &weights, &pitch, &motion, &config))))
+                let own = practice.map(batch).transpose()?;
+                let own = own.as_deref().map(|own| onto_setting(own, &Setting::of_imitator(body)));
+                let practice = Practice {
+                    attempts: own.as_deref().unwrap_or(&[]),
+                    weight: at_least_zero("practice_weight", practice_weight)?,
+                    refines: refined_parts(refines.as_deref())?,
+                };
+                Some(Arc::new(
+                    py.detach(|| WorldModel::learn_practised(&demos, &weights, &practice, &pitch, &motion, &config)),
+                ))
             }
         };
         Ok(Self { model, motion, config, mode, body, world })
@@ -113,7 +127,7 @@ impl PyImitatorPolicy {
         &self,
         py: Python<'py>,
         attempts_per_configuration: i64,
-        seed: i64,
+        seed: u64,
         field_config: Option<&str>,
     ) -> PyResult<Bound<'py, PyList>> {
         let attempts = non_negative("attempts_per_configuration", attempts_per_configuration)?;
@@ -126,7 +140,6 @@ impl PyImitatorPolicy {
             mode: self.mode,
             world: self.world.as_deref(),
         };
-        let seed = non_negative("seed", seed)? as u64;
         let results = py.detach(|| policy.evaluate(attempts, &field, seed)).map_err(crate::errors::field_error)?;
         attempt_list(py, &results)
     }
@@ -181,5 +194,35 @@ impl PyImitatorPolicy {
             self.body(),
             self.model.behaviours.len()
         )
+    }
+}
+
+/// The parts of the world model practice refines, by name (default: the ball's response and
+/// the states' values).
+fn refined_parts(names: Option<&[String]>) -> PyResult<Refines> {
+    let Some(names) = names else {
+        return Ok(Refines { ball_response: true, state_value: true, push_region: false });
+    };
+    let mut refines = Refines { ball_response: false, state_value: false, push_region: false };
+    for name in names {
+        match name.as_str() {
+            "ball_response" => refines.ball_response = true,
+            "state_value" => refines.state_value = true,
+            "push_region" => refines.push_region = true,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "refines: {other:?} is no part of the world model (ball_response, state_value, push_region)"
+                )));
+            }
+        }
+    }
+    Ok(refines)
+}
+
+fn at_least_zero(name: &str, value: f64) -> PyResult<f64> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(PyValueError::new_err(format!("{name} must be a finite number of at least 0, got {value}")))
     }
 }

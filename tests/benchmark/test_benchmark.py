@@ -24,6 +24,8 @@ demonstrations_per_configuration = 2
 attempts_per_configuration = 2
 validation_attempts_per_configuration = 1
 tuning_budget = 1
+practice_steps = 300
+practice_trials = 1
 [profiles.pair]
 members = [{ controller = "expert", lapse = 0.0, name = "good" }, { controller = "expert", lapse = 1.0, name = "bad" }]
 [profiles.duo]
@@ -64,7 +66,7 @@ def test_the_summary_follows_its_schema(benchmarked):
     assert set(summary["sizes"]) >= {"trials", "attempts_per_configuration", "tuning_budget", "max_decision_samples"}
     pair = summary["profiles"]["pair"]
     assert set(pair) == {"demonstrators", "trials", "skill_recovery", "skill_by_outcomes", "methods",
-                         "lp_over_training"}
+                         "lp_over_training", "practice"}
     assert pair["trials"] == 2
     assert set(pair["demonstrators"]["good"]) == {"controller", "body", "lapse", "goals", "own_goals", "attempts",
                                                   "final_lp"}
@@ -75,7 +77,8 @@ def test_the_summary_follows_its_schema(benchmarked):
         assert set(entry) == {"goals", "own_goals", "net_goals", "attempts", "evaluated", "hyperparameters",
                               "validation"}
         assert entry["attempts"] == 4
-        assert entry["evaluated"] == (3 if method in ("bc", "bco", "bc_best", "random") else 2)
+        assert entry["evaluated"] == (3 if method in ("bc", "bco", "bc_best", "random") else
+                                      1 if method == "polymimic_practice" else 2)
         assert (entry["validation"] is None) == method.startswith("polymimic")
         assert entry["net_goals"]["mean"] == pytest.approx(entry["goals"]["mean"] - entry["own_goals"]["mean"])
     assert pair["methods"]["bc"]["hyperparameters"]["classifier"]
@@ -83,6 +86,26 @@ def test_the_summary_follows_its_schema(benchmarked):
     assert pair["methods"]["polymimic"]["hyperparameters"]["control"] == "improved"
     duo = summary["profiles"]["duo"]
     assert duo["demonstrators"]["tiny_00"]["body"] == "tiny"
+
+
+def test_practice_is_polymimics_imitator_after_the_first_trial_practising(benchmarked):
+    run = BenchmarkDir(benchmarked)
+    pair = _summary(benchmarked)["profiles"]["pair"]
+    saved = json.loads(run.practice_path("pair", 0).read_text())
+    assert not run.practice_path("pair", 1).exists()
+    assert [c["checkpoint"] for c in saved["checkpoints"]] == pair["practice"]["checkpoints"] == [0, 300]
+    assert saved["budget"] == 300 and 300 - 61 < saved["steps"] <= 300
+    # Before practice it is polymimic's imitator after the same trial, on the same attempts.
+    polymimic = json.loads(run.evaluation_path("pair", "polymimic", 0).read_text())
+    assert saved["checkpoints"][0]["net_goals"] == polymimic["goals"] - polymimic["own_goals"]
+    # After practice it is polymimic_practice's evaluation.
+    practised = json.loads(run.evaluation_path("pair", "polymimic_practice", 0).read_text())
+    assert saved["checkpoints"][-1]["net_goals"] == practised["goals"] - practised["own_goals"]
+    assert pair["methods"]["polymimic_practice"]["net_goals"]["mean"] == saved["checkpoints"][-1]["net_goals"]
+    assert pair["methods"]["polymimic_practice"]["hyperparameters"]["practice_steps"] == 300
+    text = (benchmarked / "benchmark.md").read_text()
+    assert "## Practice" in text and "practice never loses more than 1" in text
+    assert (benchmarked / "plots" / "benchmark_practice_curve.png").read_bytes()[:4] == b"\x89PNG"
 
 
 def test_a_baselines_figures_are_over_its_fits_and_its_validation_scores_its_tunings(benchmarked):
@@ -130,6 +153,9 @@ def test_a_rerun_redoes_nothing_and_a_lost_or_damaged_file_is_made_again(benchma
     # Evaluated by the tuning, with the policy it chose; now by a fresh fit in the evaluate stage.
     run.evaluation_path("pair", "bc", 0).unlink()
     run.tuning_path("duo", "bco").write_text('{"profile": "duo", "method": "bco", "chosen": {}')  # truncated
+    practice = json.loads(run.practice_path("duo", 0).read_text())
+    practice["checkpoints"][1]["steps"] = 301  # played past its checkpoint: damaged
+    run.practice_path("duo", 0).write_text(json.dumps(practice))
     assert main(["benchmark", "--config", str(tiny_toml), "--run-dir", str(benchmarked), "--quiet",
                  "--workers", "1"]) == 0
     stages = run.manifest()["stages"]
@@ -137,7 +163,9 @@ def test_a_rerun_redoes_nothing_and_a_lost_or_damaged_file_is_made_again(benchma
     # The tuning is made again, bit for bit, so its evaluations stand; the ones lost are redone.
     assert stages["tune"]["made"] == 1
     assert stages["evaluate"]["made"] == 2
-    assert "tuning_bco.json is damaged" in capsys.readouterr().err
+    assert stages["practice"]["made"] == 1
+    err = capsys.readouterr().err
+    assert "tuning_bco.json is damaged" in err and "practice_0.json is damaged" in err
     assert _summary(benchmarked) == before
 
 

@@ -32,9 +32,9 @@ from polymimic.runs.config import ConfigError, RunConfig, as_table, checked_sect
 
 __all__ = ["METHODS", "OPTIONAL_METHODS", "BenchmarkConfig", "BenchmarkSettings"]
 
-METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "bco", "bco_lp", "bc", "bc_best",
-           "random")
-"""The methods a benchmark compares by default (SPEC §6.2)."""
+METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
+           "bc", "bc_best", "random")
+"""The methods a benchmark compares by default (SPEC §6.2, §7.2)."""
 
 OPTIONAL_METHODS = ("ppo",)
 """Methods run only when named: ``ppo`` learns from the reward rather than from demonstrations,
@@ -76,6 +76,11 @@ class BenchmarkSettings:
     ppo_eval_every: int = _doc("environment steps between ppo's checkpoints on the evaluation attempts", 50_000)
     ppo_runs: int = _doc("ppo training runs, seeds 0, 1, … (ppo learns no crowd's data: its runs serve every "
                          "profile)", 1)
+    practice_steps: int = _doc("environment steps polymimic_practice's imitators practise for, after learning "
+                               "(polymimic.practice; scored at 0, 1000, 2500, 5000, 10000, 25000 and 50000 steps "
+                               "within it)", 25_000)
+    practice_trials: int = _doc("trials whose polymimic imitator practises, the first ones (every trial where "
+                                "there are fewer; each practice costs practice_steps)", 5)
     baseline_fits: int = _doc("fits of bc, bco, bc_best and random, each evaluated, under seeds first_trial, "
                               "first_trial + 1, …: a seed draws the fit's decision samples and seeds its "
                               "classifier (bco_lp is fitted after each of the first lp_plugin_trials trials)", 3)
@@ -83,7 +88,8 @@ class BenchmarkSettings:
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
                      "validation_attempts_per_configuration", "tuning_budget", "lp_plugin_trials",
-                     "baseline_fits", "max_decision_samples", "ppo_timesteps", "ppo_eval_every", "ppo_runs"):
+                     "baseline_fits", "max_decision_samples", "ppo_timesteps", "ppo_eval_every", "ppo_runs",
+                     "practice_steps", "practice_trials"):
             in_range("benchmark", name, getattr(self, name), 1)
         in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
         for name in ("profiles", "methods"):
@@ -149,10 +155,13 @@ class BenchmarkConfig:
         """The seeds ``method`` is evaluated under: every trial's for polymimic's methods, the
         first ``lp_plugin_trials`` trials' for ``bco_lp`` (a fit per trial, with its LPs), and
         ``baseline_fits`` fit seeds (``first_trial``, ``first_trial + 1``, …) for a baseline
-        whose data no trial changes."""
+        whose data no trial changes, and the first ``practice_trials`` trials' for
+        ``polymimic_practice``."""
         if method in TRIAL_INDEPENDENT:
             return [self.seeds.first_trial + i for i in range(self.benchmark.baseline_fits)]
         seeds = self.trial_seeds()
+        if method == "polymimic_practice":
+            return seeds[:self.benchmark.practice_trials]
         return seeds[:self.benchmark.lp_plugin_trials] if method == "bco_lp" else seeds
 
     def crowds(self) -> list[Crowd]:
@@ -163,15 +172,15 @@ class BenchmarkConfig:
     def quick(cls) -> BenchmarkConfig:
         """A small benchmark: 2 trials per profile, 5 demonstrations per member and configuration,
         5 attempts per configuration, 3 tuning candidates on 3 attempts each, fits of at most
-        1000 decision samples, ppo (where named) for 8192 steps, and the quick reproduction's
-        recogniser."""
+        1000 decision samples, ppo (where named) for 8192 steps, the first trial's imitator
+        practising for 1000 steps, and the quick reproduction's recogniser."""
         full = cls()
         return dataclasses.replace(
             full, run=_with_lp_weighting(dataclasses.replace(RunConfig.quick(), experiments=full.run.experiments)),
             benchmark=dataclasses.replace(full.benchmark, trials=2, demonstrations_per_configuration=5,
                                           attempts_per_configuration=5, validation_attempts_per_configuration=3,
                                           tuning_budget=3, max_decision_samples=1000, ppo_timesteps=8192,
-                                          ppo_eval_every=4096))
+                                          ppo_eval_every=4096, practice_steps=1000, practice_trials=1))
 
     def to_dict(self) -> dict[str, Any]:
         run = self.run.to_dict()

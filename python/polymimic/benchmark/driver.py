@@ -12,10 +12,13 @@ arrives, and a rerun redoes only what is missing or damaged):
    the first trial's LPs); the chosen candidate, fitted as the evaluation after the first
    trial would fit it, is evaluated there and then;
 5. **evaluate** — every method after every trial, on the evaluation attempts;
-6. **ppo** — where the methods name it, each ppo run, learning from the reward and played on
+6. **practice** — where the methods name ``polymimic_practice``, polymimic's imitator after each
+   of the first ``practice_trials`` trials practises for ``practice_steps`` environment steps
+   (a practice is one piece of work: an interrupted one starts again);
+7. **ppo** — where the methods name it, each ppo run, learning from the reward and played on
    the evaluation attempts at every checkpoint (a run is one piece of work: an interrupted one
    starts again);
-7. **report** — ``benchmark.json``, ``benchmark.md``, ``benchmark.html`` and the plots.
+8. **report** — ``benchmark.json``, ``benchmark.md``, ``benchmark.html`` and the plots.
 """
 
 from __future__ import annotations
@@ -30,17 +33,19 @@ from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
 from polymimic.benchmark.config import OPTIONAL_METHODS, BenchmarkConfig
 from polymimic.benchmark.figures import draw_figures
-from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_tuning
+from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_practice, load_tuning
 from polymimic.benchmark.report import benchmark_html, benchmark_markdown
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.summary import gather
 from polymimic.benchmark.tasks import (
     POLYMIMIC_METHODS,
+    PRACTISED,
     ProfileInputs,
     Shared,
     dumps,
     evaluation_task,
     ppo_task,
+    practice_task,
     trial_task,
     tuning_task,
 )
@@ -90,6 +95,8 @@ class Benchmark(Stepped):
         self._step("learn", lambda: self.learn(shared))
         self._step("tune", lambda: self.tune(shared))
         self._step("evaluate", lambda: self.evaluate(shared))
+        if PRACTISED in self.config.benchmark.methods:
+            self._step("practice", lambda: self.practice(shared))
         if "ppo" in self.config.benchmark.methods:
             self._step("ppo", lambda: self.ppo(shared))
         self._step("report", self.report)
@@ -208,7 +215,7 @@ class Benchmark(Stepped):
         jobs: list[tuple[str, str, int, str | None, dict[str, Any] | None]] = []
         methods = self.config.benchmark.methods
         for crowd in self.config.crowds():
-            for method in (m for m in methods if m not in OPTIONAL_METHODS):
+            for method in (m for m in methods if m not in OPTIONAL_METHODS and m != PRACTISED):
                 tuned = None if method in POLYMIMIC_METHODS else load_tuning(
                     self.run.require(self.run.tuning_path(crowd.name, method), "benchmark"))["hyperparameters"]
                 for seed in self.config.evaluated_seeds(method):
@@ -229,7 +236,27 @@ class Benchmark(Stepped):
                 bar.update(1)
         return len(jobs)
 
-    # 6. ppo, from the reward.
+    # 6. Practice.
+
+    def _practice_done(self, profile: str, seed: int) -> bool:
+        saved = self.run.loaded(self.run.practice_path(profile, seed), load_practice)
+        settings = self.config.benchmark
+        return saved is not None and self._evaluation_done(profile, PRACTISED, seed) and (
+            saved["trial_seed"], saved["evaluation_seed"], saved["attempts"], saved["budget"]) == (
+            seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration, settings.practice_steps)
+
+    def practice(self, shared: Shared) -> int:
+        jobs = [(crowd.name, seed, self._trial_json(crowd.name, seed)) for crowd in self.config.crowds()
+                for seed in self.config.evaluated_seeds(PRACTISED) if not self._practice_done(crowd.name, seed)]
+        with progress(total=len(jobs), desc="practice", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(practice_task, shared, jobs):
+                # The evaluation first: the practice file marks the work done.
+                self._write_evaluation(result.pop("evaluation"))
+                atomic_write_text(self.run.practice_path(result["profile"], result["trial_seed"]), dumps(result))
+                bar.update(1)
+        return len(jobs)
+
+    # 7. ppo, from the reward.
 
     def _ppo_done(self, seed: int) -> bool:
         if not self.run.ppo_policy_path(seed).is_file():
@@ -257,14 +284,14 @@ class Benchmark(Stepped):
         atomic_write_text(path, dumps(result))
 
 
-    # 7. The summary and the report.
+    # 8. The summary and the report.
 
     def report(self) -> int:
         summary = gather(self.run, self.config)
         atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
         draw_figures(summary, self.run.plots)
         stages = self.run.manifest()["stages"]
-        steps = ("recognise", "record", "learn", "tune", "evaluate", "ppo")
+        steps = ("recognise", "record", "learn", "tune", "evaluate", "practice", "ppo")
         seconds = {name: float(stages[name]["seconds"]) for name in steps
                    if isinstance(stages.get(name, {}).get("seconds"), (int, float))}
         markdown = benchmark_markdown(summary, seconds=seconds)

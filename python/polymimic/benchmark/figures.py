@@ -1,5 +1,7 @@
 """The benchmark's pictures: net goals by method and profile, LP against lapse, LP over training,
-and (where ppo ran) ppo's net goals over its training against polymimic's in every profile.
+(where ppo ran) ppo's net goals over its training against polymimic's in every profile, and
+(where polymimic_practice ran) the practised imitators' net goals over practice steps, beside
+ppo's on the same axes.
 
 >>> import pathlib, tempfile
 >>> summary = {"profiles": {"pair": {
@@ -25,7 +27,8 @@ from polymimic.plots import plot_metric_bars, save_figure
 __all__ = ["FIGURES", "draw_figures"]
 
 FIGURES = {"net_goals": "benchmark_net_goals.png", "lp_vs_lapse": "benchmark_lp_vs_lapse.png",
-           "lp_over_training": "benchmark_lp_over_training.png", "ppo_curve": "benchmark_ppo_curve.png"}
+           "lp_over_training": "benchmark_lp_over_training.png", "ppo_curve": "benchmark_ppo_curve.png",
+           "practice_curve": "benchmark_practice_curve.png"}
 
 
 def _panels(count: int, *, width_in: float = 3.6, height_in: float = 3.0) -> tuple[Any, list[Any]]:
@@ -101,6 +104,34 @@ def _ppo_curve(summary: Mapping[str, Any], path: pathlib.Path) -> None:
     save_figure(figure, path)
 
 
+def _practice_curve(summary: Mapping[str, Any], path: pathlib.Path) -> None:
+    """Net goals against environment steps, practice's per profile and ppo's per run, steps on a
+    scale linear to 1 000 and logarithmic beyond, so 25 000 steps of practice and a million of
+    ppo share the axis."""
+    from matplotlib.figure import Figure
+    from matplotlib.ticker import StrMethodFormatter
+
+    figure = Figure(figsize=(7.5, 4.2), layout="constrained")
+    ax = figure.add_subplot()
+    for name, profile in summary["profiles"].items():
+        practice = profile.get("practice")
+        if practice:
+            ax.plot(practice["checkpoints"], [n["mean"] for n in practice["net_goals"]], marker="o", markersize=3,
+                    label=f"practice, {name}")
+    for run in summary.get("ppo", {}).get("runs", []):
+        points = run["checkpoints"]
+        ax.plot([p["env_steps"] for p in points], [p["net_goals"] for p in points], color="0.35", linestyle="--",
+                linewidth=1.0, label=f"ppo, seed {run['seed']}")
+    ax.set_xscale("symlog", linthresh=1_000)
+    ax.xaxis.set_major_formatter(StrMethodFormatter("{x:,.0f}"))
+    ax.set_xlabel("environment steps (one second of play each)")
+    ax.set_ylabel("net goals on the evaluation attempts")
+    ax.set_title("polymimic practising after learning from each crowd, and ppo from the reward", fontsize="medium")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="lower right", fontsize="x-small")
+    save_figure(figure, path)
+
+
 def draw_figures(summary: Mapping[str, Any], folder: str | os.PathLike[str]) -> list[pathlib.Path]:
     """Draw every figure of ``summary`` (a ``benchmark.json``) into ``folder``; their paths."""
     out = pathlib.Path(folder)
@@ -120,4 +151,7 @@ def draw_figures(summary: Mapping[str, Any], folder: str | os.PathLike[str]) -> 
     if "ppo" in summary:
         _ppo_curve(summary, out / FIGURES["ppo_curve"])
         drawn.append(out / FIGURES["ppo_curve"])
+    if any(p.get("practice") for p in profiles.values()):
+        _practice_curve(summary, out / FIGURES["practice_curve"])
+        drawn.append(out / FIGURES["practice_curve"])
     return drawn

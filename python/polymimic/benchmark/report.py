@@ -86,6 +86,34 @@ def _ppo_rows(summary: Mapping[str, Any]) -> list[str]:
     return [*lines, "", f"![ppo's net goals over training](plots/{FIGURES['ppo_curve']})", ""]
 
 
+def _practice_rows(summary: Mapping[str, Any]) -> list[str]:
+    """The practised imitators' curves: mean (sd) net goals at every checkpoint, per profile."""
+    profiles = {name: p["practice"] for name, p in summary["profiles"].items() if p.get("practice")}
+    marks = next(iter(profiles.values()))["checkpoints"]
+    sizes = summary["sizes"]
+    lines = ["## Practice", "",
+             f"polymimic's imitator after each of the first {sizes['practice_trials']} trials plays attempts of its "
+             f"own (from practice seeds, apart from the evaluation's and validation's) for "
+             f"{sizes['practice_steps']:,} environment steps, one second of play each, and learns the ball's response "
+             "and the states' values from what the tracker showed of them beside the demonstrations "
+             "(`polymimic.practice`). Net goals on the evaluation attempts at each checkpoint, mean (sd) over "
+             "those trials; attempts the tracker lost are left out and counted.", "",
+             "| profile | " + " | ".join(f"{m:,} steps" for m in marks) + " | attempts lost |",
+             "| --- | " + " | ".join("---" for _ in marks) + " | --- |"]
+    for name, practice in profiles.items():
+        lines.append(f"| {name} | " + " | ".join(msd(n) for n in practice["net_goals"])
+                     + f" | {practice['attempts_lost']} |")
+    if "ppo" in summary:
+        lines += ["", "Against ppo: the first practice checkpoint reaching ppo's final net goals, and the steps each "
+                      "ppo run took to first reach the practised net goals.", "",
+                  "| profile | practice to ppo's final | ppo to practice's final |", "| --- | --- | --- |"]
+        for name, practice in profiles.items():
+            ppo = ", ".join("never" if s is None else f"{s:,}" for s in practice["ppo_steps_to_practice"])
+            reach = practice["steps_to_ppo"]
+            lines.append(f"| {name} | {'not within the budget' if reach is None else f'{reach:,}'} | {ppo} |")
+    return [*lines, "", f"![Net goals over practice](plots/{FIGURES['practice_curve']})", ""]
+
+
 def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] | None = None) -> str:
     """The report of a ``benchmark.json``; ``seconds`` are the steps' times, from the manifest."""
     sizes = summary["sizes"]
@@ -117,6 +145,8 @@ def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, floa
         lines += [f"### {name}", "", *_methods_table(profile), ""]
     if "ppo" in summary:
         lines += _ppo_rows(summary)
+    if any(p.get("practice") for p in summary["profiles"].values()):
+        lines += _practice_rows(summary)
     lines += ["## Skill recovery", "",
               "How well each estimate ranks the members by true skill (lower ε is better): the members' final LPs, "
               "and the plain estimator that ranks them by the net goals of their own demonstrations.", "",

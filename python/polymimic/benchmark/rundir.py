@@ -9,6 +9,7 @@
     models/benchmark/<profile>/trial_<seed>_uniform_lp.json    every LP held at 0.5
     models/benchmark/<profile>/tuning_<method>.json            the candidates tried, the choice
     models/benchmark/<profile>/evaluation_<method>_<seed>.json one method's attempts after one trial
+    models/benchmark/<profile>/practice_<seed>.json            the imitator's practice after one trial
     models/benchmark/ppo/curve_<seed>.json, policy_<seed>.pmp  a ppo run's checkpoints, its policy
     benchmark.json, benchmark.md, benchmark.html, plots/benchmark_*.png
 
@@ -55,6 +56,9 @@ class BenchmarkDir(RunHouse[BenchmarkConfig]):
 
     def evaluation_path(self, profile: str, method: str, seed: int) -> pathlib.Path:
         return self.profile_dir(profile) / f"evaluation_{method}_{seed}.json"
+
+    def practice_path(self, profile: str, seed: int) -> pathlib.Path:
+        return self.profile_dir(profile) / f"practice_{seed}.json"
 
     def ppo_curve_path(self, seed: int) -> pathlib.Path:
         return self.models / "benchmark" / "ppo" / f"curve_{seed}.json"

@@ -9,6 +9,10 @@ trial. ``None`` stands where a number does not exist (ρ where every member has 
 ``ppo``, where it ran, learns no crowd's data: its final checkpoints stand in every profile's
 methods, with the environment steps each run took to first score ``polymimic``'s mean net goals
 there, and its curves once, under ``ppo``.
+
+``polymimic_practice``, where it ran, is ``polymimic``'s imitator after practice, on the first
+``practice_trials`` trials; each profile's ``practice`` holds its curve (mean and sd over those
+trials at every checkpoint) and, beside ppo, the steps each needs to reach the other's net goals.
 """
 
 from __future__ import annotations
@@ -22,9 +26,9 @@ from polymimic._native import __version__
 from polymimic.baselines.ppo import steps_to_reach
 from polymimic.baselines.tuning import validation_rank
 from polymimic.benchmark.config import BenchmarkConfig
-from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_tuning
+from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_practice, load_tuning
 from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.benchmark.tasks import POLYMIMIC_METHODS, final_lps, ppo_hyperparameters
+from polymimic.benchmark.tasks import POLYMIMIC_METHODS, PRACTISED, final_lps, ppo_hyperparameters
 from polymimic.crowds import Crowd
 from polymimic.datasets import load_demonstrations
 from polymimic.learning import LearningConfig, TrialResult
@@ -32,8 +36,8 @@ from polymimic.plots import MeanSd
 from polymimic.ranking import kendall, spearman
 from polymimic.runs.stats import mean_sd
 
-__all__ = ["FORMAT", "VERSION", "MemberSummary", "MethodSummary", "PPOSummary", "ProfileSummary", "SkillRecovery",
-           "Validation", "ValidationScore", "gather", "validation"]
+__all__ = ["FORMAT", "VERSION", "MemberSummary", "MethodSummary", "PPOSummary", "PracticeSummary", "ProfileSummary",
+           "SkillRecovery", "Validation", "ValidationScore", "gather", "validation"]
 
 FORMAT, VERSION = "polymimic.benchmark", 1
 LP_POINTS = 200
@@ -92,6 +96,21 @@ class PPOSummary(MethodSummary):
     this profile (None: not within its budget)."""
 
 
+class PracticeSummary(TypedDict):
+    checkpoints: list[int]
+    steps: list[MeanSd]
+    """Steps played by each checkpoint (at most the checkpoint: a round's attempt that would pass
+    it waits for the next)."""
+    net_goals: list[MeanSd]
+    attempts_lost: int
+    """Attempts the tracker lost, over every practice (left out of learning, counted)."""
+    trials: int
+    steps_to_ppo: int | None
+    """The first checkpoint whose mean net goals reach ppo's final mean (None: none does, or no ppo)."""
+    ppo_steps_to_practice: list[int | None]
+    """Per ppo run, the steps of its first checkpoint with at least the practised mean net goals."""
+
+
 class ProfileSummary(TypedDict):
     demonstrators: dict[str, MemberSummary]
     trials: int
@@ -99,6 +118,7 @@ class ProfileSummary(TypedDict):
     skill_by_outcomes: SkillRecovery
     methods: dict[str, MethodSummary]
     lp_over_training: dict[str, list[float]]
+    practice: PracticeSummary | None
 
 
 def recovery(rankings: Sequence[Mapping[str, float]], crowd: Crowd) -> SkillRecovery:
@@ -170,6 +190,9 @@ def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, me
                                   "imitator_weighting": config.learning.imitator_weighting}
         if control == "improved":
             chosen.update(_improved_control_choices(config.learning))
+        if method == PRACTISED:
+            chosen.update(practice_steps=config.benchmark.practice_steps, practice_trials=len(saved),
+                          refines="the ball's response and the states' values, from its own attempts")
         chosen["tuned"] = "no: the thesis's constants"
         scored = None
     else:
@@ -197,6 +220,25 @@ def _ppo_summary(curves: Sequence[Mapping[str, Any]], config: BenchmarkConfig, t
                                               for c in curves])
 
 
+def _practice_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str,
+                      ppo_curves: Sequence[Mapping[str, Any]] | None) -> PracticeSummary:
+    """The practised imitators' curves over their trials, and how they stand against ppo's."""
+    saved = [load_practice(run.require(run.practice_path(profile, s), "benchmark"))
+             for s in config.evaluated_seeds(PRACTISED)]
+    marks = [int(p["checkpoint"]) for p in saved[0]["checkpoints"]]
+    net = [mean_sd(p["checkpoints"][k]["net_goals"] for p in saved) for k in range(len(marks))]
+    steps_to_ppo = ppo_steps = None
+    if ppo_curves is not None:
+        ppo_final = float(np.mean([c["checkpoints"][-1]["net_goals"] for c in ppo_curves]))
+        steps_to_ppo = next((m for m, n in zip(marks, net) if n["mean"] is not None and n["mean"] >= ppo_final), None)
+        practised = net[-1]["mean"]
+        ppo_steps = [None if practised is None else steps_to_reach(c["checkpoints"], practised) for c in ppo_curves]
+    return PracticeSummary(checkpoints=marks,
+                           steps=[mean_sd(p["checkpoints"][k]["steps"] for p in saved) for k in range(len(marks))],
+                           net_goals=net, attempts_lost=sum(p["attempts_lost"] for p in saved), trials=len(saved),
+                           steps_to_ppo=steps_to_ppo, ppo_steps_to_practice=ppo_steps or [])
+
+
 def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd,
              ppo_curves: Sequence[Mapping[str, Any]] | None) -> ProfileSummary:
     demos = load_demonstrations(run.require(run.crowd_path(crowd.name), "benchmark"))
@@ -219,7 +261,8 @@ def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd,
     return ProfileSummary(
         demonstrators=members, trials=len(trials), skill_recovery=recovery(lps, crowd),
         skill_by_outcomes=recovery([net] * len(trials), crowd), methods=methods,
-        lp_over_training={name: _downsampled(model.lp_history) for name, model in trials[0].models.items()})
+        lp_over_training={name: _downsampled(model.lp_history) for name, model in trials[0].models.items()},
+        practice=_practice_summary(run, config, crowd.name, ppo_curves) if PRACTISED in methods else None)
 
 
 def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
@@ -230,6 +273,7 @@ def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
              "validation_attempts_per_configuration": settings.validation_attempts_per_configuration,
              "tuning_budget": settings.tuning_budget, "max_decision_samples": settings.max_decision_samples,
              "lp_plugin_trials": settings.lp_plugin_trials, "baseline_fits": settings.baseline_fits,
+             "practice_steps": settings.practice_steps, "practice_trials": settings.practice_trials,
              "evaluation_seed": config.seeds.evaluation,
              "validation_seed": settings.validation_seed}
     # ppo's runs serve every profile: read once.

@@ -80,6 +80,36 @@ def _what_lp_buys(name: str, profile: Mapping[str, Any]) -> list[Target]:
     return out
 
 
+PRACTICE_HORIZON = 25_000
+"""The practice targets are read at this checkpoint (issue "Practice")."""
+
+
+def _practice(name: str, profile: Mapping[str, Any]) -> list[Target]:
+    """Practice gains at least 3 net goals by 25 000 steps and never loses more than 1; on
+    ``one_good`` and ``half`` it reaches 47; ppo needs at least 20 times its steps for its score."""
+    practice = profile.get("practice")
+    if not practice:
+        return []
+    marks, net = practice["checkpoints"], [n["mean"] for n in practice["net_goals"]]
+    worst = min(n - net[0] for n in net)
+    out = [Target(statement=f"{name}: practice never loses more than 1 net goal at a checkpoint",
+                  measured=f"worst {worst:+.1f}", met=worst >= -1)]
+    if PRACTICE_HORIZON in marks:
+        at = net[marks.index(PRACTICE_HORIZON)]
+        out.append(Target(statement=f"{name}: practice gains ≥ 3 net goals by {PRACTICE_HORIZON:,} steps",
+                          measured=f"{net[0]:.1f} → {at:.1f}", met=at - net[0] >= 3))
+        if name in ("one_good", "half"):
+            out.append(Target(statement=f"{name}: ≥ 47 net goals within {PRACTICE_HORIZON:,} practice steps",
+                              measured=f"{at:.1f}", met=at >= 47))
+    reached = practice.get("ppo_steps_to_practice", [])
+    if reached:
+        shown = ", ".join("never" if s is None else f"{s:,}" for s in reached)
+        out.append(Target(statement=f"{name}: ppo needs ≥ 20 × the practice's {marks[-1]:,} steps for its "
+                                    f"{net[-1]:.1f} net goals",
+                          measured=f"ppo: {shown}", met=all(s is None or s >= 20 * marks[-1] for s in reached)))
+    return out
+
+
 def check_targets(summary: Mapping[str, Any]) -> list[Target]:
     """Every target that applies to the profiles and methods of ``summary``."""
     out: list[Target] = []
@@ -89,4 +119,5 @@ def check_targets(summary: Mapping[str, Any]) -> list[Target]:
             out += _skill(name, profile)
         if name in ("one_good", "mixed_bodies"):
             out += _what_lp_buys(name, profile)
+        out += _practice(name, profile)
     return out

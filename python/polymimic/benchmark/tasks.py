@@ -16,13 +16,17 @@ from polymimic.benchmark.config import BenchmarkConfig
 from polymimic.crowds import Crowd
 from polymimic.field import Demonstration
 from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate, run_trial
+from polymimic.practice import practice
 
-__all__ = ["POLYMIMIC_METHODS", "ProfileInputs", "Shared", "evaluation_task", "final_lps", "ppo_hyperparameters",
-           "ppo_task", "trial_task", "tuning_task"]
+__all__ = ["POLYMIMIC_METHODS", "PRACTISED", "ProfileInputs", "Shared", "evaluation_task", "final_lps",
+           "ppo_hyperparameters", "ppo_task", "practice_task", "trial_task", "tuning_task"]
 
 POLYMIMIC_METHODS = {"polymimic": ("improved", False), "polymimic_thesis_control": ("thesis", False),
-                     "polymimic_uniform_lp": ("improved", True)}
-"""polymimic's own methods: (control, whether every LP is held at 0.5)."""
+                     "polymimic_uniform_lp": ("improved", True), "polymimic_practice": ("improved", False)}
+"""polymimic's own methods: (control, whether every LP is held at 0.5). ``polymimic_practice`` is
+``polymimic``'s imitator after practice, evaluated by the practice stage (:func:`practice_task`)."""
+
+PRACTISED = "polymimic_practice"
 
 
 @dataclasses.dataclass(frozen=True)
@@ -98,20 +102,45 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
             "evaluation": _evaluated(shared, profile, method, seeds.first_trial, tuning.policy)}
 
 
+def _imitator(shared: Shared, profile: str, method: str, trial_json: str) -> ImitatorPolicy:
+    """polymimic's imitator (``method`` one of :data:`POLYMIMIC_METHODS`) after the trial."""
+    control, uniform_lp = POLYMIMIC_METHODS[method]
+    return ImitatorPolicy(TrialResult.from_json(trial_json), recognizer=shared.recognizer,
+                          config=shared.learning(uniform_lp), control=control,
+                          demonstrations=shared.profiles[profile].segmented if control == "improved" else None,
+                          body=shared.config.imitator_body())
+
+
+def practice_task(shared: Shared, job: tuple[str, int, str]) -> dict[str, Any]:
+    """``(profile, trial seed, the trial's JSON)`` → polymimic's imitator after that trial,
+    practising for ``practice_steps`` under the trial's seed (:func:`polymimic.practice.practice`):
+    its curve on the evaluation attempts, as the run directory keeps it, and (``"evaluation"``)
+    the practised policy's evaluation, as ``polymimic_practice``'s."""
+    profile, trial_seed, trial_json = job
+    settings, seeds = shared.config.benchmark, shared.config.seeds
+    result = practice(_imitator(shared, profile, "polymimic", trial_json), steps=settings.practice_steps,
+                      seed=trial_seed, evaluation_seed=seeds.evaluation,
+                      evaluation_attempts=settings.attempts_per_configuration, field_config=shared.config.field,
+                      segmenter=dataclasses.asdict(shared.config.segmenter))
+    final = evaluate(result.policy, attempts_per_configuration=settings.attempts_per_configuration,
+                     seed=seeds.evaluation, field_config=shared.config.field)
+    return {"profile": profile, "trial_seed": trial_seed, "evaluation_seed": seeds.evaluation,
+            "attempts": 2 * settings.attempts_per_configuration, "budget": settings.practice_steps,
+            "steps": result.steps, "attempts_learned": len(result.attempts), "attempts_lost": result.attempts_lost,
+            "checkpoints": [p.to_dict() for p in result.curve],
+            "evaluation": _evaluation(shared, profile, PRACTISED, trial_seed, final)}
+
+
 def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[str, Any] | None]) -> dict[str, Any]:
     """``(profile, method, trial seed, the trial's JSON, the tuned hyperparameters)`` → the
     method's goals and own goals on the evaluation attempts after that trial."""
     profile, method, trial_seed, trial_json, hyperparameters = job
     settings, seeds, inputs = shared.config.benchmark, shared.config.seeds, shared.profiles[profile]
     if method in POLYMIMIC_METHODS:
-        control, uniform_lp = POLYMIMIC_METHODS[method]
-        assert trial_json is not None
-        policy = ImitatorPolicy(TrialResult.from_json(trial_json), recognizer=shared.recognizer,
-                                config=shared.learning(uniform_lp), control=control,
-                                demonstrations=inputs.segmented if control == "improved" else None,
-                                body=shared.config.imitator_body())
-        result = evaluate(policy, attempts_per_configuration=settings.attempts_per_configuration,
-                          seed=seeds.evaluation, field_config=shared.config.field)
+        assert trial_json is not None and method != PRACTISED, "the practice stage evaluates practised imitators"
+        result = evaluate(_imitator(shared, profile, method, trial_json),
+                          attempts_per_configuration=settings.attempts_per_configuration, seed=seeds.evaluation,
+                          field_config=shared.config.field)
         return _evaluation(shared, profile, method, trial_seed, result)
     assert hyperparameters is not None
     chosen = baselines.Hyperparameters.from_dict(hyperparameters)

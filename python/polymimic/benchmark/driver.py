@@ -33,7 +33,7 @@ from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
 from polymimic.benchmark.config import OPTIONAL_METHODS, BenchmarkConfig
 from polymimic.benchmark.figures import draw_figures
-from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_practice, load_tuning
+from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_tuning
 from polymimic.benchmark.report import benchmark_html, benchmark_markdown
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.summary import gather
@@ -45,7 +45,8 @@ from polymimic.benchmark.tasks import (
     dumps,
     evaluation_task,
     ppo_task,
-    practice_task,
+    practice_inputs,
+    practised_evaluation,
     trial_task,
     tuning_task,
 )
@@ -55,6 +56,7 @@ from polymimic.field import PRIMITIVES, self_observation
 from polymimic.learning import TrialResult, segmented
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.config import ConfigError
+from polymimic.runs.practising import load_practice, practice_task
 from polymimic.runs.progress import progress
 from polymimic.runs.steps import Stepped, counted, each_member_recorded
 
@@ -242,17 +244,18 @@ class Benchmark(Stepped):
         saved = self.run.loaded(self.run.practice_path(profile, seed), load_practice)
         settings = self.config.benchmark
         return saved is not None and self._evaluation_done(profile, PRACTISED, seed) and (
-            saved["trial_seed"], saved["evaluation_seed"], saved["attempts"], saved["budget"]) == (
-            seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration, settings.practice_steps)
+            saved["group"], saved["trial_seed"], saved["evaluation_seed"], saved["attempts"], saved["budget"]) == (
+            profile, seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
+            settings.practice_steps)
 
     def practice(self, shared: Shared) -> int:
         jobs = [(crowd.name, seed, self._trial_json(crowd.name, seed)) for crowd in self.config.crowds()
                 for seed in self.config.evaluated_seeds(PRACTISED) if not self._practice_done(crowd.name, seed)]
         with progress(total=len(jobs), desc="practice", quiet=self.quiet) as bar:
-            for _, result in self.runner.map(practice_task, shared, jobs):
+            for _, result in self.runner.map(practice_task, practice_inputs(shared), jobs):
                 # The evaluation first: the practice file marks the work done.
-                self._write_evaluation(result.pop("evaluation"))
-                atomic_write_text(self.run.practice_path(result["profile"], result["trial_seed"]), dumps(result))
+                self._write_evaluation(practised_evaluation(shared, result))
+                atomic_write_text(self.run.practice_path(result["group"], result["trial_seed"]), dumps(result))
                 bar.update(1)
         return len(jobs)
 

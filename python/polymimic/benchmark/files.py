@@ -10,8 +10,8 @@ from polymimic._native import ModelFileError
 from polymimic.benchmark.config import METHODS
 from polymimic.runs.files import checked_outcomes, checked_tuning, integer_key, json_object, name_key
 
-__all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedPractice", "SavedTuning", "load_method_evaluation",
-           "load_ppo_curve", "load_practice", "load_tuning"]
+__all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_method_evaluation", "load_ppo_curve",
+           "load_tuning"]
 
 
 class SavedMethodEvaluation(TypedDict):
@@ -47,50 +47,6 @@ class SavedPPOCurve(TypedDict):
     total_timesteps: int
     eval_every: int
     checkpoints: list[dict[str, Any]]
-
-
-class SavedPractice(TypedDict):
-    """polymimic's imitator practising after one trial: its budget and every checkpoint on the
-    evaluation attempts (:class:`polymimic.practice.CurvePoint`'s keys)."""
-
-    profile: str
-    trial_seed: int
-    evaluation_seed: int
-    attempts: int
-    budget: int
-    steps: int
-    attempts_learned: int
-    attempts_lost: int
-    checkpoints: list[dict[str, int]]
-
-
-CHECKPOINT_KEYS = ("checkpoint", "steps", "net_goals", "goals", "own_goals", "attempts_learned", "attempts_lost")
-
-
-def load_practice(path: str | os.PathLike[str]) -> SavedPractice:
-    """A practice file, checked: checkpoints rising from 0 to the budget, none played beyond its
-    checkpoint, each one's goals and own goals within the attempts and its net goals their
-    difference."""
-    where, data = os.fspath(path), json_object(path, "practice")
-    attempts, budget = integer_key(data, "attempts", where, 1), integer_key(data, "budget", where, 1)
-    checkpoints = data.get("checkpoints")
-    if not isinstance(checkpoints, list) or not checkpoints or not all(isinstance(c, dict) for c in checkpoints):
-        raise ModelFileError(f"{where}: key 'checkpoints' must list objects, got {checkpoints!r}")
-    marks = []
-    for index, point in enumerate(checkpoints):
-        at = f"{where}: checkpoint {index}"
-        values = {key: integer_key(point, key, at, 0) for key in CHECKPOINT_KEYS}
-        if values["steps"] > values["checkpoint"] or values["goals"] + values["own_goals"] > attempts or \
-                values["net_goals"] != values["goals"] - values["own_goals"]:
-            raise ModelFileError(f"{at}: its steps, goals, own goals and net goals disagree ({point!r})")
-        marks.append(values["checkpoint"])
-    if marks[0] != 0 or marks != sorted(set(marks)) or marks[-1] != budget:
-        raise ModelFileError(f"{where}: the checkpoints must rise from 0 to the budget {budget}, got {marks}")
-    return SavedPractice(profile=name_key(data, "profile", where), trial_seed=integer_key(data, "trial_seed", where, 0),
-                         evaluation_seed=integer_key(data, "evaluation_seed", where, 0), attempts=attempts,
-                         budget=budget, steps=integer_key(data, "steps", where, 0, budget),
-                         attempts_learned=integer_key(data, "attempts_learned", where, 0),
-                         attempts_lost=integer_key(data, "attempts_lost", where, 0), checkpoints=checkpoints)
 
 
 def load_method_evaluation(path: str | os.PathLike[str]) -> SavedMethodEvaluation:

@@ -26,7 +26,7 @@ from polymimic._native import __version__
 from polymimic.baselines.ppo import steps_to_reach
 from polymimic.baselines.tuning import validation_rank
 from polymimic.benchmark.config import BenchmarkConfig
-from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_practice, load_tuning
+from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_tuning
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.tasks import POLYMIMIC_METHODS, PRACTISED, final_lps, ppo_hyperparameters
 from polymimic.crowds import Crowd
@@ -34,6 +34,7 @@ from polymimic.datasets import load_demonstrations
 from polymimic.learning import LearningConfig, TrialResult
 from polymimic.plots import MeanSd
 from polymimic.ranking import kendall, spearman
+from polymimic.runs.practising import PracticeCurve, load_practice, summarise
 from polymimic.runs.stats import mean_sd
 
 __all__ = ["FORMAT", "VERSION", "MemberSummary", "MethodSummary", "PPOSummary", "PracticeSummary", "ProfileSummary",
@@ -96,15 +97,7 @@ class PPOSummary(MethodSummary):
     this profile (None: not within its budget)."""
 
 
-class PracticeSummary(TypedDict):
-    checkpoints: list[int]
-    steps: list[MeanSd]
-    """Steps played by each checkpoint (at most the checkpoint: a round's attempt that would pass
-    it waits for the next)."""
-    net_goals: list[MeanSd]
-    attempts_lost: int
-    """Attempts the tracker lost, over every practice (left out of learning, counted)."""
-    trials: int
+class PracticeSummary(PracticeCurve):
     steps_to_ppo: int | None
     """The first checkpoint whose mean net goals reach ppo's final mean (None: none does, or no ppo)."""
     ppo_steps_to_practice: list[int | None]
@@ -223,20 +216,16 @@ def _ppo_summary(curves: Sequence[Mapping[str, Any]], config: BenchmarkConfig, t
 def _practice_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str,
                       ppo_curves: Sequence[Mapping[str, Any]] | None) -> PracticeSummary:
     """The practised imitators' curves over their trials, and how they stand against ppo's."""
-    saved = [load_practice(run.require(run.practice_path(profile, s), "benchmark"))
-             for s in config.evaluated_seeds(PRACTISED)]
-    marks = [int(p["checkpoint"]) for p in saved[0]["checkpoints"]]
-    net = [mean_sd(p["checkpoints"][k]["net_goals"] for p in saved) for k in range(len(marks))]
-    steps_to_ppo = ppo_steps = None
+    curve = summarise([load_practice(run.require(run.practice_path(profile, s), "benchmark"))
+                       for s in config.evaluated_seeds(PRACTISED)])
+    marks, net = curve["checkpoints"], curve["net_goals"]
+    steps_to_ppo, ppo_steps = None, []
     if ppo_curves is not None:
         ppo_final = float(np.mean([c["checkpoints"][-1]["net_goals"] for c in ppo_curves]))
         steps_to_ppo = next((m for m, n in zip(marks, net) if n["mean"] is not None and n["mean"] >= ppo_final), None)
         practised = net[-1]["mean"]
         ppo_steps = [None if practised is None else steps_to_reach(c["checkpoints"], practised) for c in ppo_curves]
-    return PracticeSummary(checkpoints=marks,
-                           steps=[mean_sd(p["checkpoints"][k]["steps"] for p in saved) for k in range(len(marks))],
-                           net_goals=net, attempts_lost=sum(p["attempts_lost"] for p in saved), trials=len(saved),
-                           steps_to_ppo=steps_to_ppo, ppo_steps_to_practice=ppo_steps or [])
+    return PracticeSummary(**curve, steps_to_ppo=steps_to_ppo, ppo_steps_to_practice=ppo_steps)
 
 
 def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd,

@@ -16,15 +16,16 @@ from polymimic.benchmark.config import BenchmarkConfig
 from polymimic.crowds import Crowd
 from polymimic.field import Demonstration
 from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate, run_trial
-from polymimic.practice import practice
+from polymimic.runs.practising import PracticeInputs
 
 __all__ = ["POLYMIMIC_METHODS", "PRACTISED", "ProfileInputs", "Shared", "evaluation_task", "final_lps",
-           "ppo_hyperparameters", "ppo_task", "practice_task", "trial_task", "tuning_task"]
+           "ppo_hyperparameters", "ppo_task", "practice_inputs", "practised_evaluation", "trial_task", "tuning_task"]
 
 POLYMIMIC_METHODS = {"polymimic": ("improved", False), "polymimic_thesis_control": ("thesis", False),
                      "polymimic_uniform_lp": ("improved", True), "polymimic_practice": ("improved", False)}
 """polymimic's own methods: (control, whether every LP is held at 0.5). ``polymimic_practice`` is
-``polymimic``'s imitator after practice, evaluated by the practice stage (:func:`practice_task`)."""
+``polymimic``'s imitator after practice, evaluated by the practice stage
+(:func:`polymimic.runs.practising.practice_task`)."""
 
 PRACTISED = "polymimic_practice"
 
@@ -111,24 +112,23 @@ def _imitator(shared: Shared, profile: str, method: str, trial_json: str) -> Imi
                           body=shared.config.imitator_body())
 
 
-def practice_task(shared: Shared, job: tuple[str, int, str]) -> dict[str, Any]:
-    """``(profile, trial seed, the trial's JSON)`` → polymimic's imitator after that trial,
-    practising for ``practice_steps`` under the trial's seed (:func:`polymimic.practice.practice`):
-    its curve on the evaluation attempts, as the run directory keeps it, and (``"evaluation"``)
-    the practised policy's evaluation, as ``polymimic_practice``'s."""
-    profile, trial_seed, trial_json = job
-    settings, seeds = shared.config.benchmark, shared.config.seeds
-    result = practice(_imitator(shared, profile, "polymimic", trial_json), steps=settings.practice_steps,
-                      seed=trial_seed, evaluation_seed=seeds.evaluation,
-                      evaluation_attempts=settings.attempts_per_configuration, field_config=shared.config.field,
-                      segmenter=dataclasses.asdict(shared.config.segmenter))
-    final = evaluate(result.policy, attempts_per_configuration=settings.attempts_per_configuration,
-                     seed=seeds.evaluation, field_config=shared.config.field)
-    return {"profile": profile, "trial_seed": trial_seed, "evaluation_seed": seeds.evaluation,
-            "attempts": 2 * settings.attempts_per_configuration, "budget": settings.practice_steps,
-            "steps": result.steps, "attempts_learned": len(result.attempts), "attempts_lost": result.attempts_lost,
-            "checkpoints": [p.to_dict() for p in result.curve],
-            "evaluation": _evaluation(shared, profile, PRACTISED, trial_seed, final)}
+def practice_inputs(shared: Shared) -> PracticeInputs:
+    """What every practice of the benchmark shares (:mod:`polymimic.runs.practising`)."""
+    config = shared.config
+    return PracticeInputs(recognizer=shared.recognizer, learning=shared.learning(False),
+                          demonstrations={name: p.segmented for name, p in shared.profiles.items()},
+                          body=config.imitator_body(), field=config.field,
+                          segmenter=dataclasses.asdict(config.segmenter), steps=config.benchmark.practice_steps,
+                          evaluation_seed=config.seeds.evaluation,
+                          attempts_per_configuration=config.benchmark.attempts_per_configuration)
+
+
+def practised_evaluation(shared: Shared, result: dict[str, Any]) -> dict[str, Any]:
+    """A practice's final outcomes (popped from ``result``) as ``polymimic_practice``'s evaluation."""
+    outcomes = result.pop("outcomes")
+    return {"profile": result["group"], "method": PRACTISED, "trial_seed": result["trial_seed"],
+            "seed": shared.config.seeds.evaluation, "goals": outcomes.count("goal"),
+            "own_goals": outcomes.count("own_goal"), "attempts": len(outcomes), "outcomes": outcomes}
 
 
 def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[str, Any] | None]) -> dict[str, Any]:

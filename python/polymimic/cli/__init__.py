@@ -5,8 +5,9 @@ is given) and writes report.html beside results.json; `polymimic config` prints 
 `polymimic benchmark` compares polymimic with the baselines on crowds of demonstrators and
 writes benchmark.html beside benchmark.json (runs/benchmark/<timestamp> unless --run-dir).
 `polymimic matrix` shows who learns what from whom: imitator bodies against sets of demonstrators
-(runs/matrix/<timestamp> unless --run-dir). `polymimic import-tracks` turns a tracker log into a
-run's demonstrations.
+(runs/matrix/<timestamp> unless --run-dir). `polymimic practice` lets a finished run's imitators
+keep learning by playing, and writes their curves beside its results. `polymimic import-tracks`
+turns a tracker log into a run's demonstrations.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import time
 
 from polymimic import __version__
 from polymimic._native import PolymimicError
-from polymimic.cli import benchmark, demo, export, import_tracks, matrix, replay, stages
+from polymimic.cli import benchmark, demo, export, import_tracks, matrix, practice, replay, stages
 from polymimic.runs.config import ConfigError
 
 __all__ = ["EXIT_INTERRUPTED", "EXIT_USAGE", "build_parser", "main"]
@@ -32,7 +33,7 @@ def build_parser() -> argparse.ArgumentParser:
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
-    for command in (demo, stages, replay, export, benchmark, matrix, import_tracks):
+    for command in (demo, stages, replay, export, benchmark, matrix, practice, import_tracks):
         command.add(commands)
     return parser
 

@@ -58,25 +58,26 @@ def curve_json(points: Sequence[CurvePoint], **about: Any) -> str:
 
 def plot_curves(path: str | os.PathLike[str], curves: dict[str, Sequence[tuple[float, float]]], *,
                 title: str = "Net goals on the evaluation attempts") -> None:
-    """Curves of (environment steps, net goals) per method on one plot, steps on a symlog axis so
-    a practice budget of thousands and PPO's million share it; written as PNG."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    """Curves of (environment steps, net goals) per name on one plot, written as PNG; steps on a
+    scale linear to 1 000 and logarithmic beyond, so a practice budget of thousands and ppo's
+    million share it."""
+    from matplotlib.figure import Figure
+    from matplotlib.ticker import StrMethodFormatter
 
-    figure, axes = plt.subplots(figsize=(7, 4))
+    from polymimic.plots import save_figure
+
+    figure = Figure(figsize=(7.0, 4.0), layout="constrained")
+    axes = figure.add_subplot()
     for name, points in curves.items():
-        steps, net = zip(*points) if points else ((), ())
-        axes.plot(steps, net, marker="o", label=name)
+        axes.plot([p[0] for p in points], [p[1] for p in points], marker="o", markersize=3, label=name)
     axes.set_xscale("symlog", linthresh=1_000)
-    axes.set_xlabel("environment steps (seconds of play)")
-    axes.set_ylabel("net goals per 50 attempts")
-    axes.set_title(title)
-    axes.grid(True, alpha=0.3)
-    axes.legend()
-    figure.tight_layout()
-    figure.savefig(os.fspath(path), dpi=120)
-    plt.close(figure)
+    axes.xaxis.set_major_formatter(StrMethodFormatter("{x:,.0f}"))
+    axes.set_xlabel("environment steps (one second of play each)")
+    axes.set_ylabel("net goals on the evaluation attempts")
+    axes.set_title(title, fontsize="medium")
+    axes.grid(alpha=0.3)
+    axes.legend(fontsize="x-small")
+    save_figure(figure, path)
 
 
 def write_curve(directory: str | os.PathLike[str], points: Sequence[CurvePoint], **about: Any) -> None:

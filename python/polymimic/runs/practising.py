@@ -1,0 +1,183 @@
+"""Practice on a run's imitators: what the benchmark's practice stage and ``polymimic practice``
+share — the task a worker runs, the file each practice leaves, and their summary.
+
+A practice is one piece of work (an interrupted one starts again): the imitator of one trial of
+one group (a benchmark's profile or a reproduction's experiment) practises for a budget of
+environment steps under the trial's seed (:func:`polymimic.practice.practice`) and is scored at
+every checkpoint on the run's evaluation attempts.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import os
+import pathlib
+import sys
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any, TypedDict
+
+from polymimic._atomic import atomic_write_text
+from polymimic._native import ModelFileError, PrimitiveRecognizer
+from polymimic.bodies import WheeledBody
+from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate
+from polymimic.plots import MeanSd
+from polymimic.practice import practice
+from polymimic.practice.curve import plot_curves
+from polymimic.runs.backends import TaskRunner
+from polymimic.runs.files import integer_key, json_object, name_key
+from polymimic.runs.progress import progress
+from polymimic.runs.stats import mean_sd
+
+__all__ = ["CHECKPOINT_KEYS", "FORMAT", "VERSION", "PracticeCurve", "PracticeInputs", "SavedPractice", "load_practice",
+           "practice_task", "practise_run", "summarise"]
+
+CHECKPOINT_KEYS = ("checkpoint", "steps", "net_goals", "goals", "own_goals", "attempts_learned", "attempts_lost")
+"""A checkpoint's keys in a practice file (:class:`polymimic.practice.CurvePoint`'s)."""
+
+
+@dataclasses.dataclass(frozen=True)
+class PracticeInputs:
+    """What every practice of a run shares: the imitator's recogniser, learning constants and
+    body, each group's segmented demonstrations, the field, the segmenter's settings, the budget
+    and the evaluation attempts."""
+
+    recognizer: PrimitiveRecognizer
+    learning: LearningConfig
+    demonstrations: Mapping[str, SegmentedDemonstrations]
+    body: str | WheeledBody
+    field: dict[str, Any]
+    segmenter: dict[str, Any]
+    steps: int
+    evaluation_seed: int
+    attempts_per_configuration: int
+
+
+def practice_task(inputs: PracticeInputs, job: tuple[str, int, str]) -> dict[str, Any]:
+    """``(group, trial seed, the trial's JSON)`` → the improved imitator of that trial,
+    practising: its file's contents, and (``"outcomes"``) the practised policy's outcomes on the
+    evaluation attempts."""
+    group, trial_seed, trial_json = job
+    policy = ImitatorPolicy(TrialResult.from_json(trial_json), recognizer=inputs.recognizer, config=inputs.learning,
+                            control="improved", demonstrations=inputs.demonstrations[group], body=inputs.body)
+    result = practice(policy, steps=inputs.steps, seed=trial_seed, evaluation_seed=inputs.evaluation_seed,
+                      evaluation_attempts=inputs.attempts_per_configuration, field_config=inputs.field,
+                      segmenter=inputs.segmenter)
+    final = evaluate(result.policy, attempts_per_configuration=inputs.attempts_per_configuration,
+                     seed=inputs.evaluation_seed, field_config=inputs.field)
+    return {"group": group, "trial_seed": trial_seed, "evaluation_seed": inputs.evaluation_seed,
+            "attempts": 2 * inputs.attempts_per_configuration, "budget": inputs.steps, "steps": result.steps,
+            "attempts_learned": len(result.attempts), "attempts_lost": result.attempts_lost,
+            "checkpoints": [p.to_dict() for p in result.curve], "outcomes": [a.outcome for a in final.attempts]}
+
+
+class SavedPractice(TypedDict):
+    """One practice as its file keeps it: the group, the trial, the budget and every checkpoint."""
+
+    group: str
+    trial_seed: int
+    evaluation_seed: int
+    attempts: int
+    budget: int
+    steps: int
+    attempts_learned: int
+    attempts_lost: int
+    checkpoints: list[dict[str, int]]
+
+
+def load_practice(path: str | os.PathLike[str]) -> SavedPractice:
+    """A practice file, checked: checkpoints rising from 0 to the budget, none played beyond its
+    checkpoint, each one's goals and own goals within the attempts and its net goals their
+    difference."""
+    where, data = os.fspath(path), json_object(path, "practice")
+    attempts, budget = integer_key(data, "attempts", where, 1), integer_key(data, "budget", where, 1)
+    checkpoints = data.get("checkpoints")
+    if not isinstance(checkpoints, list) or not checkpoints or not all(isinstance(c, dict) for c in checkpoints):
+        raise ModelFileError(f"{where}: key 'checkpoints' must list objects, got {checkpoints!r}")
+    marks = []
+    for index, point in enumerate(checkpoints):
+        at = f"{where}: checkpoint {index}"
+        values = {key: integer_key(point, key, at, 0) for key in CHECKPOINT_KEYS}
+        if values["steps"] > values["checkpoint"] or values["goals"] + values["own_goals"] > attempts or \
+                values["net_goals"] != values["goals"] - values["own_goals"]:
+            raise ModelFileError(f"{at}: its steps, goals, own goals and net goals disagree ({point!r})")
+        marks.append(values["checkpoint"])
+    if marks[0] != 0 or marks != sorted(set(marks)) or marks[-1] != budget:
+        raise ModelFileError(f"{where}: the checkpoints must rise from 0 to the budget {budget}, got {marks}")
+    return SavedPractice(group=name_key(data, "group", where), trial_seed=integer_key(data, "trial_seed", where, 0),
+                         evaluation_seed=integer_key(data, "evaluation_seed", where, 0), attempts=attempts,
+                         budget=budget, steps=integer_key(data, "steps", where, 0, budget),
+                         attempts_learned=integer_key(data, "attempts_learned", where, 0),
+                         attempts_lost=integer_key(data, "attempts_lost", where, 0), checkpoints=checkpoints)
+
+
+class PracticeCurve(TypedDict):
+    checkpoints: list[int]
+    steps: list[MeanSd]
+    """Steps played by each checkpoint (at most the checkpoint: a round's attempt that would pass
+    it waits for the next)."""
+    net_goals: list[MeanSd]
+    attempts_lost: int
+    """Attempts the tracker lost, over every practice (left out of learning, counted)."""
+    trials: int
+
+
+def summarise(saved: Sequence[SavedPractice]) -> PracticeCurve:
+    """The practices of one group: mean (sd) over them at every checkpoint."""
+    marks = [int(p["checkpoint"]) for p in saved[0]["checkpoints"]]
+    at = range(len(marks))
+    return PracticeCurve(checkpoints=marks, steps=[mean_sd(p["checkpoints"][k]["steps"] for p in saved) for k in at],
+                         net_goals=[mean_sd(p["checkpoints"][k]["net_goals"] for p in saved) for k in at],
+                         attempts_lost=sum(p["attempts_lost"] for p in saved), trials=len(saved))
+
+
+FORMAT, VERSION = "polymimic.practice", 1
+
+
+def practise_run(folder: pathlib.Path, inputs: PracticeInputs, jobs: Sequence[tuple[str, int]],
+                 trial_json: Callable[[str, int], str], runner: TaskRunner, *, kind: str,
+                 quiet: bool = False) -> tuple[pathlib.Path, int]:
+    """Practise the imitators of ``jobs`` (group, trial seed) into ``folder``, each practice's
+    file at ``<group>/practice_<seed>.json`` as it finishes, redoing only what is missing or
+    damaged; then ``practice.json`` (every group's curve), ``practice.csv`` and
+    ``practice_curve.png`` beside them. Returns the summary's path and how many practices ran."""
+    def path(group: str, seed: int) -> pathlib.Path:
+        return folder / group / f"practice_{seed}.json"
+
+    def done(group: str, seed: int) -> bool:
+        if not path(group, seed).is_file():
+            return False
+        try:
+            saved = load_practice(path(group, seed))
+        except ModelFileError as error:
+            print(f"warning: {error}; practising again", file=sys.stderr)
+            return False
+        return (saved["group"], saved["trial_seed"], saved["evaluation_seed"], saved["attempts"], saved["budget"]) == (
+            group, seed, inputs.evaluation_seed, 2 * inputs.attempts_per_configuration, inputs.steps)
+
+    todo = [(group, seed, trial_json(group, seed)) for group, seed in jobs if not done(group, seed)]
+    for group in {group for group, _ in jobs}:
+        (folder / group).mkdir(parents=True, exist_ok=True)
+    with progress(total=len(todo), desc="practice", quiet=quiet) as bar:
+        for _, result in runner.map(practice_task, inputs, todo):
+            result.pop("outcomes")
+            atomic_write_text(path(result["group"], result["trial_seed"]), json.dumps(result, sort_keys=True) + "\n")
+            bar.update(1)
+    groups = dict.fromkeys(group for group, _ in jobs)
+    curves = {group: summarise([load_practice(path(group, seed)) for g, seed in jobs if g == group])
+              for group in groups}
+    summary = {"format": FORMAT, "version": VERSION, "run": kind, "steps": inputs.steps,
+               "evaluation_seed": inputs.evaluation_seed, "attempts": 2 * inputs.attempts_per_configuration,
+               "groups": curves}
+    atomic_write_text(folder / "practice.json", json.dumps(summary, indent=1) + "\n")
+    rows = ["group,checkpoint,steps_mean,net_goals_mean,net_goals_sd,trials"]
+    for group, curve in curves.items():
+        for mark, steps, net in zip(curve["checkpoints"], curve["steps"], curve["net_goals"]):
+            rows.append(f"{group},{mark},{steps['mean']:.1f},{net['mean']:.2f},{net['sd']:.2f},{curve['trials']}")
+    atomic_write_text(folder / "practice.csv", "\n".join(rows) + "\n")
+    points: dict[str, Sequence[tuple[float, float]]] = {
+        group: [(m, float(n["mean"] or 0.0)) for m, n in zip(c["checkpoints"], c["net_goals"])]
+        for group, c in curves.items()}
+    plot_curves(folder / "practice_curve.png", points,
+                title=f"Net goals over {inputs.steps:,} steps of practice, mean over each group's trials")
+    return folder / "practice.json", len(todo)

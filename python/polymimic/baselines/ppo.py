@@ -31,7 +31,8 @@ import numpy as np
 from polymimic.baselines.features import FEATURE_NAMES, check_observations, features
 from polymimic.baselines.files import write_policy_file
 
-__all__ = ["FEATURE_SCALE", "Checkpoint", "PPOPolicy", "available", "fit", "learning_curve", "steps_to_reach"]
+__all__ = ["FEATURE_SCALE", "Checkpoint", "PPOPolicy", "available", "fit", "learning_curve", "new_model", "scaled",
+           "steps_to_reach"]
 
 FEATURE_SCALE = 500.0
 """Millimetre features are divided by this (angles' sines and cosines are left as they are)."""
@@ -81,7 +82,9 @@ def steps_to_reach(curve: list[Checkpoint] | list[dict[str, Any]], net_goals: fl
     return None
 
 
-def _scaled(observations: np.ndarray, feature_set: str) -> np.ndarray:
+def scaled(observations: np.ndarray, feature_set: str) -> np.ndarray:
+    """The ``feature_set`` features of observations as the network sees them: millimetres over
+    :data:`FEATURE_SCALE`, as float32."""
     values = features(observations, feature_set=feature_set)
     millimetres = np.array([name.endswith("_mm") for name in FEATURE_NAMES[feature_set]])
     values[:, millimetres] = values[:, millimetres] / FEATURE_SCALE
@@ -91,8 +94,9 @@ def _scaled(observations: np.ndarray, feature_set: str) -> np.ndarray:
 class PPOPolicy:
     """A trained stable-baselines3 PPO model, acting deterministically on observation batches."""
 
-    def __init__(self, model: Any, *, feature_set: str, frames_per_action: int, total_timesteps: int) -> None:
-        self.method = "ppo"
+    def __init__(self, model: Any, *, feature_set: str, frames_per_action: int, total_timesteps: int,
+                 method: str = "ppo") -> None:
+        self.method = method
         self.model = model
         self.feature_set = feature_set
         self.total_timesteps = int(total_timesteps)
@@ -106,14 +110,14 @@ class PPOPolicy:
         obs = check_observations(observations)
         if len(obs) == 0:
             return np.empty(0, dtype=np.int64)
-        actions, _ = self.model.predict(_scaled(obs, self.feature_set), deterministic=True)
+        actions, _ = self.model.predict(scaled(obs, self.feature_set), deterministic=True)
         return np.asarray(actions, dtype=np.int64).reshape(len(obs))
 
     def reset(self) -> None:
         """Nothing to restart: the policy acts deterministically."""
 
     def save(self, path: str | os.PathLike[str]) -> None:
-        write_policy_file(path, {"kind": "ppo", "method": "ppo", "feature_set": self.feature_set,
+        write_policy_file(path, {"kind": "ppo", "method": self.method, "feature_set": self.feature_set,
                                  "frames_per_action": self._frames_per_action,
                                  "total_timesteps": self.total_timesteps}, self)
 
@@ -134,11 +138,13 @@ class PPOPolicy:
 
 def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_set: str = "goal_relative",
         seed: int = 0, field_config: dict[str, Any] | str | None = None, callback: Any = None,
-        **ppo_kwargs: Any) -> PPOPolicy:
+        before_learning: Callable[[Any], None] | None = None, method: str = "ppo", **ppo_kwargs: Any) -> PPOPolicy:
     """PPO (``stable_baselines3.PPO("MlpPolicy", …)``) trained for ``total_timesteps`` steps.
 
     ``ppo_kwargs`` go to ``PPO`` (``n_steps``, ``learning_rate``, …); ``callback`` (a
-    stable-baselines3 callback) to ``PPO.learn``, to look at the model while it learns.
+    stable-baselines3 callback) to ``PPO.learn``, to look at the model while it learns;
+    ``before_learning(model)`` runs on the new model before it learns (``ppo_bc``'s cloning,
+    :mod:`polymimic.baselines.ppo_bc`), and ``method`` names the policy.
 
     Raises
     ------
@@ -150,6 +156,20 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
     _require()
     if isinstance(total_timesteps, bool) or not isinstance(total_timesteps, (int, np.integer)) or total_timesteps < 1:
         raise ValueError(f"total_timesteps must be an integer ≥ 1 (environment steps), got {total_timesteps!r}")
+    model = new_model(frames_per_action=frames_per_action, feature_set=feature_set, seed=seed,
+                      field_config=field_config, **ppo_kwargs)
+    if before_learning is not None:
+        before_learning(model)
+    model.learn(total_timesteps=int(total_timesteps), callback=callback)
+    return PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
+                     total_timesteps=total_timesteps, method=method)
+
+
+def new_model(*, frames_per_action: int = 30, feature_set: str = "goal_relative", seed: int = 0,
+              field_config: dict[str, Any] | str | None = None, **ppo_kwargs: Any) -> Any:
+    """A new, untrained ``stable_baselines3.PPO`` on ``PenaltyKick-v0``, one environment per
+    field configuration, seeing the scaled ``feature_set`` features."""
+    _require()
     import gymnasium
     from stable_baselines3 import PPO  # type: ignore[import-not-found, unused-ignore]
     from stable_baselines3.common.logger import Logger  # type: ignore[import-not-found, unused-ignore]
@@ -160,11 +180,11 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
     class Scaled(gymnasium.ObservationWrapper):  # type: ignore[misc, unused-ignore]
         def __init__(self, env: Any) -> None:
             super().__init__(env)
-            size = _scaled(np.zeros((1, 5)), feature_set).shape[1]
+            size = scaled(np.zeros((1, 5)), feature_set).shape[1]
             self.observation_space = gymnasium.spaces.Box(-np.inf, np.inf, shape=(size,), dtype=np.float32)
 
         def observation(self, observation: np.ndarray) -> np.ndarray:
-            return np.asarray(_scaled(np.asarray(observation, dtype=np.float64)[None, :], feature_set)[0])
+            return np.asarray(scaled(np.asarray(observation, dtype=np.float64)[None, :], feature_set)[0])
 
     def make(configuration: int) -> Any:
         return lambda: Scaled(PenaltyKickEnv(configuration=configuration, frames_per_action=frames_per_action,
@@ -175,9 +195,7 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
     model = PPO("MlpPolicy", env, seed=seed, verbose=0, device="cpu", **ppo_kwargs)
     # Its own quiet logger would make an empty SB3-<time> folder in the temporary directory.
     model.set_logger(Logger(folder=None, output_formats=[]))
-    model.learn(total_timesteps=int(total_timesteps), callback=callback)
-    return PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
-                     total_timesteps=total_timesteps)
+    return model
 
 
 def _checkpoints(every: int, evaluate: Callable[[Any], None]) -> Any:
@@ -217,6 +235,7 @@ def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_config
                    evaluation_seed: int = 0, seed: int = 0, frames_per_action: int = 30,
                    feature_set: str = "goal_relative", field_config: dict[str, Any] | str | None = None,
                    on_checkpoint: Callable[[list[Checkpoint]], None] | None = None,
+                   before_learning: Callable[[Any], None] | None = None, method: str = "ppo",
                    **ppo_kwargs: Any) -> tuple[PPOPolicy, list[Checkpoint], Any]:
     """PPO trained as :func:`fit` trains it, and played on the evaluation attempts of
     ``evaluation_seed`` (:func:`polymimic.baselines.evaluate_policy`) before training, at the
@@ -249,7 +268,7 @@ def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_config
 
     def evaluate(model: Any) -> None:
         policy = PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
-                           total_timesteps=model.num_timesteps)
+                           total_timesteps=model.num_timesteps, method=method)
         played = evaluate_policy(policy, attempts_per_configuration=attempts_per_configuration,
                                  seed=evaluation_seed, field_config=field_config)
         latest[:] = [played]
@@ -259,5 +278,6 @@ def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_config
             on_checkpoint(curve)
 
     policy = fit(total_timesteps=total_timesteps, frames_per_action=frames_per_action, feature_set=feature_set,
-                 seed=seed, field_config=field_config, callback=_checkpoints(int(eval_every), evaluate), **ppo_kwargs)
+                 seed=seed, field_config=field_config, callback=_checkpoints(int(eval_every), evaluate),
+                 before_learning=before_learning, method=method, **ppo_kwargs)
     return policy, curve, latest[0]

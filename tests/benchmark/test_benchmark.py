@@ -388,3 +388,40 @@ def test_export_reads_the_config_asked_for_as_the_benchmark_does(benchmarked, ti
     assert main(["export", "--run-dir", str(benchmarked), "--quick", *WHO]) == 2
     err = capsys.readouterr().err.strip()
     assert "was made with a different config" in err and len(err.splitlines()) == 1
+
+
+PPO_BC = """
+[benchmark]
+methods = ["polymimic", "polymimic_practice", "ppo_bc"]
+ppo_timesteps = 4096
+ppo_eval_every = 4096
+ppo_runs = 1
+"""
+
+
+def test_ppo_bc_clones_each_crowd_then_learns_and_stands_beside_practice(tiny_toml, tmp_path, capsys):
+    pytest.importorskip("stable_baselines3")
+    path = tmp_path / "ppo_bc.toml"
+    path.write_text(tiny_toml.read_text().replace("[benchmark]\n", PPO_BC.strip() + "\n", 1))
+    run_dir = tmp_path / "run"
+    assert main(["benchmark", "--config", str(path), "--run-dir", str(run_dir), "--quiet", "--workers", "2"]) == 0
+    run, summary = BenchmarkDir(run_dir), _summary(run_dir)
+    for name, profile in summary["profiles"].items():
+        tuning = json.loads(run.ppo_bc_tuning_path(name).read_text())
+        curve = json.loads(run.ppo_bc_curve_path(name, 0).read_text())
+        # The cloning chosen on validation is the one the run cloned; the curve starts from it.
+        assert curve["pretraining"] == tuning["chosen"] and len(tuning["scores"]) == 1
+        assert [c["env_steps"] for c in curve["checkpoints"]] == [0, 4096]
+        entry = profile["methods"]["ppo_bc"]
+        assert entry["net_goals"]["mean"] == curve["checkpoints"][-1]["net_goals"]
+        assert entry["hyperparameters"]["cloning_epochs"] == tuning["chosen"]["epochs"]
+        practised = profile["practice"]["net_goals"][-1]["mean"]
+        expected = next((c["env_steps"] for c in curve["checkpoints"] if c["net_goals"] >= practised), None)
+        assert profile["practice"]["ppo_bc_steps_to_practice"] == [expected]
+    assert "ppo_bc to practice's final" in (run_dir / "benchmark.md").read_text()
+    # A lost curve is the only thing redone, to the same bits.
+    before = summary
+    run.ppo_bc_curve_path("pair", 0).unlink()
+    assert main(["benchmark", "--run-dir", str(run_dir), "--quiet", "--workers", "1"]) == 0
+    assert run.manifest()["stages"]["ppo_bc"]["made"] == 1
+    assert _summary(run_dir) == before

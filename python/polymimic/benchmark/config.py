@@ -36,10 +36,12 @@ METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "pol
            "bc", "bc_best", "random")
 """The methods a benchmark compares by default (SPEC §6.2, §7.2)."""
 
-OPTIONAL_METHODS = ("ppo",)
+OPTIONAL_METHODS = ("ppo", "ppo_bc")
 """Methods run only when named: ``ppo`` learns from the reward rather than from demonstrations,
 needs stable-baselines3 (``pip install "polymimic[rl]"``) and took 13 minutes of one core per
-million environment steps in the README's run (:mod:`polymimic.baselines.ppo`)."""
+million environment steps in the README's run (:mod:`polymimic.baselines.ppo`); ``ppo_bc``
+clones each crowd's commands first, then learns from the reward as ``ppo`` does, so it runs
+once per profile (:mod:`polymimic.baselines.ppo_bc`)."""
 
 TRIAL_INDEPENDENT = ("bc", "bco", "bc_best", "random")
 """Baselines that learn the same thing in every trial: the crowd's demonstrations, unweighted.
@@ -75,7 +77,7 @@ class BenchmarkSettings:
     ppo_timesteps: int = _doc("environment steps each ppo run learns from (when methods name ppo)", 1_000_000)
     ppo_eval_every: int = _doc("environment steps between ppo's checkpoints on the evaluation attempts", 50_000)
     ppo_runs: int = _doc("ppo training runs, seeds 0, 1, … (ppo learns no crowd's data: its runs serve every "
-                         "profile)", 1)
+                         "profile; ppo_bc runs as many per profile)", 1)
     practice_steps: int = _doc("environment steps polymimic_practice's imitators practise for, after learning "
                                "(polymimic.practice; scored at 0, 1000, 2500, 5000, 10000, 25000 and 50000 steps "
                                "within it)", 25_000)
@@ -114,9 +116,10 @@ class BenchmarkConfig:
     profiles: dict[str, Crowd] = dataclasses.field(default_factory=lambda: dict(PROFILES))
 
     def __post_init__(self) -> None:
-        if "ppo" in self.benchmark.methods and not self.run.thesis_imitator:
-            raise ConfigError(f"[benchmark] methods: ppo learns the Lego robot's policy only; the imitator is the "
-                              f"{self.run.imitator.body}")
+        for method in OPTIONAL_METHODS:
+            if method in self.benchmark.methods and not self.run.thesis_imitator:
+                raise ConfigError(f"[benchmark] methods: {method} learns the Lego robot's policy only; the imitator "
+                                  f"is the {self.run.imitator.body}")
         for name in self.benchmark.profiles:
             if name not in self.profiles:
                 raise ConfigError(f"[benchmark] profiles: unknown profile {name!r}; expected one of "

@@ -18,7 +18,9 @@ arrives, and a rerun redoes only what is missing or damaged):
 7. **ppo** — where the methods name it, each ppo run, learning from the reward and played on
    the evaluation attempts at every checkpoint (a run is one piece of work: an interrupted one
    starts again);
-8. **report** — ``benchmark.json``, ``benchmark.md``, ``benchmark.html`` and the plots.
+8. **ppo_bc** — where the methods name it, each profile's cloning chosen on validation attempts,
+   then each ppo_bc run (cloned, then learning from the reward), as ppo's;
+9. **report** — ``benchmark.json``, ``benchmark.md``, ``benchmark.html`` and the plots.
 """
 
 from __future__ import annotations
@@ -33,7 +35,13 @@ from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
 from polymimic.benchmark.config import OPTIONAL_METHODS, BenchmarkConfig
 from polymimic.benchmark.figures import draw_figures
-from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_tuning
+from polymimic.benchmark.files import (
+    load_method_evaluation,
+    load_ppo_bc_curve,
+    load_ppo_bc_tuning,
+    load_ppo_curve,
+    load_tuning,
+)
 from polymimic.benchmark.report import benchmark_html, benchmark_markdown
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.summary import gather
@@ -44,6 +52,8 @@ from polymimic.benchmark.tasks import (
     Shared,
     dumps,
     evaluation_task,
+    ppo_bc_task,
+    ppo_bc_tuning_task,
     ppo_task,
     practice_inputs,
     practised_evaluation,
@@ -80,11 +90,11 @@ class Benchmark(Stepped):
     @staticmethod
     def check_extras(config: BenchmarkConfig) -> None:
         """A :class:`ConfigError` if ``config`` names a method whose optional extra is missing."""
-        if "ppo" in config.benchmark.methods:
+        if {"ppo", "ppo_bc"} & set(config.benchmark.methods):
             from polymimic.baselines import ppo
 
             if not ppo.available():
-                raise ConfigError("[benchmark] methods: ppo needs stable-baselines3 and torch: "
+                raise ConfigError("[benchmark] methods: ppo and ppo_bc need stable-baselines3 and torch: "
                                   "pip install \"polymimic[rl]\"")
 
     def run_all(self) -> float:
@@ -101,6 +111,8 @@ class Benchmark(Stepped):
             self._step("practice", lambda: self.practice(shared))
         if "ppo" in self.config.benchmark.methods:
             self._step("ppo", lambda: self.ppo(shared))
+        if "ppo_bc" in self.config.benchmark.methods:
+            self._step("ppo_bc", lambda: self.ppo_bc(shared))
         self._step("report", self.report)
         return time.perf_counter() - started
 
@@ -282,19 +294,48 @@ class Benchmark(Stepped):
                 bar.update(1)
         return len(jobs)
 
+    # 8. ppo_bc: each crowd's commands cloned, then the reward.
+
+    def _ppo_bc_done(self, profile: str, seed: int, chosen: dict[str, Any]) -> bool:
+        if not self.run.ppo_bc_policy_path(profile, seed).is_file():
+            return False
+        saved = self.run.loaded(self.run.ppo_bc_curve_path(profile, seed), load_ppo_bc_curve)
+        settings = self.config.benchmark
+        return saved is not None and saved["pretraining"] == chosen and (
+            saved["seed"], saved["evaluation_seed"], saved["attempts"], saved["total_timesteps"],
+            saved["eval_every"]) == (seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
+                                     settings.ppo_timesteps, settings.ppo_eval_every)
+
+    def ppo_bc(self, shared: Shared) -> int:
+        profiles = [crowd.name for crowd in self.config.crowds()]
+        untuned = [p for p in profiles if not self.run.finished(self.run.ppo_bc_tuning_path(p), load_ppo_bc_tuning)]
+        with progress(total=len(untuned), desc="ppo_bc tune", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(ppo_bc_tuning_task, shared, untuned):
+                atomic_write_text(self.run.ppo_bc_tuning_path(result["profile"]), dumps(result))
+                bar.update(1)
+        chosen = {p: load_ppo_bc_tuning(self.run.ppo_bc_tuning_path(p))["chosen"] for p in profiles}
+        jobs = [(p, seed, chosen[p]) for p in profiles for seed in range(self.config.benchmark.ppo_runs)
+                if not self._ppo_bc_done(p, seed, chosen[p])]
+        with progress(total=len(jobs), desc="ppo_bc", quiet=self.quiet) as bar:
+            for (profile, seed, _), result in self.runner.map(ppo_bc_task, shared, jobs):
+                result.pop("policy").save(self.run.ppo_bc_policy_path(profile, seed))  # the curve marks done
+                atomic_write_text(self.run.ppo_bc_curve_path(profile, seed), dumps(result))
+                bar.update(1)
+        return len(untuned) + len(jobs)
+
     def _write_evaluation(self, result: dict[str, Any]) -> None:
         path = self.run.evaluation_path(result["profile"], result["method"], result["trial_seed"])
         atomic_write_text(path, dumps(result))
 
 
-    # 8. The summary and the report.
+    # 9. The summary and the report.
 
     def report(self) -> int:
         summary = gather(self.run, self.config)
         atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
         draw_figures(summary, self.run.plots)
         stages = self.run.manifest()["stages"]
-        steps = ("recognise", "record", "learn", "tune", "evaluate", "practice", "ppo")
+        steps = ("recognise", "record", "learn", "tune", "evaluate", "practice", "ppo", "ppo_bc")
         seconds = {name: float(stages[name]["seconds"]) for name in steps
                    if isinstance(stages.get(name, {}).get("seconds"), (int, float))}
         markdown = benchmark_markdown(summary, seconds=seconds)

@@ -10,8 +10,8 @@ from polymimic._native import ModelFileError
 from polymimic.benchmark.config import METHODS
 from polymimic.runs.files import checked_outcomes, checked_tuning, integer_key, json_object, name_key
 
-__all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_method_evaluation", "load_ppo_curve",
-           "load_tuning"]
+__all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_method_evaluation", "load_ppo_bc_curve",
+           "load_ppo_bc_tuning", "load_ppo_curve", "load_tuning"]
 
 
 class SavedMethodEvaluation(TypedDict):
@@ -95,3 +95,27 @@ def load_ppo_curve(path: str | os.PathLike[str]) -> SavedPPOCurve:
                          evaluation_seed=integer_key(data, "evaluation_seed", where, 0), attempts=attempts,
                          total_timesteps=total, eval_every=integer_key(data, "eval_every", where, 1),
                          checkpoints=checkpoints)
+
+
+def load_ppo_bc_tuning(path: str | os.PathLike[str]) -> dict[str, Any]:
+    """ppo_bc's cloning tuning, checked: a chosen cloning among its scored candidates."""
+    where, data = os.fspath(path), json_object(path, "ppo_bc tuning")
+    chosen, scores = data.get("chosen"), data.get("scores")
+    if not isinstance(chosen, dict) or set(chosen) != {"epochs", "learning_rate", "batch_size"}:
+        raise ModelFileError(f"{where}: key 'chosen' must be a cloning (epochs, learning_rate, batch_size), "
+                             f"got {chosen!r}")
+    if not isinstance(scores, list) or not any(isinstance(s, dict) and {**s, **chosen} == s for s in scores):
+        raise ModelFileError(f"{where}: key 'scores' must list the candidates, the chosen one among them")
+    name_key(data, "profile", where)
+    integer_key(data, "validation_attempts", where, 1)
+    return data
+
+
+def load_ppo_bc_curve(path: str | os.PathLike[str]) -> dict[str, Any]:
+    """A ppo_bc run's curve, checked as a ppo curve is, with its profile and the cloning it ran."""
+    where, data = os.fspath(path), json_object(path, "ppo_bc curve")
+    pretraining = data.get("pretraining")
+    if not isinstance(pretraining, dict) or set(pretraining) != {"epochs", "learning_rate", "batch_size"}:
+        raise ModelFileError(f"{where}: key 'pretraining' must be a cloning (epochs, learning_rate, batch_size), "
+                             f"got {pretraining!r}")
+    return {**load_ppo_curve(path), "profile": name_key(data, "profile", where), "pretraining": pretraining}

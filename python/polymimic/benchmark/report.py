@@ -103,14 +103,20 @@ def _practice_rows(summary: Mapping[str, Any]) -> list[str]:
     for name, practice in profiles.items():
         lines.append(f"| {name} | " + " | ".join(msd(n) for n in practice["net_goals"])
                      + f" | {practice['attempts_lost']} |")
-    if "ppo" in summary:
-        lines += ["", "Against ppo: the first practice checkpoint reaching ppo's final net goals, and the steps each "
-                      "ppo run took to first reach the practised net goals.", "",
-                  "| profile | practice to ppo's final | ppo to practice's final |", "| --- | --- | --- |"]
+    def steps(reached: list[int | None]) -> str:
+        return ", ".join("never" if s is None else f"{s:,}" for s in reached) or "n/a"
+
+    if "ppo" in summary or any(p.get("ppo_bc_steps_to_practice") for p in profiles.values()):
+        lines += ["", "Against ppo and ppo_bc: the first practice checkpoint reaching ppo's final net goals, and the "
+                      "steps each ppo and ppo_bc run took to first reach the practised net goals (never: not within "
+                      "its budget).", "",
+                  "| profile | practice to ppo's final | ppo to practice's final | ppo_bc to practice's final |",
+                  "| --- | --- | --- | --- |"]
         for name, practice in profiles.items():
-            ppo = ", ".join("never" if s is None else f"{s:,}" for s in practice["ppo_steps_to_practice"])
             reach = practice["steps_to_ppo"]
-            lines.append(f"| {name} | {'not within the budget' if reach is None else f'{reach:,}'} | {ppo} |")
+            first = "n/a" if "ppo" not in summary else "not within the budget" if reach is None else f"{reach:,}"
+            lines.append(f"| {name} | {first} | {steps(practice['ppo_steps_to_practice'])} | "
+                         f"{steps(practice.get('ppo_bc_steps_to_practice', []))} |")
     return [*lines, "", f"![Net goals over practice](plots/{FIGURES['practice_curve']})", ""]
 
 

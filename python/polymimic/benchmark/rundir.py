@@ -11,6 +11,8 @@
     models/benchmark/<profile>/evaluation_<method>_<seed>.json one method's attempts after one trial
     models/benchmark/<profile>/practice_<seed>.json            the imitator's practice after one trial
     models/benchmark/ppo/curve_<seed>.json, policy_<seed>.pmp  a ppo run's checkpoints, its policy
+    models/benchmark/<profile>/ppo_bc_tuning.json              ppo_bc's cloning, chosen on validation
+    models/benchmark/<profile>/ppo_bc_curve_<seed>.json, ppo_bc_policy_<seed>.pmp  a ppo_bc run
     benchmark.json, benchmark.md, benchmark.html, plots/benchmark_*.png
 
 >>> import tempfile
@@ -62,6 +64,15 @@ class BenchmarkDir(RunHouse[BenchmarkConfig]):
 
     def ppo_curve_path(self, seed: int) -> pathlib.Path:
         return self.models / "benchmark" / "ppo" / f"curve_{seed}.json"
+
+    def ppo_bc_tuning_path(self, profile: str) -> pathlib.Path:
+        return self.profile_dir(profile) / "ppo_bc_tuning.json"
+
+    def ppo_bc_curve_path(self, profile: str, seed: int) -> pathlib.Path:
+        return self.profile_dir(profile) / f"ppo_bc_curve_{seed}.json"
+
+    def ppo_bc_policy_path(self, profile: str, seed: int) -> pathlib.Path:
+        return self.profile_dir(profile) / f"ppo_bc_policy_{seed}.pmp"
 
     def ppo_policy_path(self, seed: int) -> pathlib.Path:
         return self.models / "benchmark" / "ppo" / f"policy_{seed}.pmp"

@@ -10,6 +10,9 @@ trial. ``None`` stands where a number does not exist (ρ where every member has 
 methods, with the environment steps each run took to first score ``polymimic``'s mean net goals
 there, and its curves once, under ``ppo``.
 
+``ppo_bc``, where it ran, clones each profile's commands before learning from the reward: its
+final checkpoints stand in that profile's methods, its cloning chosen on validation attempts.
+
 ``polymimic_practice``, where it ran, is ``polymimic``'s imitator after practice, on the first
 ``practice_trials`` trials; each profile's ``practice`` holds its curve (mean and sd over those
 trials at every checkpoint) and, beside ppo, the steps each needs to reach the other's net goals.
@@ -26,7 +29,13 @@ from polymimic._native import __version__
 from polymimic.baselines.ppo import steps_to_reach
 from polymimic.baselines.tuning import validation_rank
 from polymimic.benchmark.config import BenchmarkConfig
-from polymimic.benchmark.files import load_method_evaluation, load_ppo_curve, load_tuning
+from polymimic.benchmark.files import (
+    load_method_evaluation,
+    load_ppo_bc_curve,
+    load_ppo_bc_tuning,
+    load_ppo_curve,
+    load_tuning,
+)
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.tasks import POLYMIMIC_METHODS, PRACTISED, final_lps, ppo_hyperparameters
 from polymimic.crowds import Crowd
@@ -102,6 +111,8 @@ class PracticeSummary(PracticeCurve):
     """The first checkpoint whose mean net goals reach ppo's final mean (None: none does, or no ppo)."""
     ppo_steps_to_practice: list[int | None]
     """Per ppo run, the steps of its first checkpoint with at least the practised mean net goals."""
+    ppo_bc_steps_to_practice: list[int | None]
+    """The same for each ppo_bc run on this profile (empty where ppo_bc did not run)."""
 
 
 class ProfileSummary(TypedDict):
@@ -214,7 +225,8 @@ def _ppo_summary(curves: Sequence[Mapping[str, Any]], config: BenchmarkConfig, t
 
 
 def _practice_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str,
-                      ppo_curves: Sequence[Mapping[str, Any]] | None) -> PracticeSummary:
+                      ppo_curves: Sequence[Mapping[str, Any]] | None,
+                      bc_curves: Sequence[Mapping[str, Any]] | None) -> PracticeSummary:
     """The practised imitators' curves over their trials, and how they stand against ppo's."""
     curve = summarise([load_practice(run.require(run.practice_path(profile, s), "benchmark"))
                        for s in config.evaluated_seeds(PRACTISED)])
@@ -225,7 +237,10 @@ def _practice_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str,
         steps_to_ppo = next((m for m, n in zip(marks, net) if n["mean"] is not None and n["mean"] >= ppo_final), None)
         practised = net[-1]["mean"]
         ppo_steps = [None if practised is None else steps_to_reach(c["checkpoints"], practised) for c in ppo_curves]
-    return PracticeSummary(**curve, steps_to_ppo=steps_to_ppo, ppo_steps_to_practice=ppo_steps)
+    practised = net[-1]["mean"]
+    bc_steps = [None if practised is None else steps_to_reach(c["checkpoints"], practised) for c in bc_curves or []]
+    return PracticeSummary(**curve, steps_to_ppo=steps_to_ppo, ppo_steps_to_practice=ppo_steps,
+                           ppo_bc_steps_to_practice=bc_steps)
 
 
 def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd,
@@ -243,15 +258,24 @@ def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd,
                                              goals=goals, own_goals=own_goals, attempts=len(own),
                                              final_lp=mean_sd(lp[member.name] for lp in lps))
     methods: dict[str, MethodSummary] = {m: _method_summary(run, config, crowd.name, m)
-                                         for m in config.benchmark.methods if m != "ppo"}
+                                         for m in config.benchmark.methods if m not in ("ppo", "ppo_bc")}
+    ours = methods["polymimic"]["net_goals"]["mean"] if "polymimic" in methods else None
     if ppo_curves is not None:
-        methods["ppo"] = _ppo_summary(ppo_curves, config,
-                                      methods["polymimic"]["net_goals"]["mean"] if "polymimic" in methods else None)
+        methods["ppo"] = _ppo_summary(ppo_curves, config, ours)
+    bc_curves = None
+    if "ppo_bc" in config.benchmark.methods:
+        bc_curves = [load_ppo_bc_curve(run.require(run.ppo_bc_curve_path(crowd.name, seed), "benchmark"))
+                     for seed in range(config.benchmark.ppo_runs)]
+        tuning = load_ppo_bc_tuning(run.require(run.ppo_bc_tuning_path(crowd.name), "benchmark"))
+        methods["ppo_bc"] = _ppo_summary(bc_curves, config, ours)
+        methods["ppo_bc"]["hyperparameters"] = {**ppo_hyperparameters(config), "tuned": "the cloning only",
+                                                **{f"cloning_{k}": v for k, v in tuning["chosen"].items()}}
+        methods["ppo_bc"]["validation"] = validation(tuning)
     return ProfileSummary(
         demonstrators=members, trials=len(trials), skill_recovery=recovery(lps, crowd),
         skill_by_outcomes=recovery([net] * len(trials), crowd), methods=methods,
         lp_over_training={name: _downsampled(model.lp_history) for name, model in trials[0].models.items()},
-        practice=_practice_summary(run, config, crowd.name, ppo_curves) if PRACTISED in methods else None)
+        practice=_practice_summary(run, config, crowd.name, ppo_curves, bc_curves) if PRACTISED in methods else None)
 
 
 def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:

@@ -101,6 +101,13 @@ def _practice(name: str, profile: Mapping[str, Any]) -> list[Target]:
         if name in ("one_good", "half"):
             out.append(Target(statement=f"{name}: ≥ 47 net goals within {PRACTICE_HORIZON:,} practice steps",
                               measured=f"{at:.1f}", met=at >= 47))
+    cloned = practice.get("ppo_bc_steps_to_practice", [])
+    if cloned and PRACTICE_HORIZON in marks:
+        shown = ", ".join("never" if s is None else f"{s:,}" for s in cloned)
+        out.append(Target(statement=f"{name}: ppo_bc needs ≥ 10 × {PRACTICE_HORIZON:,} steps for the net goals "
+                                    f"practice has after {PRACTICE_HORIZON:,}",
+                          measured=f"ppo_bc: {shown}",
+                          met=all(s is None or s >= 10 * PRACTICE_HORIZON for s in cloned)))
     reached = practice.get("ppo_steps_to_practice", [])
     if reached:
         shown = ", ".join("never" if s is None else f"{s:,}" for s in reached)

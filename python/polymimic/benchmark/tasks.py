@@ -19,7 +19,8 @@ from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstr
 from polymimic.runs.practising import PracticeInputs
 
 __all__ = ["POLYMIMIC_METHODS", "PRACTISED", "ProfileInputs", "Shared", "evaluation_task", "final_lps",
-           "ppo_hyperparameters", "ppo_task", "practice_inputs", "practised_evaluation", "trial_task", "tuning_task"]
+           "ppo_bc_task", "ppo_bc_tuning_task", "ppo_hyperparameters", "ppo_task", "practice_inputs",
+           "practised_evaluation", "trial_task", "tuning_task"]
 
 POLYMIMIC_METHODS = {"polymimic": ("improved", False), "polymimic_thesis_control": ("thesis", False),
                      "polymimic_uniform_lp": ("improved", True), "polymimic_practice": ("improved", False)}
@@ -197,6 +198,48 @@ def ppo_task(shared: Shared, seed: int) -> dict[str, Any]:
     return {"seed": seed, "evaluation_seed": shared.config.seeds.evaluation,
             "attempts": 2 * settings.attempts_per_configuration, "total_timesteps": settings.ppo_timesteps,
             "eval_every": settings.ppo_eval_every,
+            "checkpoints": [{k: v for k, v in c.to_dict().items() if k != "wall_s"} for c in curve], "policy": policy}
+
+
+def ppo_bc_tuning_task(shared: Shared, profile: str) -> dict[str, Any]:
+    """``profile`` → ppo_bc's cloning chosen on the validation attempts (the first
+    ``tuning_budget`` candidates, cloned under the first trial's seed), every candidate's score."""
+    import torch  # type: ignore[import-not-found, unused-ignore]
+
+    from polymimic.baselines import ppo_bc
+
+    torch.set_num_threads(1)
+    settings = shared.config.benchmark
+    choice = ppo_bc.tune_pretraining(
+        shared.profiles[profile].demonstrations, budget=min(settings.tuning_budget, len(ppo_bc.PRETRAINING_CANDIDATES)),
+        validation_seed=settings.validation_seed,
+        attempts_per_configuration=settings.validation_attempts_per_configuration, seed=shared.config.seeds.first_trial,
+        feature_set=PPO_FEATURE_SET, frames_per_action=PPO_FRAMES_PER_ACTION, field_config=shared.config.field,
+        imitator=shared.config.imitator_body(), max_samples=settings.max_decision_samples)
+    return {"profile": profile, "chosen": choice.chosen.to_dict(), "scores": choice.scores,
+            "validation_attempts": 2 * settings.validation_attempts_per_configuration}
+
+
+def ppo_bc_task(shared: Shared, job: tuple[str, int, dict[str, Any]]) -> dict[str, Any]:
+    """``(profile, training seed, the chosen cloning)`` → a ppo_bc run: its checkpoints on the
+    evaluation attempts, the first the cloned network's, as the run directory keeps them, and
+    (``"policy"``) the final policy."""
+    import torch  # type: ignore[import-not-found, unused-ignore]
+
+    from polymimic.baselines import ppo_bc
+
+    torch.set_num_threads(1)
+    profile, seed, chosen = job
+    settings = shared.config.benchmark
+    policy, curve, _ = ppo_bc.learning_curve(
+        shared.profiles[profile].demonstrations, ppo_bc.Pretraining(**chosen), total_timesteps=settings.ppo_timesteps,
+        eval_every=settings.ppo_eval_every, attempts_per_configuration=settings.attempts_per_configuration,
+        evaluation_seed=shared.config.seeds.evaluation, seed=seed, frames_per_action=PPO_FRAMES_PER_ACTION,
+        feature_set=PPO_FEATURE_SET, field_config=shared.config.field, imitator=shared.config.imitator_body(),
+        max_samples=settings.max_decision_samples)
+    return {"profile": profile, "seed": seed, "evaluation_seed": shared.config.seeds.evaluation,
+            "attempts": 2 * settings.attempts_per_configuration, "total_timesteps": settings.ppo_timesteps,
+            "eval_every": settings.ppo_eval_every, "pretraining": chosen,
             "checkpoints": [{k: v for k, v in c.to_dict().items() if k != "wall_s"} for c in curve], "policy": policy}
 
 

@@ -103,6 +103,8 @@ def test_practice_is_polymimics_imitator_after_the_first_trial_practising(benchm
     assert saved["checkpoints"][-1]["net_goals"] == practised["goals"] - practised["own_goals"]
     assert pair["methods"]["polymimic_practice"]["net_goals"]["mean"] == saved["checkpoints"][-1]["net_goals"]
     assert pair["methods"]["polymimic_practice"]["hyperparameters"]["practice_steps"] == 300
+    # The tiny config's recogniser learned from 40 one-second sequences of each of the 5 primitives.
+    assert pair["practice"]["self_observation_steps"] == 200
     text = (benchmarked / "benchmark.md").read_text()
     assert "## Practice" in text and "practice never loses more than 1" in text
     assert (benchmarked / "plots" / "benchmark_practice_curve.png").read_bytes()[:4] == b"\x89PNG"

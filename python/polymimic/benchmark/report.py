@@ -97,7 +97,9 @@ def _practice_rows(summary: Mapping[str, Any]) -> list[str]:
              f"{sizes['practice_steps']:,} environment steps, one second of play each, and learns the ball's response "
              "and the states' values from what the tracker showed of them beside the demonstrations "
              "(`polymimic.practice`). Net goals on the evaluation attempts at each checkpoint, mean (sd) over "
-             "those trials; attempts the tracker lost are left out and counted.", "",
+             "those trials; attempts the tracker lost are left out and counted. Before any of it, the imitator "
+             f"learned its primitives from {next(iter(profiles.values()))['self_observation_steps']:,} seconds of "
+             "babbling (its self-observation): steps ppo never takes, to add to practice's for all of its play.", "",
              "| profile | " + " | ".join(f"{m:,} steps" for m in marks) + " | attempts lost |",
              "| --- | " + " | ".join("---" for _ in marks) + " | --- |"]
     for name, practice in profiles.items():

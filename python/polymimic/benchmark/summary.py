@@ -40,6 +40,7 @@ from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.tasks import POLYMIMIC_METHODS, PRACTISED, final_lps, ppo_hyperparameters
 from polymimic.crowds import Crowd
 from polymimic.datasets import load_demonstrations
+from polymimic.field import PRIMITIVES
 from polymimic.learning import LearningConfig, TrialResult
 from polymimic.plots import MeanSd
 from polymimic.ranking import kendall, spearman
@@ -113,6 +114,9 @@ class PracticeSummary(PracticeCurve):
     """Per ppo run, the steps of its first checkpoint with at least the practised mean net goals."""
     ppo_bc_steps_to_practice: list[int | None]
     """The same for each ppo_bc run on this profile (empty where ppo_bc did not run)."""
+    self_observation_steps: int
+    """The seconds of babbling the imitator learned its primitives from, before any
+    demonstration: steps ppo never takes, to add to practice's for a count of all its play."""
 
 
 class ProfileSummary(TypedDict):
@@ -240,7 +244,8 @@ def _practice_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str,
     practised = net[-1]["mean"]
     bc_steps = [None if practised is None else steps_to_reach(c["checkpoints"], practised) for c in bc_curves or []]
     return PracticeSummary(**curve, steps_to_ppo=steps_to_ppo, ppo_steps_to_practice=ppo_steps,
-                           ppo_bc_steps_to_practice=bc_steps)
+                           ppo_bc_steps_to_practice=bc_steps,
+                           self_observation_steps=len(PRIMITIVES) * config.recognizer.train_per_primitive)
 
 
 def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd,

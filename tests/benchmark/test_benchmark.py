@@ -235,13 +235,14 @@ def test_the_report_names_the_improved_controls_choices_where_they_are_not_the_d
 def test_ray_gives_the_same_bits(benchmarked, tiny_toml, tmp_path):
     pytest.importorskip("ray")
     other = tmp_path / "ray"
-    methods = ["polymimic", "bco_lp", "random"]
+    methods = ["polymimic", "polymimic_practice", "bco_lp", "random"]
     assert main(["benchmark", "--config", str(tiny_toml), "--run-dir", str(other), "--quiet", "--backend", "ray",
                  "--workers", "2", "--methods", *methods]) == 0
     ours, theirs = _summary(benchmarked)["profiles"], _summary(other)["profiles"]
     for profile in ours:
         assert {m: ours[profile]["methods"][m] for m in methods} == theirs[profile]["methods"]
         assert ours[profile]["skill_recovery"] == theirs[profile]["skill_recovery"]
+        assert ours[profile]["practice"] == theirs[profile]["practice"]
 
 
 PPO = """

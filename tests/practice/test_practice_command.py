@@ -88,7 +88,7 @@ def test_a_rerun_redoes_only_what_is_missing_or_damaged(reproduced, capsys):
     assert cli.main(["practice", "--run-dir", str(reproduced), "--steps", "150", "--trials", "1",
                      "--workers", "1"]) == 0
     err = capsys.readouterr().err
-    assert "practised 2 imitators" in err and "practising again" in err
+    assert "practised 2 imitators" in err and "is damaged" in err and "making it again" in err
     assert (folder / "practice.json").read_bytes() == before
 
 

@@ -66,7 +66,7 @@ from polymimic.field import PRIMITIVES, self_observation
 from polymimic.learning import TrialResult, segmented
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.config import ConfigError
-from polymimic.runs.practising import load_practice, practice_task
+from polymimic.runs.practising import is_practice_of, load_practice, practice_task
 from polymimic.runs.progress import progress
 from polymimic.runs.steps import Stepped, counted, each_member_recorded
 
@@ -253,12 +253,11 @@ class Benchmark(Stepped):
     # 6. Practice.
 
     def _practice_done(self, profile: str, seed: int) -> bool:
-        saved = self.run.loaded(self.run.practice_path(profile, seed), load_practice)
         settings = self.config.benchmark
-        return saved is not None and self._evaluation_done(profile, PRACTISED, seed) and (
-            saved["group"], saved["trial_seed"], saved["evaluation_seed"], saved["attempts"], saved["budget"]) == (
-            profile, seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
-            settings.practice_steps)
+        saved = self.run.loaded(self.run.practice_path(profile, seed), load_practice)
+        return self._evaluation_done(profile, PRACTISED, seed) and is_practice_of(
+            saved, profile, seed, evaluation_seed=self.config.seeds.evaluation,
+            attempts=2 * settings.attempts_per_configuration, budget=settings.practice_steps)
 
     def practice(self, shared: Shared) -> int:
         jobs = [(crowd.name, seed, self._trial_json(crowd.name, seed)) for crowd in self.config.crowds()

@@ -235,16 +235,18 @@ def _practice_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str,
     curve = summarise([load_practice(run.require(run.practice_path(profile, s), "benchmark"))
                        for s in config.evaluated_seeds(PRACTISED)])
     marks, net = curve["checkpoints"], curve["net_goals"]
-    steps_to_ppo, ppo_steps = None, []
+    practised = net[-1]["mean"]
+
+    def reaching(curves: Sequence[Mapping[str, Any]] | None) -> list[int | None]:
+        """Per run, the steps of its first checkpoint with at least the practised net goals."""
+        return [None if practised is None else steps_to_reach(c["checkpoints"], practised) for c in curves or []]
+
+    steps_to_ppo = None
     if ppo_curves is not None:
         ppo_final = float(np.mean([c["checkpoints"][-1]["net_goals"] for c in ppo_curves]))
         steps_to_ppo = next((m for m, n in zip(marks, net) if n["mean"] is not None and n["mean"] >= ppo_final), None)
-        practised = net[-1]["mean"]
-        ppo_steps = [None if practised is None else steps_to_reach(c["checkpoints"], practised) for c in ppo_curves]
-    practised = net[-1]["mean"]
-    bc_steps = [None if practised is None else steps_to_reach(c["checkpoints"], practised) for c in bc_curves or []]
-    return PracticeSummary(**curve, steps_to_ppo=steps_to_ppo, ppo_steps_to_practice=ppo_steps,
-                           ppo_bc_steps_to_practice=bc_steps,
+    return PracticeSummary(**curve, steps_to_ppo=steps_to_ppo, ppo_steps_to_practice=reaching(ppo_curves),
+                           ppo_bc_steps_to_practice=reaching(bc_curves),
                            self_observation_steps=len(PRIMITIVES) * config.recognizer.train_per_primitive)
 
 

@@ -126,10 +126,7 @@ def practice_inputs(shared: Shared) -> PracticeInputs:
 
 def practised_evaluation(shared: Shared, result: dict[str, Any]) -> dict[str, Any]:
     """A practice's final outcomes (popped from ``result``) as ``polymimic_practice``'s evaluation."""
-    outcomes = result.pop("outcomes")
-    return {"profile": result["group"], "method": PRACTISED, "trial_seed": result["trial_seed"],
-            "seed": shared.config.seeds.evaluation, "goals": outcomes.count("goal"),
-            "own_goals": outcomes.count("own_goal"), "attempts": len(outcomes), "outcomes": outcomes}
+    return _evaluation(shared, result["group"], PRACTISED, result["trial_seed"], result.pop("outcomes"))
 
 
 def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[str, Any] | None]) -> dict[str, Any]:
@@ -142,7 +139,7 @@ def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[s
         result = evaluate(_imitator(shared, profile, method, trial_json),
                           attempts_per_configuration=settings.attempts_per_configuration, seed=seeds.evaluation,
                           field_config=shared.config.field)
-        return _evaluation(shared, profile, method, trial_seed, result)
+        return _evaluation(shared, profile, method, trial_seed, [a.outcome for a in result.attempts])
     assert hyperparameters is not None
     chosen = baselines.Hyperparameters.from_dict(hyperparameters)
     demos = inputs.demonstrations if method != "random" else []
@@ -159,14 +156,14 @@ def _evaluated(shared: Shared, profile: str, method: str, trial_seed: int,
     settings, seeds = shared.config.benchmark, shared.config.seeds
     result = baselines.evaluate_policy(policy, attempts_per_configuration=settings.attempts_per_configuration,
                                        seed=seeds.evaluation, field_config=shared.config.field)
-    return _evaluation(shared, profile, method, trial_seed, result)
+    return _evaluation(shared, profile, method, trial_seed, [a.outcome for a in result.attempts])
 
 
-def _evaluation(shared: Shared, profile: str, method: str, trial_seed: int, result: Any) -> dict[str, Any]:
-    """An evaluation as the run directory keeps it."""
-    outcomes = [a.outcome for a in result.attempts]
+def _evaluation(shared: Shared, profile: str, method: str, trial_seed: int, outcomes: list[str]) -> dict[str, Any]:
+    """An evaluation as the run directory keeps it, from its attempts' outcomes."""
     return {"profile": profile, "method": method, "trial_seed": trial_seed, "seed": shared.config.seeds.evaluation,
-            "goals": result.goals, "own_goals": result.own_goals, "attempts": len(outcomes), "outcomes": outcomes}
+            "goals": outcomes.count("goal"), "own_goals": outcomes.count("own_goal"), "attempts": len(outcomes),
+            "outcomes": outcomes}
 
 
 PPO_FEATURE_SET, PPO_FRAMES_PER_ACTION = "goal_relative", 30

@@ -121,7 +121,7 @@ def _practice(args: argparse.Namespace) -> int:
     folder = run.path / "practice" / f"{args.steps}_steps"
     with run.lock("polymimic practice"), TaskRunner(backend=args.backend, workers=args.workers,
                                                     address=args.address) as runner:
-        summary, ran = practise_run(folder, inputs, [(g, s) for g in groups for s in seeds], trial_json, runner,
+        summary, ran = practise_run(run, folder, inputs, [(g, s) for g in groups for s in seeds], trial_json, runner,
                                     kind=kind, quiet=args.quiet)
     if not args.quiet:
         print(f"practised {ran} imitators", file=sys.stderr)

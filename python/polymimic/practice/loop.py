@@ -101,7 +101,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     field = playing_field(made_from.body)
     body_name = policy.body
     learned: list[Demonstration] = []
-    segments: list[dict[str, Any]] = []
+    own: SegmentedDemonstrations | None = None
     lost = played_steps = round_index = 0
     refined = policy
     curve: list[CurvePoint] = []
@@ -119,7 +119,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
                 if round_index >= MAX_ROUNDS:
                     raise ValueError(f"practice ran out of rounds before {mark} steps")
                 round_at = round_seed(seed, round_index)
-                check_apart(_native_seeds(per_round, round_at), evaluation_seed=evaluation_seed,
+                check_apart(_native.attempt_seeds(per_round, seed=round_at), evaluation_seed=evaluation_seed,
                             attempts_per_configuration=evaluation_attempts)
                 round_index += 1
                 attempts = evaluate(refined, attempts_per_configuration=per_round, seed=round_at,
@@ -138,8 +138,9 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
                     new.append(_as_tracked(attempt, field, body_name))
                 if new:
                     learned += new
-                    segments += _segmented(new, made_from.recognizer, body_name, segmenter)
-                    refined = policy.practised(SegmentedDemonstrations(segments), weight=weight)
+                    batch = SegmentedDemonstrations(_segmented(new, made_from.recognizer, body_name, segmenter))
+                    own = batch if own is None else own + batch
+                    refined = policy.practised(own, weight=weight)
             score(mark)
     return Practice(policy=refined, curve=curve, steps=played_steps, attempts=learned, attempts_lost=lost)
 
@@ -150,10 +151,6 @@ def _bar(total: int, quiet: bool) -> Any:
 
     return tqdm(total=total, desc="practice", unit="step", file=sys.stderr, leave=False, dynamic_ncols=True,
                 disable=quiet or not sys.stderr.isatty())
-
-
-def _native_seeds(per_round: int, seed: int) -> list[tuple[int, int]]:
-    return [(int(c), int(s)) for c, s in _native.attempt_seeds(per_round, seed=seed)]
 
 
 def _as_tracked(attempt: Demonstration, field: Any, body: str) -> Demonstration:

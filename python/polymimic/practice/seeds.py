@@ -11,6 +11,7 @@ derived from them are checked against the evaluation's all the same, as tuning c
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Iterable
 
 from polymimic import _native
@@ -31,9 +32,15 @@ def check_apart(practice_episodes: Iterable[tuple[int, int]], *, evaluation_seed
                 attempts_per_configuration: int) -> None:
     """A ``ValueError`` if any practice attempt's (configuration, episode seed) is one of the
     evaluation's under ``evaluation_seed``: an imitator must never practise on what scores it."""
-    scored = set(_native.attempt_seeds(attempts_per_configuration, seed=evaluation_seed))
+    scored = _scored(evaluation_seed, attempts_per_configuration)
     met = [episode for episode in practice_episodes if episode in scored]
     if met:
         configuration, seed = met[0]
         raise ValueError(f"practice would play the evaluation's attempt (configuration {configuration}, episode seed "
                          f"{seed}) under evaluation_seed={evaluation_seed}: choose another practice seed")
+
+
+@functools.lru_cache(maxsize=8)
+def _scored(evaluation_seed: int, attempts_per_configuration: int) -> frozenset[tuple[int, int]]:
+    """The evaluation's (configuration, episode seed) pairs, made once for every round that checks them."""
+    return frozenset(_native.attempt_seeds(attempts_per_configuration, seed=evaluation_seed))

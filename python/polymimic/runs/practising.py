@@ -13,7 +13,6 @@ import dataclasses
 import json
 import os
 import pathlib
-import sys
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any, TypedDict
 
@@ -27,10 +26,11 @@ from polymimic.practice.curve import plot_curves
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.files import integer_key, json_object, name_key
 from polymimic.runs.progress import progress
+from polymimic.runs.rundir import RunHouse
 from polymimic.runs.stats import mean_sd
 
-__all__ = ["CHECKPOINT_KEYS", "FORMAT", "VERSION", "PracticeCurve", "PracticeInputs", "SavedPractice", "load_practice",
-           "practice_task", "practise_run", "summarise"]
+__all__ = ["CHECKPOINT_KEYS", "FORMAT", "VERSION", "PracticeCurve", "PracticeInputs", "SavedPractice", "is_practice_of",
+           "load_practice", "practice_task", "practise_run", "summarise"]
 
 CHECKPOINT_KEYS = ("checkpoint", "steps", "net_goals", "goals", "own_goals", "attempts_learned", "attempts_lost")
 """A checkpoint's keys in a practice file (:class:`polymimic.practice.CurvePoint`'s)."""
@@ -134,26 +134,28 @@ def summarise(saved: Sequence[SavedPractice]) -> PracticeCurve:
 FORMAT, VERSION = "polymimic.practice", 1
 
 
-def practise_run(folder: pathlib.Path, inputs: PracticeInputs, jobs: Sequence[tuple[str, int]],
+def is_practice_of(saved: SavedPractice | None, group: str, trial_seed: int, *, evaluation_seed: int,
+                   attempts: int, budget: int) -> bool:
+    """Whether ``saved`` (a practice file read whole, or None) is the practice asked for: of this
+    group's trial, scored on these evaluation attempts, for this budget of steps."""
+    return saved is not None and (saved["group"], saved["trial_seed"], saved["evaluation_seed"], saved["attempts"],
+                                  saved["budget"]) == (group, trial_seed, evaluation_seed, attempts, budget)
+
+
+def practise_run(run: RunHouse[Any], folder: pathlib.Path, inputs: PracticeInputs, jobs: Sequence[tuple[str, int]],
                  trial_json: Callable[[str, int], str], runner: TaskRunner, *, kind: str,
                  quiet: bool = False) -> tuple[pathlib.Path, int]:
-    """Practise the imitators of ``jobs`` (group, trial seed) into ``folder``, each practice's
-    file at ``<group>/practice_<seed>.json`` as it finishes, redoing only what is missing or
-    damaged; then ``practice.json`` (every group's curve), ``practice.csv`` and
+    """Practise the imitators of ``jobs`` (group, trial seed) into ``folder`` (within ``run``),
+    each practice's file at ``<group>/practice_<seed>.json`` as it finishes, redoing only what is
+    missing or damaged; then ``practice.json`` (every group's curve), ``practice.csv`` and
     ``practice_curve.png`` beside them. Returns the summary's path and how many practices ran."""
     def path(group: str, seed: int) -> pathlib.Path:
         return folder / group / f"practice_{seed}.json"
 
     def done(group: str, seed: int) -> bool:
-        if not path(group, seed).is_file():
-            return False
-        try:
-            saved = load_practice(path(group, seed))
-        except ModelFileError as error:
-            print(f"warning: {error}; practising again", file=sys.stderr)
-            return False
-        return (saved["group"], saved["trial_seed"], saved["evaluation_seed"], saved["attempts"], saved["budget"]) == (
-            group, seed, inputs.evaluation_seed, 2 * inputs.attempts_per_configuration, inputs.steps)
+        return is_practice_of(run.loaded(path(group, seed), load_practice), group, seed,
+                              evaluation_seed=inputs.evaluation_seed, attempts=2 * inputs.attempts_per_configuration,
+                              budget=inputs.steps)
 
     todo = [(group, seed, trial_json(group, seed)) for group, seed in jobs if not done(group, seed)]
     for group in {group for group, _ in jobs}:

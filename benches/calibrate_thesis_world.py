@@ -12,12 +12,16 @@ group's term, each item's error, seconds); the study (``thesis_world``) lives in
 log, so the same command goes on with it. The best constants so far are written, after each new
 best and at the end, as a TOML file in the form of ``docs/configs`` (``[field.tracker]`` and
 ``[field.humanoid]``); use it with ``polymimic reproduce --config docs/configs/thesis_world.toml``.
-The first trials are the known points: the default world, both presets of ``docs/configs``
-together, then each alone. The search stops when ``--trials`` have run, before a trial could
-outlast ``--hours`` (a trial still running at the deadline is stopped and counted as failed), or
-after three failed trials in a row (the reproduction itself is then broken). One search at a time
-writes a log (it is locked); Ctrl-C or SIGTERM ends the trial's reproduction with it and marks
-the trial failed.
+The first trials are the known points: the world that was the default before this calibration
+(``docs/configs/world_before_calibration.toml``; the calibrated world is the default now), both
+presets of ``docs/configs`` together, then each alone. A trial's LP shaping is the default's:
+``lp_own_goal_weight`` became 3 with the calibrated world, which leaves the heterogeneous
+experiments as they were (no demonstrator there concedes) but can move the varying-skill imitator's
+row of Table 4.5 slightly against the study's first 112 trials. The search stops when ``--trials``
+have run, before a trial could outlast ``--hours`` (a trial still running at the deadline is
+stopped and counted as failed), or after three failed trials in a row (the reproduction itself is
+then broken). One search at a time writes a log (it is locked); Ctrl-C or SIGTERM ends the trial's
+reproduction with it and marks the trial failed.
 
 Sizes: ``thesis`` (the default) is the thesis's (1000 self-observed sequences per primitive, a
 512-word codebook, 25 demonstrations per configuration, 100 trials per experiment) with one
@@ -97,6 +101,7 @@ from polymimic.runs.roster import HETEROGENEOUS
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 PRESETS = {"tracker_table_3_1": ROOT / "docs/configs/tracker_table_3_1.toml",
            "humanoid_thesis_like": ROOT / "docs/configs/humanoid_thesis_like.toml"}
+WORLD_BEFORE_CALIBRATION = ROOT / "docs/configs/world_before_calibration.toml"
 DEFAULT_LOG = ROOT / "benches/calibration/thesis_world.jsonl"
 DEFAULT_BEST = ROOT / "docs/configs/thesis_world.toml"
 STUDY = "thesis_world"
@@ -190,12 +195,14 @@ def constants_of(field: Mapping[str, Any]) -> dict[str, float]:
 
 
 def start_points() -> dict[str, dict[str, float]]:
-    """The known worlds, first to be tried: the default, both presets together, each alone. A
+    """The known worlds, first to be tried: the default before the calibration (named
+    ``default`` in the study, which began before the calibrated world became the default), both
+    presets together, each alone. A
     preset that sets anything the search does not vary, or a value outside its range, is refused
     (the enqueued trial would not be the preset's world)."""
     loaded = {name: RunConfig.load(path) for name, path in PRESETS.items()}
     both = RunConfig.load(PRESETS["humanoid_thesis_like"], base=loaded["tracker_table_3_1"])
-    fields = {"default": RunConfig().field, "both_presets": both.field,
+    fields = {"default": RunConfig.load(WORLD_BEFORE_CALIBRATION).field, "both_presets": both.field,
               **{name: config.field for name, config in loaded.items()}}
     points = {}
     for name, field in fields.items():

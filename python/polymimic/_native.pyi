@@ -301,7 +301,7 @@ class LearningConfig:
         hold_lp: bool = False,
         imitator_weighting: Literal["even", "lp", "lp_gain"] = "even",
         lp_goal: float = 0.01,
-        lp_own_goal_weight: float = 1.0,
+        lp_own_goal_weight: float = 3.0,
         lp_ball_to_goal: float = 0.005,
         lp_robot_to_ball: float = 0.002,
         lp_event: float = 0.001,

@@ -68,13 +68,13 @@ class LearningConfig(_native.LearningConfig):
       share of its demonstration's segments it covers, so every demonstration weighs the same
       and a demonstrator that wanders for a minute is not judged by its wandering many times
       over its outcome) or ``"per_span"`` (a whole step each span, the thesis's letter);
-    - ``lp_own_goal_weight``: ``1.0`` (an own goal lowers the LP by ``lp_goal``, the mirror
-      of a goal: the thesis) or how many times ``lp_goal`` it lowers it by. Under soft bounds a
+    - ``lp_own_goal_weight``: ``3.0`` (an own goal lowers the LP by three times ``lp_goal``)
+      or ``1.0``, the thesis's letter (an own goal mirrors a goal). Under soft bounds a
       demonstrator scoring g and conceding o times settles, by its outcomes alone, near
       ``g / (g + lp_own_goal_weight · o)``: at 1, one that concedes as often as it scores sits
       at 0.5 and the skill-blind rises (accurate ball predictions) lift it above
-      ``initial_lp``; at ``3.0`` it ends near 0.3 (with the other steps), where the thesis's
-      Poor hovered. It shapes the LP only: control already rates a predicted own goal worst.
+      ``initial_lp``; at 3 it ends near 0.3 (with the other steps), where the thesis's Poor
+      hovered. It shapes the LP only: control already rates a predicted own goal worst.
 
     Two switches decide how much the LP shapes the imitator:
 

@@ -185,7 +185,7 @@ mod tests {
         assert!(!c.to_json().contains("humanoid") && c.to_json_in_full().contains("\"look_s\":0.4"));
         assert_eq!(FieldConfig::from_json(&c.to_json_in_full()), Ok(c));
         let pivot = FieldConfig { humanoid: HumanoidParams { turn_pivot_mm: 1.0, ..HUMANOID }, ..c };
-        assert_eq!(c.to_json_in_full().replace("\"turn_pivot_mm\":0.0", "\"turn_pivot_mm\":1.0"), pivot.to_json());
+        assert_eq!(c.to_json_in_full().replace("\"turn_pivot_mm\":20.3", "\"turn_pivot_mm\":1.0"), pivot.to_json());
         let pivoting = FieldConfig { humanoid: HumanoidParams { turn_pivot_mm: 28.0, ..HUMANOID }, ..c };
         assert!(pivoting.to_json().contains("\"turn_pivot_mm\":28.0"));
         assert_eq!(FieldConfig::from_json(&pivoting.to_json()), Ok(pivoting));

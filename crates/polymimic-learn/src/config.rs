@@ -107,12 +107,12 @@ pub struct LearningConfig {
     /// *Choice*: how much each demonstration counts for the imitator.
     pub imitator_weighting: ImitatorWeighting,
     pub lp_goal: f64,
-    /// *Choice*: an own goal lowers the LP by this many times `lp_goal` (1, the thesis: an own
-    /// goal mirrors a goal). Under soft bounds a demonstrator scoring g and conceding o times
+    /// *Choice*: an own goal lowers the LP by this many times `lp_goal` (3 by default; 1 is the
+    /// thesis's letter, an own goal mirroring a goal). Under soft bounds a demonstrator scoring g and conceding o times
     /// settles, by its outcomes alone, near `g / (g + lp_own_goal_weight · o)`; at 1 one that
     /// concedes as often as it scores sits at 0.5, where the skill-blind rises (accurate ball
     /// predictions) lift it above `initial_lp`; at 3 it settles near 0.25 (about 0.3 with the
-    /// other steps), where the thesis's Poor hovered. Shapes the LP only: control already
+    /// other steps), where the thesis's Poor hovered, which is why 3 is the default. Shapes the LP only: control already
     /// rates a predicted own goal worst.
     pub lp_own_goal_weight: f64,
     pub lp_ball_to_goal: f64,
@@ -173,7 +173,7 @@ impl Default for LearningConfig {
             hold_lp: false,
             imitator_weighting: ImitatorWeighting::Even,
             lp_goal: 0.01,
-            lp_own_goal_weight: 1.0,
+            lp_own_goal_weight: 3.0,
             lp_ball_to_goal: 0.005,
             lp_robot_to_ball: 0.002,
             lp_event: 0.001,
@@ -301,11 +301,11 @@ mod tests {
     }
 
     #[test]
-    fn an_own_goal_mirrors_a_goal_by_default_and_its_weight_is_a_finite_number_at_least_0() {
-        assert_eq!(LearningConfig::default().lp_own_goal_weight, 1.0);
-        let heavy = LearningConfig::from_json(r#"{"lp_own_goal_weight": 3.0}"#).expect("a valid config");
-        assert_eq!(heavy, LearningConfig { lp_own_goal_weight: 3.0, ..LearningConfig::default() });
-        assert_eq!(LearningConfig::from_json(&heavy.to_json()), Ok(heavy));
+    fn an_own_goal_weighs_three_goals_by_default_and_its_weight_is_a_finite_number_at_least_0() {
+        assert_eq!(LearningConfig::default().lp_own_goal_weight, 3.0);
+        let mirror = LearningConfig::from_json(r#"{"lp_own_goal_weight": 1.0}"#).expect("a valid config");
+        assert_eq!(mirror, LearningConfig { lp_own_goal_weight: 1.0, ..LearningConfig::default() });
+        assert_eq!(LearningConfig::from_json(&mirror.to_json()), Ok(mirror));
         assert!(LearningConfig::from_json(r#"{"lp_own_goal_weight": 0.0}"#).is_ok(), "own goals may not count");
         let refused = LearningConfig { lp_own_goal_weight: -1.0, ..LearningConfig::default() }.check().unwrap_err();
         assert!(refused.to_string().contains("lp_own_goal_weight = -1 must be a finite number ≥ 0"), "{refused}");

@@ -154,8 +154,8 @@ fn soft_bounds_take_the_thesis_step_at_the_midpoint_and_none_at_a_bound() {
 
 #[test]
 fn soft_bounds_settle_where_gains_balance_losses() {
-    // Three goals for every own goal: gains 3a·2(1 − LP) = losses a·2LP at LP = 3/4.
-    let config = LearningConfig::default();
+    // Three goals for every own goal, each as heavy: gains 3a·2(1 − LP) = losses a·2LP at LP = 3/4.
+    let config = LearningConfig { lp_own_goal_weight: 1.0, ..LearningConfig::default() };
     let mut model = ForwardModel::new("x", 0.5, false, &config);
     for _ in 0..5000 {
         for cause in [LpCause::Goal, LpCause::Goal, LpCause::Goal, LpCause::OwnGoal] {
@@ -167,8 +167,10 @@ fn soft_bounds_settle_where_gains_balance_losses() {
 
 #[test]
 fn an_own_goal_weighs_lp_own_goal_weight_goals() {
-    let heavy = LearningConfig { lp_own_goal_weight: 3.0, ..LearningConfig::default() };
-    assert_eq!(LpCause::OwnGoal.amount(&LearningConfig::default()), -0.01, "the thesis's mirror of a goal");
+    let heavy = LearningConfig::default();
+    assert_eq!(heavy.lp_own_goal_weight, 3.0, "the default");
+    let mirror = LearningConfig { lp_own_goal_weight: 1.0, ..LearningConfig::default() };
+    assert_eq!(LpCause::OwnGoal.amount(&mirror), -0.01, "the thesis's mirror of a goal");
     assert!((LpCause::OwnGoal.amount(&heavy) + 0.03).abs() < 1e-15);
     assert_eq!(LpCause::Goal.amount(&heavy), 0.01, "a goal is unchanged");
     assert_eq!(LpCause::BallFartherFromGoal.amount(&heavy), -0.005, "so is every other fall");
@@ -194,7 +196,8 @@ fn a_heavier_own_goal_settles_one_who_concedes_as_often_as_it_scores_below_the_s
     };
     assert!((settle(&heavy) - 0.94 / 3.94).abs() < 1e-12, "{}", settle(&heavy));
     // The thesis's mirror: (1 − 2a) / (2 − 2a) = 0.98 / 1.98, just below the start.
-    assert!((settle(&LearningConfig::default()) - 0.98 / 1.98).abs() < 1e-12);
+    let mirror = LearningConfig { lp_own_goal_weight: 1.0, ..LearningConfig::default() };
+    assert!((settle(&mirror) - 0.98 / 1.98).abs() < 1e-12);
 }
 
 #[test]

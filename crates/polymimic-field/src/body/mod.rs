@@ -6,7 +6,7 @@ mod wheeled;
 use polymimic_types::{Point, Pose};
 use serde::Serialize;
 
-pub use humanoid::{HUMANOID, HumanoidParams};
+pub use humanoid::{HUMANOID, HUMANOID_BEFORE_CALIBRATION, HumanoidParams};
 pub use wheeled::{LEGO, TINY, Traction, WheeledParams};
 
 pub(crate) use humanoid::{Foot, HumanoidBody};

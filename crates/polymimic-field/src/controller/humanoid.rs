@@ -283,7 +283,8 @@ mod tests {
         // Facing the goal, the ball 150 mm ahead and 120 mm to the left.
         let robot = Pose::new(0.0, -120.0, 0.0);
         let ball = Point::new(150.0, 0.0);
-        let mut narrow = HumanoidController::new(HumanoidParams::default());
+        let narrow = HumanoidParams { lineup_side_mm: 90.0, ..HumanoidParams::default() };
+        let mut narrow = HumanoidController::new(narrow);
         assert_ne!(narrow.command(&obs(0.0, robot, Some(ball))), Command::Humanoid(H::ShuffleLeft));
         let wide = HumanoidParams { lineup_side_mm: 250.0, ..HumanoidParams::default() };
         let mut wide = HumanoidController::new(wide);

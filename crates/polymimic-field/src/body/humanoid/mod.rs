@@ -18,7 +18,7 @@ use crate::command::{Command, HumanoidCommand};
 use crate::error::FieldParamError;
 use crate::math::{PI, Rng, cos, exp, gaussian, sin, wrap_angle_rad};
 
-pub use params::{HUMANOID, HumanoidParams};
+pub use params::{HUMANOID, HUMANOID_BEFORE_CALIBRATION, HumanoidParams};
 
 #[derive(Debug, Clone, Copy)]
 struct Kick {

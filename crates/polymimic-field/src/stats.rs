@@ -57,7 +57,7 @@ fn mean_sd(xs: &[f64]) -> (f64, f64) {
 /// Rotations are averaged in radians, then given in degrees.
 #[must_use]
 pub fn primitive_stats(sequences: &[PrimitiveSequence]) -> [MotionStats; 5] {
-    Primitive::ALL.map(|p| {
+    Primitive::WHEELED.map(|p| {
         let (dist, rot): (Vec<f64>, Vec<f64>) =
             sequences.iter().filter(|s| s.primitive == p).filter_map(|s| primitive_motion(&s.frames)).unzip();
         let (dm, ds) = mean_sd(&dist);

@@ -68,7 +68,7 @@ impl ForwardModel {
             metrics: ModelMetrics::default(),
             lp_history: vec![lp],
         };
-        for primitive in Primitive::ALL {
+        for primitive in Primitive::WHEELED {
             model.insert(vec![primitive], config);
         }
         model.metrics.created = 0;

@@ -24,7 +24,7 @@ impl MotionTable {
     /// A primitive missing, or a statistic not finite.
     pub fn new(stats: &[MotionStats]) -> Result<Self, LearnParamsError> {
         let mut rows = Vec::with_capacity(5);
-        for primitive in Primitive::ALL {
+        for primitive in Primitive::WHEELED {
             let s = stats
                 .iter()
                 .find(|s| s.primitive == primitive)

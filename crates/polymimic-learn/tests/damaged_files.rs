@@ -50,7 +50,7 @@ fn model_file() -> String {
 }
 
 fn motion_table() -> MotionTable {
-    let stats = Primitive::ALL.map(|primitive| {
+    let stats = Primitive::WHEELED.map(|primitive| {
         let (distance, rotation) = match primitive {
             Primitive::Forward => (42.0, -1.0),
             Primitive::Backward => (-48.0, 2.0),

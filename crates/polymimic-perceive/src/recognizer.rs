@@ -176,7 +176,7 @@ impl Recognizer {
             .par_iter()
             .map(|&primitive| train_model(primitive, sequences, &codebooks, &config))
             .collect::<Result<Vec<_>, _>>()?;
-        let motion = Primitive::ALL
+        let motion = Primitive::WHEELED
             .iter()
             .map(|&p| motion_stats(p, sequences.iter().filter(|s| s.primitive == p).map(|s| s.poses.as_slice())))
             .collect();
@@ -313,7 +313,7 @@ impl Recognizer {
             return Err(corrupt(&"expected models for forward, backward, left and right"));
         }
         // Table 3.1 of its own training set bounds every segment: a file without it is damaged.
-        if saved.motion.iter().map(|m| m.primitive).ne(Primitive::ALL) {
+        if saved.motion.iter().map(|m| m.primitive).ne(Primitive::WHEELED) {
             return Err(corrupt(&"expected the motion statistics of forward, backward, left, right and stop"));
         }
         if saved.motion.iter().any(|m| {

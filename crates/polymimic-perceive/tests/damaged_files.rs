@@ -36,7 +36,7 @@ fn run(primitive: Primitive, start: Pose, frames: usize, scale: f64) -> Vec<Pose
 
 fn self_observation() -> Vec<LabelledSequence> {
     let mut sequences = Vec::new();
-    for primitive in Primitive::ALL {
+    for primitive in Primitive::WHEELED {
         for i in 0..8 {
             let k = f64::from(i);
             let start = Pose::new(40.0 * k - 150.0, 25.0 * k - 100.0, 0.7 * k - 2.8);

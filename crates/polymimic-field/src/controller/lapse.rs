@@ -60,7 +60,9 @@ impl From<LapseRate> for f64 {
 }
 
 /// The command that executes primitive `p` on `body`: the primitive itself on a wheeled body,
-/// the humanoid's walking or turning equivalent on the humanoid (which takes no primitives).
+/// the humanoid's walking, turning, side-stepping or kicking command on the humanoid (which
+/// takes no primitives; its kick is the right foot's). A wheeled body refuses the humanoid's
+/// own primitives when it is sent them.
 #[must_use]
 pub fn primitive_command(p: Primitive, body: BodyKind) -> Command {
     match body {
@@ -71,6 +73,9 @@ pub fn primitive_command(p: Primitive, body: BodyKind) -> Command {
             Primitive::Left => HumanoidCommand::TurnLeft,
             Primitive::Right => HumanoidCommand::TurnRight,
             Primitive::Stop => HumanoidCommand::Wait,
+            Primitive::SidestepLeft => HumanoidCommand::ShuffleLeft,
+            Primitive::SidestepRight => HumanoidCommand::ShuffleRight,
+            Primitive::Kick => HumanoidCommand::KickRight,
         }),
     }
 }
@@ -110,7 +115,7 @@ impl Controller for Lapsing {
             // Both draws every second, lapse or not: under one seed the seconds lapsed at a
             // smaller ε are among those lapsed at a larger one, with the same primitives.
             let u = uniform(rng);
-            let p = Primitive::ALL[rng.random_range(0..Primitive::ALL.len())];
+            let p = Primitive::WHEELED[rng.random_range(0..Primitive::WHEELED.len())];
             self.lapse = (u < self.rate.get()).then_some(p);
         }
         self.lapse.map_or(own, |p| primitive_command(p, observation.body))
@@ -238,7 +243,7 @@ mod tests {
 
     #[test]
     fn the_humanoid_lapses_into_the_commands_that_look_like_primitives() {
-        for p in Primitive::ALL {
+        for p in Primitive::WHEELED {
             assert_eq!(primitive_command(p, BodyKind::Humanoid).primitive(), p);
             assert_eq!(primitive_command(p, BodyKind::Lego), Command::Primitive(p));
         }

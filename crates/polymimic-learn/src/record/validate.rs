@@ -135,7 +135,7 @@ fn behaviour(value: &Json, key: &str) -> Result<BehaviourRecord, RecordError> {
     let f = Fields::of(value, key, &BEHAVIOUR_KEYS)?;
     let primitives = f.string("primitives")?;
     let letters_ok =
-        !primitives.is_empty() && primitives.chars().all(|c| Primitive::ALL.iter().any(|p| p.letter() == c));
+        !primitives.is_empty() && primitives.chars().all(|c| Primitive::WHEELED.iter().any(|p| p.letter() == c));
     if !letters_ok {
         return Err(bad(
             &f.path("primitives"),

@@ -143,7 +143,7 @@ fn label(name: &str, what: &str) -> PyResult<Label> {
         return Ok(Label::Gap);
     }
     Primitive::from_name(name).map(Label::Primitive).ok_or_else(|| {
-        let allowed = quoted(Primitive::ALL.map(Primitive::name).into_iter().chain(["gap"]));
+        let allowed = quoted(Primitive::WHEELED.map(Primitive::name).into_iter().chain(["gap"]));
         PyValueError::new_err(format!("{what}: label '{name}' is not one of {allowed}"))
     })
 }

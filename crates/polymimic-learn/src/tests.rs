@@ -22,7 +22,7 @@ fn straight(count: usize, name: &str, ending: Ending) -> SegmentedDemonstration 
             last_frame: (i + 1) * 30,
             start: frame(-400.0 + 50.0 * i as f64),
             end: frame(-400.0 + 50.0 * (i + 1) as f64),
-            scores: [0.0; 4],
+            scores: [0.0; 7],
         })
         .collect();
     SegmentedDemonstration { demonstrator: name.to_owned(), pitch: Pitch::LARGE, reach_mm: None, ending, segments }

@@ -16,6 +16,7 @@ fn motion(primitive: Primitive) -> (f64, f64) {
         Primitive::Left => (4.0, 30.0),
         Primitive::Right => (3.0, -29.0),
         Primitive::Stop => (0.0, 0.0),
+        other => panic!("no synthetic motion for {other:?}"),
     }
 }
 

@@ -94,7 +94,8 @@ pub fn self_observation_of_set(
             episode.place_robot(pose)?;
         }
         if let (Primitive::Kick, Command::Humanoid(kick)) = babbler.upcoming() {
-            let kicked = kick_with_ball(&mut episode, &mut babbler, kick, derive_seed(seed, stream::SESSION, executed as u64))?;
+            let kicked =
+                kick_with_ball(&mut episode, &mut babbler, kick, derive_seed(seed, stream::SESSION, executed as u64))?;
             if let Some(frames) = kicked.filter(|_| counts[Primitive::Kick.index()] < n_per_primitive) {
                 counts[Primitive::Kick.index()] += 1;
                 out.push(PrimitiveSequence { primitive: Primitive::Kick, frames });
@@ -289,9 +290,8 @@ mod own_set_tests {
 
     #[test]
     fn the_humanoid_babbles_its_own_eight_and_kicks_a_ball_put_before_its_foot() {
-        let seqs =
-            self_observation_of_set(BodyKind::Humanoid, PrimitiveSet::Humanoid, 10, 4, &FieldConfig::default())
-                .expect("runs");
+        let seqs = self_observation_of_set(BodyKind::Humanoid, PrimitiveSet::Humanoid, 10, 4, &FieldConfig::default())
+            .expect("runs");
         assert_eq!(seqs.len(), 80);
         for s in &seqs {
             assert_eq!(s.frames.len(), 30);

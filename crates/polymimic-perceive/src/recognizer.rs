@@ -347,11 +347,17 @@ impl Recognizer {
             .collect::<Result<Vec<_>, _>>()?;
         let set = saved.config.primitives;
         if models.iter().map(|m| m.primitive).ne(set.moving().iter().copied()) {
-            return Err(corrupt(&format!("expected a model for each moving primitive of the {} set, in order", set.name())));
+            return Err(corrupt(&format!(
+                "expected a model for each moving primitive of the {} set, in order",
+                set.name()
+            )));
         }
         // Table 3.1 of its own training set bounds every segment: a file without it is damaged.
         if saved.motion.iter().map(|m| m.primitive).ne(set.primitives().iter().copied()) {
-            return Err(corrupt(&format!("expected the motion statistics of every primitive of the {} set, in order", set.name())));
+            return Err(corrupt(&format!(
+                "expected the motion statistics of every primitive of the {} set, in order",
+                set.name()
+            )));
         }
         if saved.motion.iter().any(|m| {
             ![m.distance_mean_mm, m.distance_sd_mm, m.rotation_mean_deg, m.rotation_sd_deg]

@@ -6,9 +6,14 @@ use polymimic_field::{BodyKind, FieldConfig, PrimitiveSequence, self_observation
 use polymimic_perceive::{LabelledSequence, Pose, Primitive, PrimitiveSet, Recognizer, RecognizerConfig};
 
 fn observed(n_per_primitive: usize, seed: u64) -> Vec<LabelledSequence> {
-    let sequences =
-        self_observation_of_set(BodyKind::Humanoid, PrimitiveSet::Humanoid, n_per_primitive, seed, &FieldConfig::default())
-            .expect("the humanoid babbles");
+    let sequences = self_observation_of_set(
+        BodyKind::Humanoid,
+        PrimitiveSet::Humanoid,
+        n_per_primitive,
+        seed,
+        &FieldConfig::default(),
+    )
+    .expect("the humanoid babbles");
     sequences.iter().map(labelled).collect()
 }
 

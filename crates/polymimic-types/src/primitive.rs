@@ -51,15 +51,8 @@ impl Primitive {
     pub const MOVING: [Self; 4] = [Self::Forward, Self::Backward, Self::Left, Self::Right];
 
     /// Every primitive but stop, in id order: the slots of a recogniser's scores.
-    pub const ALL_MOVING: [Self; 7] = [
-        Self::Forward,
-        Self::Backward,
-        Self::Left,
-        Self::Right,
-        Self::SidestepLeft,
-        Self::SidestepRight,
-        Self::Kick,
-    ];
+    pub const ALL_MOVING: [Self; 7] =
+        [Self::Forward, Self::Backward, Self::Left, Self::Right, Self::SidestepLeft, Self::SidestepRight, Self::Kick];
 
     /// Position in [`Primitive::ALL`] (for the wheeled five, also the field's command id).
     #[must_use]

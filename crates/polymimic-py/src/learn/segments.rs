@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use polymimic_field::Outcome;
 use polymimic_learn::{Ending, Pitch, SegmentedDemonstration};
-use polymimic_perceive::{Label, Pose, Primitive, Segment, TrackedFrame};
+use polymimic_perceive::{Label, NO_SCORES, Pose, Primitive, PrimitiveSet, Segment, TrackedFrame};
 use pyo3::exceptions::{PyIndexError, PyKeyError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyIterator, PyList, PyString, PyTuple};
@@ -142,7 +142,9 @@ fn label(name: &str, what: &str) -> PyResult<Label> {
     if name == "gap" {
         return Ok(Label::Gap);
     }
-    Primitive::from_name(name).map(Label::Primitive).ok_or_else(|| {
+    // The learner works over the wheeled five so far: the humanoid's own primitives stop here.
+    let wheeled = Primitive::from_name(name).filter(|p| PrimitiveSet::Wheeled.contains(*p));
+    wheeled.map(Label::Primitive).ok_or_else(|| {
         let allowed = quoted(Primitive::WHEELED.map(Primitive::name).into_iter().chain(["gap"]));
         PyValueError::new_err(format!("{what}: label '{name}' is not one of {allowed}"))
     })
@@ -187,14 +189,16 @@ fn segments(columns: &Bound<'_, PyAny>, what: &str, frame_count: Option<usize>) 
     let start = states(&get("start")?, what, "start", k)?;
     let end = states(&get("end")?, what, "end", k)?;
     let scores = match columns.get_item("scores") {
-        Err(_) => vec![[f64::NEG_INFINITY; 4]; k],
-        Ok(value) if value.is_none() => vec![[f64::NEG_INFINITY; 4]; k],
+        Err(_) => vec![NO_SCORES; k],
+        Ok(value) if value.is_none() => vec![NO_SCORES; k],
         Ok(value) => {
             let (data, shape) = floats(&value, &format!("{what}: scores"), 2)?;
             if shape != [k, 4] {
                 return Err(PyValueError::new_err(format!("{what}: scores has shape {shape:?}; expected [{k}, 4]")));
             }
-            data.chunks_exact(4).map(|r| [r[0], r[1], r[2], r[3]]).collect()
+            data.chunks_exact(4)
+                .map(|r| std::array::from_fn(|i| r.get(i).copied().unwrap_or(f64::NEG_INFINITY)))
+                .collect()
         }
     };
     (0..k)
@@ -240,7 +244,7 @@ impl PySegmentedDemonstrations {
         let out = PyDict::new(py);
         out.set_item("demonstrator", &d.demonstrator)?;
         out.set_item("outcome", self.outcomes[i].name())?;
-        out.set_item("segments", segment_columns(py, &d.segments)?)?;
+        out.set_item("segments", segment_columns(py, &d.segments, PrimitiveSet::Wheeled)?)?;
         out.set_item("pitch", pitch_name(&d.pitch))?;
         out.set_item("reach_mm", d.reach_mm)?;
         Ok(out)

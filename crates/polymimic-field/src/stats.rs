@@ -25,6 +25,7 @@ const fn thesis(primitive: Primitive, d: f64, d_sd: f64, r_deg: f64, r_sd_deg: f
         distance_sd_mm: d_sd,
         rotation_mean_deg: deg(r_deg).to_degrees(),
         rotation_sd_deg: deg(r_sd_deg).to_degrees(),
+        sideways: None,
     }
 }
 
@@ -69,6 +70,7 @@ pub fn primitive_stats(sequences: &[PrimitiveSequence]) -> [MotionStats; 5] {
             distance_sd_mm: ds,
             rotation_mean_deg: rm.to_degrees(),
             rotation_sd_deg: rs.to_degrees(),
+            sideways: None,
         }
     })
 }

@@ -33,7 +33,7 @@ fn to_field_frame(robot: &Pose, local: [f64; 2]) -> (f64, f64) {
 /// The ball's response to each primitive, as samples.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct BallResponse {
-    /// Per primitive (in [`Primitive::WHEELED`] order): the ball's start and its displacement, both
+    /// Per primitive (in [`Primitive::ALL`] order): the ball's start and its displacement, both
     /// in the robot's frame at the start, mm, and the sample's weight.
     samples: Vec<Vec<[f64; 5]>>,
     /// Per primitive, the samples' ball starts, to find the nearest.
@@ -57,7 +57,7 @@ impl BallResponse {
         pitch: &Pitch,
         ball_moved_mm: f64,
     ) -> Self {
-        let mut samples = vec![Vec::new(); Primitive::WHEELED.len()];
+        let mut samples = vec![Vec::new(); Primitive::ALL.len()];
         for (demo, weight) in weighted(demonstrations, weights).filter(|(d, _)| d.pitch == *pitch) {
             for (k, segment) in demo.segments.iter().enumerate() {
                 // A ball still rolling from before would credit the primitive with its roll.

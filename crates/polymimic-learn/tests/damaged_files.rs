@@ -66,6 +66,7 @@ fn motion_table() -> MotionTable {
             distance_sd_mm: 3.0,
             rotation_mean_deg: rotation,
             rotation_sd_deg: 2.0,
+            sideways: None,
         }
     });
     MotionTable::new(&stats).unwrap()

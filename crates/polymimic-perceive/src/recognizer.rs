@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::error::PerceiveError;
-use crate::motion::motion_stats;
+use crate::motion::{motion_stats, motion_stats_with_sideways};
 use crate::representation::Representation;
 
 const FORMAT: &str = "polymimic.PrimitiveRecognizer";
@@ -203,10 +203,15 @@ impl Recognizer {
             .par_iter()
             .map(|&primitive| train_model(primitive, sequences, &codebooks, &config))
             .collect::<Result<Vec<_>, _>>()?;
+        // A body that side-steps has its steps across its heading measured too.
+        let sideways = set != PrimitiveSet::Wheeled;
         let motion = set
             .primitives()
             .iter()
-            .map(|&p| motion_stats(p, sequences.iter().filter(|s| s.primitive == p).map(|s| s.poses.as_slice())))
+            .map(|&p| {
+                let own = sequences.iter().filter(|s| s.primitive == p).map(|s| s.poses.as_slice());
+                if sideways { motion_stats_with_sideways(p, own) } else { motion_stats(p, own) }
+            })
             .collect();
         Ok(Self { config, codebooks, models, motion })
     }
@@ -360,11 +365,13 @@ impl Recognizer {
             )));
         }
         if saved.motion.iter().any(|m| {
-            ![m.distance_mean_mm, m.distance_sd_mm, m.rotation_mean_deg, m.rotation_sd_deg]
+            let sideways = m.sideways.map_or([0.0; 2], |s| [s.mean_mm, s.sd_mm]);
+            ![m.distance_mean_mm, m.distance_sd_mm, m.rotation_mean_deg, m.rotation_sd_deg, sideways[0], sideways[1]]
                 .iter()
                 .all(|v| v.is_finite())
                 || m.distance_sd_mm < 0.0
                 || m.rotation_sd_deg < 0.0
+                || sideways[1] < 0.0
         }) {
             return Err(corrupt(&"motion statistics must be finite numbers with sds ≥ 0"));
         }

@@ -301,6 +301,10 @@ impl PyPrimitiveRecognizer {
             row.set_item("distance_sd_mm", s.distance_sd_mm)?;
             row.set_item("rotation_mean_deg", s.rotation_mean_deg)?;
             row.set_item("rotation_sd_deg", s.rotation_sd_deg)?;
+            if let Some(sideways) = s.sideways {
+                row.set_item("sideways_mean_mm", sideways.mean_mm)?;
+                row.set_item("sideways_sd_mm", sideways.sd_mm)?;
+            }
             out.set_item(s.primitive.name(), row)?;
         }
         Ok(out)

@@ -29,7 +29,7 @@ mod primitive_set;
 
 pub use angle::{direction_rad, rotation_by_rad, wrap_angle_euclid_rad, wrap_angle_rad};
 pub use frame::TrackedFrame;
-pub use motion::MotionStats;
+pub use motion::{MotionStats, Sideways};
 pub use point::Point;
 pub use pose::Pose;
 pub use primitive::{Primitive, capitalised};

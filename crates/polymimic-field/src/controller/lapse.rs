@@ -80,6 +80,19 @@ pub fn primitive_command(p: Primitive, body: BodyKind) -> Command {
     }
 }
 
+/// [`primitive_command`] for a controller that sees: the humanoid kicks with the foot on the
+/// side of the ball it sees (with the right one when it sees none, or the ball dead ahead).
+#[must_use]
+pub fn primitive_command_seeing(p: Primitive, observation: &Observation) -> Command {
+    let left_of_robot = |ball| observation.robot.robot_from_field(ball).y_mm() > 0.0;
+    match (p, observation.body, observation.ball) {
+        (Primitive::Kick, BodyKind::Humanoid, Some(ball)) if left_of_robot(ball) => {
+            Command::Humanoid(HumanoidCommand::KickLeft)
+        }
+        _ => primitive_command(p, observation.body),
+    }
+}
+
 /// A controller that lapses at rate ε (see the module's documentation).
 pub struct Lapsing {
     inner: Box<dyn Controller>,
@@ -159,6 +172,20 @@ mod tests {
         let inner = Box::new(Steady);
         let mut c = Lapsing::new(inner, LapseRate::new(epsilon).expect("valid"), seed);
         (0..seconds * SECOND_FRAMES).map(|k| c.command(&seen(k, body))).collect()
+    }
+
+    #[test]
+    fn the_humanoid_kicks_with_the_foot_on_the_balls_side() {
+        let mut o = seen(0, BodyKind::Humanoid);
+        o.robot = Pose::new(0.0, 0.0, std::f64::consts::FRAC_PI_2);
+        let kick = |o: &Observation| primitive_command_seeing(Primitive::Kick, o);
+        o.ball = Some(polymimic_types::Point::new(-30.0, 100.0));
+        assert_eq!(kick(&o), Command::Humanoid(HumanoidCommand::KickLeft));
+        o.ball = Some(polymimic_types::Point::new(30.0, 100.0));
+        assert_eq!(kick(&o), Command::Humanoid(HumanoidCommand::KickRight));
+        o.ball = None;
+        assert_eq!(kick(&o), Command::Humanoid(HumanoidCommand::KickRight));
+        assert_eq!(primitive_command_seeing(Primitive::Left, &o), primitive_command(Primitive::Left, o.body));
     }
 
     #[test]

@@ -135,11 +135,11 @@ fn behaviour(value: &Json, key: &str) -> Result<BehaviourRecord, RecordError> {
     let f = Fields::of(value, key, &BEHAVIOUR_KEYS)?;
     let primitives = f.string("primitives")?;
     let letters_ok =
-        !primitives.is_empty() && primitives.chars().all(|c| Primitive::WHEELED.iter().any(|p| p.letter() == c));
+        !primitives.is_empty() && primitives.chars().all(|c| Primitive::ALL.iter().any(|p| p.letter() == c));
     if !letters_ok {
         return Err(bad(
             &f.path("primitives"),
-            format!("{primitives:?} is not a sequence of the letters F, B, L, R, S"),
+            format!("{primitives:?} is not a sequence of the letters F, B, L, R, S (A, D, K on the humanoid)"),
         ));
     }
     let permanent = match f.need("permanent")? {

@@ -142,10 +142,8 @@ fn label(name: &str, what: &str) -> PyResult<Label> {
     if name == "gap" {
         return Ok(Label::Gap);
     }
-    // The learner works over the wheeled five so far: the humanoid's own primitives stop here.
-    let wheeled = Primitive::from_name(name).filter(|p| PrimitiveSet::Wheeled.contains(*p));
-    wheeled.map(Label::Primitive).ok_or_else(|| {
-        let allowed = quoted(Primitive::WHEELED.map(Primitive::name).into_iter().chain(["gap"]));
+    Primitive::from_name(name).map(Label::Primitive).ok_or_else(|| {
+        let allowed = quoted(Primitive::ALL.map(Primitive::name).into_iter().chain(["gap"]));
         PyValueError::new_err(format!("{what}: label '{name}' is not one of {allowed}"))
     })
 }

@@ -358,6 +358,17 @@ def self_observation(n_per_primitive: int, *, seed: int = 0, config: dict[str, A
             for f, p in zip(frames, primitives_run)]
 
 
+def primitive_set_of(sequences: Sequence[PrimitiveSequence]) -> Literal["wheeled", "humanoid"]:
+    """The set of primitives ``sequences`` were babbled over: the humanoid's when they hold one
+    of its own (a side-step or a kick), else the wheeled five.
+
+    >>> primitive_set_of(self_observation(1, body="humanoid", primitives="own"))
+    'humanoid'
+    """
+    wheeled = set(PRIMITIVE_SETS["wheeled"])
+    return "humanoid" if any(s.primitive not in wheeled for s in sequences) else "wheeled"
+
+
 def command_table() -> list[dict[str, Any]]:
     """Every command of every controller (id, name, language) with its equivalent primitive."""
     return list(_native.commands())

@@ -22,7 +22,7 @@ from typing import Any, Literal, TypedDict
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer, thesis_table_3_1
-from polymimic.field import PRIMITIVE_SETS, Demonstration, PrimitiveSequence, primitives_sent
+from polymimic.field import Demonstration, PrimitiveSequence, primitive_set_of, primitives_sent
 
 MOVING = ("forward", "backward", "left", "right")
 """The wheeled set's moving primitives; a recogniser's own are its ``moving``."""
@@ -32,13 +32,6 @@ Emissions = Literal["discrete", "gaussian"]
 
 CLASSIFIABLE_SHARE = 0.75
 """A segment is classifiable when this share of its frames carry one equivalent primitive."""
-
-
-def primitive_set_of(sequences: Sequence[PrimitiveSequence]) -> Literal["wheeled", "humanoid"]:
-    """The set of primitives ``sequences`` were babbled over: the humanoid's when they hold
-    one of its own (a side-step or a kick), else the wheeled five."""
-    wheeled = set(PRIMITIVE_SETS["wheeled"])
-    return "humanoid" if any(s.primitive not in wheeled for s in sequences) else "wheeled"
 
 
 def train_recognizer(sequences: Sequence[PrimitiveSequence], *, n_states: int = 1, codebook_size: int = 512,

@@ -54,6 +54,9 @@ PRIMITIVE_SETS = {"wheeled": PRIMITIVES,
 """A body's own primitives, by set: every wheeled body's five, and the humanoid's eight (its
 walks, turns and standing still, its side-steps and its kick; a left and a right kick look
 alike from above, and so do waiting and scanning)."""
+WHEELED_EQUIVALENT = {"sidestep_left": "left", "sidestep_right": "right", "kick": "backward"}
+"""The wheeled primitive each of the humanoid's own looks most like, as Table 4.4 has its
+commands: a shuffle turns the body's outline the way a spin does, a kick leans it back."""
 OUTCOMES = ("goal", "own_goal", "ball_out", "robot_out", "time_up")
 UNKNOWN_COMMAND = 65535
 """The ``command`` of a frame whose command was never recorded (a tracker log without a command

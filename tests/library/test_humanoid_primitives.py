@@ -10,7 +10,8 @@ import pytest
 
 import polymimic
 from polymimic import recognition
-from polymimic.field import PRIMITIVE_SETS
+from polymimic.field import PRIMITIVE_SETS, PRIMITIVES
+from polymimic.step_names import name_windows
 
 
 @pytest.fixture(scope="module")
@@ -102,3 +103,13 @@ def test_the_humanoid_imitator_learns_and_plays_over_its_own_set(
 
 SIDE_STEP_IDS = [209, 210]
 """The humanoid's Shuffle Left and Shuffle Right command ids."""
+
+
+def test_a_step_names_the_humanoids_own_classes_by_their_wheeled_equivalents(
+        humanoid_recognizer: polymimic.PrimitiveRecognizer) -> None:
+    own = polymimic.self_observation(2, seed=4, body="humanoid", primitives="own")
+    by_class = {s.primitive: s for s in own}
+    starts = [0]
+    named = {p: PRIMITIVES[name_windows(by_class[p].frames, humanoid_recognizer, starts)[0]]
+             for p in ("forward", "sidestep_left", "sidestep_right")}
+    assert named == {"forward": "forward", "sidestep_left": "left", "sidestep_right": "right"}

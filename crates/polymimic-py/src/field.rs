@@ -123,7 +123,7 @@ pub fn record_self_observation<'py>(
     let n = positive("n_per_primitive", n_per_primitive)?;
     let config = field_config(config)?;
     let body = body.map_or(BodyKind::Lego, |b| b.0);
-    let set = primitive_set(primitives, body)?;
+    let set = primitive_set(primitives, body.primitive_set())?;
     let sequences = py.detach(|| self_observation_of_set(body, set, n, seed.0, &config)).map_err(field_error)?;
     let frames = PyList::empty(py);
     for s in &sequences {
@@ -132,10 +132,10 @@ pub fn record_self_observation<'py>(
     Ok((frames, sequences.iter().map(|s| s.primitive.name()).collect()))
 }
 
-/// The primitive set `name` (`"wheeled"`, or `"own"`: the body's own), for `body`.
-pub(crate) fn primitive_set(name: &str, body: BodyKind) -> PyResult<PrimitiveSet> {
+/// The primitive set `name`: `"wheeled"`, or `"own"`, the body's `own`.
+pub(crate) fn primitive_set(name: &str, own: PrimitiveSet) -> PyResult<PrimitiveSet> {
     match name {
-        "own" => Ok(body.primitive_set()),
+        "own" => Ok(own),
         "wheeled" => Ok(PrimitiveSet::Wheeled),
         other => Err(PyValueError::new_err(format!("primitives must be 'wheeled' or 'own', got {other:?}"))),
     }

@@ -254,6 +254,26 @@ ppo_runs = 2
 """
 
 
+def test_ppo_learns_the_tiny_imitators_policy_as_the_library_does(tiny_toml, tmp_path):
+    pytest.importorskip("stable_baselines3")
+    from polymimic.baselines import ppo
+
+    path = tmp_path / "tiny_ppo.toml"
+    settings = ('methods = ["polymimic", "ppo"]\nprofiles = ["pair"]\n'
+                "ppo_timesteps = 2048\nppo_eval_every = 2048\nppo_runs = 1\n")
+    config = tiny_toml.read_text().replace("[benchmark]\n", "[benchmark]\n" + settings, 1)
+    path.write_text('[imitator]\nbody = "tiny"\n' + config.replace('profiles = ["pair", "duo"]\n', ""))
+    run = tmp_path / "run"
+    assert main(["benchmark", "--config", str(path), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0
+    summary = _summary(run)
+    assert summary["imitator"] == "tiny"
+    (ran,) = summary["ppo"]["runs"]
+    _, curve, _ = ppo.learning_curve(imitator="tiny", total_timesteps=2048, eval_every=2048, seed=0,
+                                     attempts_per_configuration=summary["sizes"]["attempts_per_configuration"],
+                                     evaluation_seed=summary["sizes"]["evaluation_seed"])
+    assert ran["checkpoints"] == [{k: v for k, v in c.to_dict().items() if k != "wall_s"} for c in curve]
+
+
 def test_ppo_runs_once_for_every_profile_and_reports_the_steps_it_took(tiny_toml, tmp_path, capsys):
     pytest.importorskip("stable_baselines3")
     path = tmp_path / "ppo.toml"

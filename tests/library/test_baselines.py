@@ -608,3 +608,13 @@ def test_the_quick_fit_mlp_trains_as_scikit_learns_mlp_to_the_bit():
             assert _same_fit(ours.partial_fit(samples, y, sample_weight=w),
                              theirs.partial_fit(samples, y, sample_weight=w))
         assert cases[-1][0]["max_iter"] > QuickFitMLP(random_state=3, **cases[-1][0]).fit(X, multiclass).n_iter_
+
+
+def test_a_ball_out_of_sight_is_read_where_it_was_last_seen_or_where_the_configuration_puts_it():
+    from polymimic.baselines.evaluation import ball_as_read
+
+    last = np.array([-100.0, 0.0, 0.0, 40.0, -30.0])
+    assert ball_as_read((12.0, 5.0), last, robot_x_mm=-100.0, field_length_mm=1020.0) == (12.0, 5.0)
+    assert ball_as_read((float("nan"), float("nan")), last, robot_x_mm=-100.0, field_length_mm=1020.0) == (40.0, -30.0)
+    assert ball_as_read(None, None, robot_x_mm=-170.0, field_length_mm=1020.0) == (170.0, 0.0)
+    assert ball_as_read(None, None, robot_x_mm=93.0, field_length_mm=560.0) == (-560.0 / 6, 0.0)

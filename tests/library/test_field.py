@@ -1,6 +1,7 @@
 """The simulated field from Python: shapes, determinism, the command table and bad input."""
 
 import json
+import math
 
 import numpy as np
 import pytest
@@ -221,10 +222,10 @@ def test_bad_episode_arguments_are_named():
 
 def test_the_humanoid_is_configured_by_its_own_table():
     config = default_config()
-    assert config["humanoid"]["look_after_s"] == 0.0 and config["humanoid"]["foot_window_s"] == [0.3, 0.55]
+    assert config["humanoid"]["look_after_s"] == 0.0 and config["humanoid"]["foot_window_s"] == [0.3, 0.959]
     default = polymimic.record("humanoid", configuration=2, n=1, seed=5)[0]
     # Saying the defaults again changes nothing, bit for bit.
-    same = polymimic.record("humanoid", configuration=2, n=1, seed=5, config={"humanoid": {"turn_pivot_mm": 0.0}})[0]
+    same = polymimic.record("humanoid", configuration=2, n=1, seed=5, config={"humanoid": {"turn_pivot_mm": 20.3}})[0]
     assert same.frames.tobytes() == default.frames.tobytes()
     pivoting = polymimic.record("humanoid", configuration=2, n=1, seed=5,
                                 config={"humanoid": {"turn_pivot_mm": 28.0}})[0]
@@ -255,8 +256,12 @@ def test_the_presets_in_the_docs_are_valid_run_configs():
 
     configs = pathlib.Path(__file__).parents[2] / "docs" / "configs"
     tracker = RunConfig.load(configs / "tracker_table_3_1.toml").field["tracker"]
-    assert tracker["spike_probability"] == 0.001 and tracker["position_sigma_mm"] == 0.3
+    assert tracker["spike_probability"] == 0.001
+    assert tracker["position_sigma_mm"] == default_config()["tracker"]["position_sigma_mm"] == 0.107
     config = RunConfig.load(configs / "humanoid_thesis_like.toml")
     assert config.field["humanoid"]["turn_pivot_mm"] == 28.0
     assert config.field["humanoid"]["foot_window_s"] == [0.3, 0.9]
     assert config.field["humanoid"]["walk_mm_s"] == default_config()["humanoid"]["walk_mm_s"]
+    before = RunConfig.load(configs / "world_before_calibration.toml")
+    assert before.field["tracker"]["heading_sigma_rad"] == pytest.approx(math.radians(3.0))
+    assert before.field["humanoid"]["turn_pivot_mm"] == 0.0 and before.learning.lp_own_goal_weight == 1.0

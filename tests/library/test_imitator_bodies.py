@@ -75,17 +75,19 @@ def straight_pushes():
     return demos
 
 
-@pytest.mark.parametrize("body, at_least", [("lego", 9), ("tiny", 4), ("humanoid", 5)])
+@pytest.mark.parametrize("body, at_least", [("lego", 18), ("tiny", 5), ("humanoid", 14)])
 def test_every_imitator_body_learns_a_straight_push_from_another_field_and_body(straight_pushes, body, at_least):
     """The pushes, brought into each imitator's setting (the tiny's smaller field and reach, the
     humanoid walking into the ball), score from configuration 1 under the improved control; on
-    the tiny's field they could not be learned at all before demonstrations crossed fields.
-    Measured: lego 10, tiny 5, humanoid 7 of 10."""
+    the tiny's field they could not be learned at all before demonstrations crossed fields, and a
+    random primitive scores from it about once in a hundred attempts. Measured in the default
+    world: lego 20, tiny 7, humanoid 17 of 20 (the tiny's recognisers of self-observation seeds 2
+    and 3 give it 13 and 7)."""
     recognizer = recognition.train_recognizer(polymimic.self_observation(60, seed=1, body=body), codebook_size=64)
     batch = learning.segmented(straight_pushes, recognizer)
     trial = learning.run_trial(batch, recognizer=recognizer, ordering=["straight"], seed=0, body=body)
     policy = learning.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=batch, body=body)
-    played = learning.evaluate(policy, attempts_per_configuration=10, seed=5)
+    played = learning.evaluate(policy, attempts_per_configuration=20, seed=5)
     from_one = [a.outcome for a in played.attempts if a.configuration == 1]
     assert from_one.count("goal") >= at_least, from_one
     assert {a.body for a in played.attempts} == {body}

@@ -122,13 +122,21 @@ def _observation(episode: _native.Episode, last: np.ndarray | None) -> np.ndarra
     it is out of sight (the robot's pose already repeats the last good one in a dropout)."""
     seen = episode.observation()
     robot = seen["robot"]
-    ball = seen["ball"]
-    if ball is None or not all(math.isfinite(v) for v in ball):
-        if last is not None:
-            ball = (float(last[3]), float(last[4]))
-        else:  # never seen yet: where the configuration puts it
-            ball = (math.copysign(seen["field"][0] / 6, robot[0]) * -1.0, 0.0)
+    ball = ball_as_read(seen["ball"], last, robot_x_mm=robot[0], field_length_mm=seen["field"][0])
     return np.array([*robot, *ball], dtype=np.float64)
+
+
+def ball_as_read(ball: Any, last: np.ndarray | None, *, robot_x_mm: float,
+                 field_length_mm: float) -> tuple[float, float]:
+    """The ball as a policy reads it: where it is seen; out of sight (``None`` or NaN, as a
+    humanoid's camera may leave it), the last observation's ball ``last[3:5]``; never seen yet,
+    where the configuration puts it (a sixth of the field's length from the centre, on the
+    other side from the robot)."""
+    if ball is not None and all(math.isfinite(v) for v in ball):
+        return float(ball[0]), float(ball[1])
+    if last is not None:
+        return float(last[3]), float(last[4])
+    return math.copysign(field_length_mm / 6, robot_x_mm) * -1.0, 0.0
 
 
 def _name(policy: Policy) -> str:

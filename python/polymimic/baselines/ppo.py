@@ -4,8 +4,11 @@ Learns from the environment's reward (+1 goal, −1 own goal), not from demonstr
 stated budget of environment steps (``total_timesteps``; one step is one primitive held for
 ``frames_per_action`` frames). Two environments run side by side, one per field configuration.
 The network sees the ``feature_set`` features of the observation, scaled to about ±1
-(:data:`FEATURE_SCALE`). stable-baselines3 and torch are needed to fit and to load a PPO
-policy (``pip install "polymimic[rl]"``), not to import this module.
+(:data:`FEATURE_SCALE` on the Lego's field, in proportion on another). The imitator may be any body
+(``imitator=``: a built-in body's name, a :class:`~polymimic.bodies.WheeledBody`, or the humanoid);
+it plays on its own field, and the policy remembers its body. stable-baselines3 and torch are
+needed to fit and to load a PPO policy (``pip install "polymimic[rl]"``), not to import this
+module.
 
 :func:`learning_curve` trains one and plays the imitator's evaluation attempts with it as it
 learns (the same starts and noise at every checkpoint, so the curve shows learning, not the luck
@@ -28,14 +31,20 @@ from typing import Any
 
 import numpy as np
 
-from polymimic.baselines.features import FEATURE_NAMES, check_observations, features
+from polymimic.baselines.features import FEATURE_NAMES, check_observations, features, target_goal_of
 from polymimic.baselines.files import write_policy_file
+from polymimic.bodies import WheeledBody, body_name, field_length_mm
 
 __all__ = ["FEATURE_SCALE", "Checkpoint", "PPOPolicy", "available", "fit", "learning_curve", "new_model", "scaled",
            "steps_to_reach"]
 
 FEATURE_SCALE = 500.0
-"""Millimetre features are divided by this (angles' sines and cosines are left as they are)."""
+"""Millimetre features are divided by this on the Lego's field, and by this times the ratio of
+the imitator's field length to the Lego's on another (angles' sines and cosines are left as
+they are)."""
+
+IMITATOR_BODY = "lego"
+"""The imitator's body unless one is given: the thesis's Lego robot."""
 
 
 def available() -> bool:
@@ -82,21 +91,33 @@ def steps_to_reach(curve: list[Checkpoint] | list[dict[str, Any]], net_goals: fl
     return None
 
 
-def scaled(observations: np.ndarray, feature_set: str) -> np.ndarray:
-    """The ``feature_set`` features of observations as the network sees them: millimetres over
-    :data:`FEATURE_SCALE`, as float32."""
-    values = features(observations, feature_set=feature_set)
+def scaled(observations: np.ndarray, feature_set: str, imitator: str | WheeledBody = IMITATOR_BODY) -> np.ndarray:
+    """The ``feature_set`` features of observations on ``imitator``'s field as the network sees
+    them: millimetres over :data:`FEATURE_SCALE` (in proportion to the field's length), as
+    float32.
+
+    >>> lego = np.array([[-170.0, 0.0, 0.0, 170.0, 0.0]])
+    >>> tiny = lego * [560 / 1020, 1, 1, 560 / 1020, 1]   # the same place on the tiny's field
+    >>> round(float(scaled(lego, "raw")[0, 0]), 4), round(float(scaled(tiny, "raw", "tiny")[0, 0]), 4)
+    (-0.34, -0.34)
+    """
+    values = features(observations, feature_set=feature_set, target_goal_mm=target_goal_of(imitator))
     millimetres = np.array([name.endswith("_mm") for name in FEATURE_NAMES[feature_set]])
-    values[:, millimetres] = values[:, millimetres] / FEATURE_SCALE
+    scale = FEATURE_SCALE * (field_length_mm(imitator) / field_length_mm(IMITATOR_BODY))
+    values[:, millimetres] = values[:, millimetres] / scale
     return values.astype(np.float32)
 
 
 class PPOPolicy:
-    """A trained stable-baselines3 PPO model, acting deterministically on observation batches."""
+    """A trained stable-baselines3 PPO model, acting deterministically on observation batches
+    of its ``body``'s field (the name of the imitator's body)."""
+
+    body = IMITATOR_BODY  # what a policy saved before bodies were named drives
 
     def __init__(self, model: Any, *, feature_set: str, frames_per_action: int, total_timesteps: int,
-                 method: str = "ppo") -> None:
+                 method: str = "ppo", body: str = IMITATOR_BODY) -> None:
         self.method = method
+        self.body = body
         self.model = model
         self.feature_set = feature_set
         self.total_timesteps = int(total_timesteps)
@@ -110,14 +131,15 @@ class PPOPolicy:
         obs = check_observations(observations)
         if len(obs) == 0:
             return np.empty(0, dtype=np.int64)
-        actions, _ = self.model.predict(scaled(obs, self.feature_set), deterministic=True)
+        actions, _ = self.model.predict(scaled(obs, self.feature_set, self.body), deterministic=True)
         return np.asarray(actions, dtype=np.int64).reshape(len(obs))
 
     def reset(self) -> None:
         """Nothing to restart: the policy acts deterministically."""
 
     def save(self, path: str | os.PathLike[str]) -> None:
-        write_policy_file(path, {"kind": "ppo", "method": self.method, "feature_set": self.feature_set,
+        write_policy_file(path, {"kind": "ppo", "method": self.method, "body": self.body,
+                                 "feature_set": self.feature_set,
                                  "frames_per_action": self._frames_per_action,
                                  "total_timesteps": self.total_timesteps}, self)
 
@@ -138,8 +160,10 @@ class PPOPolicy:
 
 def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_set: str = "goal_relative",
         seed: int = 0, field_config: dict[str, Any] | str | None = None, callback: Any = None,
-        before_learning: Callable[[Any], None] | None = None, method: str = "ppo", **ppo_kwargs: Any) -> PPOPolicy:
-    """PPO (``stable_baselines3.PPO("MlpPolicy", …)``) trained for ``total_timesteps`` steps.
+        before_learning: Callable[[Any], None] | None = None, method: str = "ppo",
+        imitator: str | WheeledBody = IMITATOR_BODY, **ppo_kwargs: Any) -> PPOPolicy:
+    """PPO (``stable_baselines3.PPO("MlpPolicy", …)``) trained for ``total_timesteps`` steps,
+    driving ``imitator`` on its own field.
 
     ``ppo_kwargs`` go to ``PPO`` (``n_steps``, ``learning_rate``, …); ``callback`` (a
     stable-baselines3 callback) to ``PPO.learn``, to look at the model while it learns;
@@ -157,38 +181,53 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
     if isinstance(total_timesteps, bool) or not isinstance(total_timesteps, (int, np.integer)) or total_timesteps < 1:
         raise ValueError(f"total_timesteps must be an integer ≥ 1 (environment steps), got {total_timesteps!r}")
     model = new_model(frames_per_action=frames_per_action, feature_set=feature_set, seed=seed,
-                      field_config=field_config, **ppo_kwargs)
+                      field_config=field_config, imitator=imitator, **ppo_kwargs)
     if before_learning is not None:
         before_learning(model)
     model.learn(total_timesteps=int(total_timesteps), callback=callback)
     return PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
-                     total_timesteps=total_timesteps, method=method)
+                     total_timesteps=total_timesteps, method=method, body=body_name(imitator))
 
 
 def new_model(*, frames_per_action: int = 30, feature_set: str = "goal_relative", seed: int = 0,
-              field_config: dict[str, Any] | str | None = None, **ppo_kwargs: Any) -> Any:
-    """A new, untrained ``stable_baselines3.PPO`` on ``PenaltyKick-v0``, one environment per
-    field configuration, seeing the scaled ``feature_set`` features."""
+              field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
+              **ppo_kwargs: Any) -> Any:
+    """A new, untrained ``stable_baselines3.PPO`` on ``PenaltyKick-v0`` with ``imitator``'s
+    body, one environment per field configuration, seeing the scaled ``feature_set`` features."""
     _require()
     import gymnasium
     from stable_baselines3 import PPO  # type: ignore[import-not-found, unused-ignore]
     from stable_baselines3.common.logger import Logger  # type: ignore[import-not-found, unused-ignore]
     from stable_baselines3.common.vec_env import DummyVecEnv  # type: ignore[import-not-found, unused-ignore]
 
+    from polymimic.baselines.evaluation import ball_as_read
     from polymimic.env import PenaltyKickEnv
 
+    length_mm = field_length_mm(imitator)
+
     class Scaled(gymnasium.ObservationWrapper):  # type: ignore[misc, unused-ignore]
+        """The scaled features of what the robot sees, the ball out of sight read as it is in
+        the evaluation (:func:`~polymimic.baselines.evaluation.ball_as_read`)."""
+
         def __init__(self, env: Any) -> None:
             super().__init__(env)
-            size = scaled(np.zeros((1, 5)), feature_set).shape[1]
+            size = scaled(np.zeros((1, 5)), feature_set, imitator).shape[1]
             self.observation_space = gymnasium.spaces.Box(-np.inf, np.inf, shape=(size,), dtype=np.float32)
+            self._last: np.ndarray | None = None
+
+        def reset(self, **kwargs: Any) -> Any:
+            self._last = None
+            return super().reset(**kwargs)
 
         def observation(self, observation: np.ndarray) -> np.ndarray:
-            return np.asarray(scaled(np.asarray(observation, dtype=np.float64)[None, :], feature_set)[0])
+            read = np.asarray(observation, dtype=np.float64).copy()
+            read[3:5] = ball_as_read(read[3:5], self._last, robot_x_mm=float(read[0]), field_length_mm=length_mm)
+            self._last = read
+            return np.asarray(scaled(read[None, :], feature_set, imitator)[0])
 
     def make(configuration: int) -> Any:
         return lambda: Scaled(PenaltyKickEnv(configuration=configuration, frames_per_action=frames_per_action,
-                                             config=field_config))
+                                             config=field_config, body=imitator))
 
     env = DummyVecEnv([make(1), make(2)])
     env.seed(seed)
@@ -236,10 +275,12 @@ def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_config
                    feature_set: str = "goal_relative", field_config: dict[str, Any] | str | None = None,
                    on_checkpoint: Callable[[list[Checkpoint]], None] | None = None,
                    before_learning: Callable[[Any], None] | None = None, method: str = "ppo",
+                   imitator: str | WheeledBody = IMITATOR_BODY,
                    **ppo_kwargs: Any) -> tuple[PPOPolicy, list[Checkpoint], Any]:
-    """PPO trained as :func:`fit` trains it, and played on the evaluation attempts of
-    ``evaluation_seed`` (:func:`polymimic.baselines.evaluate_policy`) before training, at the
-    first policy update at or past every multiple of ``eval_every`` steps and at the end.
+    """PPO trained as :func:`fit` trains it, driving ``imitator``, and played on the evaluation
+    attempts of ``evaluation_seed`` (:func:`polymimic.baselines.evaluate_policy`, on the
+    imitator's field) before training, at the first policy update at or past every multiple of
+    ``eval_every`` steps and at the end.
 
     PPO updates its policy once every ``n_steps × 2`` steps (4096 by default), so a checkpoint
     records the steps the policy has learned from. ``on_checkpoint`` sees the curve so far after
@@ -268,7 +309,7 @@ def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_config
 
     def evaluate(model: Any) -> None:
         policy = PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
-                           total_timesteps=model.num_timesteps, method=method)
+                           total_timesteps=model.num_timesteps, method=method, body=body_name(imitator))
         played = evaluate_policy(policy, attempts_per_configuration=attempts_per_configuration,
                                  seed=evaluation_seed, field_config=field_config)
         latest[:] = [played]
@@ -279,5 +320,5 @@ def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_config
 
     policy = fit(total_timesteps=total_timesteps, frames_per_action=frames_per_action, feature_set=feature_set,
                  seed=seed, field_config=field_config, callback=_checkpoints(int(eval_every), evaluate),
-                 before_learning=before_learning, method=method, **ppo_kwargs)
+                 before_learning=before_learning, method=method, imitator=imitator, **ppo_kwargs)
     return policy, curve, latest[0]

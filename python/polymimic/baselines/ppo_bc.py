@@ -27,7 +27,7 @@ from polymimic.baselines.evaluation import play
 from polymimic.baselines.labels import IMITATOR_BODY, command_labels
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, decision_samples
 from polymimic.baselines.tuning import validation_attempts, validation_rank
-from polymimic.bodies import WheeledBody
+from polymimic.bodies import WheeledBody, body_name
 from polymimic.field import Demonstration
 
 __all__ = ["PRETRAINING_CANDIDATES", "Pretraining", "agreement", "clone_into", "cloning_samples", "learning_curve",
@@ -58,7 +58,7 @@ def cloning_samples(demonstrations: Sequence[Demonstration], *, feature_set: str
     sees them: scaled features ``(n, k)`` and primitive indices ``(n,)``."""
     observations, labels, _ = decision_samples(command_labels(demonstrations, imitator=imitator),
                                                max_samples=max_samples, seed=seed)
-    return ppo.scaled(observations, feature_set), labels
+    return ppo.scaled(observations, feature_set, imitator), labels
 
 
 def clone_into(model: Any, features: np.ndarray, labels: np.ndarray, pretraining: Pretraining, *,
@@ -91,12 +91,12 @@ def pretrained(demonstrations: Sequence[Demonstration], pretraining: Pretraining
     """A new PPO network under ``seed`` that has cloned the demonstrations and not yet learned
     from the reward."""
     model = ppo.new_model(frames_per_action=frames_per_action, feature_set=feature_set, seed=seed,
-                          field_config=field_config)
+                          field_config=field_config, imitator=imitator)
     features, labels = cloning_samples(demonstrations, feature_set=feature_set, imitator=imitator,
                                        max_samples=max_samples, seed=seed)
     clone_into(model, features, labels, pretraining, seed=seed)
     return ppo.PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action, total_timesteps=0,
-                         method="ppo_bc")
+                         method="ppo_bc", body=body_name(imitator))
 
 
 def agreement(policy: Any, demonstrations: Sequence[Demonstration], *, imitator: str | WheeledBody = IMITATOR_BODY,
@@ -150,5 +150,5 @@ def learning_curve(demonstrations: Sequence[Demonstration], pretraining: Pretrai
     return ppo.learning_curve(total_timesteps=total_timesteps, eval_every=eval_every,
                               attempts_per_configuration=attempts_per_configuration, evaluation_seed=evaluation_seed,
                               seed=seed, frames_per_action=frames_per_action, feature_set=feature_set,
-                              field_config=field_config, method="ppo_bc",
+                              field_config=field_config, method="ppo_bc", imitator=imitator,
                               before_learning=lambda model: clone_into(model, features, labels, pretraining, seed=seed))

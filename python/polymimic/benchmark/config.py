@@ -116,10 +116,6 @@ class BenchmarkConfig:
     profiles: dict[str, Crowd] = dataclasses.field(default_factory=lambda: dict(PROFILES))
 
     def __post_init__(self) -> None:
-        for method in OPTIONAL_METHODS:
-            if method in self.benchmark.methods and not self.run.thesis_imitator:
-                raise ConfigError(f"[benchmark] methods: {method} learns the Lego robot's policy only; the imitator "
-                                  f"is the {self.run.imitator.body}")
         for name in self.benchmark.profiles:
             if name not in self.profiles:
                 raise ConfigError(f"[benchmark] profiles: unknown profile {name!r}; expected one of "

@@ -191,7 +191,7 @@ def ppo_task(shared: Shared, seed: int) -> dict[str, Any]:
         total_timesteps=settings.ppo_timesteps, eval_every=settings.ppo_eval_every,
         attempts_per_configuration=settings.attempts_per_configuration, evaluation_seed=shared.config.seeds.evaluation,
         seed=seed, frames_per_action=PPO_FRAMES_PER_ACTION, feature_set=PPO_FEATURE_SET,
-        field_config=shared.config.field)
+        field_config=shared.config.field, imitator=shared.config.imitator_body())
     return {"seed": seed, "evaluation_seed": shared.config.seeds.evaluation,
             "attempts": 2 * settings.attempts_per_configuration, "total_timesteps": settings.ppo_timesteps,
             "eval_every": settings.ppo_eval_every,

@@ -152,7 +152,7 @@ fn motion_of(primitive: Primitive) -> (f64, f64) {
 }
 
 fn motion_table() -> MotionTable {
-    let stats = Primitive::ALL.map(|primitive| {
+    let stats = Primitive::WHEELED.map(|primitive| {
         let (distance_mean_mm, rotation_mean_deg) = motion_of(primitive);
         MotionStats {
             primitive,
@@ -239,7 +239,7 @@ pub fn seeds() -> Vec<(&'static str, &'static str, String)> {
 
 fn seed_recognizer(emissions: Emissions) -> String {
     let mut sequences = Vec::new();
-    for primitive in Primitive::ALL {
+    for primitive in Primitive::WHEELED {
         for i in 0..8 {
             let k = f64::from(i);
             let start = Pose { x_mm: 40.0 * k - 150.0, y_mm: 25.0 * k - 100.0, theta_rad: 0.7 * k - 2.8 };

@@ -6,7 +6,8 @@ One row per demonstration: its ``demonstrator``, ``outcome``, ``pitch``, ``reach
 unknown) and list columns of its segments (``label``, ``first_frame``, ``last_frame``,
 ``start``, ``end``, ``scores``); the schema metadata key ``polymimic`` holds ``{"format":
 "polymimic.segments", "version": 2}``. Version 1 had no ``reach_mm``: its demonstrations' reach
-reads as unknown.
+reads as unknown. ``scores`` has a value per moving primitive of the recogniser that named the
+segments: 4 for a wheeled body's, 7 for the humanoid's own (its side-steps and kick).
 """
 
 from __future__ import annotations
@@ -24,7 +25,16 @@ FORMAT = "polymimic.segments"
 FORMAT_VERSION = 2
 _ARRAYS = {"first_frame": (np.int64, 0), "last_frame": (np.int64, 0), "start": (np.float64, 5),
            "end": (np.float64, 5), "scores": (np.float64, 4)}
-"""Each segment column's dtype and row width (0: one value per segment)."""
+"""Each segment column's dtype and row width (0: one value per segment); the scores' width is a
+wheeled recogniser's, :data:`_SCORE_WIDTHS` every one's."""
+_SCORE_WIDTHS = (4, 7)
+
+
+def _width(key: str, width: int, rows: Sequence[np.ndarray]) -> int:
+    """The row width of column ``key``: its own, but the scores' that of the rows themselves."""
+    if key != "scores":
+        return width
+    return next((r.shape[1] for r in rows if r.ndim == 2 and r.shape[1] in _SCORE_WIDTHS), width)
 
 Target = Union[str, os.PathLike[str], IO[bytes]]
 """A path, or a binary file open for writing or reading."""
@@ -44,6 +54,7 @@ def write_segments(items: SegmentedDemonstrations | Sequence[Mapping[str, Any]],
     for key, (dtype, width) in _ARRAYS.items():
         value_type = pa.int64() if dtype is np.int64 else pa.float64()
         rows = [np.asarray(item["segments"][key], dtype=dtype) for item in items]
+        width = _width(key, width, rows)
         cell_type = pa.list_(value_type, width) if width else value_type
         columns[key] = pa.array([r.tolist() for r in rows], pa.list_(cell_type))
     table = pa.table(columns).replace_schema_metadata(
@@ -77,7 +88,10 @@ def read_segments(source: Target, where: str) -> SegmentedDemonstrations:
     for i, demonstrator in enumerate(data["demonstrator"]):
         segments: dict[str, Any] = {"label": list(data["label"][i])}
         for key, (dtype, width) in _ARRAYS.items():
-            array = np.array(data[key][i], dtype=dtype)
+            cells = data[key][i]
+            if key == "scores" and cells and len(cells[0]) in _SCORE_WIDTHS:
+                width = len(cells[0])
+            array = np.array(cells, dtype=dtype)
             segments[key] = array.reshape(-1, width) if width else array
         items.append({"demonstrator": demonstrator, "outcome": data["outcome"][i], "segments": segments,
                       "pitch": data["pitch"][i], "reach_mm": data["reach_mm"][i] if "reach_mm" in data else None})

@@ -39,7 +39,7 @@ import numpy as np
 from polymimic import _native
 from polymimic._atomic import atomic_path
 from polymimic._native import ModelFileError
-from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, PrimitiveSequence
+from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVE_SETS, Demonstration, PrimitiveSequence
 
 __all__ = ["load_demonstrations", "load_self_observation", "save_demonstrations", "save_self_observation"]
 
@@ -166,8 +166,10 @@ def save_self_observation(seqs: Sequence[PrimitiveSequence], path: str | os.Path
     items = _checked_items(seqs, PrimitiveSequence, "self-observation sequences", "PrimitiveSequence")
     for i, seq in enumerate(items):
         _check_frames(seq.frames, f"sequence {i}")
-        if seq.primitive not in PRIMITIVES:
-            raise ValueError(f"sequence {i} has primitive {seq.primitive!r}; expected one of {', '.join(PRIMITIVES)}")
+        own = PRIMITIVE_SETS["humanoid" if seq.body == "humanoid" else "wheeled"]
+        if seq.primitive not in own:
+            raise ValueError(f"sequence {i} has primitive {seq.primitive!r}; a {seq.body} body's are "
+                             f"{', '.join(own)}")
     lengths = [len(s.frames) for s in items]
     columns = {
         "sequence": _repeat(np.arange(len(items)), lengths, "int32"),
@@ -195,7 +197,7 @@ def load_self_observation(path: str | os.PathLike[str]) -> list[PrimitiveSequenc
                                                             2: _SELF_OBSERVATION_TYPES_V2, 3: _SELF_OBSERVATION_TYPES},
                                    "sequence")
     primitives = _per_group(columns, "primitive", starts, stops, path, "sequence")
-    _check_values(primitives, PRIMITIVES, "primitive", path)
+    _check_values(primitives, PRIMITIVE_SETS["humanoid"], "primitive", path)
     bodies = _per_group(columns, "body", starts, stops, path, "sequence") if "body" in columns else None
     if bodies is not None:
         _check_names(bodies, "body", path)

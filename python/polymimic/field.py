@@ -21,7 +21,7 @@ import json
 import math
 import numbers
 from collections.abc import Mapping, Sequence
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 
@@ -49,6 +49,14 @@ BODIES = {"expert": "lego", "poor": "lego", "tiny": "tiny", "humanoid": "humanoi
 """The body of every demonstrator polymimic knows, by name: ``lego`` (the imitator's own),
 ``tiny`` or ``humanoid``."""
 PRIMITIVES = ("forward", "backward", "left", "right", "stop")
+PRIMITIVE_SETS = {"wheeled": PRIMITIVES,
+                  "humanoid": (*PRIMITIVES, "sidestep_left", "sidestep_right", "kick")}
+"""A body's own primitives, by set: every wheeled body's five, and the humanoid's eight (its
+walks, turns and standing still, its side-steps and its kick; a left and a right kick look
+alike from above, and so do waiting and scanning)."""
+WHEELED_EQUIVALENT = {"sidestep_left": "left", "sidestep_right": "right", "kick": "backward"}
+"""The wheeled primitive each of the humanoid's own looks most like, as Table 4.4 has its
+commands: a shuffle turns the body's outline the way a spin does, a kick leans it back."""
 OUTCOMES = ("goal", "own_goal", "ball_out", "robot_out", "time_up")
 UNKNOWN_COMMAND = 65535
 """The ``command`` of a frame whose command was never recorded (a tracker log without a command
@@ -320,7 +328,8 @@ def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse:
 
 
 def self_observation(n_per_primitive: int, *, seed: int = 0, config: dict[str, Any] | str | None = None,
-                     body: str | WheeledBody = "lego") -> list[PrimitiveSequence]:
+                     body: str | WheeledBody = "lego",
+                     primitives: Literal["wheeled", "own"] = "wheeled") -> list[PrimitiveSequence]:
     """An imitator alone on its body's field executing random one-second primitives: exactly
     ``n_per_primitive`` valid sequences of each of forward, backward, left, right and stop.
 
@@ -328,16 +337,39 @@ def self_observation(n_per_primitive: int, *, seed: int = 0, config: dict[str, A
     small field, a :class:`polymimic.bodies.WheeledBody`, or the ``"humanoid"``, which executes
     each primitive as its walking, turning or waiting equivalent.
 
+    ``primitives="own"`` babbles the body's own primitives instead (:data:`PRIMITIVE_SETS`):
+    a wheeled body's are the five, the humanoid's add ``sidestep_left``, ``sidestep_right``
+    and ``kick``, the classes of its commands an overhead tracker tells apart. A kick shows
+    only with a ball: before each one the experimenter puts a ball before the kicking foot,
+    and only a kick's frames hold a ball.
+
     >>> sequences = self_observation(1, seed=0, body="tiny")
     >>> sorted(s.primitive for s in sequences), sequences[0].body
     (['backward', 'forward', 'left', 'right', 'stop'], 'tiny')
+    >>> own = self_observation(1, seed=0, body="humanoid", primitives="own")
+    >>> sorted(s.primitive for s in own)
+    ['backward', 'forward', 'kick', 'left', 'right', 'sidestep_left', 'sidestep_right', 'stop']
     """
     _check_body(body)
-    frames, primitives = _native.record_self_observation(integer("n_per_primitive", n_per_primitive, 1),
-                                                         seed=integer("seed", seed, 0, 2**64 - 1),
-                                                         config=_field_config(config), body=native_body(body))
+    if primitives not in ("wheeled", "own"):
+        raise ValueError(f"primitives must be 'wheeled' or 'own', got {primitives!r}")
+    frames, primitives_run = _native.record_self_observation(integer("n_per_primitive", n_per_primitive, 1),
+                                                             seed=integer("seed", seed, 0, 2**64 - 1),
+                                                             config=_field_config(config), body=native_body(body),
+                                                             primitives=primitives)
     return [PrimitiveSequence(primitive=p, frames=as_frames(f), body=body_name(body))
-            for f, p in zip(frames, primitives)]
+            for f, p in zip(frames, primitives_run)]
+
+
+def primitive_set_of(sequences: Sequence[PrimitiveSequence]) -> Literal["wheeled", "humanoid"]:
+    """The set of primitives ``sequences`` were babbled over: the humanoid's when they hold one
+    of its own (a side-step or a kick), else the wheeled five.
+
+    >>> primitive_set_of(self_observation(1, body="humanoid", primitives="own"))
+    'humanoid'
+    """
+    wheeled = set(PRIMITIVE_SETS["wheeled"])
+    return "humanoid" if any(s.primitive not in wheeled for s in sequences) else "wheeled"
 
 
 def command_table() -> list[dict[str, Any]]:

@@ -22,9 +22,10 @@ from typing import Any, Literal, TypedDict
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer, thesis_table_3_1
-from polymimic.field import Demonstration, PrimitiveSequence, primitives_sent
+from polymimic.field import Demonstration, PrimitiveSequence, primitive_set_of, primitives_sent
 
 MOVING = ("forward", "backward", "left", "right")
+"""The wheeled set's moving primitives; a recogniser's own are its ``moving``."""
 
 Representation = Literal["thesis", "egocentric"]
 Emissions = Literal["discrete", "gaussian"]
@@ -36,10 +37,19 @@ CLASSIFIABLE_SHARE = 0.75
 def train_recognizer(sequences: Sequence[PrimitiveSequence], *, n_states: int = 1, codebook_size: int = 512,
                      representation: Representation = "thesis", emissions: Emissions = "discrete",
                      seed: int = 0) -> PrimitiveRecognizer:
-    """A :class:`~polymimic.PrimitiveRecognizer` trained on self-observation sequences."""
+    """A :class:`~polymimic.PrimitiveRecognizer` trained on self-observation sequences, with an
+    HMM per moving primitive of their set (:func:`primitive_set_of`).
+
+    >>> import polymimic
+    >>> own = polymimic.self_observation(20, seed=1, body="humanoid", primitives="own")
+    >>> recognizer = train_recognizer(own, codebook_size=64)
+    >>> recognizer.primitive_set, recognizer.moving
+    ('humanoid', ['forward', 'backward', 'left', 'right', 'sidestep_left', 'sidestep_right', 'kick'])
+    """
     return PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences],
                                      n_states=n_states, codebook_size=codebook_size,
-                                     representation=representation, emissions=emissions, seed=seed)
+                                     representation=representation, emissions=emissions, seed=seed,
+                                     primitives=primitive_set_of(sequences))
 
 
 def primitive_table(recognizer: PrimitiveRecognizer) -> dict[str, dict[str, float]]:
@@ -58,9 +68,10 @@ def primitive_table(recognizer: PrimitiveRecognizer) -> dict[str, dict[str, floa
 
 
 def _scores(recognizer: PrimitiveRecognizer, test: Sequence[PrimitiveSequence]) -> tuple[np.ndarray, np.ndarray]:
-    moving = [s for s in test if s.primitive in MOVING]
+    own = recognizer.moving
+    moving = [s for s in test if s.primitive in own]
     if not moving:
-        raise ValueError("the test set holds no moving primitive (forward, backward, left, right)")
+        raise ValueError(f"test holds no moving primitive of the recogniser's ({', '.join(own)})")
     truth = np.array([s.primitive for s in moving])
     return recognizer.log_likelihoods_many([s.frames for s in moving]), truth
 
@@ -70,10 +81,11 @@ def log_likelihood_table(recognizer: PrimitiveRecognizer,
     """Fig 4.5: mean log-likelihood of each HMM (outer key) on each primitive's test set
     (inner key). Sequences a model cannot have produced (−inf) are left out of its mean."""
     scores, truth = _scores(recognizer, test)
+    moving = recognizer.moving
     table: dict[str, dict[str, float]] = {}
-    for column, model in enumerate(MOVING):
+    for column, model in enumerate(moving):
         table[model] = {}
-        for primitive in MOVING:
+        for primitive in moving:
             values = scores[truth == primitive, column]
             finite = values[np.isfinite(values)]
             table[model][primitive] = float(finite.mean()) if finite.size else float("-inf")
@@ -81,12 +93,14 @@ def log_likelihood_table(recognizer: PrimitiveRecognizer,
 
 
 def confusion_matrix(recognizer: PrimitiveRecognizer, test: Sequence[PrimitiveSequence]) -> np.ndarray:
-    """Counts of test sequences of each primitive (row) named as each primitive (column)."""
+    """Counts of test sequences of each primitive (row) named as each primitive (column), in
+    the order of the recogniser's ``moving``."""
     scores, truth = _scores(recognizer, test)
     named = scores.argmax(axis=1)
-    matrix = np.zeros((len(MOVING), len(MOVING)), dtype=int)
-    for row, primitive in enumerate(MOVING):
-        matrix[row] = np.bincount(named[truth == primitive], minlength=len(MOVING))
+    moving = recognizer.moving
+    matrix = np.zeros((len(moving), len(moving)), dtype=int)
+    for row, primitive in enumerate(moving):
+        matrix[row] = np.bincount(named[truth == primitive], minlength=len(moving))
     return matrix
 
 
@@ -94,7 +108,8 @@ def accuracy_table(recognizer: PrimitiveRecognizer, test: Sequence[PrimitiveSequ
     """Table 4.3: the share of each moving primitive's held-out sequences named correctly."""
     matrix = confusion_matrix(recognizer, test)
     totals = matrix.sum(axis=1)
-    return {p: float(matrix[i, i] / totals[i]) if totals[i] else float("nan") for i, p in enumerate(MOVING)}
+    return {p: float(matrix[i, i] / totals[i]) if totals[i] else float("nan")
+            for i, p in enumerate(recognizer.moving)}
 
 
 def state_sweep(train: Sequence[PrimitiveSequence], test: Sequence[PrimitiveSequence], *,

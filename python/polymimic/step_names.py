@@ -27,7 +27,7 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.field import PRIMITIVES
+from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, WHEELED_EQUIVALENT
 
 __all__ = ["LABELS", "NO_NAME", "SEGMENTER_SETTINGS", "WINDOW_FRAMES", "name_windows", "repeat_last_good",
            "segmenter_settings", "step_settings"]
@@ -50,6 +50,9 @@ WINDOW_FRAMES = 30
 primitive it learned from."""
 
 _MOVING = -2
+_MOVING_BY_COLUMNS = {len(moving): moving for moving in
+                      ([p for p in own if p != "stop"] for own in PRIMITIVE_SETS.values())}
+"""Each set's moving primitives, by how many score columns its recogniser gives."""
 _STOP = PRIMITIVES.index("stop")
 
 
@@ -89,7 +92,9 @@ def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Se
                  window_frames: int = WINDOW_FRAMES, stop_distance_mm: float = 1.0, stop_rotation_deg: float = 20.0,
                  gap_margin: float = 2.0) -> np.ndarray:
     """The index into :data:`polymimic.field.PRIMITIVES` of the window of ``window_frames``
-    frames from each of ``starts`` (a tracker-frame record array), or :data:`NO_NAME`.
+    frames from each of ``starts`` (a tracker-frame record array), or :data:`NO_NAME`. A
+    recogniser of the humanoid's own primitives names its side-steps and kick by their wheeled
+    equivalents (:data:`polymimic.field.WHEELED_EQUIVALENT`): steps are actions of the five.
     ``starts`` are frame indices in time order; the tolerances and ``gap_margin`` are finite
     and ≥ 0, as the segmenter has them. Lost readings repeat the last good one, as the
     environment repeats them."""
@@ -106,13 +111,16 @@ def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Se
     named = np.array([_stop_or_moving(w, stop_distance_mm, stop_rotation_deg) for w in windows], dtype=np.int64)
     moving = np.flatnonzero(named == _MOVING)
     if len(moving):
-        # Forward, backward, left, right: the order of PRIMITIVES.
         scores = recognizer.log_likelihoods_many([windows[i] for i in moving])
+        # Each score column's primitive (a column per moving primitive of the recogniser's set),
+        # as an index into PRIMITIVES.
+        columns = _MOVING_BY_COLUMNS[scores.shape[1]]
+        as_wheeled = np.array([PRIMITIVES.index(WHEELED_EQUIVALENT.get(p, p)) for p in columns])
         best_two = np.sort(scores, axis=1)[:, -2:]
         # A window no HMM can have made (every score −inf) is a gap too, as the segmenter has it.
         with np.errstate(invalid="ignore"):
             close = ~np.isfinite(best_two[:, 1]) | (best_two[:, 1] - best_two[:, 0] < gap_margin)
-        named[moving] = np.where(close, NO_NAME, scores.argmax(axis=1))
+        named[moving] = np.where(close, NO_NAME, as_wheeled[scores.argmax(axis=1)])
     return named
 
 

@@ -179,7 +179,8 @@ def test_batches_add_concatenate_and_pickle():
     (_item(outcome="own-goal"), ValueError, f"demonstration 0: outcome 'own-goal' is not one of {OUTCOMES}"),
     (_item(pitch="huge"), ValueError, "demonstration 0: pitch 'huge' is not one of 'large', 'small'"),
     (_item(segments={"label": ["forward", "jump"]}), ValueError,
-     "demonstration 0: segment 1: label 'jump' is not one of 'forward', 'backward', 'left', 'right', 'stop', 'gap'"),
+     "demonstration 0: segment 1: label 'jump' is not one of 'forward', 'backward', 'left', 'right', 'stop', "
+     "'sidestep_left', 'sidestep_right', 'kick', 'gap'"),
     (_item(segments={"first_frame": np.array([0, -4])}), ValueError,
      "demonstration 0: segment 1: first_frame -4 is negative"),
     (_item(segments={"first_frame": np.array([12, 9])}), ValueError,

@@ -221,7 +221,33 @@ impl HumanoidCommand {
         }
     }
 
-    /// The visually equivalent imitator primitive (Table 4.4, extended to walking and turning).
+    /// The class of the humanoid's own primitives it belongs to: what an overhead tracker can
+    /// tell apart. Waiting, getting ready and scanning all stand still (a scan's slow twist of
+    /// the torso is far below a turn); a left and a right kick look alike, and walking ahead
+    /// on a curve is walking forward.
+    #[must_use]
+    pub const fn own_primitive(self) -> Primitive {
+        match self {
+            HumanoidCommand::Wait
+            | HumanoidCommand::Go
+            | HumanoidCommand::ScanForward
+            | HumanoidCommand::ScanDown
+            | HumanoidCommand::ScanLeft
+            | HumanoidCommand::ScanRight
+            | HumanoidCommand::Lost => Primitive::Stop,
+            HumanoidCommand::KickLeft | HumanoidCommand::KickRight => Primitive::Kick,
+            HumanoidCommand::ShuffleLeft => Primitive::SidestepLeft,
+            HumanoidCommand::ShuffleRight => Primitive::SidestepRight,
+            HumanoidCommand::WalkForward | HumanoidCommand::WalkForwardLeft | HumanoidCommand::WalkForwardRight => {
+                Primitive::Forward
+            }
+            HumanoidCommand::WalkBackward => Primitive::Backward,
+            HumanoidCommand::TurnLeft => Primitive::Left,
+            HumanoidCommand::TurnRight => Primitive::Right,
+        }
+    }
+
+    /// The visually equivalent wheeled primitive (Table 4.4, extended to walking and turning).
     #[must_use]
     pub const fn primitive(self) -> Primitive {
         match self {
@@ -385,13 +411,13 @@ pub struct CommandInfo {
 /// wheel-speed rows stand for every pair of speeds that resembles their primitive.
 #[must_use]
 pub fn command_table() -> Vec<CommandInfo> {
-    let wheels = Primitive::ALL.iter().map(|p| CommandInfo {
+    let wheels = Primitive::WHEELED.iter().map(|p| CommandInfo {
         id: WHEELS_ID_BASE + *p as u16,
         name: WHEELS_NAMES[p.index()],
         language: Language::Wheels,
         primitive: *p,
     });
-    Primitive::ALL
+    Primitive::WHEELED
         .iter()
         .map(|p| Command::Primitive(*p))
         .chain(ExpertCommand::all().map(Command::Expert))
@@ -467,7 +493,7 @@ mod tests {
     fn expert_language_is_rich_and_maps_to_every_primitive() {
         const { assert!(ExpertCommand::COUNT >= 30) };
         let prims: Vec<Primitive> = ExpertCommand::all().map(|e| Command::Expert(e).primitive()).collect();
-        for p in Primitive::ALL {
+        for p in Primitive::WHEELED {
             assert!(prims.contains(&p), "no expert command maps to {p:?}");
         }
         let spin = ExpertCommand::by_name("spin_left_fast").expect("exists");
@@ -488,5 +514,24 @@ mod tests {
         assert_eq!(H::ShuffleLeft.primitive(), Primitive::Left);
         assert_eq!(H::ScanRight.primitive(), Primitive::Right);
         assert_eq!(H::ShuffleRight.primitive(), Primitive::Right);
+    }
+
+    #[test]
+    fn the_humanoids_own_classes_cover_its_set_and_merge_what_looks_alike() {
+        use HumanoidCommand as H;
+        let own: Vec<Primitive> = H::ALL.iter().map(|h| h.own_primitive()).collect();
+        for p in polymimic_types::PrimitiveSet::Humanoid.primitives() {
+            assert!(own.contains(p), "no command of class {p:?}");
+        }
+        assert_eq!(H::KickLeft.own_primitive(), H::KickRight.own_primitive());
+        assert_eq!(H::ScanLeft.own_primitive(), H::Wait.own_primitive());
+        assert_eq!(H::ShuffleLeft.own_primitive(), Primitive::SidestepLeft);
+        // Each class's command, sent through the primitives, is back in its class.
+        for p in Primitive::ALL {
+            let Command::Humanoid(h) = crate::controller::primitive_command(p, crate::BodyKind::Humanoid) else {
+                panic!("the humanoid takes its own commands");
+            };
+            assert_eq!(h.own_primitive(), p);
+        }
     }
 }

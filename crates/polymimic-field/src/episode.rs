@@ -261,6 +261,12 @@ impl Episode {
         }
     }
 
+    /// The field's configuration it runs under.
+    #[must_use]
+    pub fn config(&self) -> &FieldConfig {
+        &self.config
+    }
+
     /// Frames recorded so far.
     #[must_use]
     pub fn frames(&self) -> &[Frame] {
@@ -401,7 +407,7 @@ mod tests {
         let run = |seed| {
             let mut e = Episode::new(&setup, &config, seed).expect("valid");
             for i in 0..300 {
-                let p = Primitive::ALL[(i / 30) % 5];
+                let p = Primitive::WHEELED[(i / 30) % 5];
                 e.step(Command::Primitive(p)).expect("step");
             }
             e.into_frames()

@@ -74,8 +74,11 @@ pub use policy::{
     demonstrate_policy, policy_episode_seed, record_policy,
 };
 /// The domain types the field shares with every crate, re-exported for the field's users.
-pub use polymimic_types::{MotionStats, Point, Pose, Primitive, TrackedFrame, wrap_angle_rad};
-pub use record::{PrimitiveSequence, run_controller, self_observation, self_observation_batch, self_observation_of};
+pub use polymimic_types::{MotionStats, Point, Pose, Primitive, PrimitiveSet, TrackedFrame, wrap_angle_rad};
+pub use record::{
+    PrimitiveSequence, run_controller, self_observation, self_observation_batch, self_observation_of,
+    self_observation_of_set,
+};
 pub use setup::{Configuration, EpisodeSetup, FieldConfig};
 pub use stats::{THESIS_TABLE_3_1, primitive_motion, primitive_stats, table_3_1_row};
 pub use tracker::{FRAME_DT_S, FRAME_RATE_HZ, Frame, TrackerConfig};

@@ -25,6 +25,7 @@ const fn thesis(primitive: Primitive, d: f64, d_sd: f64, r_deg: f64, r_sd_deg: f
         distance_sd_mm: d_sd,
         rotation_mean_deg: deg(r_deg).to_degrees(),
         rotation_sd_deg: deg(r_sd_deg).to_degrees(),
+        sideways: None,
     }
 }
 
@@ -57,7 +58,7 @@ fn mean_sd(xs: &[f64]) -> (f64, f64) {
 /// Rotations are averaged in radians, then given in degrees.
 #[must_use]
 pub fn primitive_stats(sequences: &[PrimitiveSequence]) -> [MotionStats; 5] {
-    Primitive::ALL.map(|p| {
+    Primitive::WHEELED.map(|p| {
         let (dist, rot): (Vec<f64>, Vec<f64>) =
             sequences.iter().filter(|s| s.primitive == p).filter_map(|s| primitive_motion(&s.frames)).unzip();
         let (dm, ds) = mean_sd(&dist);
@@ -69,6 +70,7 @@ pub fn primitive_stats(sequences: &[PrimitiveSequence]) -> [MotionStats; 5] {
             distance_sd_mm: ds,
             rotation_mean_deg: rm.to_degrees(),
             rotation_sd_deg: rs.to_degrees(),
+            sideways: None,
         }
     })
 }

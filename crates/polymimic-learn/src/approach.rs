@@ -23,8 +23,12 @@ const HEADING_BINS: i64 = 36;
 /// What a primitive ending nearer the ball than pushes are made from costs, in primitives: enough that
 /// a route goes round the ball, while a robot already too near still finds the way out.
 const CONTACT_COST: u32 = 50;
-/// The primitives a route is made of (stopping never gets anywhere).
-const MOVES: [Primitive; 4] = [Primitive::Forward, Primitive::Backward, Primitive::Left, Primitive::Right];
+/// The primitives a route is made of: the body's own that move it (stopping never gets
+/// anywhere, and a kick is for the ball, not a way to walk): F B L R on a wheeled body, and
+/// the side-steps too on the humanoid.
+fn route_moves(motion: &MotionTable) -> Vec<Primitive> {
+    motion.primitives().filter(|p| !matches!(p, Primitive::Stop | Primitive::Kick)).collect()
+}
 
 const CELLS: usize = (2 * HALF_CELLS + 1) as usize;
 /// The push region must hold at least one cell and one heading bin either side of its middle
@@ -92,10 +96,11 @@ impl ApproachPlan {
         let states = CELLS * CELLS * HEADING_BINS as usize;
         // Every move between two states, then grouped by the state it leads into (a counting
         // sort, so each state's predecessors are one run of `from` and `cost`).
-        let mut moves: Vec<(u32, u32, u32)> = Vec::with_capacity(states * MOVES.len());
+        let route = route_moves(motion);
+        let mut moves: Vec<(u32, u32, u32)> = Vec::with_capacity(states * route.len());
         for from in 0..states {
             let pose = centre(from);
-            for primitive in MOVES {
+            for &primitive in &route {
                 let after = from_pose(motion.mean_step(as_pose(&pose), primitive));
                 match index(&after) {
                     Some(to) if to != from => {
@@ -160,7 +165,7 @@ impl ApproachPlan {
         if self.steps_from(&cell)? == 0 {
             return None;
         }
-        MOVES
+        route_moves(motion)
             .into_iter()
             .filter(|&primitive| {
                 let robot = motion.mean_step(state.robot, primitive);

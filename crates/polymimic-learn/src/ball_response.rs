@@ -145,7 +145,7 @@ mod tests {
             last_frame: 30,
             start: frame(robot, (0.0, 50.0)),
             end: frame(Pose::new(robot.x_mm(), 40.0, robot.theta_rad()), (0.0, 80.0)),
-            scores: [0.0; 4],
+            scores: [0.0; 7],
         };
         SegmentedDemonstration {
             demonstrator: "expert".to_owned(),

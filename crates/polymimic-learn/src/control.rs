@@ -8,7 +8,7 @@
 //! primitive by primitive, stopping early if the next primitive would take the robot off the
 //! field.
 
-use polymimic_field::controller::primitive_command;
+use polymimic_field::controller::{primitive_command, primitive_command_seeing};
 use polymimic_field::{
     BodyKind, Configuration, Episode, EpisodeSetup, FieldConfig, FieldError, Frame, Outcome, derive_seed,
 };
@@ -357,7 +357,12 @@ pub fn attempt_seeds(attempts_per_configuration: usize, seed: u64) -> Vec<(Confi
 }
 
 fn run_primitive(episode: &mut Episode, primitive: Primitive, body: BodyKind) -> Result<(), FieldError> {
-    let command = primitive_command(primitive, body);
+    // Only a kick depends on what the robot sees: which foot.
+    let command = if primitive == Primitive::Kick {
+        primitive_command_seeing(primitive, &episode.observation())
+    } else {
+        primitive_command(primitive, body)
+    };
     for _ in 0..FRAMES_PER_PRIMITIVE {
         if episode.is_finished() {
             break;

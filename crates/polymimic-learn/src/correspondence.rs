@@ -258,7 +258,7 @@ mod tests {
             last_frame: 3,
             start: frame((1.0, 2.0, 0.1), (3.0, 4.0)),
             end: frame((5.0, 6.0, 0.2), (7.0, 8.0)),
-            scores: [0.0; 4],
+            scores: [0.0; 7],
         };
         let lego = Setting::of_imitator(BodyKind::Lego);
         let demo = SegmentedDemonstration {

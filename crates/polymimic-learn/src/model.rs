@@ -55,9 +55,16 @@ pub struct ForwardModel {
 }
 
 impl ForwardModel {
-    /// A model holding the five primitives, with LP `lp` (fixed if `fixed`).
+    /// A model holding the five wheeled primitives, with LP `lp` (fixed if `fixed`).
     #[must_use]
     pub fn new(name: &str, lp: f64, fixed: bool, config: &LearningConfig) -> Self {
+        Self::of_primitives(name, lp, fixed, &Primitive::WHEELED, config)
+    }
+
+    /// A model holding a body's own `primitives`, each a behaviour of one, with LP `lp` (fixed
+    /// if `fixed`).
+    #[must_use]
+    pub fn of_primitives(name: &str, lp: f64, fixed: bool, primitives: &[Primitive], config: &LearningConfig) -> Self {
         let mut model = Self {
             name: name.to_owned(),
             behaviours: Vec::new(),
@@ -68,7 +75,7 @@ impl ForwardModel {
             metrics: ModelMetrics::default(),
             lp_history: vec![lp],
         };
-        for primitive in Primitive::ALL {
+        for &primitive in primitives {
             model.insert(vec![primitive], config);
         }
         model.metrics.created = 0;

@@ -1,6 +1,12 @@
 //! What a behaviour predicts: its primitives chained from a start pose, each drawing its
 //! distance and rotation from Table 3.1 (thesis §3.3.3), and, when its ball statistics are
 //! usable, where the ball will end relative to the robot.
+//!
+//! The thesis's forward model moves a primitive along the robot's heading and then turns it:
+//! every wheeled primitive does. A humanoid's side-step moves across its heading, which those
+//! two numbers read as standing still, so a body that side-steps brings a third, its step to
+//! the left of its heading ([`polymimic_types::Sideways`]), and its primitives move by all
+//! three. A table without it moves and draws exactly as the thesis's did.
 
 use polymimic_types::{MotionStats, Pose, Primitive, wrap_angle_euclid_rad};
 use rand::RngExt;
@@ -11,29 +17,34 @@ use crate::behaviour::Behaviour;
 use crate::config::LearningConfig;
 use crate::error::LearnParamsError;
 
-/// Mean and sd of each primitive's distance (mm) and rotation (rad), indexed by primitive.
+/// Mean and sd of each primitive's distance (mm), rotation (rad) and step to the left (mm, 0
+/// for a body that does not side-step), indexed by primitive.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct MotionTable {
-    rows: Vec<(Primitive, [f64; 4])>,
+    rows: Vec<(Primitive, [f64; 6])>,
 }
 
 impl MotionTable {
-    /// From the recogniser's Table 3.1.
+    /// From the recogniser's Table 3.1: a row for every primitive it measured, which must
+    /// include the wheeled five.
     ///
     /// # Errors
-    /// A primitive missing, or a statistic not finite.
+    /// A wheeled primitive missing, or a statistic not finite.
     pub fn new(stats: &[MotionStats]) -> Result<Self, LearnParamsError> {
-        let mut rows = Vec::with_capacity(5);
+        if let Some(missing) = Primitive::WHEELED.into_iter().find(|p| stats.iter().all(|s| s.primitive != *p)) {
+            return Err(LearnParamsError::MotionStats(missing.name()));
+        }
+        let mut rows = Vec::with_capacity(stats.len());
         for primitive in Primitive::ALL {
-            let s = stats
-                .iter()
-                .find(|s| s.primitive == primitive)
-                .ok_or(LearnParamsError::MotionStats(primitive.name()))?;
+            let Some(s) = stats.iter().find(|s| s.primitive == primitive) else { continue };
+            let sideways = s.sideways.map_or([0.0; 2], |s| [s.mean_mm, s.sd_mm]);
             let row = [
                 s.distance_mean_mm,
                 s.distance_sd_mm,
                 s.rotation_mean_deg.to_radians(),
                 s.rotation_sd_deg.to_radians(),
+                sideways[0],
+                sideways[1],
             ];
             if row.iter().any(|v| !v.is_finite()) {
                 return Err(LearnParamsError::MotionStats(primitive.name()));
@@ -43,8 +54,13 @@ impl MotionTable {
         Ok(Self { rows })
     }
 
-    fn row(&self, primitive: Primitive) -> [f64; 4] {
-        self.rows.iter().find(|(p, _)| *p == primitive).map_or([0.0; 4], |(_, row)| *row)
+    /// The primitives it has rows for, in id order: the body's own set.
+    pub fn primitives(&self) -> impl Iterator<Item = Primitive> + '_ {
+        self.rows.iter().map(|(p, _)| *p)
+    }
+
+    fn row(&self, primitive: Primitive) -> [f64; 6] {
+        self.rows.iter().find(|(p, _)| *p == primitive).map_or([0.0; 6], |(_, row)| *row)
     }
 
     /// The smaller of the left and right primitives' mean rotations (rad, unsigned).
@@ -56,26 +72,28 @@ impl MotionTable {
     /// The pose after one primitive from `pose` with its mean distance and rotation.
     #[must_use]
     pub fn mean_step(&self, pose: Pose, primitive: Primitive) -> Pose {
-        let [distance, _, rotation, _] = self.row(primitive);
-        advance(pose, distance, rotation)
+        let [distance, _, rotation, _, left, _] = self.row(primitive);
+        advance(pose, distance, left, rotation)
     }
 
     /// The poses after one primitive from `pose` with its mean distance and rotation, then with
     /// the distance one sd longer and shorter, then with the rotation one sd more and less.
     #[must_use]
     pub fn spread_steps(&self, pose: Pose, primitive: Primitive) -> [Pose; 5] {
-        let [d, d_sd, r, r_sd] = self.row(primitive);
+        let [d, d_sd, r, r_sd, left, _] = self.row(primitive);
         [(d, r), (d + d_sd, r), (d - d_sd, r), (d, r + r_sd), (d, r - r_sd)]
-            .map(|(distance, rotation)| advance(pose, distance, rotation))
+            .map(|(distance, rotation)| advance(pose, distance, left, rotation))
     }
 
-    /// The pose after one primitive from `pose`: move the drawn distance along the heading,
-    /// then turn by the drawn rotation.
+    /// The pose after one primitive from `pose`: move the drawn distance along the heading
+    /// (and the drawn step to its left), then turn by the drawn rotation. The step to the left
+    /// is drawn only where it varies, so a table without one draws as the thesis's did.
     pub fn step(&self, pose: Pose, primitive: Primitive, noise_divisor: f64, rng: &mut ChaCha8Rng) -> Pose {
-        let [d_mean, d_sd, r_mean, r_sd] = self.row(primitive);
+        let [d_mean, d_sd, r_mean, r_sd, left_mean, left_sd] = self.row(primitive);
         let distance = d_mean + d_sd / noise_divisor * normal(rng);
         let rotation = r_mean + r_sd / noise_divisor * normal(rng);
-        advance(pose, distance, rotation)
+        let left = if left_sd > 0.0 { left_mean + left_sd / noise_divisor * normal(rng) } else { left_mean };
+        advance(pose, distance, left, rotation)
     }
 
     /// A table without spread: forward and backward move `step_mm`, left and right turn
@@ -89,6 +107,7 @@ impl MotionTable {
             distance_sd_mm: 0.0,
             rotation_mean_deg,
             rotation_sd_deg: 0.0,
+            sideways: None,
         };
         Self::new(&[
             stats(Primitive::Forward, step_mm, 0.0),
@@ -101,13 +120,16 @@ impl MotionTable {
     }
 }
 
-/// Moves `distance_mm` along the heading, then turns by `rotation_rad`.
-fn advance(pose: Pose, distance_mm: f64, rotation_rad: f64) -> Pose {
-    Pose::new(
-        pose.x_mm() + distance_mm * pose.theta_rad().cos(),
-        pose.y_mm() + distance_mm * pose.theta_rad().sin(),
-        wrap_angle_euclid_rad(pose.theta_rad() + rotation_rad),
-    )
+/// Moves `distance_mm` along the heading and `left_mm` across it, then turns by
+/// `rotation_rad`. Without a step across, the sums are the thesis's, term for term.
+fn advance(pose: Pose, distance_mm: f64, left_mm: f64, rotation_rad: f64) -> Pose {
+    let (sin, cos) = (pose.theta_rad().sin(), pose.theta_rad().cos());
+    let (x_mm, y_mm) = if left_mm == 0.0 {
+        (pose.x_mm() + distance_mm * cos, pose.y_mm() + distance_mm * sin)
+    } else {
+        (pose.x_mm() + distance_mm * cos - left_mm * sin, pose.y_mm() + distance_mm * sin + left_mm * cos)
+    };
+    Pose::new(x_mm, y_mm, wrap_angle_euclid_rad(pose.theta_rad() + rotation_rad))
 }
 
 /// A standard normal draw (Box-Muller), reproducible from the seeded generator.
@@ -182,6 +204,45 @@ mod tests {
 
     fn table() -> MotionTable {
         MotionTable::exact(40.0, 90.0)
+    }
+
+    #[test]
+    fn a_side_step_moves_across_the_heading_where_the_thesiss_table_would_stand_still() {
+        use polymimic_types::Sideways;
+        let stats = |primitive, distance_mean_mm, left_mm: Option<f64>| MotionStats {
+            primitive,
+            count: 1,
+            distance_mean_mm,
+            distance_sd_mm: 0.0,
+            rotation_mean_deg: 0.0,
+            rotation_sd_deg: 0.0,
+            sideways: left_mm.map(|mean_mm| Sideways { mean_mm, sd_mm: 2.0 }),
+        };
+        let humanoid: Vec<MotionStats> = Primitive::ALL
+            .into_iter()
+            .map(|p| match p {
+                Primitive::SidestepLeft => stats(p, 0.0, Some(28.0)),
+                Primitive::SidestepRight => stats(p, 0.0, Some(-28.0)),
+                Primitive::Kick => stats(p, -10.0, Some(0.0)),
+                _ => stats(p, 0.0, Some(0.0)),
+            })
+            .collect();
+        let humanoid_table = MotionTable::new(&humanoid).expect("finite");
+        assert_eq!(humanoid_table.primitives().collect::<Vec<_>>(), Primitive::ALL);
+        let facing_up = Pose::new(100.0, 50.0, std::f64::consts::FRAC_PI_2);
+        let left = humanoid_table.mean_step(facing_up, Primitive::SidestepLeft);
+        assert!((left.x_mm() - 72.0).abs() < 1e-9 && (left.y_mm() - 50.0).abs() < 1e-9, "{left:?}");
+        let kicked = humanoid_table.mean_step(facing_up, Primitive::Kick);
+        assert!((kicked.x_mm() - 100.0).abs() < 1e-9 && (kicked.y_mm() - 40.0).abs() < 1e-9, "{kicked:?}");
+        // A drawn side-step spreads across the heading by its sd.
+        let mut rng = ChaCha8Rng::seed_from_u64(3);
+        let drawn: Vec<f64> =
+            (0..400).map(|_| humanoid_table.step(facing_up, Primitive::SidestepRight, 1.0, &mut rng).x_mm()).collect();
+        let mean = drawn.iter().sum::<f64>() / 400.0;
+        assert!((mean - 128.0).abs() < 0.5, "{mean}");
+        // Without the humanoid's rows the table is the wheeled five, and a missing one is refused.
+        assert_eq!(table().primitives().collect::<Vec<_>>(), Primitive::WHEELED);
+        assert!(MotionTable::new(&humanoid[1..]).is_err());
     }
 
     #[test]

@@ -208,7 +208,7 @@ mod tests {
             last_frame: 30,
             start,
             end,
-            scores: [0.0; 4],
+            scores: [0.0; 7],
         }
     }
 

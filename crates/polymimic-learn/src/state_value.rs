@@ -114,7 +114,7 @@ mod tests {
             last_frame: 30,
             start: frame(x_mm),
             end: frame(x_mm + 50.0),
-            scores: [0.0; 4],
+            scores: [0.0; 7],
         };
         SegmentedDemonstration { demonstrator: "d".to_owned(), pitch, reach_mm: None, ending, segments: vec![segment] }
     }

@@ -12,6 +12,7 @@ use crate::prediction::MotionTable;
 use crate::round::SegmentedDemonstration;
 use crate::shaping::LpCause;
 use crate::weighting::imitator_weights;
+use polymimic_types::Primitive;
 
 /// How phase 1 presents demonstrations.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -71,9 +72,12 @@ pub fn run_trial(
     if let Some((index, d)) = demonstrations.iter().enumerate().find(|(_, d)| !ordering.contains(&d.demonstrator)) {
         return Err(LearnParamsError::OutsideOrdering { index, demonstrator: d.demonstrator.clone() }.into());
     }
+    // Every model starts from the imitator's own primitives, those its motion table knows.
+    let primitives: Vec<Primitive> = motion.primitives().collect();
+    let model = |name: &str, lp, fixed| ForwardModel::of_primitives(name, lp, fixed, &primitives, config);
     let mut models: Vec<ForwardModel> =
-        ordering.iter().map(|name| ForwardModel::new(name, config.initial_lp, config.hold_lp, config)).collect();
-    let mut imitator = ForwardModel::new("imitator", config.imitator_lp, true, config);
+        ordering.iter().map(|name| model(name, config.initial_lp, config.hold_lp)).collect();
+    let mut imitator = model("imitator", config.imitator_lp, true);
     let mut rngs: Vec<ChaCha8Rng> = (0..=models.len() as u64).map(|s| stream_rng(seed, s + 1)).collect();
     let mut order_rng = stream_rng(seed, 0);
     let model_of = |d: &SegmentedDemonstration| ordering.iter().position(|n| n == &d.demonstrator);

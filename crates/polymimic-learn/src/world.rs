@@ -145,7 +145,7 @@ mod tests {
             last_frame: 30,
             start: frame(-150.0, 0.0),
             end: frame(-110.0, 40.0),
-            scores: [0.0; 4],
+            scores: [0.0; 7],
         };
         let demo = SegmentedDemonstration {
             reach_mm: None,
@@ -196,7 +196,7 @@ mod tests {
             last_frame: 30,
             start: frame((ball_ahead_mm, 0.0)),
             end: frame((ball_ahead_mm + 40.0 * dx, 40.0 * dy)),
-            scores: [0.0; 4],
+            scores: [0.0; 7],
         };
         SegmentedDemonstration {
             reach_mm: None,

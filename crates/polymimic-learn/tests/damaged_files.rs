@@ -50,13 +50,14 @@ fn model_file() -> String {
 }
 
 fn motion_table() -> MotionTable {
-    let stats = Primitive::ALL.map(|primitive| {
+    let stats = Primitive::WHEELED.map(|primitive| {
         let (distance, rotation) = match primitive {
             Primitive::Forward => (42.0, -1.0),
             Primitive::Backward => (-48.0, 2.0),
             Primitive::Left => (4.0, 30.0),
             Primitive::Right => (3.0, -29.0),
             Primitive::Stop => (0.0, 0.0),
+            other => panic!("no synthetic motion for {other:?}"),
         };
         MotionStats {
             primitive,
@@ -65,6 +66,7 @@ fn motion_table() -> MotionTable {
             distance_sd_mm: 3.0,
             rotation_mean_deg: rotation,
             rotation_sd_deg: 2.0,
+            sideways: None,
         }
     });
     MotionTable::new(&stats).unwrap()

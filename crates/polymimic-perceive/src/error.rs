@@ -6,6 +6,8 @@ use thiserror::Error;
 pub enum PerceiveError {
     #[error("no training sequences of {0}: the recogniser needs some of every moving primitive")]
     MissingPrimitive(&'static str),
+    #[error("training sequence {index} is of {primitive}, which is not a primitive of the {set} set")]
+    NotInSet { index: usize, primitive: &'static str, set: &'static str },
     #[error("{what}: frame {frame} is not finite (NaN or infinite coordinate)")]
     NotFinite { what: String, frame: usize },
     #[error("{what} has {frames} frames; at least {needed} are needed")]

@@ -11,11 +11,12 @@ mod segmenter;
 
 pub use error::PerceiveError;
 pub use label::Label;
-pub use motion::{MotionLimits, motion_of, motion_stats};
+pub use motion::{MotionLimits, motion_of, motion_stats, motion_stats_with_sideways, sideways_of};
 /// The domain types the recogniser shares with every crate, re-exported for its users.
-pub use polymimic_types::{MotionStats, Pose, Primitive, TrackedFrame};
+pub use polymimic_types::{MotionStats, Pose, Primitive, PrimitiveSet, TrackedFrame};
 pub use recognizer::{
-    Emissions, LabelledSequence, PrimitiveHmm, PrimitiveModel, Recognizer, RecognizerConfig, best_two,
+    Emissions, LabelledSequence, NO_SCORES, PrimitiveHmm, PrimitiveModel, Recognizer, RecognizerConfig, Scores,
+    best_two,
 };
 pub use representation::{Representation, THETA_SCALE};
 pub use segmenter::{Segment, SegmenterConfig, segment, segment_many};

@@ -1,7 +1,7 @@
 //! How far each primitive moves and turns in one second (thesis Table 3.1), and the most
 //! motion any primitive can produce, which bounds a demonstration segment.
 
-use polymimic_types::{MotionStats, Pose, Primitive};
+use polymimic_types::{MotionStats, Pose, Primitive, Sideways};
 use serde::{Deserialize, Serialize};
 
 /// The displacement (mm, along the starting heading) and rotation (deg) from the first to the
@@ -11,6 +11,15 @@ pub fn motion_of(poses: &[Pose]) -> (f64, f64) {
     match (poses.first(), poses.last()) {
         (Some(first), Some(last)) => (last.advance_from_mm(first), last.rotation_from_rad(first).to_degrees()),
         _ => (0.0, 0.0),
+    }
+}
+
+/// The displacement to the left of the starting heading (mm) from the first to the last pose.
+#[must_use]
+pub fn sideways_of(poses: &[Pose]) -> f64 {
+    match (poses.first(), poses.last()) {
+        (Some(first), Some(last)) => first.robot_from_field(last.point()).y_mm(),
+        _ => 0.0,
     }
 }
 
@@ -27,7 +36,20 @@ pub fn motion_stats<'a>(primitive: Primitive, sequences: impl IntoIterator<Item 
         distance_sd_mm,
         rotation_mean_deg,
         rotation_sd_deg,
+        sideways: None,
     }
+}
+
+/// [`motion_stats`] with the displacement across the starting heading too, for a body that
+/// side-steps.
+#[must_use]
+pub fn motion_stats_with_sideways<'a>(
+    primitive: Primitive,
+    sequences: impl IntoIterator<Item = &'a [Pose]> + Clone,
+) -> MotionStats {
+    let sideways: Vec<f64> = sequences.clone().into_iter().map(sideways_of).collect();
+    let (mean_mm, sd_mm) = mean_sd(sideways.iter().copied());
+    MotionStats { sideways: Some(Sideways { mean_mm, sd_mm }), ..motion_stats(primitive, sequences) }
 }
 
 fn mean_sd(values: impl Iterator<Item = f64> + Clone) -> (f64, f64) {
@@ -73,6 +95,11 @@ mod tests {
         assert!((s.distance_sd_mm - 8.0_f64.sqrt()).abs() < 1e-12);
         assert!(s.rotation_mean_deg.abs() < 1e-12);
         let limits = MotionLimits::from_stats(&[s], 2.0);
+        let aside = [Pose::new(0.0, 0.0, 1.0), Pose::new(-2.0 * 1.0_f64.sin(), 2.0 * 1.0_f64.cos(), 1.0)];
+        let stepped = motion_stats_with_sideways(Primitive::SidestepLeft, [&aside[..], &aside[..]]);
+        let sideways = stepped.sideways.expect("measured");
+        assert!((sideways.mean_mm - 2.0).abs() < 1e-12 && sideways.sd_mm.abs() < 1e-12, "{sideways:?}");
+        assert!(stepped.distance_mean_mm.abs() < 1e-12);
         assert!((limits.max_distance_mm - (42.0 + 2.0 * 8.0_f64.sqrt())).abs() < 1e-12);
     }
 }

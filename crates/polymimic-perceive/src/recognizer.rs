@@ -1,20 +1,29 @@
-//! The primitive recogniser: one codebook per representation, one HMM per moving primitive,
-//! each HMM reading frames through its own representation and codebook (thesis §3.1.4).
+//! The primitive recogniser: one codebook per representation, one HMM per moving primitive of
+//! the imitator's own set, each HMM reading frames through its own representation and codebook
+//! (thesis §3.1.4).
 
 use std::collections::BTreeMap;
 
 use polymimic_hmm::{DiscreteHmm, GaussianHmm, GaussianHmmParams, HmmParams, Init, Topology};
-use polymimic_types::{MotionStats, Pose, Primitive};
+use polymimic_types::{MotionStats, Pose, Primitive, PrimitiveSet};
 use polymimic_vq::{Codebook, LbgParams};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 use crate::error::PerceiveError;
-use crate::motion::motion_stats;
+use crate::motion::{motion_stats, motion_stats_with_sideways};
 use crate::representation::Representation;
 
 const FORMAT: &str = "polymimic.PrimitiveRecognizer";
 const VERSION: u32 = 1;
+
+/// log-likelihoods of a sequence under every moving primitive's model, one slot per primitive
+/// of [`Primitive::ALL_MOVING`] (F B L R A D K); −inf where the recogniser has no model (the
+/// wheeled set's are the first four).
+pub type Scores = [f64; Primitive::ALL_MOVING.len()];
+
+/// Scores of no model at all.
+pub const NO_SCORES: Scores = [f64::NEG_INFINITY; Primitive::ALL_MOVING.len()];
 
 /// One self-observed primitive: the poses the tracker saw while it ran.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -61,6 +70,10 @@ pub struct RecognizerConfig {
     #[serde(default = "default_min_variance")]
     pub min_variance: f64,
     pub seed: u64,
+    /// The imitator's own primitives: one HMM per moving one. Left out of saved files when
+    /// wheeled, so that those read and write as they always have.
+    #[serde(default, skip_serializing_if = "PrimitiveSet::is_wheeled")]
+    pub primitives: PrimitiveSet,
 }
 
 fn default_min_variance() -> f64 {
@@ -82,17 +95,25 @@ impl Default for RecognizerConfig {
             emissions: Emissions::Discrete,
             min_variance: default_min_variance(),
             seed: 0,
+            primitives: PrimitiveSet::Wheeled,
         }
     }
 }
 
 impl RecognizerConfig {
-    /// The representation a primitive's model reads.
+    /// The representation a primitive's model reads: turns read the left-right one, every
+    /// other motion (walking, side-stepping, kicking) the forward-backward one, whose absolute
+    /// heading tells a step along it from a step across it.
     #[must_use]
     pub fn representation_of(&self, primitive: Primitive) -> Representation {
         match primitive {
-            Primitive::Forward | Primitive::Backward | Primitive::Stop => self.forward_backward_representation,
             Primitive::Left | Primitive::Right => self.left_right_representation,
+            Primitive::Forward
+            | Primitive::Backward
+            | Primitive::Stop
+            | Primitive::SidestepLeft
+            | Primitive::SidestepRight
+            | Primitive::Kick => self.forward_backward_representation,
         }
     }
 
@@ -129,7 +150,8 @@ pub struct PrimitiveModel {
     pub hmm: PrimitiveHmm,
 }
 
-/// Four HMMs (forward, backward, left, right) and the codebooks they read through.
+/// An HMM per moving primitive of its set (forward, backward, left, right for a wheeled body;
+/// side-steps and the kick too for the humanoid) and the codebooks they read through.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Recognizer {
     config: RecognizerConfig,
@@ -143,14 +165,18 @@ impl Recognizer {
     /// own sequences; also measures Table 3.1.
     ///
     /// # Errors
-    /// A moving primitive without sequences, a sequence with a non-finite or missing frame,
-    /// or a parameter out of range.
+    /// A moving primitive of the set without sequences, a sequence of a primitive outside the
+    /// set, a sequence with a non-finite or missing frame, or a parameter out of range.
     pub fn train(sequences: &[LabelledSequence], config: RecognizerConfig) -> Result<Self, PerceiveError> {
         config.check()?;
+        let set = config.primitives;
         for (index, seq) in sequences.iter().enumerate() {
             check_poses(&seq.poses, &format!("training sequence {index}"), 1)?;
+            if !set.contains(seq.primitive) {
+                return Err(PerceiveError::NotInSet { index, primitive: seq.primitive.name(), set: set.name() });
+            }
         }
-        for primitive in Primitive::MOVING {
+        for &primitive in set.moving() {
             if !sequences.iter().any(|s| s.primitive == primitive) {
                 return Err(PerceiveError::MissingPrimitive(primitive.name()));
             }
@@ -172,13 +198,20 @@ impl Recognizer {
                 Codebook::fit(&points, 3, lbg).map(|codebook| (representation, codebook))
             })
             .collect::<Result<_, _>>()?;
-        let models = Primitive::MOVING
+        let models = set
+            .moving()
             .par_iter()
             .map(|&primitive| train_model(primitive, sequences, &codebooks, &config))
             .collect::<Result<Vec<_>, _>>()?;
-        let motion = Primitive::ALL
+        // A body that side-steps has its steps across its heading measured too.
+        let sideways = set != PrimitiveSet::Wheeled;
+        let motion = set
+            .primitives()
             .iter()
-            .map(|&p| motion_stats(p, sequences.iter().filter(|s| s.primitive == p).map(|s| s.poses.as_slice())))
+            .map(|&p| {
+                let own = sequences.iter().filter(|s| s.primitive == p).map(|s| s.poses.as_slice());
+                if sideways { motion_stats_with_sideways(p, own) } else { motion_stats(p, own) }
+            })
             .collect();
         Ok(Self { config, codebooks, models, motion })
     }
@@ -186,6 +219,12 @@ impl Recognizer {
     #[must_use]
     pub fn config(&self) -> &RecognizerConfig {
         &self.config
+    }
+
+    /// The imitator's own primitives it recognises.
+    #[must_use]
+    pub fn primitive_set(&self) -> PrimitiveSet {
+        self.config.primitives
     }
 
     #[must_use]
@@ -198,24 +237,26 @@ impl Recognizer {
         self.codebooks.get(&representation)
     }
 
-    /// Table 3.1 of the training set, for all five primitives.
+    /// Table 3.1 of the training set, for every primitive of its set.
     #[must_use]
     pub fn motion_stats(&self) -> &[MotionStats] {
         &self.motion
     }
 
-    /// log P(poses | model) for forward, backward, left and right, in that order; −inf where
-    /// a model cannot have produced the poses.
+    /// log P(poses | model) for every moving primitive, in [`Scores`]' slots (forward,
+    /// backward, left, right, then the humanoid's); −inf where a model cannot have produced
+    /// the poses and in the slots of primitives outside its set.
     ///
     /// # Errors
     /// No poses, or a non-finite one.
-    pub fn log_likelihoods(&self, poses: &[Pose]) -> Result<[f64; 4], PerceiveError> {
+    pub fn log_likelihoods(&self, poses: &[Pose]) -> Result<Scores, PerceiveError> {
         check_poses(poses, "sequence", 1)?;
         Ok(self.scores_unchecked(poses))
     }
 
-    pub(crate) fn scores_unchecked(&self, poses: &[Pose]) -> [f64; 4] {
-        let mut scores = [f64::NEG_INFINITY; 4];
+    pub(crate) fn scores_unchecked(&self, poses: &[Pose]) -> Scores {
+        let mut scores = NO_SCORES;
+        // Moving sets are prefixes of the slots, so the models fill the first ones in order.
         for (score, model) in scores.iter_mut().zip(&self.models) {
             let points = model.representation.points(poses);
             let log_p = match &model.hmm {
@@ -242,7 +283,7 @@ impl Recognizer {
     ///
     /// # Errors
     /// As [`Self::log_likelihoods`], naming the sequence.
-    pub fn log_likelihoods_many(&self, sequences: &[&[Pose]]) -> Result<Vec<[f64; 4]>, PerceiveError> {
+    pub fn log_likelihoods_many(&self, sequences: &[&[Pose]]) -> Result<Vec<Scores>, PerceiveError> {
         for (index, poses) in sequences.iter().enumerate() {
             check_poses(poses, &format!("sequence {index}"), 1)?;
         }
@@ -309,19 +350,28 @@ impl Recognizer {
                 Ok(PrimitiveModel { primitive: m.primitive, representation: m.representation, hmm })
             })
             .collect::<Result<Vec<_>, _>>()?;
-        if models.iter().map(|m| m.primitive).ne(Primitive::MOVING) {
-            return Err(corrupt(&"expected models for forward, backward, left and right"));
+        let set = saved.config.primitives;
+        if models.iter().map(|m| m.primitive).ne(set.moving().iter().copied()) {
+            return Err(corrupt(&format!(
+                "expected a model for each moving primitive of the {} set, in order",
+                set.name()
+            )));
         }
         // Table 3.1 of its own training set bounds every segment: a file without it is damaged.
-        if saved.motion.iter().map(|m| m.primitive).ne(Primitive::ALL) {
-            return Err(corrupt(&"expected the motion statistics of forward, backward, left, right and stop"));
+        if saved.motion.iter().map(|m| m.primitive).ne(set.primitives().iter().copied()) {
+            return Err(corrupt(&format!(
+                "expected the motion statistics of every primitive of the {} set, in order",
+                set.name()
+            )));
         }
         if saved.motion.iter().any(|m| {
-            ![m.distance_mean_mm, m.distance_sd_mm, m.rotation_mean_deg, m.rotation_sd_deg]
+            let sideways = m.sideways.map_or([0.0; 2], |s| [s.mean_mm, s.sd_mm]);
+            ![m.distance_mean_mm, m.distance_sd_mm, m.rotation_mean_deg, m.rotation_sd_deg, sideways[0], sideways[1]]
                 .iter()
                 .all(|v| v.is_finite())
                 || m.distance_sd_mm < 0.0
                 || m.rotation_sd_deg < 0.0
+                || sideways[1] < 0.0
         }) {
             return Err(corrupt(&"motion statistics must be finite numbers with sds ≥ 0"));
         }
@@ -381,12 +431,13 @@ fn train_model(
     Ok(PrimitiveModel { primitive, representation, hmm: PrimitiveHmm::Discrete(hmm) })
 }
 
-/// The best and second-best primitives by score, with their scores.
+/// The best and second-best primitives by score, with their scores (ties go to the earlier
+/// slot).
 #[must_use]
-pub fn best_two(scores: &[f64; 4]) -> (Primitive, f64, f64) {
-    let mut order = [0, 1, 2, 3];
+pub fn best_two(scores: &Scores) -> (Primitive, f64, f64) {
+    let mut order: [usize; Primitive::ALL_MOVING.len()] = std::array::from_fn(|slot| slot);
     order.sort_by(|&a, &b| scores[b].total_cmp(&scores[a]).then(a.cmp(&b)));
-    (Primitive::MOVING[order[0]], scores[order[0]], scores[order[1]])
+    (Primitive::ALL_MOVING[order[0]], scores[order[0]], scores[order[1]])
 }
 
 /// Poses must be at least `needed` and all finite.

@@ -13,7 +13,7 @@ use serde::{Deserialize, Serialize};
 use crate::error::PerceiveError;
 use crate::label::Label;
 use crate::motion::MotionLimits;
-use crate::recognizer::{Recognizer, best_two, check_poses};
+use crate::recognizer::{NO_SCORES, Recognizer, Scores, best_two, check_poses};
 
 /// The segmenter's thresholds; the defaults are the thesis's.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -64,8 +64,9 @@ pub struct Segment {
     pub last_frame: usize,
     pub start: TrackedFrame,
     pub end: TrackedFrame,
-    /// log-likelihoods of forward, backward, left, right (−inf for a stop, never scored).
-    pub scores: [f64; 4],
+    /// log-likelihoods of every moving primitive in [`Scores`]' slots (all −inf for a stop,
+    /// never scored).
+    pub scores: Scores,
 }
 
 /// Segments `frames` with `recognizer`. A tail shorter than `min_frames` after the last
@@ -104,7 +105,7 @@ pub fn segment(
                     last_frame: last,
                     start: frames[first],
                     end: frames[last],
-                    scores: [f64::NEG_INFINITY; 4],
+                    scores: NO_SCORES,
                 }),
             }
         } else {

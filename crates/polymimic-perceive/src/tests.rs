@@ -16,6 +16,7 @@ fn motion(primitive: Primitive) -> (f64, f64) {
         Primitive::Left => (4.0, 30.0),
         Primitive::Right => (3.0, -29.0),
         Primitive::Stop => (0.0, 0.0),
+        other => panic!("no synthetic motion for {other:?}"),
     }
 }
 
@@ -40,7 +41,7 @@ fn run(primitive: Primitive, start: Pose, frames: usize, rng: &mut ChaCha8Rng) -
 fn self_observation(per_primitive: usize, seed: u64) -> Vec<LabelledSequence> {
     let mut rng = ChaCha8Rng::seed_from_u64(seed);
     let mut sequences = Vec::new();
-    for primitive in Primitive::ALL {
+    for primitive in Primitive::WHEELED {
         for _ in 0..per_primitive {
             let x_mm = rng.random_range(-300.0..300.0);
             let y_mm = rng.random_range(-200.0..200.0);

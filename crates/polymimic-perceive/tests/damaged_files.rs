@@ -17,6 +17,7 @@ fn motion(primitive: Primitive) -> (f64, f64) {
         Primitive::Left => (4.0, 30.0),
         Primitive::Right => (3.0, -29.0),
         Primitive::Stop => (0.0, 0.0),
+        other => panic!("no synthetic motion for {other:?}"),
     }
 }
 
@@ -36,7 +37,7 @@ fn run(primitive: Primitive, start: Pose, frames: usize, scale: f64) -> Vec<Pose
 
 fn self_observation() -> Vec<LabelledSequence> {
     let mut sequences = Vec::new();
-    for primitive in Primitive::ALL {
+    for primitive in Primitive::WHEELED {
         for i in 0..8 {
             let k = f64::from(i);
             let start = Pose::new(40.0 * k - 150.0, 25.0 * k - 100.0, 0.7 * k - 2.8);

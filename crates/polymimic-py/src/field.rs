@@ -4,9 +4,9 @@
 use numpy::{PyArray1, PyArray2};
 use polymimic_field::{
     BodyKind, Configuration, Demonstrator, Episode, EpisodeSetup, FieldConfig, Frame, LapseRate, Outcome,
-    THESIS_TABLE_3_1, command_table, record_on, self_observation_of,
+    THESIS_TABLE_3_1, command_table, record_on, self_observation_of_set,
 };
-use polymimic_types::{Pose, Primitive};
+use polymimic_types::{Pose, Primitive, PrimitiveSet};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -110,24 +110,35 @@ pub(crate) fn recording<'py>(
 /// One-second primitives of an imitator (the Lego unless `body` says otherwise) alone on its
 /// field: `(frames, primitive names)`.
 #[pyfunction]
-#[pyo3(signature = (n_per_primitive, *, seed=Seed(0), config=None, body=None),
-       text_signature = "(n_per_primitive, *, seed=0, config=None, body=None)")]
+#[pyo3(signature = (n_per_primitive, *, seed=Seed(0), config=None, body=None, primitives="wheeled"),
+       text_signature = "(n_per_primitive, *, seed=0, config=None, body=None, primitives='wheeled')")]
 pub fn record_self_observation<'py>(
     py: Python<'py>,
     n_per_primitive: i64,
     seed: Seed,
     config: Option<&str>,
     body: Option<Body>,
+    primitives: &str,
 ) -> PyResult<(Bound<'py, PyList>, Vec<&'static str>)> {
     let n = positive("n_per_primitive", n_per_primitive)?;
     let config = field_config(config)?;
     let body = body.map_or(BodyKind::Lego, |b| b.0);
-    let sequences = py.detach(|| self_observation_of(body, n, seed.0, &config)).map_err(field_error)?;
+    let set = primitive_set(primitives, body.primitive_set())?;
+    let sequences = py.detach(|| self_observation_of_set(body, set, n, seed.0, &config)).map_err(field_error)?;
     let frames = PyList::empty(py);
     for s in &sequences {
         frames.append(frames_array(py, &s.frames)?)?;
     }
     Ok((frames, sequences.iter().map(|s| s.primitive.name()).collect()))
+}
+
+/// The primitive set `name`: `"wheeled"`, or `"own"`, the body's `own`.
+pub(crate) fn primitive_set(name: &str, own: PrimitiveSet) -> PyResult<PrimitiveSet> {
+    match name {
+        "own" => Ok(own),
+        "wheeled" => Ok(PrimitiveSet::Wheeled),
+        other => Err(PyValueError::new_err(format!("primitives must be 'wheeled' or 'own', got {other:?}"))),
+    }
 }
 
 /// Every command of every controller with its equivalent imitator primitive.

@@ -83,9 +83,9 @@ impl PyEpisodeBatch {
             .enumerate()
             .map(|(i, &a)| match a {
                 -1 => Ok(None),
-                _ => usize::try_from(a).ok().and_then(|a| Primitive::ALL.get(a).copied()).map(Some).ok_or_else(|| {
-                    PyValueError::new_err(format!("actions[{i}] = {a}: an action is an integer in 0..4 (−1: none)"))
-                }),
+                _ => usize::try_from(a).ok().and_then(|a| Primitive::WHEELED.get(a).copied()).map(Some).ok_or_else(
+                    || PyValueError::new_err(format!("actions[{i}] = {a}: an action is an integer in 0..4 (−1: none)")),
+                ),
             })
             .collect::<PyResult<Vec<_>>>()?;
         py.detach(|| self.with(|b| b.step(&primitives))).map_err(field_error)?;

@@ -7,7 +7,7 @@ use polymimic_perceive::{
     Emissions, LabelledSequence, PrimitiveHmm, Recognizer, RecognizerConfig, Representation, Segment, SegmenterConfig,
     segment, segment_many,
 };
-use polymimic_types::{Pose, Primitive, TrackedFrame};
+use polymimic_types::{Pose, Primitive, PrimitiveSet, TrackedFrame};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple, PyType};
@@ -39,7 +39,8 @@ fn tracked_frames(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<TrackedF
 
 fn primitive(name: &str) -> PyResult<Primitive> {
     Primitive::from_name(name).ok_or_else(|| {
-        PyValueError::new_err(format!("unknown primitive {name:?}; expected forward, backward, left, right or stop"))
+        let names: Vec<&str> = Primitive::ALL.iter().map(|p| p.name()).collect();
+        PyValueError::new_err(format!("unknown primitive {name:?}; expected one of {}", names.join(", ")))
     })
 }
 
@@ -106,8 +107,14 @@ impl SegmenterSettings {
     }
 }
 
-/// Segments as columns: labels, frame ranges, end frames and scores.
-pub(crate) fn segment_columns<'py>(py: Python<'py>, segments: &[Segment]) -> PyResult<Bound<'py, PyDict>> {
+/// Segments as columns: labels, frame ranges, end frames and the scores of the recogniser's
+/// `set`, one column per moving primitive of it.
+pub(crate) fn segment_columns<'py>(
+    py: Python<'py>,
+    segments: &[Segment],
+    set: PrimitiveSet,
+) -> PyResult<Bound<'py, PyDict>> {
+    let n_scores = set.moving().len();
     let k = segments.len();
     let out = PyDict::new(py);
     out.set_item("label", PyList::new(py, segments.iter().map(|s| s.label.name()))?)?;
@@ -115,7 +122,8 @@ pub(crate) fn segment_columns<'py>(py: Python<'py>, segments: &[Segment]) -> PyR
     out.set_item("last_frame", PyArray1::from_vec(py, segments.iter().map(|s| s.last_frame as i64).collect()))?;
     out.set_item("start", matrix(py, segments.iter().flat_map(|s| frame_row(&s.start)).collect(), k, 5)?)?;
     out.set_item("end", matrix(py, segments.iter().flat_map(|s| frame_row(&s.end)).collect(), k, 5)?)?;
-    out.set_item("scores", matrix(py, segments.iter().flat_map(|s| s.scores).collect(), k, 4)?)?;
+    let scores = segments.iter().flat_map(|s| s.scores[..n_scores].to_vec()).collect();
+    out.set_item("scores", matrix(py, scores, k, n_scores)?)?;
     Ok(out)
 }
 
@@ -123,12 +131,20 @@ pub(crate) fn frame_row(frame: &TrackedFrame) -> [f64; 5] {
     [frame.robot.x_mm(), frame.robot.y_mm(), frame.robot.theta_rad(), frame.ball_x_mm, frame.ball_y_mm]
 }
 
+impl PyPrimitiveRecognizer {
+    fn n_moving(&self) -> usize {
+        self.recognizer.primitive_set().moving().len()
+    }
+}
+
 #[pymethods]
 impl PyPrimitiveRecognizer {
-    /// Trains the codebooks and the four HMMs on self-observation sequences.
+    /// Trains the codebooks and an HMM per moving primitive of `primitives` (`"wheeled"`, the
+    /// four, or `"humanoid"`, the humanoid's seven) on self-observation sequences.
     #[classmethod]
     #[pyo3(signature = (sequences, labels, *, n_states=1, codebook_size=512, links=2, max_iter=100, tol=1e-4,
-                        representation="thesis", emissions="discrete", emission_floor=1e-8, min_variance=0.01, seed=0))]
+                        representation="thesis", emissions="discrete", emission_floor=1e-8, min_variance=0.01, seed=0,
+                        primitives="wheeled"))]
     #[allow(clippy::too_many_arguments, clippy::needless_pass_by_value)] // pyo3 extracts by value
     fn train(
         _cls: &Bound<'_, PyType>,
@@ -145,7 +161,11 @@ impl PyPrimitiveRecognizer {
         emission_floor: f64,
         min_variance: f64,
         seed: i64,
+        primitives: &str,
     ) -> PyResult<Self> {
+        let set = PrimitiveSet::from_name(primitives).ok_or_else(|| {
+            PyValueError::new_err(format!("primitives must be 'wheeled' or 'humanoid', got {primitives:?}"))
+        })?;
         let emissions =
             one_of("emissions", emissions, &[("discrete", Emissions::Discrete), ("gaussian", Emissions::Gaussian)])?;
         let sequences: Vec<Bound<'_, PyAny>> = sequences.try_iter()?.collect::<PyResult<_>>()?;
@@ -177,20 +197,22 @@ impl PyPrimitiveRecognizer {
             forward_backward_representation: forward_backward,
             left_right_representation: left_right,
             seed: non_negative("seed", seed)? as u64,
+            primitives: set,
             ..RecognizerConfig::default()
         };
         let recognizer = py.detach(|| Recognizer::train(&training, config)).map_err(perceive_error)?;
         Ok(Self { recognizer })
     }
 
-    /// log-likelihoods of forward, backward, left and right for one sequence of frames.
+    /// log-likelihoods of its moving primitives (`moving`: forward, backward, left and right,
+    /// then the humanoid's) for one sequence of frames.
     fn log_likelihoods<'py>(&self, py: Python<'py>, frames: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let poses = poses(frames, "frames")?;
         let scores = self.recognizer.log_likelihoods(&poses).map_err(perceive_error)?;
-        Ok(PyArray1::from_vec(py, scores.to_vec()))
+        Ok(PyArray1::from_vec(py, scores[..self.n_moving()].to_vec()))
     }
 
-    /// `(k, 4)` log-likelihoods of many sequences, in parallel.
+    /// `(k, m)` log-likelihoods of many sequences under its `m` moving primitives, in parallel.
     fn log_likelihoods_many<'py>(
         &self,
         py: Python<'py>,
@@ -203,8 +225,20 @@ impl PyPrimitiveRecognizer {
             .collect::<PyResult<_>>()?;
         let refs: Vec<&[Pose]> = all.iter().map(Vec::as_slice).collect();
         let scores = py.detach(|| self.recognizer.log_likelihoods_many(&refs)).map_err(perceive_error)?;
-        let count = scores.len();
-        matrix(py, scores.into_iter().flatten().collect(), count, 4)
+        let (count, n_moving) = (scores.len(), self.n_moving());
+        matrix(py, scores.into_iter().flat_map(|s| s[..n_moving].to_vec()).collect(), count, n_moving)
+    }
+
+    /// The set of primitives it recognises: `"wheeled"` or `"humanoid"`.
+    #[getter]
+    fn primitive_set(&self) -> &'static str {
+        self.recognizer.primitive_set().name()
+    }
+
+    /// Its moving primitives, in the order of its scores' columns.
+    #[getter]
+    fn moving(&self) -> Vec<&'static str> {
+        self.recognizer.primitive_set().moving().iter().map(|p| p.name()).collect()
     }
 
     /// The moving primitive whose HMM scores the frames highest.
@@ -214,7 +248,8 @@ impl PyPrimitiveRecognizer {
     }
 
     /// Segments a demonstration; returns columns: `label` (list of str), `first_frame`,
-    /// `last_frame` (int arrays), `start` and `end` (`(k, 5)` frames) and `scores` (`(k, 4)`).
+    /// `last_frame` (int arrays), `start` and `end` (`(k, 5)` frames) and `scores` (`(k, m)`, a
+    /// column per moving primitive).
     /// Settings, keyword-only: `min_frames=10`, `stop_distance_mm=1.0`, `stop_rotation_deg=20.0`,
     /// `limit_sds=2.0`, `gap_margin=2.0`.
     #[pyo3(signature = (frames, **settings))]
@@ -228,7 +263,7 @@ impl PyPrimitiveRecognizer {
         let frames = tracked_frames(frames, "demonstration")?;
         let config = settings.config()?;
         let segments = py.detach(|| segment(&frames, &self.recognizer, &config)).map_err(perceive_error)?;
-        segment_columns(py, &segments)
+        segment_columns(py, &segments, self.recognizer.primitive_set())
     }
 
     /// `segment` for many demonstrations, in parallel, with the same settings; one dictionary
@@ -251,7 +286,7 @@ impl PyPrimitiveRecognizer {
         let segmented = py.detach(|| segment_many(&refs, &self.recognizer, &config)).map_err(perceive_error)?;
         let out = PyList::empty(py);
         for segments in &segmented {
-            out.append(segment_columns(py, segments)?)?;
+            out.append(segment_columns(py, segments, self.recognizer.primitive_set())?)?;
         }
         Ok(out)
     }
@@ -266,6 +301,10 @@ impl PyPrimitiveRecognizer {
             row.set_item("distance_sd_mm", s.distance_sd_mm)?;
             row.set_item("rotation_mean_deg", s.rotation_mean_deg)?;
             row.set_item("rotation_sd_deg", s.rotation_sd_deg)?;
+            if let Some(sideways) = s.sideways {
+                row.set_item("sideways_mean_mm", sideways.mean_mm)?;
+                row.set_item("sideways_sd_mm", sideways.sd_mm)?;
+            }
             out.set_item(s.primitive.name(), row)?;
         }
         Ok(out)

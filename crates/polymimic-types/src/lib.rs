@@ -25,10 +25,12 @@ mod motion_since;
 mod point;
 mod pose;
 mod primitive;
+mod primitive_set;
 
 pub use angle::{direction_rad, rotation_by_rad, wrap_angle_euclid_rad, wrap_angle_rad};
 pub use frame::TrackedFrame;
-pub use motion::MotionStats;
+pub use motion::{MotionStats, Sideways};
 pub use point::Point;
 pub use pose::Pose;
 pub use primitive::{Primitive, capitalised};
+pub use primitive_set::PrimitiveSet;

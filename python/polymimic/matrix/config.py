@@ -72,12 +72,16 @@ class MatrixSettings:
                                                       25)
     validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
     max_decision_samples: int = _doc("the most decision samples a bco fit takes", 20_000)
+    primitives: str = _doc("each row's primitives: own (its body's: the humanoid's eight, a wheeled body's five) "
+                           "or wheeled (the five for every row, the humanoid walking, turning and waiting)", "own")
 
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration", "bco_fits",
                      "tuning_budget", "validation_attempts_per_configuration", "max_decision_samples"):
             in_range("matrix", name, getattr(self, name), 1)
         in_range("matrix", "validation_seed", self.validation_seed, 0, 2**62 - 1)
+        if self.primitives not in ("own", "wheeled"):
+            raise ConfigError(f"[matrix] primitives must be 'own' or 'wheeled', got {self.primitives!r}")
         rows = self.imitators
         if not isinstance(rows, (list, tuple)) or not rows or not all(isinstance(r, str) for r in rows):
             raise ConfigError(f"[matrix] imitators must be a non-empty list of body names, got {rows!r}")

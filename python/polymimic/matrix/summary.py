@@ -60,6 +60,7 @@ def gather(run: MatrixDir, config: MatrixConfig) -> dict[str, Any]:
              "tuning_budget": settings.tuning_budget,
              "validation_attempts_per_configuration": settings.validation_attempts_per_configuration,
              "evaluation_seed": config.seeds.evaluation, "validation_seed": settings.validation_seed}
+    own_set = "humanoid" if settings.primitives == "own" else "wheeled"
     imitators = {}
     cells: dict[str, dict[str, Any]] = {}
     for row in settings.imitators:
@@ -67,7 +68,8 @@ def gather(run: MatrixDir, config: MatrixConfig) -> dict[str, Any]:
         field = playing_field(body)
         imitators[row] = {"field": {"length_mm": field.length_mm, "width_mm": field.width_mm,
                                     "goal_mouth_mm": field.goal_mouth_mm, "ball_diameter_mm": field.ball_diameter_mm},
-                          "pitch": pitch_of(body), "reach_mm": reach_mm(body, imitating=True)}
+                          "pitch": pitch_of(body), "reach_mm": reach_mm(body, imitating=True),
+                          "primitives": own_set if body == "humanoid" else "wheeled"}
         cells[row] = {column: _cell(run, config, row, column) for column in COLUMNS}
         own = {m: cells[row]["own_body"][m]["net_goals"]["mean"] for m in ("polymimic", "bco")}
         for cell in cells[row].values():

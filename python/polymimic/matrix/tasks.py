@@ -40,10 +40,13 @@ class Shared:
 
 
 def recognise_task(config: MatrixConfig, row: str) -> tuple[list[PrimitiveSequence], PrimitiveRecognizer]:
-    """``row`` → its self-observation on its own body and field, and the recogniser trained on it."""
+    """``row`` → its self-observation on its own body and field, over its own primitives or the
+    wheeled five (``[matrix] primitives``), and the recogniser trained on it."""
     settings = config.run.recognizer
+    own = config.matrix.primitives == "own"
     sequences = self_observation(settings.train_per_primitive, seed=config.seeds.self_observation_train,
-                                 config=config.run.field, body=config.body(row))
+                                 config=config.run.field, body=config.body(row),
+                                 primitives="own" if own else "wheeled")
     return sequences, settings.train(sequences)
 
 

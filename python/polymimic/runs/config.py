@@ -32,7 +32,7 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic._tables import Path, merged
 from polymimic._toml import loads, write_table
 from polymimic.bodies import THESIS_BODIES, WheeledBody
-from polymimic.field import PrimitiveSequence, check_config, default_config
+from polymimic.field import PrimitiveSequence, check_config, default_config, primitive_set_of
 from polymimic.learning import LearningConfig
 from polymimic.runs.roster import EXPERIMENTS, Experiment
 from polymimic.runs.roster_config import (
@@ -122,7 +122,8 @@ class RecognizerSettings:
         reproduction's and the benchmark's alike)."""
         options = {k: v for k, v in dataclasses.asdict(self).items()
                    if k not in ("train_per_primitive", "test_per_primitive")}
-        return PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences], **options)
+        return PrimitiveRecognizer.train([s.frames for s in sequences], [s.primitive for s in sequences],
+                                         primitives=primitive_set_of(sequences), **options)
 
 
 @dataclasses.dataclass(frozen=True)

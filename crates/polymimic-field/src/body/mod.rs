@@ -3,7 +3,7 @@
 mod humanoid;
 mod wheeled;
 
-use polymimic_types::{Point, Pose};
+use polymimic_types::{Point, Pose, PrimitiveSet};
 use serde::Serialize;
 
 pub use humanoid::{HUMANOID, HUMANOID_BEFORE_CALIBRATION, HumanoidParams};
@@ -56,6 +56,15 @@ impl BodyKind {
     #[must_use]
     pub const fn is_wheeled(self) -> bool {
         !matches!(self, BodyKind::Humanoid)
+    }
+
+    /// Its own primitives: the classes of its commands an overhead tracker tells apart.
+    #[must_use]
+    pub const fn primitive_set(self) -> PrimitiveSet {
+        match self {
+            BodyKind::Humanoid => PrimitiveSet::Humanoid,
+            BodyKind::Lego | BodyKind::Tiny | BodyKind::Wheeled(..) => PrimitiveSet::Wheeled,
+        }
     }
 
     /// Name.

@@ -250,7 +250,11 @@ impl WheeledBody {
     /// The command for the next frame; fresh traction on onset or after a long hold.
     pub(crate) fn command(&mut self, command: Command, rng: &mut Rng) -> Result<(), FieldParamError> {
         let (left, right) = match command {
-            Command::Primitive(p) => self.params.primitive_wheels_mm_s[p.index()],
+            Command::Primitive(p) => *self
+                .params
+                .primitive_wheels_mm_s
+                .get(p.index())
+                .ok_or(FieldParamError::CommandNotSupported { command: p.name(), body: self.params.name })?,
             Command::Expert(e) if self.params.accepts_expert_commands => e.wheels_mm_s(),
             Command::Wheels(w) => {
                 let (left, right) = w.mm_s();
@@ -396,5 +400,8 @@ mod tests {
         let mut lego = WheeledBody::new(LEGO, Pose::default());
         assert!(lego.command(Command::Expert(e), &mut r).is_ok());
         assert!(lego.command(Command::Humanoid(HumanoidCommand::KickLeft), &mut r).is_err());
+        // The humanoid's own primitives are no wheeled body's.
+        let kick = lego.command(Command::Primitive(polymimic_types::Primitive::Kick), &mut r);
+        assert_eq!(kick, Err(FieldParamError::CommandNotSupported { command: "kick", body: "lego" }));
     }
 }

@@ -60,7 +60,9 @@ impl From<LapseRate> for f64 {
 }
 
 /// The command that executes primitive `p` on `body`: the primitive itself on a wheeled body,
-/// the humanoid's walking or turning equivalent on the humanoid (which takes no primitives).
+/// the humanoid's walking, turning, side-stepping or kicking command on the humanoid (which
+/// takes no primitives; its kick is the right foot's). A wheeled body refuses the humanoid's
+/// own primitives when it is sent them.
 #[must_use]
 pub fn primitive_command(p: Primitive, body: BodyKind) -> Command {
     match body {
@@ -71,7 +73,23 @@ pub fn primitive_command(p: Primitive, body: BodyKind) -> Command {
             Primitive::Left => HumanoidCommand::TurnLeft,
             Primitive::Right => HumanoidCommand::TurnRight,
             Primitive::Stop => HumanoidCommand::Wait,
+            Primitive::SidestepLeft => HumanoidCommand::ShuffleLeft,
+            Primitive::SidestepRight => HumanoidCommand::ShuffleRight,
+            Primitive::Kick => HumanoidCommand::KickRight,
         }),
+    }
+}
+
+/// [`primitive_command`] for a controller that sees: the humanoid kicks with the foot on the
+/// side of the ball it sees (with the right one when it sees none, or the ball dead ahead).
+#[must_use]
+pub fn primitive_command_seeing(p: Primitive, observation: &Observation) -> Command {
+    let left_of_robot = |ball| observation.robot.robot_from_field(ball).y_mm() > 0.0;
+    match (p, observation.body, observation.ball) {
+        (Primitive::Kick, BodyKind::Humanoid, Some(ball)) if left_of_robot(ball) => {
+            Command::Humanoid(HumanoidCommand::KickLeft)
+        }
+        _ => primitive_command(p, observation.body),
     }
 }
 
@@ -110,7 +128,7 @@ impl Controller for Lapsing {
             // Both draws every second, lapse or not: under one seed the seconds lapsed at a
             // smaller ε are among those lapsed at a larger one, with the same primitives.
             let u = uniform(rng);
-            let p = Primitive::ALL[rng.random_range(0..Primitive::ALL.len())];
+            let p = Primitive::WHEELED[rng.random_range(0..Primitive::WHEELED.len())];
             self.lapse = (u < self.rate.get()).then_some(p);
         }
         self.lapse.map_or(own, |p| primitive_command(p, observation.body))
@@ -154,6 +172,20 @@ mod tests {
         let inner = Box::new(Steady);
         let mut c = Lapsing::new(inner, LapseRate::new(epsilon).expect("valid"), seed);
         (0..seconds * SECOND_FRAMES).map(|k| c.command(&seen(k, body))).collect()
+    }
+
+    #[test]
+    fn the_humanoid_kicks_with_the_foot_on_the_balls_side() {
+        let mut o = seen(0, BodyKind::Humanoid);
+        o.robot = Pose::new(0.0, 0.0, std::f64::consts::FRAC_PI_2);
+        let kick = |o: &Observation| primitive_command_seeing(Primitive::Kick, o);
+        o.ball = Some(polymimic_types::Point::new(-30.0, 100.0));
+        assert_eq!(kick(&o), Command::Humanoid(HumanoidCommand::KickLeft));
+        o.ball = Some(polymimic_types::Point::new(30.0, 100.0));
+        assert_eq!(kick(&o), Command::Humanoid(HumanoidCommand::KickRight));
+        o.ball = None;
+        assert_eq!(kick(&o), Command::Humanoid(HumanoidCommand::KickRight));
+        assert_eq!(primitive_command_seeing(Primitive::Left, &o), primitive_command(Primitive::Left, o.body));
     }
 
     #[test]
@@ -238,7 +270,7 @@ mod tests {
 
     #[test]
     fn the_humanoid_lapses_into_the_commands_that_look_like_primitives() {
-        for p in Primitive::ALL {
+        for p in Primitive::WHEELED {
             assert_eq!(primitive_command(p, BodyKind::Humanoid).primitive(), p);
             assert_eq!(primitive_command(p, BodyKind::Lego), Command::Primitive(p));
         }

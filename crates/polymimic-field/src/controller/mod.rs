@@ -11,7 +11,7 @@ mod tiny;
 pub use babbler::Babbler;
 pub use expert::Expert;
 pub use humanoid::HumanoidController;
-pub use lapse::{LapseRate, Lapsing, primitive_command};
+pub use lapse::{LapseRate, Lapsing, primitive_command, primitive_command_seeing};
 pub use poor::Poor;
 pub use tiny::TinyController;
 

@@ -139,7 +139,7 @@ fn behaviour(value: &Json, key: &str) -> Result<BehaviourRecord, RecordError> {
     if !letters_ok {
         return Err(bad(
             &f.path("primitives"),
-            format!("{primitives:?} is not a sequence of the letters F, B, L, R, S"),
+            format!("{primitives:?} is not a sequence of the letters F, B, L, R, S (A, D, K on the humanoid)"),
         ));
     }
     let permanent = match f.need("permanent")? {

@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use polymimic_field::Outcome;
 use polymimic_learn::{Ending, Pitch, SegmentedDemonstration};
-use polymimic_perceive::{Label, Pose, Primitive, Segment, TrackedFrame};
+use polymimic_perceive::{Label, NO_SCORES, Pose, Primitive, PrimitiveSet, Segment, TrackedFrame};
 use pyo3::exceptions::{PyIndexError, PyKeyError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyIterator, PyList, PyString, PyTuple};
@@ -148,6 +148,14 @@ fn label(name: &str, what: &str) -> PyResult<Label> {
     })
 }
 
+/// The set of the recogniser that scored `segments`, read off the scores: only the humanoid's
+/// scores the slots past the wheeled four.
+fn scored_by(segments: &[Segment]) -> PrimitiveSet {
+    let wheeled = PrimitiveSet::Wheeled.moving().len();
+    let beyond = segments.iter().any(|s| s.scores[wheeled..].iter().any(|v| *v != f64::NEG_INFINITY));
+    if beyond { PrimitiveSet::Humanoid } else { PrimitiveSet::Wheeled }
+}
+
 fn states(value: &Bound<'_, PyAny>, what: &str, key: &str, k: usize) -> PyResult<Vec<TrackedFrame>> {
     let (data, shape) = floats(value, &format!("{what}: {key}"), 2)?;
     if shape != [k, 5] {
@@ -187,14 +195,19 @@ fn segments(columns: &Bound<'_, PyAny>, what: &str, frame_count: Option<usize>) 
     let start = states(&get("start")?, what, "start", k)?;
     let end = states(&get("end")?, what, "end", k)?;
     let scores = match columns.get_item("scores") {
-        Err(_) => vec![[f64::NEG_INFINITY; 4]; k],
-        Ok(value) if value.is_none() => vec![[f64::NEG_INFINITY; 4]; k],
+        Err(_) => vec![NO_SCORES; k],
+        Ok(value) if value.is_none() => vec![NO_SCORES; k],
         Ok(value) => {
             let (data, shape) = floats(&value, &format!("{what}: scores"), 2)?;
-            if shape != [k, 4] {
-                return Err(PyValueError::new_err(format!("{what}: scores has shape {shape:?}; expected [{k}, 4]")));
+            let columns: Vec<usize> = PrimitiveSet::ALL.iter().map(|set| set.moving().len()).collect();
+            if shape.len() != 2 || shape[0] != k || !columns.contains(&shape[1]) {
+                return Err(PyValueError::new_err(format!(
+                    "{what}: scores has shape {shape:?}; expected [{k}, 4] (a wheeled recogniser's) or [{k}, 7] (the humanoid's)"
+                )));
             }
-            data.chunks_exact(4).map(|r| [r[0], r[1], r[2], r[3]]).collect()
+            data.chunks_exact(shape[1])
+                .map(|r| std::array::from_fn(|i| r.get(i).copied().unwrap_or(f64::NEG_INFINITY)))
+                .collect()
         }
     };
     (0..k)
@@ -240,7 +253,7 @@ impl PySegmentedDemonstrations {
         let out = PyDict::new(py);
         out.set_item("demonstrator", &d.demonstrator)?;
         out.set_item("outcome", self.outcomes[i].name())?;
-        out.set_item("segments", segment_columns(py, &d.segments)?)?;
+        out.set_item("segments", segment_columns(py, &d.segments, scored_by(&d.segments))?)?;
         out.set_item("pitch", pitch_name(&d.pitch))?;
         out.set_item("reach_mm", d.reach_mm)?;
         Ok(out)

@@ -56,7 +56,8 @@ fn turning_about_a_foot_moves_the_centre_on_a_circle_round_it() {
     let params = HumanoidParams { turn_pivot_mm: 28.0, step_yaw_sd_rad: 0.0, ..HUMANOID };
     let mut r = rng(5, 0);
     let mut b = HumanoidBody::new(params, Pose::default());
-    let mut c = HumanoidBody::new(HumanoidParams { turn_pivot_mm: 0.0, step_yaw_sd_rad: 0.0, ..HUMANOID }, Pose::default());
+    let mut c =
+        HumanoidBody::new(HumanoidParams { turn_pivot_mm: 0.0, step_yaw_sd_rad: 0.0, ..HUMANOID }, Pose::default());
     // Within the first step it pivots about the left foot, (0, 28) mm.
     run(&mut b, HumanoidCommand::TurnLeft, 10, &mut r);
     run(&mut c, HumanoidCommand::TurnLeft, 10, &mut r);

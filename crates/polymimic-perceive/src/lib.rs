@@ -3,6 +3,7 @@
 //! can name.
 
 mod error;
+mod kick;
 mod label;
 mod motion;
 mod recognizer;
@@ -10,6 +11,7 @@ mod representation;
 mod segmenter;
 
 pub use error::PerceiveError;
+pub use kick::KICK_FRAMES;
 pub use label::Label;
 pub use motion::{MotionLimits, motion_of, motion_stats, motion_stats_with_sideways, sideways_of};
 /// The domain types the recogniser shares with every crate, re-exported for its users.

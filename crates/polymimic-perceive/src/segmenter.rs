@@ -5,12 +5,15 @@
 //! until its motion since its first frame is more than any primitive can produce, and ends on
 //! the frame before; the recogniser then names it, or calls it a gap when the best two models
 //! score within `gap_margin` of each other. Consecutive segments share their boundary frame,
-//! so each starts where the last one ended.
+//! so each starts where the last one ended. A recogniser that knows a kick first finds the
+//! demonstration's kicks by the ball ([`crate::kick`]): each is a segment of its own, and the
+//! segment before it ends where it starts.
 
 use polymimic_types::{Pose, Primitive, TrackedFrame};
 use serde::{Deserialize, Serialize};
 
 use crate::error::PerceiveError;
+use crate::kick::{KICK_FRAMES, kick_starts};
 use crate::label::Label;
 use crate::motion::MotionLimits;
 use crate::recognizer::{NO_SCORES, Recognizer, Scores, best_two, check_poses};
@@ -86,9 +89,48 @@ pub fn segment(
         return Err(PerceiveError::NotFinite { what: "demonstration (ball)".to_owned(), frame });
     }
     let limits = MotionLimits::from_stats(recognizer.motion_stats(), config.limit_sds);
+    let mut kicks = kick_starts(frames, &poses, recognizer, config.gap_margin).into_iter().peekable();
+    let scored = |first: usize, last: usize| {
+        let scores = recognizer.scores_unchecked(&poses[first..=last]);
+        Segment {
+            label: named(&scores, config.gap_margin),
+            first_frame: first,
+            last_frame: last,
+            start: frames[first],
+            end: frames[last],
+            scores,
+        }
+    };
     let mut segments: Vec<Segment> = Vec::new();
     let mut first = 0;
     while first + config.min_frames <= frames.len() {
+        let next_kick = kicks.peek().copied();
+        if next_kick == Some(first) {
+            kicks.next();
+            segments
+                .push(Segment { label: Label::Primitive(Primitive::Kick), ..scored(first, first + KICK_FRAMES - 1) });
+            first += KICK_FRAMES - 1;
+            continue;
+        }
+        // The last frame this segment may reach: a kick ahead ends it.
+        let end = next_kick.unwrap_or(frames.len() - 1);
+        if first + config.min_frames - 1 > end {
+            // Too little before a kick for a segment of its own: the one before grows to the kick
+            // (a stop stays a stop, a moving one is named again); after a kick or at the start,
+            // it stands alone as a gap.
+            match segments.last_mut() {
+                Some(previous) if previous.label == Label::Primitive(Primitive::Stop) => {
+                    previous.last_frame = end;
+                    previous.end = frames[end];
+                }
+                Some(previous) if previous.label != Label::Primitive(Primitive::Kick) => {
+                    *previous = scored(previous.first_frame, end);
+                }
+                _ => segments.push(Segment { label: Label::Gap, ..scored(first, end) }),
+            }
+            first = end;
+            continue;
+        }
         let mut last = first + config.min_frames - 1;
         let origin = &poses[first];
         let is_stop = poses[last].distance_from_mm(origin) < config.stop_distance_mm
@@ -109,24 +151,10 @@ pub fn segment(
                 }),
             }
         } else {
-            while last + 1 < frames.len() && within(&poses[last + 1], origin, &limits) {
+            while last < end && within(&poses[last + 1], origin, &limits) {
                 last += 1;
             }
-            let scores = recognizer.scores_unchecked(&poses[first..=last]);
-            let (best, best_score, second_score) = best_two(&scores);
-            let label = if best_score - second_score < config.gap_margin || best_score == f64::NEG_INFINITY {
-                Label::Gap
-            } else {
-                Label::Primitive(best)
-            };
-            segments.push(Segment {
-                label,
-                first_frame: first,
-                last_frame: last,
-                start: frames[first],
-                end: frames[last],
-                scores,
-            });
+            segments.push(scored(first, last));
         }
         first = last;
     }
@@ -158,6 +186,17 @@ pub fn segment_many(
             })
         })
         .collect()
+}
+
+/// A moving segment's name: the best-scoring primitive, or a gap when the best two score within
+/// `gap_margin` of each other (or none can have produced it).
+fn named(scores: &Scores, gap_margin: f64) -> Label {
+    let (best, best_score, second_score) = best_two(scores);
+    if best_score - second_score < gap_margin || best_score == f64::NEG_INFINITY {
+        Label::Gap
+    } else {
+        Label::Primitive(best)
+    }
 }
 
 fn within(pose: &Pose, origin: &Pose, limits: &MotionLimits) -> bool {

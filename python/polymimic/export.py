@@ -15,14 +15,17 @@ Actions, one of the five primitives a step, come from one of two places:
   learning from observation, as the imitator itself learns (the dataset says so in its
   metadata). Each step takes the primitive the recogniser names for the second of motion from
   the step's first frame (:func:`polymimic.step_names.name_windows`), as BCO's inverse model
-  names a transition. A second too close to call (a gap: no primitive fits, as for a humanoid
-  side-step) names nothing; its step takes the nearest named step's primitive (the earlier on
-  a tie), flagged ``infos["gap"]``. ``labels="segments"`` gives each step the primitive most
-  of its frames' segments are named instead (SPEC §3). A segment grows until its motion exceeds
-  any one primitive's, so the Expert's are 98 % forward while it turns in 31 % of its frames:
-  over ten Expert demonstrations read by the full reproduction's recogniser, the step names
-  agree with the commands sent in 87.1 % of frames, the segments' in 79.3 %, and the commands'
-  own most frequent primitive in 90.7 % (the Expert changes command within a second).
+  names a transition; a recogniser of the humanoid's own primitives names its side-steps and
+  kick by their wheeled equivalents (``polymimic.field.WHEELED_EQUIVALENT``), in steps and
+  segments alike. A second too close to call (a gap: no primitive fits, as for a humanoid
+  side-step read by a wheeled recogniser) names nothing; its step takes the nearest named step's
+  primitive (the earlier on a tie), flagged ``infos["gap"]``. ``labels="segments"`` gives each
+  step the primitive most of its frames' segments are named instead (SPEC §3). A segment grows
+  until its motion exceeds any one primitive's, so the Expert's are 98 % forward while it turns
+  in 31 % of its frames: over ten Expert demonstrations read by the full reproduction's
+  recogniser, the step names agree with the commands sent in 87.1 % of frames, the segments' in
+  79.3 %, and the commands' own most frequent primitive in 90.7 % (the Expert changes command
+  within a second).
 - ``actions="commands"``: the primitive equivalent of the commands the demonstrator sent
   (privileged: a real tracker does not see them), the most frequent over the step.
 
@@ -42,7 +45,7 @@ import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.env import ENV_ID
-from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, Demonstration, primitives_sent
+from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, WHEELED_EQUIVALENT, Demonstration, primitives_sent
 from polymimic.step_names import LABELS, NO_NAME, name_windows, repeat_last_good, segmenter_settings, step_settings
 
 __all__ = ["ACTIONS", "LABELS", "OBSERVED", "SIMULATED_BODIES", "from_minari", "steps_of", "to_minari"]
@@ -271,11 +274,13 @@ def _check_step_frames(step_frames: Any) -> None:
 
 
 def _recognised(segments: Mapping[str, Any], n_frames: int) -> np.ndarray:
-    """The primitive index each frame's segment is named (−1: a gap, or in no segment)."""
+    """The primitive index each frame's segment is named, the humanoid's own by their wheeled
+    equivalents (−1: a gap, or in no segment)."""
     named = np.full(n_frames, -1)
     for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
-        if label in PRIMITIVES:
-            named[int(first):int(last)] = PRIMITIVES.index(label)
+        primitive = WHEELED_EQUIVALENT.get(label, label)
+        if primitive in PRIMITIVES:
+            named[int(first):int(last)] = PRIMITIVES.index(primitive)
     return named
 
 

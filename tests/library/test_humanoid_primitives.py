@@ -138,3 +138,26 @@ def test_a_step_names_the_humanoids_own_classes_by_their_wheeled_equivalents(
     named = {p: PRIMITIVES[name_windows(by_class[p].frames, humanoid_recognizer, starts)[0]]
              for p in ("forward", "sidestep_left", "sidestep_right")}
     assert named == {"forward": "forward", "sidestep_left": "left", "sidestep_right": "right"}
+
+
+def test_segment_labels_name_the_humanoids_own_segments_by_their_wheeled_equivalents(
+        humanoid_recognizer: polymimic.PrimitiveRecognizer) -> None:
+    from polymimic.baselines.labels import NO_LABEL, segment_labels
+    from polymimic.export import steps_of
+    demo = polymimic.record("humanoid", configuration=1, n=1, seed=0)[0]
+    segments = humanoid_recognizer.segment(demo.frames)
+    assert {"kick", "sidestep_right"} <= set(segments["label"])
+    [labelled] = segment_labels([demo], humanoid_recognizer, imitator="humanoid")
+    for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
+        # A segment's last frame is the next one's first, which takes the next one's label.
+        inside = labelled.labels[int(first):int(last)]
+        wheeled = {"kick": "backward", "sidestep_left": "left", "sidestep_right": "right"}.get(label, label)
+        expected = NO_LABEL if label == "gap" else PRIMITIVES.index(wheeled)
+        assert (inside == expected).all(), (label, first, last)
+    # Exported steps read from the segments take each step's most frequent label, kicks as steps
+    # backward: the same as a majority over the labels above.
+    steps = steps_of(demo, recognizer=humanoid_recognizer, labels="segments")
+    majorities = [np.bincount(labelled.labels[a:a + 30][labelled.labels[a:a + 30] >= 0], minlength=5).argmax()
+                  for a in range(0, len(demo.frames) - 1, 30)]
+    assert list(steps.actions) == majorities
+    assert PRIMITIVES.index("backward") in majorities

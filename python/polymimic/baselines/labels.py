@@ -53,7 +53,14 @@ import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.bodies import WheeledBody, body_name, field_length_mm, onto_field
-from polymimic.field import PRIMITIVES, Demonstration, command_primitives, command_table, primitives_sent
+from polymimic.field import (
+    PRIMITIVES,
+    WHEELED_EQUIVALENT,
+    Demonstration,
+    command_primitives,
+    command_table,
+    primitives_sent,
+)
 from polymimic.step_names import NO_NAME, WINDOW_FRAMES, name_windows, repeat_last_good
 
 __all__ = ["CLONING_EQUIVALENTS", "IMITATOR_BODY", "NO_LABEL", "STEP_STRIDE_FRAMES", "STEP_WINDOW_FRAMES", "Labelled",
@@ -182,7 +189,8 @@ def command_labels(demonstrations: Sequence[Demonstration], *,
 def segment_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer, *,
                    imitator: str | WheeledBody = IMITATOR_BODY, **segmenter: Any) -> list[Labelled]:
     """Each frame labelled with the primitive of the recogniser's segment covering it (none in
-    a gap or outside every segment); ``segmenter`` passes the segmenter's settings, and the
+    a gap or outside every segment; the humanoid's own side-steps and kick by their wheeled
+    equivalents, :data:`polymimic.field.WHEELED_EQUIVALENT`); ``segmenter`` passes the segmenter's settings, and the
     observations are on the field of body ``imitator``."""
     demos = check_demonstrations(demonstrations)
     segmented = recognizer.segment_many([d.frames for d in demos], **segmenter)
@@ -190,7 +198,7 @@ def segment_labels(demonstrations: Sequence[Demonstration], recognizer: Primitiv
     for demo, segments in zip(demos, segmented):
         labels = np.full(len(demo.frames), NO_LABEL, dtype=np.int64)
         for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
-            labels[int(first):int(last) + 1] = _SEGMENT_LABELS.get(label, NO_LABEL)
+            labels[int(first):int(last) + 1] = _SEGMENT_LABELS.get(WHEELED_EQUIVALENT.get(label, label), NO_LABEL)
         labelled.append(Labelled(demo.demonstrator, observations_of(demo, imitator), labels, demo.body,
                                  body_name(imitator)))
     return labelled

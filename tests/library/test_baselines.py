@@ -346,6 +346,23 @@ def test_tuning_never_sees_the_evaluation_and_repeats_its_choice():
     assert len(one.scores) == 2 and one.hyperparameters == baselines.Hyperparameters.from_dict(one.chosen)
 
 
+def test_validation_attempts_sharing_an_evaluation_seed_are_refused(monkeypatch):
+    from polymimic.baselines import tuning
+    validation = tuning.validation_attempts(2, validation_seed=0)
+    assert tuning.validation_attempts_apart(2, validation_seed=0, evaluation_seed=0,
+                                            evaluation_attempts_per_configuration=25) == validation
+    # A 64-bit collision, forced: the evaluation's attempts are made to hold a validation seed.
+    clash = validation[1][1]
+    monkeypatch.setattr(tuning, "attempts_of",
+                        lambda n, *, seed: [(1, clash)] if seed < 2**62 else attempts_of(n, seed=seed))
+    with pytest.raises(ValueError, match=rf"validation attempts share episode seeds \[{clash}\] with the evaluation"):
+        tuning.validation_attempts_apart(2, validation_seed=0, evaluation_seed=0,
+                                         evaluation_attempts_per_configuration=25)
+    demos = polymimic.record("poor", configuration=1, n=1, seed=0)
+    with pytest.raises(ValueError, match="share episode seeds"):
+        baselines.tune("bc", demos, budget=1, attempts_per_configuration=2)
+
+
 def test_every_method_gets_the_same_candidates():
     assert baselines.candidates(6, seed=1) == baselines.candidates(6, seed=1)
     assert len(set(baselines.candidates(12))) == 12

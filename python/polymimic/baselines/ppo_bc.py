@@ -26,7 +26,7 @@ from polymimic.baselines import ppo
 from polymimic.baselines.evaluation import play
 from polymimic.baselines.labels import IMITATOR_BODY, command_labels
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, decision_samples
-from polymimic.baselines.tuning import validation_attempts, validation_rank
+from polymimic.baselines.tuning import validation_attempts_apart, validation_rank
 from polymimic.bodies import WheeledBody, body_name
 from polymimic.field import Demonstration
 
@@ -117,16 +117,21 @@ class PretrainingChoice:
 
 
 def tune_pretraining(demonstrations: Sequence[Demonstration], *, budget: int = 6, validation_seed: int = 0,
-                     attempts_per_configuration: int = 50, seed: int = 0, feature_set: str = "goal_relative",
-                     frames_per_action: int = 30, field_config: dict[str, Any] | str | None = None,
-                     imitator: str | WheeledBody = IMITATOR_BODY,
+                     attempts_per_configuration: int = 50, evaluation_seed: int = 0,
+                     evaluation_attempts_per_configuration: int = 25, seed: int = 0,
+                     feature_set: str = "goal_relative", frames_per_action: int = 30,
+                     field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
                      max_samples: int = MAX_DECISION_SAMPLES) -> PretrainingChoice:
     """The first ``budget`` of :data:`PRETRAINING_CANDIDATES`, each cloned under ``seed`` and
     played (before any reward) on the validation attempts of ``validation_seed``; the best by net
-    goals, then goals, the first of equals (:func:`polymimic.baselines.tuning.validation_rank`)."""
+    goals, then goals, the first of equals (:func:`polymimic.baselines.tuning.validation_rank`).
+    As :func:`polymimic.baselines.tune`, it refuses validation attempts that share an episode seed
+    with the evaluation's under ``evaluation_seed``."""
     if isinstance(budget, bool) or not isinstance(budget, int) or not 1 <= budget <= len(PRETRAINING_CANDIDATES):
         raise ValueError(f"budget must be an integer in 1..{len(PRETRAINING_CANDIDATES)}, got {budget!r}")
-    attempts = validation_attempts(attempts_per_configuration, validation_seed=validation_seed)
+    attempts = validation_attempts_apart(attempts_per_configuration, validation_seed=validation_seed,
+                                         evaluation_seed=evaluation_seed,
+                                         evaluation_attempts_per_configuration=evaluation_attempts_per_configuration)
     scores = []
     for candidate in PRETRAINING_CANDIDATES[:budget]:
         policy = pretrained(demonstrations, candidate, seed=seed, feature_set=feature_set,

@@ -43,7 +43,7 @@ from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples
 from polymimic.bodies import WheeledBody
 from polymimic.field import Demonstration
 
-__all__ = ["LABELLING_TUNED", "Tuning", "tune", "validation_attempts", "validation_rank"]
+__all__ = ["LABELLING_TUNED", "Tuning", "tune", "validation_attempts", "validation_attempts_apart", "validation_rank"]
 
 LABELLING_TUNED = ("bco", "bco_lp")
 """The methods whose tuning chooses how the demonstrations are labelled as well."""
@@ -79,6 +79,27 @@ def validation_attempts(attempts_per_configuration: int, *, validation_seed: int
     """The (configuration, episode seed) of every validation attempt under ``validation_seed``."""
     seed = _check_seed(validation_seed, low=0, high=2**63 - VALIDATION_SEED_BASE, what="added to 2**62")
     return attempts_of(attempts_per_configuration, seed=VALIDATION_SEED_BASE + seed)
+
+
+def validation_attempts_apart(attempts_per_configuration: int, *, validation_seed: int, evaluation_seed: int,
+                              evaluation_attempts_per_configuration: int) -> list[tuple[int, int]]:
+    """:func:`validation_attempts`, checked to share no episode seed with the evaluation's
+    under ``evaluation_seed`` (the seed rule above).
+
+    Raises
+    ------
+    ValueError
+        Naming the shared episode seeds, if any.
+    """
+    attempts = validation_attempts(attempts_per_configuration, validation_seed=validation_seed)
+    evaluation = {s for _, s in attempts_of(
+        evaluation_attempts_per_configuration,
+        seed=_check_seed(evaluation_seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's"))}
+    shared = sorted(s for _, s in attempts if s in evaluation)
+    if shared:
+        raise ValueError(f"validation attempts share episode seeds {shared} with the evaluation; "
+                         f"choose another validation_seed")
+    return attempts
 
 
 def validation_rank(score: Mapping[str, Any]) -> tuple[int, int]:
@@ -131,14 +152,9 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
     """
     method = check_method(method)
     check_max_samples(max_samples)
-    attempts = validation_attempts(attempts_per_configuration, validation_seed=validation_seed)
-    evaluation = {s for _, s in attempts_of(
-        evaluation_attempts_per_configuration,
-        seed=_check_seed(evaluation_seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's"))}
-    shared = sorted(s for _, s in attempts if s in evaluation)
-    if shared:
-        raise ValueError(f"validation attempts share episode seeds {shared} with the evaluation; "
-                         f"choose another validation_seed")
+    attempts = validation_attempts_apart(attempts_per_configuration, validation_seed=validation_seed,
+                                         evaluation_seed=evaluation_seed,
+                                         evaluation_attempts_per_configuration=evaluation_attempts_per_configuration)
     if candidates is None:
         drawn = draw_candidates(budget, seed=candidate_seed)
         tried = with_labellings(drawn) if method in LABELLING_TUNED else drawn

@@ -210,7 +210,9 @@ def ppo_bc_tuning_task(shared: Shared, profile: str) -> dict[str, Any]:
     choice = ppo_bc.tune_pretraining(
         shared.profiles[profile].demonstrations, budget=min(settings.tuning_budget, len(ppo_bc.PRETRAINING_CANDIDATES)),
         validation_seed=settings.validation_seed,
-        attempts_per_configuration=settings.validation_attempts_per_configuration, seed=shared.config.seeds.first_trial,
+        attempts_per_configuration=settings.validation_attempts_per_configuration,
+        evaluation_seed=shared.config.seeds.evaluation,
+        evaluation_attempts_per_configuration=settings.attempts_per_configuration, seed=shared.config.seeds.first_trial,
         feature_set=PPO_FEATURE_SET, frames_per_action=PPO_FRAMES_PER_ACTION, field_config=shared.config.field,
         imitator=shared.config.imitator_body(), max_samples=settings.max_decision_samples)
     return {"profile": profile, "chosen": choice.chosen.to_dict(), "scores": choice.scores,

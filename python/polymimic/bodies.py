@@ -236,6 +236,14 @@ class WheeledBody:
             out[name] = (left, right)
         if out["stop"] != (0.0, 0.0):
             raise ValueError(f"primitives_mm_s.stop must be (0, 0), got {out['stop']}")
+        # An imitator names what it sees by its own primitives, so no two may move alike.
+        moving = [name for name in PRIMITIVE_NAMES if name != "stop"]
+        for i, name in enumerate(moving):
+            for other in [*moving[i + 1:], "stop"]:
+                if out[name] == out[other]:
+                    raise ValueError(f"primitives_mm_s.{name} and primitives_mm_s.{other} are both {out[name]}: a "
+                                     f"recogniser cannot tell them apart, so every moving primitive needs wheel "
+                                     f"speeds of its own")
         return out
 
     def _checked_slip(self) -> SlipSpec:

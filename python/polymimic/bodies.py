@@ -489,7 +489,7 @@ def pitch_of(body: str | WheeledBody) -> str:
 def reach_mm(body: str | WheeledBody, *, imitating: bool = False) -> float:
     """How far from its centre ``body`` moves the ball, mm: the ball's radius beyond a wheeled
     body's front (half its length), or, demonstrating, beyond the humanoid's kicking foot at full
-    reach (``imitating``, the humanoid walks into the ball: its primitives have no kick). The
+    reach (``imitating``, the humanoid walks into the ball, even over its own set with a kick). The
     learner's correspondence between bodies keeps a touch a touch (:func:`onto_field`).
 
     >>> reach_mm("lego"), reach_mm("tiny"), reach_mm("humanoid"), reach_mm("humanoid", imitating=True)

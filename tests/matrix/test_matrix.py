@@ -64,15 +64,37 @@ def test_matrix_json_holds_every_cell_of_both_methods_with_its_transfer(finished
     assert "| lego ← tiny: transfer ≥ 0.8 × the own-body cell |" in run.report_md_path.read_text()
 
 
+def test_polymimic_weighs_a_crowds_members_as_its_validation_chose(finished):
+    run, config = finished
+    summary = json.loads(run.results_path.read_text())
+    for row, cells in summary["cells"].items():
+        for column, cell in cells.items():
+            method = cell["polymimic"]
+            if column != "mixed_bodies":
+                # One demonstrator weighs 1 however it is weighed: no choice, the config's weighting.
+                assert (method["weighting"], method["weighing"]) == ("lp", []), (row, column)
+                continue
+            tried = method["weighing"]
+            assert [w["weighting"] for w in tried] == ["lp", "lp_gain"] and {w["attempts"] for w in tried} == {2}
+            # The best by net goals, then goals; the first of equals.
+            best = max(range(2), key=lambda i: (tried[i]["goals"] - tried[i]["own_goals"], tried[i]["goals"], -i))
+            assert method["weighting"] == tried[best]["weighting"], (row, tried)
+            saved = json.loads(run.evaluation_path(row, column, "polymimic", config.trial_seeds()[0]).read_text())
+            assert saved["weighting"] == method["weighting"]
+    assert "| lego ← mixed bodies |" in run.report_md_path.read_text()
+
+
 def test_a_rerun_redoes_nothing_and_a_lost_cell_only(finished):
     run, config = finished
     before = run.results_path.read_bytes()
     lost = run.evaluation_path("wagon", "tiny", "polymimic", config.trial_seeds()[1])
     lost.write_text("{ damaged")
+    run.weighing_path("lego", "mixed_bodies", "lp_gain").write_text('{"goals": -1}')
     with TaskRunner(workers=1) as runner:
         run_matrix(run, config, runner, quiet=True)
     stages = run.manifest()["stages"]
-    assert stages["polymimic"]["made"] == 1 and stages["tune"]["made"] == 0 and stages["bco"]["made"] == 0
+    assert stages["weigh"]["made"] == 1 and stages["polymimic"]["made"] == 1
+    assert stages["tune"]["made"] == 0 and stages["bco"]["made"] == 0
     assert run.results_path.read_bytes() == before, "the same seed makes the same bits"
 
 
@@ -91,6 +113,8 @@ def test_each_row_learns_from_the_columns_demonstrators():
     ('[matrix]\ntrials = 0\n', r"\[matrix\] trials"),
     ('[imitator]\nbody = "tiny"\n', r"\[imitator\] has no place in a matrix"),
     ('[matrix]\ntrails = 3\n', r"unknown key in \[matrix\]: trails"),
+    ('[matrix]\nweightings = ["lp", "lpp"]\n', r"\[matrix\] weightings must be .* one of even, lp, lp_gain; got"),
+    ('[matrix]\nweightings = []\n', r"\[matrix\] weightings must be a non-empty list"),
 ])
 def test_a_bad_matrix_config_is_refused_naming_it(toml, match):
     with pytest.raises(ConfigError, match=match):

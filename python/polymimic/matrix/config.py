@@ -2,7 +2,8 @@
 
 The sections a reproduction has (``[seeds]``, ``[field]``, ``[recognizer]``, ``[segmenter]``,
 ``[learning]``, ``[bodies.<name>]``, read by :class:`~polymimic.runs.config.RunConfig`), then
-``[matrix]``: the imitator bodies that make its rows, its sizes and ``bco``'s tuning effort. The
+``[matrix]``: the imitator bodies that make its rows, its sizes, ``bco``'s tuning effort and
+polymimic's (how it weighs a crowd's members). The
 rows are the thesis's three bodies and ``wagon``, a wheeled body of its own field described in
 ``docs/configs/matrix_wagon.toml`` (the default config's own body, :data:`WAGON`); a
 ``[bodies.<name>]`` table adds another that ``imitators`` may name.
@@ -36,7 +37,7 @@ from polymimic.runs.config import (
     toml_tables,
 )
 
-__all__ = ["COLUMNS", "WAGON", "DemonstratorSet", "MatrixConfig", "MatrixSettings", "demonstrator_sets"]
+__all__ = ["COLUMNS", "WAGON", "WEIGHTINGS", "DemonstratorSet", "MatrixConfig", "MatrixSettings", "demonstrator_sets"]
 
 COLUMNS = ("expert", "tiny", "humanoid", "own_body", "mixed_bodies")
 """The demonstrator sets, in the matrix's order: the Expert on the Lego, the Tiny controller on
@@ -47,6 +48,10 @@ WAGON = WheeledBody("wagon", length_mm=80, width_mm=80, wheel_base_mm=70, top_wh
                     field=Field(800, 560, goal_mouth_mm=320, ball_diameter_mm=60))
 """A wheeled body between the Lego and the tiny, on an 800 × 560 mm field of its own whose
 mouths (320 mm) are not half its width: the matrix's described body."""
+
+WEIGHTINGS = ("even", "lp", "lp_gain")
+"""How polymimic may weigh a crowd's members (:class:`polymimic.LearningConfig`'s
+``imitator_weighting``)."""
 
 OWN_CONTROLLER = {"lego": "expert", "tiny": "tiny", "humanoid": "humanoid"}
 """The built-in controller that demonstrates on a built-in body; any other body's is the Tiny
@@ -74,6 +79,10 @@ class MatrixSettings:
     max_decision_samples: int = _doc("the most decision samples a bco fit takes", 20_000)
     primitives: str = _doc("each row's primitives: own (its body's: the humanoid's eight, a wheeled body's five) "
                            "or wheeled (the five for every row, the humanoid walking, turning and waiting)", "own")
+    weightings: tuple[str, ...] = _doc("polymimic's candidates for how it weighs a crowd's members "
+                                       "([learning] imitator_weighting), chosen in every cell of more than one "
+                                       "demonstrator on bco's validation attempts, one trial each under the first "
+                                       "trial's seed; one candidate: no choice", ("lp", "lp_gain"))
 
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration", "bco_fits",
@@ -82,6 +91,12 @@ class MatrixSettings:
         in_range("matrix", "validation_seed", self.validation_seed, 0, 2**62 - 1)
         if self.primitives not in ("own", "wheeled"):
             raise ConfigError(f"[matrix] primitives must be 'own' or 'wheeled', got {self.primitives!r}")
+        weightings = self.weightings
+        if not isinstance(weightings, (list, tuple)) or not weightings or len(set(weightings)) != len(weightings) \
+                or not all(w in WEIGHTINGS for w in weightings):
+            raise ConfigError(f"[matrix] weightings must be a non-empty list of distinct imitator weightings, each "
+                              f"one of {', '.join(WEIGHTINGS)}; got {weightings!r}")
+        object.__setattr__(self, "weightings", tuple(weightings))
         rows = self.imitators
         if not isinstance(rows, (list, tuple)) or not rows or not all(isinstance(r, str) for r in rows):
             raise ConfigError(f"[matrix] imitators must be a non-empty list of body names, got {rows!r}")

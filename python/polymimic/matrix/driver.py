@@ -8,12 +8,16 @@ arrives, and a rerun redoes only what is missing or damaged):
    (the rows side by side);
 2. **record** — each set's demonstrations, 25 valid ones per member and configuration (the
    ``mixed_bodies`` crowd as the benchmark records it);
-3. **polymimic** — every cell's trials, each imitator learning on its own setting and played by
+3. **weigh** — polymimic's tuning, with bco's effort: in every cell of more than one
+   demonstrator, each of its weightings of the members (``[matrix] weightings``) learns one trial
+   under the first trial's seed and plays bco's validation attempts; the best by net goals, then
+   goals (the first of equals) is the cell's;
+4. **polymimic** — every cell's trials, each imitator learning on its own setting and played by
    the improved control on the evaluation attempts of its own field;
-4. **tune** — bco's hyperparameters in every cell, on validation attempts; the chosen fit is
+5. **tune** — bco's hyperparameters in every cell, on validation attempts; the chosen fit is
    evaluated there and then;
-5. **bco** — the other bco fits of every cell, evaluated;
-6. **report** — ``matrix.json``, ``matrix.md``, ``matrix.html`` and the heat map.
+6. **bco** — the other bco fits of every cell, evaluated;
+7. **report** — ``matrix.json``, ``matrix.md``, ``matrix.html`` and the heat map.
 
 A built-in body's own-body cell is the cell of its own controller's column (the same
 demonstrations and imitator): it is computed once.
@@ -33,11 +37,11 @@ from polymimic.crowds import member_seed
 from polymimic.datasets import load_demonstrations, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, record
 from polymimic.matrix.config import COLUMNS, DemonstratorSet, MatrixConfig, demonstrator_sets
-from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning
+from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.report import matrix_html, matrix_markdown
 from polymimic.matrix.rundir import MatrixDir
-from polymimic.matrix.summary import draw_heat_map, gather
-from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, recognise_task, tuning_task
+from polymimic.matrix.summary import chosen_weighting, draw_heat_map, gather
+from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, recognise_task, tuning_task, weighing_task
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
 from polymimic.runs.steps import Stepped, each_member_recorded
@@ -60,6 +64,7 @@ class Matrix(Stepped):
         self._step("recognise", self.recognise)
         self._step("record", self.record)
         shared = self.shared()
+        self._step("weigh", lambda: self.weigh(shared))
         self._step("polymimic", lambda: self.polymimic(shared))
         self._step("tune", lambda: self.tune(shared))
         self._step("bco", lambda: self.bco(shared))
@@ -126,22 +131,43 @@ class Matrix(Stepped):
                           for name in self._unique_sets()}
         return Shared(self.config, recognizers, demonstrations, self.sets())
 
-    # 3-5. polymimic and bco in every cell.
+    # 3-6. polymimic and bco in every cell.
 
-    def _done(self, row: str, column: str, method: str, seed: int) -> bool:
+    def _weighed_cells(self) -> list[tuple[str, str]]:
+        """The cells where polymimic chooses how to weigh the members: those of a crowd."""
+        if len(self.config.matrix.weightings) < 2:
+            return []
+        sets = self.sets()
+        return [(row, column) for row, column in self.cells() if len(sets[row][column].members) > 1]
+
+    def weigh(self, shared: Shared) -> int:
+        jobs = [(row, column, weighting) for row, column in self._weighed_cells()
+                for weighting in self.config.matrix.weightings
+                if not self.run.finished(self.run.weighing_path(row, column, weighting), load_cell_weighing)]
+        for row, column in self.cells():
+            self.run.cell_dir(row, column).mkdir(parents=True, exist_ok=True)
+        with progress(total=len(jobs), desc="weigh", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(weighing_task, shared, jobs):
+                atomic_write_text(self.run.weighing_path(result["row"], result["column"], result["weighting"]),
+                                  dumps(result))
+                bar.update(1)
+        return len(jobs)
+
+    def _done(self, row: str, column: str, method: str, seed: int, weighting: str | None = None) -> bool:
         saved = self.run.loaded(self.run.evaluation_path(row, column, method, seed), load_cell_evaluation)
-        return saved is not None and (saved["attempts"], saved["evaluation_seed"]) == (
-            2 * self.config.matrix.attempts_per_configuration, self.config.seeds.evaluation)
+        return saved is not None and (saved["attempts"], saved["evaluation_seed"], saved["weighting"]) == (
+            2 * self.config.matrix.attempts_per_configuration, self.config.seeds.evaluation, weighting)
 
     def _write(self, result: dict[str, Any]) -> None:
         path = self.run.evaluation_path(result["row"], result["column"], result["method"], result["seed"])
         atomic_write_text(path, dumps(result))
 
     def polymimic(self, shared: Shared) -> int:
-        jobs = [(row, column, seed) for row, column in self.cells() for seed in self.config.trial_seeds()
-                if not self._done(row, column, "polymimic", seed)]
-        for row, column in self.cells():
-            self.run.cell_dir(row, column).mkdir(parents=True, exist_ok=True)
+        weighting = {(row, column): chosen_weighting(self.run, self.config, row, column)[0]
+                     for row, column in self.cells()}
+        jobs = [(row, column, seed, weighting[row, column]) for row, column in self.cells()
+                for seed in self.config.trial_seeds()
+                if not self._done(row, column, "polymimic", seed, weighting[row, column])]
         # The mixed crowd's cells are the longest: first, so that no worker idles at the end.
         jobs.sort(key=lambda job: job[1] != "mixed_bodies")
         with progress(total=len(jobs), desc="polymimic", quiet=self.quiet) as bar:
@@ -182,7 +208,8 @@ class Matrix(Stepped):
         atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
         draw_heat_map(summary, self.run.plots)
         stages = self.run.manifest()["stages"]
-        seconds = {name: float(stages[name]["seconds"]) for name in ("recognise", "record", "polymimic", "tune", "bco")
+        seconds = {name: float(stages[name]["seconds"])
+                   for name in ("recognise", "record", "weigh", "polymimic", "tune", "bco")
                    if isinstance(stages.get(name, {}).get("seconds"), (int, float))}
         markdown = matrix_markdown(summary, seconds=seconds)
         atomic_write_text(self.run.report_md_path, markdown + "\n")

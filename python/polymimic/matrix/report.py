@@ -59,6 +59,21 @@ def _table(summary: Mapping[str, Any], method: str) -> list[str]:
     return lines
 
 
+def _weighing(summary: Mapping[str, Any]) -> list[str]:
+    """polymimic's weighting of each crowd's members, and every candidate's validation net goals."""
+    rows = [(row, column, cell["polymimic"]) for row, cells in summary["cells"].items()
+            for column, cell in cells.items() if cell["polymimic"].get("weighing")]
+    if not rows:
+        return []
+    lines = ["polymimic's weighting of the members, chosen on validation (net goals per candidate):", "",
+             "| cell | chosen | validation |", "| --- | --- | --- |"]
+    for row, column, method in rows:
+        tried = ", ".join(f"{w['weighting']} {w['goals'] - w['own_goals']} of {w['attempts']}"
+                          for w in method["weighing"])
+        lines.append(f"| {row} ← {column.replace('_', ' ')} | {method['weighting']} | {tried} |")
+    return [*lines, ""]
+
+
 def matrix_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] | None = None) -> str:
     """The report of a ``matrix.json``; ``seconds`` are the steps' times, from the manifest."""
     sizes, attempts = summary["sizes"], 2 * summary["sizes"]["attempts_per_configuration"]
@@ -71,14 +86,17 @@ def matrix_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] 
              f"mean (sd) over {sizes['trials']} trials for polymimic (the improved control) and over "
              f"{sizes['bco_fits']} fits for bco (its labels from the row's own recogniser, its hyperparameters "
              f"chosen among {sizes['tuning_budget']} candidates on validation attempts of its own), and ×r its "
-             "transfer ratio: the cell over the row's own-body cell (none where that nets nothing).", ""]
+             "transfer ratio: the cell over the row's own-body cell (none where that nets nothing). In a cell of "
+             "more than one demonstrator polymimic's weighting of the members is chosen with bco's effort: each "
+             "candidate learns one trial and plays the same validation attempts.", ""]
     if seconds:
         lines += ["Time: " + ", ".join(f"{k} {v:.0f} s" for k, v in seconds.items())
                   + f"; {sum(seconds.values()):.0f} s in all.", ""]
     lines += ["## Targets", "", "| target | measured | verdict |", "| --- | --- | --- |"]
     lines += [f"| {t['statement']} | {t['measured']} | {verdict[t['met']]} |" for t in matrix_targets(summary)]
     lines += ["", f"![Net goals of every cell](plots/{HEAT_MAP})", "", "## polymimic", "",
-              *_table(summary, "polymimic"), "", "## bco", "", *_table(summary, "bco"), "", "## The imitators", "",
+              *_table(summary, "polymimic"), "", *_weighing(summary), "## bco", "", *_table(summary, "bco"), "",
+              "## The imitators", "",
               "| imitator | field (mm) | goal mouth (mm) | reach (mm) |", "| --- | --- | --- | --- |"]
     for row, imitator in summary["imitators"].items():
         field = imitator["field"]

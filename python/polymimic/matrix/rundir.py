@@ -6,6 +6,7 @@
     datasets/self_observation_<row>.parquet, models/recognizer_<row>.json   each imitator's own
     datasets/demonstrations_<set>.parquet          a set's demonstrations (load_demonstrations reads it)
     models/matrix/<row>/<column>/polymimic_<seed>.json   polymimic's evaluation after one trial
+    models/matrix/<row>/<column>/weighing_<weighting>.json   one of polymimic's weightings on validation
     models/matrix/<row>/<column>/bco_tuning.json   bco's candidates on validation, the choice
     models/matrix/<row>/<column>/bco_<seed>.json   one bco fit's evaluation
     matrix.json, matrix.md, matrix.html, plots/matrix_heat_map.png
@@ -53,6 +54,9 @@ class MatrixDir(RunHouse[MatrixConfig]):
 
     def evaluation_path(self, row: str, column: str, method: str, seed: int) -> pathlib.Path:
         return self.cell_dir(row, column) / f"{method}_{seed}.json"
+
+    def weighing_path(self, row: str, column: str, weighting: str) -> pathlib.Path:
+        return self.cell_dir(row, column) / f"weighing_{weighting}.json"
 
     def tuning_path(self, row: str, column: str) -> pathlib.Path:
         return self.cell_dir(row, column) / "bco_tuning.json"

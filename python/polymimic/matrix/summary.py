@@ -1,5 +1,6 @@
 """``matrix.json``: every cell's net goals, polymimic's and bco's, mean and sd over trials or fits,
-and its transfer ratio (the cell over its row's own-body cell, SPEC §7.1), and the heat map.
+polymimic's weighting of the members and bco's hyperparameters as chosen on validation, and its
+transfer ratio (the cell over its row's own-body cell, SPEC §7.1), and the heat map.
 
 >>> transfer(30.0, 40.0), transfer(30.0, 0.0), transfer(None, 40.0)
 (0.75, None, None)
@@ -12,13 +13,14 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from polymimic import __version__
+from polymimic.baselines.tuning import validation_rank
 from polymimic.bodies import pitch_of, playing_field, reach_mm
 from polymimic.matrix.config import COLUMNS, MatrixConfig, demonstrator_sets
-from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning
+from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.rundir import MatrixDir
 from polymimic.runs.stats import mean_sd
 
-__all__ = ["FORMAT", "HEAT_MAP", "VERSION", "draw_heat_map", "gather", "transfer"]
+__all__ = ["FORMAT", "HEAT_MAP", "VERSION", "chosen_weighting", "draw_heat_map", "gather", "transfer"]
 
 FORMAT, VERSION = "polymimic.matrix", 1
 HEAT_MAP = "matrix_heat_map.png"
@@ -39,6 +41,20 @@ def _scores(evaluations: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
             "evaluated": len(evaluations), "attempts": evaluations[0]["attempts"] if evaluations else None}
 
 
+def chosen_weighting(run: MatrixDir, config: MatrixConfig, row: str, column: str) -> tuple[str, list[dict[str, Any]]]:
+    """How polymimic weighs the members in the computed cell ``(row, column)``, and every
+    candidate's validation score: the best of ``[matrix] weightings`` by net goals, then goals
+    (the first of equals), where the cell has more than one demonstrator and there is a choice;
+    elsewhere ``[learning] imitator_weighting`` (one member weighs 1 whatever the weighting)."""
+    weightings = config.matrix.weightings
+    if len(weightings) < 2 or len(demonstrator_sets(row)[column].members) < 2:
+        return config.run.learning.imitator_weighting, []
+    scores = [load_cell_weighing(run.require(run.weighing_path(row, column, w), "matrix")) for w in weightings]
+    best = max(range(len(scores)), key=lambda i: (validation_rank(scores[i]), -i))
+    return weightings[best], [{"weighting": s["weighting"], "goals": s["goals"], "own_goals": s["own_goals"],
+                               "attempts": s["attempts"]} for s in scores]
+
+
 def _cell(run: MatrixDir, config: MatrixConfig, row: str, column: str) -> dict[str, Any]:
     chosen = demonstrator_sets(row)[column]
     # A built-in body's own-body cell is its own controller's column: read there.
@@ -48,7 +64,9 @@ def _cell(run: MatrixDir, config: MatrixConfig, row: str, column: str) -> dict[s
     bco = [load_cell_evaluation(run.require(run.evaluation_path(row, stored, "bco", s), "matrix"))
            for s in config.fit_seeds()]
     tuning = load_cell_tuning(run.require(run.tuning_path(row, stored), "matrix"))
-    return {"set": chosen.name, "demonstrators": list(chosen.names), "polymimic": _scores(polymimic),
+    weighting, weighing = chosen_weighting(run, config, row, stored)
+    return {"set": chosen.name, "demonstrators": list(chosen.names),
+            "polymimic": {**_scores(polymimic), "weighting": weighting, "weighing": weighing},
             "bco": {**_scores(bco), "hyperparameters": tuning["hyperparameters"]}}
 
 

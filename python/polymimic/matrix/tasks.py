@@ -1,5 +1,6 @@
 """The work of a matrix, as tasks a process pool or Ray can run: one cell's trial and its
-evaluation (polymimic), one cell's bco tuning, one bco fit and its evaluation. Each depends on
+evaluation (polymimic), one of polymimic's weightings of a cell's members on validation
+attempts, one cell's bco tuning, one bco fit and its evaluation. Each depends on
 its arguments alone, so the same seeds give the same bits on any worker."""
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ from typing import Any
 
 from polymimic import baselines
 from polymimic._native import PrimitiveRecognizer, SegmentedDemonstrations
+from polymimic.baselines.evaluation import VALIDATION_SEED_BASE
 from polymimic.baselines.hyperparameters import (
     DEFAULT,
     PLAIN_BOOSTING,
@@ -17,11 +19,12 @@ from polymimic.baselines.hyperparameters import (
     Hyperparameters,
     candidates,
 )
+from polymimic.baselines.tuning import validation_attempts_apart
 from polymimic.field import Demonstration, PrimitiveSequence, self_observation
 from polymimic.learning import ImitatorPolicy, evaluate, run_trial, segmented
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig
 
-__all__ = ["Shared", "bco_task", "dumps", "polymimic_task", "recognise_task", "tuning_task"]
+__all__ = ["Shared", "bco_task", "dumps", "polymimic_task", "recognise_task", "tuning_task", "weighing_task"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -63,20 +66,48 @@ def _cell_segments(shared: Shared, row: str, column: str) -> SegmentedDemonstrat
     return _segmented[key]
 
 
-def polymimic_task(shared: Shared, job: tuple[str, str, int]) -> dict[str, Any]:
-    """``(row, column, trial seed)`` → polymimic's evaluation after that trial: the row's imitator,
-    learning on its own setting, driven by the improved control."""
-    row, column, seed = job
+def polymimic_task(shared: Shared, job: tuple[str, str, int, str]) -> dict[str, Any]:
+    """``(row, column, trial seed, weighting)`` → polymimic's evaluation after that trial: the
+    row's imitator, learning on its own setting and weighing the cell's members as chosen, driven
+    by the improved control."""
+    row, column, seed, weighting = job
+    played = _played(shared, row, column, seed, weighting, attempts_per_configuration=(
+        shared.config.matrix.attempts_per_configuration), attempts_seed=shared.config.seeds.evaluation)
+    return {**_evaluation(shared, row, column, "polymimic", seed, played), "weighting": weighting}
+
+
+def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:
+    """``(row, column, weighting)`` → one trial under the first trial's seed with that weighting
+    of the cell's members, played on the validation attempts bco's tuning plays (never the
+    evaluation's): polymimic's tuning, with bco's effort."""
+    row, column, weighting = job
     config, settings = shared.config, shared.config.matrix
+    attempts = validation_attempts_apart(settings.validation_attempts_per_configuration,
+                                         validation_seed=settings.validation_seed,
+                                         evaluation_seed=config.seeds.evaluation,
+                                         evaluation_attempts_per_configuration=settings.attempts_per_configuration)
+    played = _played(shared, row, column, config.seeds.first_trial, weighting,
+                     attempts_per_configuration=settings.validation_attempts_per_configuration,
+                     attempts_seed=VALIDATION_SEED_BASE + settings.validation_seed)
+    if [(a.configuration, a.seed) for a in played.attempts] != attempts:
+        raise RuntimeError("the imitator's validation attempts are not bco's")  # the seed rule, guarded
+    return {"row": row, "column": column, "weighting": weighting, "seed": config.seeds.first_trial,
+            "validation_seed": settings.validation_seed, "goals": played.goals, "own_goals": played.own_goals,
+            "attempts": len(played.attempts)}
+
+
+def _played(shared: Shared, row: str, column: str, seed: int, weighting: str, *, attempts_per_configuration: int,
+            attempts_seed: int) -> Any:
+    config = shared.config
+    learning = config.run.learning.replace(imitator_weighting=weighting)
     chosen, _ = shared.cell(row, column)
     batch, body = _cell_segments(shared, row, column), config.body(row)
-    trial = run_trial(batch, recognizer=shared.recognizers[row], ordering=list(chosen.names),
-                      config=config.run.learning, phase_one="interleaved", seed=seed, body=body)
-    policy = ImitatorPolicy(trial, recognizer=shared.recognizers[row], config=config.run.learning, control="improved",
+    trial = run_trial(batch, recognizer=shared.recognizers[row], ordering=list(chosen.names), config=learning,
+                      phase_one="interleaved", seed=seed, body=body)
+    policy = ImitatorPolicy(trial, recognizer=shared.recognizers[row], config=learning, control="improved",
                             demonstrations=batch, body=body)
-    played = evaluate(policy, attempts_per_configuration=settings.attempts_per_configuration,
-                      seed=config.seeds.evaluation, field_config=config.run.field)
-    return _evaluation(shared, row, column, "polymimic", seed, played)
+    return evaluate(policy, attempts_per_configuration=attempts_per_configuration, seed=attempts_seed,
+                    field_config=config.run.field)
 
 
 def _bco_inputs(shared: Shared, row: str) -> dict[str, Any]:

@@ -42,6 +42,8 @@ def main() -> None:
     choice = ppo_bc.tune_pretraining(demos, budget=min(settings.tuning_budget, len(ppo_bc.PRETRAINING_CANDIDATES)),
                                      validation_seed=settings.validation_seed,
                                      attempts_per_configuration=settings.validation_attempts_per_configuration,
+                                     evaluation_seed=config.seeds.evaluation,
+                                     evaluation_attempts_per_configuration=settings.attempts_per_configuration,
                                      seed=config.seeds.first_trial, **common)
     _, curve, _ = ppo_bc.learning_curve(demos, choice.chosen, total_timesteps=options.timesteps,
                                         eval_every=options.eval_every,

@@ -90,10 +90,14 @@ def test_a_rerun_redoes_nothing_and_a_lost_cell_only(finished):
     lost = run.evaluation_path("wagon", "tiny", "polymimic", config.trial_seeds()[1])
     lost.write_text("{ damaged")
     run.weighing_path("lego", "mixed_bodies", "lp_gain").write_text('{"goals": -1}')
+    # An evaluation made under a weighting the cell did not choose is redone too.
+    other = run.evaluation_path("wagon", "mixed_bodies", "polymimic", config.trial_seeds()[0])
+    saved = json.loads(other.read_text())
+    other.write_text(json.dumps({**saved, "weighting": "even"}))
     with TaskRunner(workers=1) as runner:
         run_matrix(run, config, runner, quiet=True)
     stages = run.manifest()["stages"]
-    assert stages["weigh"]["made"] == 1 and stages["polymimic"]["made"] == 1
+    assert stages["weigh"]["made"] == 1 and stages["polymimic"]["made"] == 2
     assert stages["tune"]["made"] == 0 and stages["bco"]["made"] == 0
     assert run.results_path.read_bytes() == before, "the same seed makes the same bits"
 
@@ -115,6 +119,7 @@ def test_each_row_learns_from_the_columns_demonstrators():
     ('[matrix]\ntrails = 3\n', r"unknown key in \[matrix\]: trails"),
     ('[matrix]\nweightings = ["lp", "lpp"]\n', r"\[matrix\] weightings must be .* one of even, lp, lp_gain; got"),
     ('[matrix]\nweightings = []\n', r"\[matrix\] weightings must be a non-empty list"),
+    ('[matrix]\nweightings = [["lp"]]\n', r"\[matrix\] weightings must be a non-empty list"),
 ])
 def test_a_bad_matrix_config_is_refused_naming_it(toml, match):
     with pytest.raises(ConfigError, match=match):
@@ -139,3 +144,15 @@ def test_the_described_body_in_docs_is_the_default_matrixs_own():
 
     path = pathlib.Path(__file__).parents[2] / "docs" / "configs" / "matrix_wagon.toml"
     assert MatrixConfig.load(path) == MatrixConfig()
+
+
+def test_without_a_choice_a_cell_takes_the_first_weighting(tmp_path):
+    from polymimic.matrix.weighing import chosen_weighting, is_weighed
+
+    one = MatrixConfig.from_toml('[matrix]\nweightings = ["lp_gain"]\n')
+    run = MatrixDir(tmp_path / "never-written")
+    assert not is_weighed(one, "lego", "mixed_bodies")
+    assert chosen_weighting(run, one, "lego", "mixed_bodies") == ("lp_gain", [])
+    two = MatrixConfig()
+    assert is_weighed(two, "lego", "mixed_bodies") and not is_weighed(two, "lego", "expert")
+    assert chosen_weighting(run, two, "tiny", "tiny") == ("lp", [])

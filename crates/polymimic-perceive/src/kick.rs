@@ -35,13 +35,13 @@ pub(crate) fn kick_starts(
     if !set.contains(Primitive::Kick) || frames.len() < KICK_FRAMES {
         return Vec::new();
     }
-    let ball_moved = |from: usize, to: usize| {
+    let ball_moved_mm = |from: usize, to: usize| {
         (frames[to].ball_x_mm - frames[from].ball_x_mm).hypot(frames[to].ball_y_mm - frames[from].ball_y_mm)
     };
     let mut starts: Vec<usize> = Vec::new();
     let w = BALL_WINDOW_FRAMES;
     for rolls in w..frames.len() - w {
-        if !(ball_moved(rolls, rolls + w) > BALL_ROLLING_MM && ball_moved(rolls - w, rolls) < BALL_RESTING_MM) {
+        if !(ball_moved_mm(rolls, rolls + w) > BALL_ROLLING_MM && ball_moved_mm(rolls - w, rolls) < BALL_RESTING_MM) {
             continue;
         }
         let free_from = starts.last().map_or(0, |&s| s + KICK_FRAMES - 1);

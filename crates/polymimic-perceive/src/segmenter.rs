@@ -6,8 +6,9 @@
 //! the frame before; the recogniser then names it, or calls it a gap when the best two models
 //! score within `gap_margin` of each other. Consecutive segments share their boundary frame,
 //! so each starts where the last one ended. A recogniser that knows a kick first finds the
-//! demonstration's kicks by the ball ([`crate::kick`]): each is a segment of its own, and the
-//! segment before it ends where it starts.
+//! demonstration's kicks by the ball ([`crate::kick`]): each is a segment of its own, a second
+//! long whatever `min_frames`, and the segment before it ends where it starts (a stretch too
+//! short to be a segment joins the one before, or is a gap after a kick).
 
 use polymimic_types::{Pose, Primitive, TrackedFrame};
 use serde::{Deserialize, Serialize};

@@ -33,7 +33,10 @@ same from above (:func:`polymimic.field.command_primitives`, the thesis's Table 
 that the humanoid's kicks, made leaning back, are forward, since the wheeled imitator kicks by
 driving into the ball (:data:`CLONING_EQUIVALENTS`). In the same ten fits that moved net goals
 by +0.7 (mapped), +2.3 (as recorded) and 0.0 (stretched), within the fits' spread: it is kept
-for what a kick does.
+for what a kick does. The labellings from tracker frames alone cannot know what was sent: they
+name a kick as it looks, backward, as a wheeled recogniser reads it, and so does the humanoid's
+own recogniser once its steps and segments are named in the five
+(:data:`polymimic.field.WHEELED_EQUIVALENT`).
 
 >>> import polymimic
 >>> demos = polymimic.record("poor", configuration=1, n=1, seed=0)
@@ -190,8 +193,9 @@ def segment_labels(demonstrations: Sequence[Demonstration], recognizer: Primitiv
                    imitator: str | WheeledBody = IMITATOR_BODY, **segmenter: Any) -> list[Labelled]:
     """Each frame labelled with the primitive of the recogniser's segment covering it (none in
     a gap or outside every segment; the humanoid's own side-steps and kick by their wheeled
-    equivalents, :data:`polymimic.field.WHEELED_EQUIVALENT`); ``segmenter`` passes the segmenter's settings, and the
-    observations are on the field of body ``imitator``."""
+    equivalents, :data:`polymimic.field.WHEELED_EQUIVALENT`, as step names have them);
+    ``segmenter`` passes the segmenter's settings, and the observations are on the field of body
+    ``imitator``."""
     demos = check_demonstrations(demonstrations)
     segmented = recognizer.segment_many([d.frames for d in demos], **segmenter)
     labelled = []

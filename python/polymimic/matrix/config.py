@@ -82,7 +82,8 @@ class MatrixSettings:
     weightings: tuple[str, ...] = _doc("polymimic's candidates for how it weighs a crowd's members "
                                        "([learning] imitator_weighting), chosen in every cell of more than one "
                                        "demonstrator on bco's validation attempts, one trial each under the first "
-                                       "trial's seed; one candidate: no choice", ("lp", "lp_gain"))
+                                       "trial's seed; the first where there is no choice (one demonstrator or one "
+                                       "candidate)", ("lp", "lp_gain"))
 
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration", "bco_fits",
@@ -92,8 +93,9 @@ class MatrixSettings:
         if self.primitives not in ("own", "wheeled"):
             raise ConfigError(f"[matrix] primitives must be 'own' or 'wheeled', got {self.primitives!r}")
         weightings = self.weightings
-        if not isinstance(weightings, (list, tuple)) or not weightings or len(set(weightings)) != len(weightings) \
-                or not all(w in WEIGHTINGS for w in weightings):
+        if not isinstance(weightings, (list, tuple)) or not weightings \
+                or not all(isinstance(w, str) and w in WEIGHTINGS for w in weightings) \
+                or len(set(weightings)) != len(weightings):
             raise ConfigError(f"[matrix] weightings must be a non-empty list of distinct imitator weightings, each "
                               f"one of {', '.join(WEIGHTINGS)}; got {weightings!r}")
         object.__setattr__(self, "weightings", tuple(weightings))

@@ -40,8 +40,9 @@ from polymimic.matrix.config import COLUMNS, DemonstratorSet, MatrixConfig, demo
 from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.report import matrix_html, matrix_markdown
 from polymimic.matrix.rundir import MatrixDir
-from polymimic.matrix.summary import chosen_weighting, draw_heat_map, gather
+from polymimic.matrix.summary import draw_heat_map, gather
 from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, recognise_task, tuning_task, weighing_task
+from polymimic.matrix.weighing import chosen_weighting, is_weighed
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
 from polymimic.runs.steps import Stepped, each_member_recorded
@@ -135,10 +136,7 @@ class Matrix(Stepped):
 
     def _weighed_cells(self) -> list[tuple[str, str]]:
         """The cells where polymimic chooses how to weigh the members: those of a crowd."""
-        if len(self.config.matrix.weightings) < 2:
-            return []
-        sets = self.sets()
-        return [(row, column) for row, column in self.cells() if len(sets[row][column].members) > 1]
+        return [(row, column) for row, column in self.cells() if is_weighed(self.config, row, column)]
 
     def weigh(self, shared: Shared) -> int:
         jobs = [(row, column, weighting) for row, column in self._weighed_cells()
@@ -201,7 +199,7 @@ class Matrix(Stepped):
                 bar.update(1)
         return len(jobs)
 
-    # 6. The summary and the report.
+    # 7. The summary and the report.
 
     def report(self) -> int:
         summary = gather(self.run, self.config)

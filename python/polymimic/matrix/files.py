@@ -7,13 +7,13 @@ import os
 from typing import Any, TypedDict
 
 from polymimic._native import ModelFileError
+from polymimic.matrix.config import WEIGHTINGS
 from polymimic.runs.files import checked_outcomes, checked_tuning, integer_key, json_object, name_key
 
 __all__ = ["SavedCellEvaluation", "SavedCellTuning", "SavedCellWeighing", "load_cell_evaluation", "load_cell_tuning",
            "load_cell_weighing"]
 
 METHODS = ("polymimic", "bco")
-WEIGHTINGS = ("even", "lp", "lp_gain")
 
 
 class SavedCellEvaluation(TypedDict):

@@ -13,14 +13,14 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 from polymimic import __version__
-from polymimic.baselines.tuning import validation_rank
 from polymimic.bodies import pitch_of, playing_field, reach_mm
 from polymimic.matrix.config import COLUMNS, MatrixConfig, demonstrator_sets
-from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
+from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning
 from polymimic.matrix.rundir import MatrixDir
+from polymimic.matrix.weighing import chosen_weighting
 from polymimic.runs.stats import mean_sd
 
-__all__ = ["FORMAT", "HEAT_MAP", "VERSION", "chosen_weighting", "draw_heat_map", "gather", "transfer"]
+__all__ = ["FORMAT", "HEAT_MAP", "VERSION", "draw_heat_map", "gather", "transfer"]
 
 FORMAT, VERSION = "polymimic.matrix", 1
 HEAT_MAP = "matrix_heat_map.png"
@@ -39,20 +39,6 @@ def _scores(evaluations: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
     return {"net_goals": mean_sd(nets), "goals": mean_sd(e["goals"] for e in evaluations),
             "own_goals": mean_sd(e["own_goals"] for e in evaluations), "per_seed": nets,
             "evaluated": len(evaluations), "attempts": evaluations[0]["attempts"] if evaluations else None}
-
-
-def chosen_weighting(run: MatrixDir, config: MatrixConfig, row: str, column: str) -> tuple[str, list[dict[str, Any]]]:
-    """How polymimic weighs the members in the computed cell ``(row, column)``, and every
-    candidate's validation score: the best of ``[matrix] weightings`` by net goals, then goals
-    (the first of equals), where the cell has more than one demonstrator and there is a choice;
-    elsewhere ``[learning] imitator_weighting`` (one member weighs 1 whatever the weighting)."""
-    weightings = config.matrix.weightings
-    if len(weightings) < 2 or len(demonstrator_sets(row)[column].members) < 2:
-        return config.run.learning.imitator_weighting, []
-    scores = [load_cell_weighing(run.require(run.weighing_path(row, column, w), "matrix")) for w in weightings]
-    best = max(range(len(scores)), key=lambda i: (validation_rank(scores[i]), -i))
-    return weightings[best], [{"weighting": s["weighting"], "goals": s["goals"], "own_goals": s["own_goals"],
-                               "attempts": s["attempts"]} for s in scores]
 
 
 def _cell(run: MatrixDir, config: MatrixConfig, row: str, column: str) -> dict[str, Any]:

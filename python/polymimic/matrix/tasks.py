@@ -21,7 +21,7 @@ from polymimic.baselines.hyperparameters import (
 )
 from polymimic.baselines.tuning import validation_attempts_apart
 from polymimic.field import Demonstration, PrimitiveSequence, self_observation
-from polymimic.learning import ImitatorPolicy, evaluate, run_trial, segmented
+from polymimic.learning import Evaluation, ImitatorPolicy, evaluate, run_trial, segmented
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig
 
 __all__ = ["Shared", "bco_task", "dumps", "polymimic_task", "recognise_task", "tuning_task", "weighing_task"]
@@ -97,7 +97,9 @@ def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:
 
 
 def _played(shared: Shared, row: str, column: str, seed: int, weighting: str, *, attempts_per_configuration: int,
-            attempts_seed: int) -> Any:
+            attempts_seed: int) -> Evaluation:
+    """One trial of the cell under ``seed`` with the members weighed by ``weighting``, its
+    improved-control policy played on the attempts ``attempts_seed`` names."""
     config = shared.config
     learning = config.run.learning.replace(imitator_weighting=weighting)
     chosen, _ = shared.cell(row, column)

@@ -70,3 +70,43 @@ fn a_recogniser_refuses_a_primitive_outside_its_set_and_keeps_its_set_in_its_fil
     let bare = text.replace(r#""primitives":"humanoid""#, "").replace(r#"\"primitives\":\"humanoid\""#, "");
     assert!(Recognizer::from_json(&bare.replace(",}", "}").replace(",,", ",")).is_err());
 }
+
+/// The Humanoid's demonstrations cut by its own recogniser: every kick is a second of its own
+/// wherever `min_frames` stands (the stretch before one may be shorter than `min_frames`, then it
+/// joins the segment before or stands as a gap), consecutive segments share their boundary frame,
+/// and a wheeled recogniser, which knows no kick, cuts none.
+#[test]
+fn kicks_are_cut_as_seconds_of_their_own_and_segments_still_tile() {
+    use polymimic_field::{Configuration, Demonstrator, Frame, LapseRate, record};
+    use polymimic_perceive::{KICK_FRAMES, Label, SegmenterConfig, segment};
+
+    let config = FieldConfig::default();
+    let humanoid = Recognizer::train(&observed(60, 1), humanoid_config()).expect("trains");
+    let wheeled_sequences: Vec<LabelledSequence> =
+        observed(60, 1).into_iter().filter(|s| PrimitiveSet::Wheeled.contains(s.primitive)).collect();
+    let wheeled = Recognizer::train(&wheeled_sequences, RecognizerConfig::default()).expect("trains");
+    let demos = record(Demonstrator::Humanoid, Configuration::One, 10, 0, LapseRate::NONE, &config).expect("records");
+    let mut kicks_at_ten = 0;
+    for min_frames in [10, 25, 40] {
+        let segmenter = SegmenterConfig { min_frames, ..SegmenterConfig::default() };
+        for demo in &demos {
+            let tracked: Vec<_> = demo.frames.iter().map(Frame::tracked).collect();
+            let segments = segment(&tracked, &humanoid, &segmenter).expect("segments");
+            assert_eq!(segments.first().map(|s| s.first_frame), Some(0));
+            for pair in segments.windows(2) {
+                assert_eq!(pair[1].first_frame, pair[0].last_frame, "segments tile");
+                assert!(pair[0].last_frame > pair[0].first_frame);
+            }
+            for kick in segments.iter().filter(|s| s.label == Label::Primitive(Primitive::Kick)) {
+                assert_eq!(kick.last_frame - kick.first_frame, KICK_FRAMES - 1);
+                kicks_at_ten += usize::from(min_frames == 10);
+            }
+            if min_frames == 10 {
+                let by_wheeled = segment(&tracked, &wheeled, &segmenter).expect("segments");
+                assert!(by_wheeled.iter().all(|s| s.label != Label::Primitive(Primitive::Kick)));
+            }
+        }
+    }
+    // The Humanoid kicks once or twice in each of these ten demonstrations.
+    assert!(kicks_at_ten >= 8, "{kicks_at_ten} kicks cut");
+}

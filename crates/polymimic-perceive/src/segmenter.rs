@@ -108,8 +108,8 @@ pub fn segment(
         let next_kick = kicks.peek().copied();
         if next_kick == Some(first) {
             kicks.next();
-            segments
-                .push(Segment { label: Label::Primitive(Primitive::Kick), ..scored(first, first + KICK_FRAMES - 1) });
+            // Named a kick: its window was chosen for leading the others by the gap margin.
+            segments.push(scored(first, first + KICK_FRAMES - 1));
             first += KICK_FRAMES - 1;
             continue;
         }

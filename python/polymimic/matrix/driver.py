@@ -28,6 +28,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import json
+import pathlib
 import time
 from typing import Any
 
@@ -142,12 +143,9 @@ class Matrix(Stepped):
         jobs = [(row, column, weighting) for row, column in self._weighed_cells()
                 for weighting in self.config.matrix.weightings
                 if not self.run.finished(self.run.weighing_path(row, column, weighting), load_cell_weighing)]
-        for row, column in self.cells():
-            self.run.cell_dir(row, column).mkdir(parents=True, exist_ok=True)
         with progress(total=len(jobs), desc="weigh", quiet=self.quiet) as bar:
             for _, result in self.runner.map(weighing_task, shared, jobs):
-                atomic_write_text(self.run.weighing_path(result["row"], result["column"], result["weighting"]),
-                                  dumps(result))
+                _write_in_cell(self.run.weighing_path(result["row"], result["column"], result["weighting"]), result)
                 bar.update(1)
         return len(jobs)
 
@@ -157,8 +155,8 @@ class Matrix(Stepped):
             2 * self.config.matrix.attempts_per_configuration, self.config.seeds.evaluation, weighting)
 
     def _write(self, result: dict[str, Any]) -> None:
-        path = self.run.evaluation_path(result["row"], result["column"], result["method"], result["seed"])
-        atomic_write_text(path, dumps(result))
+        _write_in_cell(self.run.evaluation_path(result["row"], result["column"], result["method"], result["seed"]),
+                       result)
 
     def polymimic(self, shared: Shared) -> int:
         weighting = {(row, column): chosen_weighting(self.run, self.config, row, column)[0]
@@ -182,7 +180,7 @@ class Matrix(Stepped):
             for _, result in self.runner.map(tuning_task, shared, jobs):
                 # The evaluation first: a tuning on disk is done, and a lost evaluation is redone.
                 self._write(result.pop("evaluation"))
-                atomic_write_text(self.run.tuning_path(result["row"], result["column"]), dumps(result))
+                _write_in_cell(self.run.tuning_path(result["row"], result["column"]), result)
                 bar.update(1)
         return len(jobs)
 
@@ -213,6 +211,12 @@ class Matrix(Stepped):
         atomic_write_text(self.run.report_md_path, markdown + "\n")
         atomic_write_text(self.run.report_html_path, matrix_html(markdown, images_from=str(self.run.path)))
         return 3
+
+
+def _write_in_cell(path: pathlib.Path, result: dict[str, Any]) -> None:
+    """``result`` to its file in a cell's folder, made on first use, atomically."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    atomic_write_text(path, dumps(result))
 
 
 def run_matrix(run: MatrixDir, config: MatrixConfig, runner: TaskRunner, *, quiet: bool = False) -> float:

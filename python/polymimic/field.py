@@ -214,10 +214,13 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
            decision_hz: float | None = None, timeout_s: float | None = 10.0) -> list[Demonstration]:
     """``n`` valid demonstrations of ``demonstrator`` from field ``configuration`` (1 or 2).
 
-    ``demonstrator`` is a built-in's name (one of :data:`DEMONSTRATORS`) or a Python policy of
-    your own (see :mod:`polymimic.policies`). A demonstration whose tracking was lost is
-    discarded and replaced, deterministically. ``seed`` is any integer in ``[0, 2**64)``.
-    ``config`` overrides the field configuration (see :func:`default_config`).
+    ``demonstrator`` is a built-in's name (one of :data:`DEMONSTRATORS`), a trained imitator (a
+    :class:`polymimic.ImitatorPolicy`, practised or not: it plays its own body, and its
+    demonstrations are named ``name``, ``"imitator"`` by default), or a Python policy of your
+    own (see :mod:`polymimic.policies`; an :class:`polymimic.ImitatorPlayer` is one). A
+    demonstration whose tracking was lost is discarded and replaced, deterministically.
+    ``seed`` is any integer in ``[0, 2**64)``. ``config`` overrides the field configuration
+    (see :func:`default_config`).
 
     Built-in demonstrators run in parallel in Rust with the GIL released. ``lapse`` is their
     lapse rate ε in [0, 1] (SPEC §6.1), a skill set by design: at the start of every second of
@@ -268,6 +271,9 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     """
     configuration, n = integer("configuration", configuration, 1, 2), integer("n", n, 1)
     seed, lapse = integer("seed", seed, 0, 2**64 - 1), probability("lapse", lapse)
+    if isinstance(demonstrator, _native.ImitatorPolicy):
+        return _record_imitator(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse,
+                                config=config, body=body, name=name, decision_hz=decision_hz)
     if not isinstance(demonstrator, str):
         return _record_policy(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse, config=config,
                               body=body, name=name, decision_hz=decision_hz, timeout_s=timeout_s)
@@ -305,6 +311,21 @@ def _own_name(name: Any, demonstrator: str) -> str:
         raise ValueError(f"name {name!r} is another demonstrator's; the {demonstrator}'s demonstrations need a name "
                          f"of their own")
     return name
+
+
+def _record_imitator(policy: _native.ImitatorPolicy, *, configuration: int, n: int, seed: int, lapse: float,
+                     config: dict[str, Any] | str | None, body: str | WheeledBody | None, name: str | None,
+                     decision_hz: float | None) -> list[Demonstration]:
+    """A trained imitator's attempts, recorded in Rust as a demonstrator's (its own body)."""
+    if lapse != 0.0:
+        raise ValueError("lapse= is for the built-in demonstrators; an imitator plays as it learned to")
+    if decision_hz is not None:
+        raise ValueError("decision_hz= is for a Python policy; an imitator holds each primitive for a second")
+    if body is not None and body_name(body) != policy.body:
+        raise ValueError(f"body={body_name(body)!r}, but the imitator drives the {policy.body!r} body; leave body= out")
+    who = "imitator" if name is None else _own_name(name, "imitator")
+    raw = policy.record(configuration=configuration, n=n, seed=seed, field_config=_field_config(config))
+    return _demonstrations(raw, who, policy.body)
 
 
 def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse: float,

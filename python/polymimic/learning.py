@@ -311,13 +311,36 @@ class Evaluation:
 
 
 def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0,
-             field_config: dict[str, Any] | str | None = None) -> Evaluation:
-    """``attempts_per_configuration`` attempts from each field configuration, in parallel, on the
-    field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's),
-    with the policy's body; the attempts are recorded as that body's."""
+             field_config: dict[str, Any] | str | None = None,
+             starts: Sequence[int | Mapping[str, Any]] | None = None) -> Evaluation:
+    """``attempts_per_configuration`` attempts from each start, in parallel, on the field
+    ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's), with the
+    policy's body; the attempts are recorded as that body's.
+
+    ``starts`` are the thesis's field configurations ``1`` and ``2`` by default; a start of your
+    own is ``{"robot": (x_mm, y_mm, theta_rad), "ball": (x_mm, y_mm)}`` on the body's field
+    (a ``ValueError`` names one off the field or with the ball on the robot). A configuration
+    plays the same episodes whatever else is listed; the k-th chosen start's attempts have
+    episode seeds of their own, and are recorded with configuration ``0``. Each attempt is the
+    policy's :meth:`~polymimic.ImitatorPolicy.player` stepped through the field one tracker
+    reading at a time.
+
+    >>> import polymimic
+    >>> from polymimic import recognition
+    >>> recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
+    >>> demos = polymimic.record("expert", configuration=1, n=2, seed=0)
+    >>> policy = ImitatorPolicy(run_trial(demos, recognizer=recognizer, ordering=["expert"]), recognizer=recognizer,
+    ...                         control="improved", demonstrations=demos)
+    >>> near = {"robot": (150.0, 0.0, 0.0), "ball": (300.0, 0.0)}   # close in front of the goal
+    >>> played = evaluate(policy, attempts_per_configuration=2, starts=[near], seed=1)
+    >>> [a.configuration for a in played.attempts], played.goals
+    ([0, 0], 2)
+    """
     attempts_per_configuration = integer("attempts_per_configuration", attempts_per_configuration, 1)
     seed = integer("seed", seed, 0, 2**64 - 1)
-    raw = policy.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
+    given = None if starts is None else list(starts)
+    raw = policy.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config),
+                          starts=given)
     attempts = _attempts(raw, "imitator", body=policy.body)
     return Evaluation(goals=sum(a.outcome == "goal" for a in attempts),
                       own_goals=sum(a.outcome == "own_goal" for a in attempts), attempts=attempts,
@@ -325,8 +348,9 @@ def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int 
 
 
 def _attempts(raw: list[dict[str, Any]], demonstrator: str, *, body: str = "lego") -> list[Demonstration]:
+    """Native attempts as demonstrations; an attempt from a chosen start has configuration 0."""
     return [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator=demonstrator,
-                          configuration=a["configuration"], seed=a["seed"], body=body) for a in raw]
+                          configuration=a["configuration"] or 0, seed=a["seed"], body=body) for a in raw]
 
 
 def spare_attempts(n: int) -> int:

@@ -19,6 +19,9 @@ import os
 from collections.abc import Mapping, Sequence
 from typing import Any, Union
 
+import numpy as np
+import numpy.typing as npt
+
 from polymimic import _native
 from polymimic._arguments import integer
 from polymimic._atomic import atomic_write_text
@@ -27,6 +30,7 @@ from polymimic._toml import dumps, loads
 from polymimic.bodies import WheeledBody, body_name, pitch_of, reach_mm, resolve
 from polymimic.field import Demonstration, _field_config, as_frames, record
 from polymimic.imitator_file import PolicyInputs, read_policy_file, write_policy_file
+from polymimic.stepping import predict as predict_with
 
 __all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
            "SegmentedDemonstrations", "TrialResult", "as_segmented", "average_demonstrator", "evaluate",
@@ -237,8 +241,9 @@ class ImitatorPolicy(_native.ImitatorPolicy):
     True
     """
 
-    __slots__ = ("_made_from",)
+    __slots__ = ("_made_from", "_players")
     _made_from: PolicyInputs
+    _players: list[_native.ImitatorPlayer]
 
     def __new__(cls, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
                 config: LearningConfig | None = None, control: str = "thesis",
@@ -257,7 +262,37 @@ class ImitatorPolicy(_native.ImitatorPolicy):
         policy._made_from = PolicyInputs(trial=trial, recognizer=recognizer, config=config or LearningConfig(),
                                          control=control, body=resolved, demonstrations=batch, practice=practice,
                                          practice_weight=float(practice_weight))
+        policy._players = []
         return policy
+
+    def predict(self, observation: npt.ArrayLike, state: Sequence[_native.ImitatorPlayer] | None = None,
+                episode_start: npt.ArrayLike | None = None,
+                deterministic: bool = True) -> tuple[np.ndarray, tuple[_native.ImitatorPlayer, ...]]:
+        """stable-baselines3's ``predict`` on ``PenaltyKick-v0``'s observations, one ``(5,)`` or a
+        batch ``(n, 5)``: the primitive (an index into the body's set, the env's action) the
+        imitator runs next in each, and the players that decided (``state``: pass it back, or
+        None to use the policy's own). ``episode_start`` marks the observations that begin an
+        episode (each player then starts afresh from what it shows). The control is
+        deterministic: ``deterministic`` is accepted and has no effect. See
+        :mod:`polymimic.stepping`.
+
+        >>> import gymnasium, polymimic
+        >>> from polymimic import recognition
+        >>> recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
+        >>> demos = polymimic.record("expert", configuration=1, n=2, seed=0)
+        >>> policy = ImitatorPolicy(run_trial(demos, recognizer=recognizer, ordering=["expert"]),
+        ...                         recognizer=recognizer, control="improved", demonstrations=demos)
+        >>> env = gymnasium.make("PenaltyKick-v0")
+        >>> observation, info = env.reset(seed=0, options={"configuration": 1})
+        >>> state, done = None, False
+        >>> while not done:
+        ...     action, state = policy.predict(observation, state=state, episode_start=state is None)
+        ...     observation, reward, terminated, truncated, info = env.step(action)
+        ...     done = terminated or truncated
+        >>> info["outcome"]
+        'goal'
+        """
+        return predict_with(self, self._players, observation, state, episode_start)
 
     @property
     def made_from(self) -> PolicyInputs:

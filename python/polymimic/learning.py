@@ -17,7 +17,7 @@ from __future__ import annotations
 import dataclasses
 import os
 from collections.abc import Mapping, Sequence
-from typing import Any, Union
+from typing import Any, Protocol, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -345,7 +345,19 @@ class Evaluation:
     behaviours: list[list[str]]
 
 
-def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0,
+class Plays(Protocol):
+    """Anything :func:`evaluate` scores: an :class:`ImitatorPolicy`, or a policy that plays
+    the same attempts as it does (a practised imitator,
+    :class:`polymimic.practice.practised.PractisedPolicy`)."""
+
+    @property
+    def body(self) -> str: ...
+
+    def evaluate(self, attempts_per_configuration: int, *, seed: int = 0, field_config: str | None = None,
+                 starts: Sequence[int | Mapping[str, Any]] | None = None) -> list[dict[str, Any]]: ...
+
+
+def evaluate(policy: Plays, *, attempts_per_configuration: int = 25, seed: int = 0,
              field_config: dict[str, Any] | str | None = None,
              starts: Sequence[int | Mapping[str, Any]] | None = None) -> Evaluation:
     """``attempts_per_configuration`` attempts from each start, in parallel, on the field

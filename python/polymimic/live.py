@@ -110,10 +110,10 @@ class UdpSource:
 
     def receive(self, timeout_s: float) -> bytes | None:
         """The next datagram, or None if none came within ``timeout_s``."""
-        self._socket.settimeout(timeout_s)
+        self._socket.settimeout(max(timeout_s, 1e-6))  # 0 would make the socket non-blocking
         try:
             data, _ = self._socket.recvfrom(_MAX_DATAGRAM)
-        except TimeoutError:
+        except (TimeoutError, BlockingIOError):
             return None
         return data
 

@@ -121,3 +121,8 @@ def test_the_live_command_drives_and_reports(tmp_path, policy, capsys):
     out = capsys.readouterr().out
     assert "listening on 127.0.0.1:" in out and "0 readings answered" in out
     assert json.loads((tmp_path / "live.json").read_text())["answered"] == 0
+
+
+def test_a_source_asked_to_wait_no_time_answers_none_when_nothing_came():
+    with live.UdpSource() as source:
+        assert source.receive(0.0) is None and source.receive(-1.0) is None

@@ -249,7 +249,7 @@ class ImitatorPolicy(_native.ImitatorPolicy):
                 config: LearningConfig | None = None, control: str = "thesis",
                 demonstrations: Demonstrations | None = None,
                 body: str | WheeledBody = "lego", practice: SegmentedDemonstrations | None = None,
-                practice_weight: float = 1.0) -> ImitatorPolicy:
+                practice_weight: float = 1.0, refines: Sequence[str] | None = None) -> ImitatorPolicy:
         batch = None
         if demonstrations is not None and control == "improved":
             batch = as_segmented(demonstrations, recognizer)
@@ -258,10 +258,11 @@ class ImitatorPolicy(_native.ImitatorPolicy):
         resolved = resolve(body)
         policy = super().__new__(cls, trial, recognizer=recognizer, config=config, control=control,
                                  demonstrations=batch, body=resolved, practice=practice,
-                                 practice_weight=practice_weight)
+                                 practice_weight=practice_weight, refines=None if refines is None else list(refines))
         policy._made_from = PolicyInputs(trial=trial, recognizer=recognizer, config=config or LearningConfig(),
                                          control=control, body=resolved, demonstrations=batch, practice=practice,
-                                         practice_weight=float(practice_weight))
+                                         practice_weight=float(practice_weight),
+                                         practice_refines=None if refines is None else tuple(refines))
         policy._players = []
         return policy
 
@@ -299,14 +300,17 @@ class ImitatorPolicy(_native.ImitatorPolicy):
         """What the policy is made from: its constructor's arguments, demonstrations segmented."""
         return self._made_from
 
-    def practised(self, attempts: SegmentedDemonstrations, *, weight: float = 1.0) -> ImitatorPolicy:
+    def practised(self, attempts: SegmentedDemonstrations, *, weight: float = 1.0,
+                  refines: Sequence[str] | None = None) -> ImitatorPolicy:
         """This policy, its world model learned again with ``attempts`` (its own, segmented by
         its own recogniser) beside the demonstrations: what :func:`polymimic.practice` makes
-        after each round. ``weight`` is what every sample of its own attempts weighs."""
+        after each round. ``weight`` is what every sample of its own attempts weighs;
+        ``refines`` the parts they refine (``"ball_response"``, ``"state_value"``,
+        ``"push_region"``; default the first two)."""
         made = self._made_from
         return type(self)(made.trial, recognizer=made.recognizer, config=LearningConfig(**made.config.to_dict()),
                           control=made.control, demonstrations=made.demonstrations, body=made.body,
-                          practice=attempts, practice_weight=weight)
+                          practice=attempts, practice_weight=weight, refines=refines)
 
     def save(self, path: str | os.PathLike[str]) -> None:
         """Write the policy to ``path``, atomically: one zip archive of its trial, recogniser,
@@ -329,7 +333,8 @@ class ImitatorPolicy(_native.ImitatorPolicy):
             return cls(made_from.trial, recognizer=made_from.recognizer,
                        config=LearningConfig(**made_from.config.to_dict()),
                        control=made_from.control, demonstrations=made_from.demonstrations, body=made_from.body,
-                       practice=made_from.practice, practice_weight=made_from.practice_weight)
+                       practice=made_from.practice, practice_weight=made_from.practice_weight,
+                       refines=made_from.practice_refines)
         except ValueError as error:
             raise ModelFileError(f"{os.fspath(path)}: its parts make no policy ({error})") from None
 

@@ -65,3 +65,4 @@ def test_the_practised_policy_saves_loads_and_plays_through_evaluate_predict_and
     (tmp_path / "bad.zip").write_text("no")
     with pytest.raises(polymimic.ModelFileError, match="not a practised policy"):
         PractisedPolicy.load(tmp_path / "bad.zip")
+

@@ -356,10 +356,13 @@ class Plays(Protocol):
     :class:`polymimic.practice.practised.PractisedPolicy`)."""
 
     @property
-    def body(self) -> str: ...
+    def body(self) -> str:
+        """The name of the body it drives."""
 
     def evaluate(self, attempts_per_configuration: int, *, seed: int = 0, field_config: str | None = None,
-                 starts: Sequence[int | Mapping[str, Any]] | None = None) -> list[dict[str, Any]]: ...
+                 starts: Sequence[int | Mapping[str, Any]] | None = None) -> list[dict[str, Any]]:
+        """Its attempts as dicts (``frames``, ``outcome``, ``configuration``, ``seed``,
+        ``behaviours``), as :meth:`ImitatorPolicy.evaluate` plays them."""
 
 
 def evaluate(policy: Plays, *, attempts_per_configuration: int = 25, seed: int = 0,

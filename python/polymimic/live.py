@@ -118,6 +118,7 @@ class UdpSource:
         return data
 
     def close(self) -> None:
+        """Let the socket go (also on leaving a ``with`` block)."""
         self._socket.close()
 
     def __enter__(self) -> Self:
@@ -143,6 +144,7 @@ class UdpSink:
         self._socket.sendto(data, self._to)
 
     def close(self) -> None:
+        """Let the socket go (also on leaving a ``with`` block)."""
         self._socket.close()
 
     def __enter__(self) -> Self:
@@ -174,6 +176,7 @@ class LiveReport:
         return float(np.quantile(self.latencies_ms, quantile)) if self.latencies_ms else math.nan
 
     def summary(self) -> str:
+        """One line: readings answered, latency p50 and p99, and the stream's faults."""
         return (f"{self.answered} readings answered in {self.episodes} episode(s); decision latency p50 "
                 f"{self.latency_ms(0.5):.3f} ms, p99 {self.latency_ms(0.99):.3f} ms; lost {self.lost}, stale "
                 f"{self.stale}, garbage {self.garbage}, pauses {self.pauses}")

@@ -43,8 +43,19 @@ def test_at_the_start_the_practised_policy_is_its_teacher_bit_for_bit(teacher, p
 
 
 def test_every_step_counts_the_teachers_roll_ins_too_and_the_budget_holds(practised):
-    assert 600 <= practised.steps <= 600 + 2  # the last step may finish both environments' step
+    # No checkpoint is scored with more steps played than it names, the teacher's included.
+    assert all(p.steps <= p.checkpoint for p in practised.curve)
+    assert 590 <= practised.steps <= 600
     assert practised.policy.handover == 0  # the curriculum shrank to the learner alone
+
+
+def test_practise_names_its_methods_and_refuses_others(teacher):
+    from polymimic.practice.methods import practise
+
+    taught = practise(teacher, method="jsrl", steps=300, evaluation_attempts=1)
+    assert [p.checkpoint for p in taught.curve][-1] == 300 and taught.attempts == []
+    with pytest.raises(ValueError, match="unknown practice method 'rl'; expected one of refine, explore, jsrl"):
+        practise(teacher, method="rl", steps=10)
 
 
 def test_the_practised_policy_saves_loads_and_plays_through_evaluate_predict_and_record(tmp_path, practised):

@@ -257,7 +257,8 @@ class Benchmark(Stepped):
         saved = self.run.loaded(self.run.practice_path(profile, seed), load_practice)
         return self._evaluation_done(profile, PRACTISED, seed) and is_practice_of(
             saved, profile, seed, evaluation_seed=self.config.seeds.evaluation,
-            attempts=2 * settings.attempts_per_configuration, budget=settings.practice_steps)
+            attempts=2 * settings.attempts_per_configuration, budget=settings.practice_steps,
+            method=settings.practice_method)
 
     def practice(self, shared: Shared) -> int:
         jobs = [(crowd.name, seed, self._trial_json(crowd.name, seed)) for crowd in self.config.crowds()

@@ -35,6 +35,7 @@ from polymimic.field import Demonstration, _field_config
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import DEFAULT_CHECKPOINTS, CurvePoint
 from polymimic.practice.exploring import explored_attempts
+from polymimic.practice.practised import PractisedPolicy
 from polymimic.practice.seeds import MAX_ROUNDS, check_apart, round_seed
 from polymimic.tracks.outcomes import outcome_of
 
@@ -49,7 +50,7 @@ class Practice:
     checkpoint), the environment ``steps`` it played, and its own ``attempts`` (the ones it
     learned from, each with the outcome read off its frames)."""
 
-    policy: ImitatorPolicy
+    policy: ImitatorPolicy | PractisedPolicy
     curve: list[CurvePoint]
     steps: int
     attempts: list[Demonstration]

@@ -59,6 +59,7 @@ class PractisedPolicy:
 
     @property
     def control(self) -> str:
+        """``"practised (<method>)"``, as an imitator's ``control`` names its rule."""
         return f"practised ({self.method})"
 
     def player(self) -> PractisedPlayer:
@@ -238,4 +239,5 @@ class PractisedPlayer:
 
     @property
     def episode(self) -> dict[str, Any]:
+        """The episode's start and seed, as :attr:`polymimic.ImitatorPlayer.episode`."""
         return self._guide.episode

@@ -8,7 +8,9 @@ imitator's typical attempt length to 0 over the first ``curriculum`` share of th
 the learner plays whole episodes. The policy scored at a checkpoint is the imitator for the
 current ``h_max`` decisions, then the learner (:class:`~polymimic.practice.practised.PractisedPolicy`).
 
-Every environment step counts against the budget, the imitator's roll-in steps too.
+Every environment step counts against the budget, the imitator's roll-in steps too; learning
+stops at each checkpoint with the steps to it spent (PPO updates every 512 steps, two
+environments of 256, so few steps are left unlearned at a checkpoint).
 stable-baselines3 and torch are needed (``pip install "polymimic[rl]"``).
 """
 
@@ -45,6 +47,11 @@ class Curriculum:
     until: int
 
     def h_max(self, steps: int) -> int:
+        """The most decisions the teacher plays after ``steps`` environment steps.
+
+        >>> Curriculum(start=20, until=1000).h_max(0), Curriculum(start=20, until=1000).h_max(500)
+        (20, 10)
+        """
         if self.until <= 0:
             return 0
         return max(0, math.ceil(self.start * (1.0 - steps / self.until)))
@@ -52,7 +59,10 @@ class Curriculum:
 
 @dataclasses.dataclass
 class _Counter:
+    """Environment steps played, and the most that may be (the next checkpoint)."""
+
     steps: int = 0
+    limit: int = 0
 
 
 class _RollIn(_Wrapper):  # type: ignore[misc]
@@ -64,6 +74,8 @@ class _RollIn(_Wrapper):  # type: ignore[misc]
         super().__init__(env)
         self._curriculum, self._counter, self._rng = curriculum, counter, rng
         self._player = teacher.player()
+        self._last: Any = None
+        self._info: dict[str, Any] = {}
 
     def reset(self, **kwargs: Any) -> Any:
         while True:
@@ -72,7 +84,7 @@ class _RollIn(_Wrapper):  # type: ignore[misc]
             h = int(self._rng.integers(0, self._curriculum.h_max(self._counter.steps) + 1))
             self._player.reset(start=self.env.unwrapped.configuration, seed=info["episode_seed"])
             ended = False
-            for _ in range(h):
+            for _ in range(min(h, self._counter.limit - self._counter.steps)):
                 action = self._player.decide(*(float(v) for v in observation))
                 observation, _, terminated, truncated, info = self.env.step(action)
                 self._counter.steps += 1
@@ -80,11 +92,16 @@ class _RollIn(_Wrapper):  # type: ignore[misc]
                     ended = True
                     break
             if not ended:
+                self._last, self._info = observation, info
                 return observation, info
 
     def step(self, action: Any) -> Any:
+        if self._counter.steps >= self._counter.limit:
+            # The budget to the checkpoint is spent: the episode is cut, no step is played.
+            return self._last, 0.0, False, True, {**self._info, "budget_spent": True}
         self._counter.steps += 1
-        return self.env.step(action)
+        self._last, reward, terminated, truncated, self._info = self.env.step(action)
+        return self._last, reward, terminated, truncated, self._info
 
 
 @dataclasses.dataclass(frozen=True)
@@ -116,10 +133,10 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     start = handover_start if handover_start is not None else _typical_length(teacher, seed, field_config)
     schedule = Curriculum(start=start, until=int(curriculum * steps))
     counter, rng = _Counter(), np.random.default_rng(seed)
+    ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,
                           wrap=lambda env: _RollIn(env, teacher, schedule, counter, rng), **ppo_kwargs)
     curve: list[CurvePoint] = []
-    pending = list(marks)
 
     def practised(h: int) -> PractisedPolicy:
         actor = ppo.PPOPolicy(model, feature_set="goal_relative", frames_per_action=30,
@@ -138,18 +155,16 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     from stable_baselines3.common.callbacks import BaseCallback  # type: ignore[import-not-found, unused-ignore]
 
     class Budget(BaseCallback):  # type: ignore[misc, unused-ignore]
-        def _on_rollout_start(self) -> None:
-            while pending and counter.steps >= pending[0]:
-                score(pending.pop(0))
+        """Stops learning when the steps to the checkpoint are spent (a part-played rollout
+        teaches nothing: PPO learns from whole rollouts)."""
 
         def _on_step(self) -> bool:
-            return counter.steps < steps
+            return counter.steps < counter.limit
 
-    if pending and pending[0] == 0:
-        score(pending.pop(0))
-    if steps > 0:
-        model.learn(total_timesteps=steps, callback=Budget())
-    for mark in pending:
+    for mark in marks:
+        counter.limit = mark
+        if counter.steps < mark:
+            model.learn(total_timesteps=10 * steps + 1, callback=Budget(), reset_num_timesteps=False)
         score(mark)
     return TeacherPractice(policy=practised(schedule.h_max(counter.steps)), curve=curve, steps=counter.steps)
 

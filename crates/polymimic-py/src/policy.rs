@@ -210,7 +210,7 @@ pub fn record_python_policy<'py>(
 }
 
 /// A built-in demonstrator's controller recorded through the policy path at `decision_hz`: the
-/// same episodes and seeds a Python policy gets, for comparing the two (`benches/`).
+/// same episodes and seeds a Python policy gets, for comparing the two (`benches/python_policy_vs_rust.py`).
 #[pyfunction]
 #[pyo3(signature = (demonstrator, *, configuration, n, seed=Seed(0), decision_hz=30.0),
        text_signature = "(demonstrator, *, configuration, n, seed=0, decision_hz=30.0)")]

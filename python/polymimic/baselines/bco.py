@@ -18,7 +18,7 @@ small ``linear`` crowd's, where the benchmark's recogniser's step labels agree i
 (:mod:`polymimic.baselines.agreement`).
 On small crowds (five demonstrations per member and configuration; each labelling tuned among
 the benchmark's six candidates on 40 validation attempts, then five fits, each playing the same
-50 attempts: ``python benches/bco_labellers.py --profiles linear one_good half equal
+50 attempts: ``python studies/which_labels_bco_should_learn_from.py --profiles linear one_good half equal
 mixed_bodies --n 5 --fits 5 --budget 6 --max-samples 10000``) ``bco`` netted, per 50, on
 ``linear``, ``one_good``, ``half``, ``equal`` and ``mixed_bodies``, 15.6, 18.4, 14.6, 21.6 and
 17.2 with the inverse model's labels against 9.6, 8.2, 18.2, 9.2 and 13.6 with the steps

@@ -132,7 +132,7 @@ trees as ``GradientBoostingClassifier`` grows them by default (100 of them, dept
 hold one sample) on the ball-relative features, unbalanced. With it among the candidates, a
 method's tuning can always choose the plain cloner's recipe; without it ``bc`` netted 9, 8 and
 12 on a small mixed crowd where a plain gradient-boosting cloner netted 22, 23 and 19
-(``benches/plain_cloner_small_crowd.py``). Leaves of one sample matter on so few
+(``studies/does_bc_match_a_plain_cloner_on_a_small_crowd.py``). Leaves of one sample matter on so few
 demonstrations: on that crowd, over eight fits at ten frames a step, these trees netted
 20.9 ± 2.9, scikit-learn's own 21.9 ± 2.4, and trees of seven leaves holding at least 20
 samples each (this candidate before) 14.8 ± 7.0."""

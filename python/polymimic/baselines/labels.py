@@ -22,7 +22,7 @@ demonstration from a field no longer than the imitator's (the tiny's) is taken a
 its field centred on the imitator's, and one from a longer field (a RoboCup-size log) has its
 ball brought across by the correspondence while the robot keeps its offset from the ball in
 millimetres. Measured on the benchmark's ``mixed_bodies`` crowd (``python
-benches/bc_field_mapping.py RUN_DIR --fits 5``: histogram gradient boosting on the
+studies/how_bc_should_read_another_field.py RUN_DIR --fits 5``: histogram gradient boosting on the
 ball-relative features, 5 frames a step, on the benchmark's evaluation attempts, kicks labelled
 forward), ``bc``'s samples as recorded netted 16.0 ± 6.4 goals per 50 (5.4 own goals), brought
 over by the correspondence (the humanoid's kicking reach and the tiny's touch mapped onto the

@@ -8,7 +8,7 @@ interleaved). Every method gets ``--budget`` candidates, scored on ``--validatio
 per configuration under validation seed ``--validation-seed`` (disjoint from the evaluation's
 by construction: see ``polymimic.baselines.tuning``). Prints one JSON object per method: its
 chosen hyperparameters, its validation scores, and its goals and own goals on evaluation.
-Run: ``python benches/baselines_tuned.py [--mix]``.
+Run: ``python studies/how_each_tuned_baseline_scores.py [--mix]``.
 
 Measured on a shared two-core node (budget 12, 10 validation attempts per configuration,
 validation seed 0; goals / own goals over the 50 evaluation attempts, configuration 1 + 2):

@@ -1,5 +1,5 @@
-"""Every baseline of SPEC §6.2 tuned on validation attempts, then evaluated on the imitator's
-50 attempts (25 per configuration).
+"""Every baseline of the benchmark (docs/results/benchmark.md) tuned on validation attempts, then
+evaluated on the imitator's 50 attempts (25 per configuration).
 
 The demonstrations are the Expert's 50 (25 per configuration), or with ``--mix`` the Expert's
 and the Poor's (100); ``bc_best`` clones the Expert alone, and ``bco_lp`` weighs each member by

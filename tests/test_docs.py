@@ -9,18 +9,43 @@ import pytest
 
 import polymimic
 
-README = pathlib.Path(__file__).resolve().parent.parent / "README.md"
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+README = ROOT / "README.md"
+PAGES = sorted((ROOT / "docs").rglob("*.md"))
+
+
+def python_examples(page):
+    """The page's ```python blocks with >>> prompts, one doctest in the page's order."""
+    blocks = [block.split("```", 1)[0] for block in page.read_text().split("```python\n")[1:]]
+    return [block for block in blocks if ">>> " in block]
+
+
+def run_examples(page):
+    parser = doctest.DocTestParser()
+    test = parser.get_doctest("\n".join(python_examples(page)), {}, page.name, str(page), 0)
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
+    runner.run(test)
+    return runner
 
 
 def test_readme_examples():
-    text = README.read_text()
-    blocks = [block.split("```", 1)[0] for block in text.split("```python\n")[1:]]
-    assert blocks, "the README has Python examples"
-    parser = doctest.DocTestParser()
-    test = parser.get_doctest("\n".join(blocks), {}, "README.md", str(README), 0)
-    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS)
-    runner.run(test)
+    assert python_examples(README), "the README has Python examples"
+    runner = run_examples(README)
     assert runner.failures == 0
+
+
+@pytest.mark.parametrize("page", [p for p in PAGES if python_examples(p)], ids=lambda p: str(p.relative_to(ROOT)))
+def test_docs_page_examples(page):
+    """Every example of every documentation page runs and prints what the page says."""
+    runner = run_examples(page)
+    assert runner.tries > 0 and runner.failures == 0
+
+
+def test_every_python_block_in_the_docs_is_run():
+    """A ```python block without prompts would be shown but never run: the pages have none."""
+    for page in PAGES + [README]:
+        blocks = [b.split("```", 1)[0] for b in page.read_text().split("```python\n")[1:]]
+        assert all(">>> " in block for block in blocks), page
 
 
 def test_readme_quick_start_is_what_ci_runs():

@@ -220,7 +220,7 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     ``config`` overrides the field configuration (see :func:`default_config`).
 
     Built-in demonstrators run in parallel in Rust with the GIL released. ``lapse`` is their
-    lapse rate ε in [0, 1] (SPEC §6.1), a skill set by design: at the start of every second of
+    lapse rate ε in [0, 1] (docs/guides/crowd.md), a skill set by design: at the start of every second of
     an episode (tracker frames 0, 30, 60, …), with probability ε, the demonstrator spends that
     second on one uniformly random primitive instead of its controller's commands (on the
     humanoid, which takes no primitives, the equivalent walk forward or backward, turn left or
@@ -229,6 +229,8 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     seed, so the same ``seed`` gives the same lapses, the episodes keep their seeds at every ε,
     and ``lapse=0.0`` is the controller's own demonstrations, bit for bit.
 
+    Examples
+    --------
     >>> sloppy = record("expert", configuration=1, n=1, seed=3, lapse=1.0)
     >>> bool((sloppy[0].frames["command"] <= 4).all())  # primitives only; the Expert's own are 100 up
     True

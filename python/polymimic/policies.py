@@ -1,4 +1,4 @@
-"""Python demonstrators (SPEC §6.4): what :func:`polymimic.record` accepts as a policy.
+"""Python demonstrators (docs/guides/own-data.md): what :func:`polymimic.record` accepts as a policy.
 
 A policy is a callable ``policy(reading) -> command`` or an object with ``act(reading) ->
 command`` and, optionally, ``reset(episode)`` (called before every episode with a dict of its

@@ -61,7 +61,7 @@ pub(crate) fn positive(name: &str, value: i64) -> PyResult<usize> {
 }
 
 /// Valid demonstrations of one demonstrator from one configuration, run in parallel, the
-/// demonstrator lapsing at rate `lapse` (SPEC §6.1).
+/// demonstrator lapsing at rate `lapse` (docs/guides/crowd.md).
 #[pyfunction]
 #[pyo3(signature = (demonstrator, *, configuration, n, seed=Seed(0), lapse=0.0, config=None, body=None),
        text_signature = "(demonstrator, *, configuration, n, seed=0, lapse=0.0, config=None, body=None)")]
@@ -295,11 +295,14 @@ impl PyEpisode {
         Ok(out)
     }
 
+    /// How the episode ended (`"goal"`, `"own_goal"`, `"ball_out"`, `"robot_out"` or
+    /// `"time_up"`), or None while it runs.
     #[getter]
     fn outcome(&self) -> Option<&'static str> {
         self.with(|e| e.outcome().map(polymimic_field::Outcome::name))
     }
 
+    /// Whether the episode has ended (`outcome` then says how).
     #[getter]
     fn finished(&self) -> bool {
         self.with(|e| e.is_finished())

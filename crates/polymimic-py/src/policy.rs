@@ -1,4 +1,4 @@
-//! Python demonstrators (SPEC §6.4): a policy written in Python drives a body on the Rust
+//! Python demonstrators (docs/guides/own-data.md): a policy written in Python drives a body on the Rust
 //! field, called with the GIL held only for the call, under a watchdog for calls that hang.
 
 use std::time::Duration;
@@ -29,16 +29,21 @@ pub struct PyReading {
     t_s: f64,
     /// Index of the frame about to be recorded.
     frame: usize,
-    /// The robot's tracked pose, mm and rad.
+    /// The robot's tracked x, mm (origin at the field's centre, +x toward the target goal).
     robot_x_mm: f64,
+    /// The robot's tracked y, mm.
     robot_y_mm: f64,
+    /// The robot's tracked heading, rad.
     robot_theta_rad: f64,
-    /// The tracked ball, mm (NaN when the robot cannot see it: a humanoid sees only ahead).
+    /// The tracked ball's x, mm (NaN when the robot cannot see it: a humanoid sees only ahead).
     ball_x_mm: f64,
+    /// The tracked ball's y, mm (NaN when the robot cannot see it).
     ball_y_mm: f64,
-    /// The field's size and its goal mouths' width, mm.
+    /// The field's length, mm.
     field_length_mm: f64,
+    /// The field's width, mm.
     field_width_mm: f64,
+    /// The width of the goal mouths, mm.
     goal_mouth_mm: f64,
 }
 

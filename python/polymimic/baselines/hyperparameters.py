@@ -2,7 +2,7 @@
 and for ``bco`` how the demonstrations are labelled.
 
 :func:`candidates` draws the same number of candidates for every method from one grid, with a
-seed, so that every method gets the same tuning effort (SPEC §6.2); the first two candidates
+seed, so that every method gets the same tuning effort (docs/results/benchmark.md); the first two candidates
 are always :data:`DEFAULT` and :data:`PLAIN_BOOSTING`. ``bco`` tries the first half of them
 with each of its two labellings in turn (:func:`with_labellings`): as many candidates, paired
 so that the labellings meet the same classifiers.

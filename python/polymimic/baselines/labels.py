@@ -1,14 +1,14 @@
 """Demonstrations as a cloning method learns from them: what the robot saw, frame by frame,
 and which primitive each frame is labelled with.
 
-Three ways to label; the first is ``bc``'s, the second ``bco``'s (SPEC §6.2):
+Three ways to label; the first is ``bc``'s, the second ``bco``'s (docs/results/benchmark.md):
 
 - :func:`command_labels` (privileged): the primitive equivalent of the command the
   demonstrator sent in each frame (``polymimic.field.command_primitives()``);
 - :func:`step_labels` (tracker frames only): the primitive the recogniser names for the
   second of motion that starts at each frame, as BCO's inverse model names each transition;
 - :func:`segment_labels` (tracker frames only): the primitive of the recogniser's segment
-  covering each frame (``recognizer.segment_many``, SPEC §3). A segment grows until its motion
+  covering each frame (``recognizer.segment_many``, thesis §3.2.2). A segment grows until its motion
   exceeds any one primitive's, so the Expert's segments are 98 % forward while it turns in 31 %
   of its frames: a coarser label, kept for comparison (``bco.labelled(..., labels="segments")``).
 

@@ -34,7 +34,7 @@ __all__ = ["METHODS", "OPTIONAL_METHODS", "BenchmarkConfig", "BenchmarkSettings"
 
 METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
            "bc", "bc_best", "random")
-"""The methods a benchmark compares by default (SPEC §6.2, §7.2)."""
+"""The methods a benchmark compares by default (docs/results/benchmark.md, docs/guides/practice.md)."""
 
 OPTIONAL_METHODS = ("ppo", "ppo_bc")
 """Methods run only when named: ``ppo`` learns from the reward rather than from demonstrations,
@@ -240,5 +240,5 @@ class BenchmarkConfig:
 
 
 def _with_lp_weighting(run: RunConfig) -> RunConfig:
-    """The benchmark's imitator learns more from members of higher LP (SPEC §6.3)."""
+    """The benchmark's imitator learns more from members of higher LP (docs/results/benchmark.md)."""
     return dataclasses.replace(run, learning=run.learning.replace(imitator_weighting="lp"))

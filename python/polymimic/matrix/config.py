@@ -138,7 +138,7 @@ def demonstrator_sets(row: str) -> dict[str, DemonstratorSet]:
 
 def _default_run() -> RunConfig:
     run = RunConfig()
-    # The benchmark's polymimic: it learns more from members of higher LP (SPEC §6.3).
+    # The benchmark's polymimic: it learns more from members of higher LP (docs/results/benchmark.md).
     return dataclasses.replace(run, bodies={**run.bodies, "wagon": WAGON},
                                learning=run.learning.replace(imitator_weighting="lp"))
 

@@ -53,6 +53,7 @@ class Member:
 
     @property
     def body(self) -> str:
+        """The body the member's controller drives."""
         return BODIES[self.controller]
 
 
@@ -78,9 +79,11 @@ class Crowd:
 
     @property
     def names(self) -> tuple[str, ...]:
+        """The members' names, in order."""
         return tuple(m.name for m in self.members)
 
     def lapses(self) -> dict[str, float]:
+        """Each member's lapse rate ε, by name."""
         return {m.name: m.lapse for m in self.members}
 
     def best(self) -> tuple[str, ...]:

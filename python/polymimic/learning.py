@@ -126,10 +126,18 @@ class LearningConfig(_native.LearningConfig):
         return cls(**values)
 
     def save(self, path: str | os.PathLike[str]) -> None:
+        """Writes every constant to ``path`` as TOML (atomically); :meth:`load` reads it back."""
         atomic_write_text(path, self.to_toml())
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> LearningConfig:
+        """Reads a config written by :meth:`save` (or any TOML of its keys).
+
+        Raises
+        ------
+        ValueError
+            For an unknown key or a value out of range (the message names it).
+        """
         with open(path, encoding="utf-8") as file:
             return cls.from_toml(file.read())
 
@@ -180,7 +188,39 @@ def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRe
     ``demonstrations`` may be already segmented (a :class:`SegmentedDemonstrations`, as
     :func:`segmented` returns), so that many trials share one segmentation. The trial learns on
     the field of ``body``, the imitator's (the Lego robot's by default): a demonstration played
-    on another field is brought onto it first (:func:`polymimic.bodies.onto_field`).
+    on another field is brought onto it first (:func:`polymimic.bodies.onto_field`). The thesis's
+    two-phase training is its §3.4.
+
+    Parameters
+    ----------
+    demonstrations : sequence of Demonstration, or SegmentedDemonstrations
+        What the imitator watches, from any demonstrators; each is segmented by ``recognizer``
+        unless already segmented.
+    recognizer : PrimitiveRecognizer
+        The imitator's recogniser of its own primitives (trained on ``body``'s self-observation).
+    ordering : sequence of str
+        The demonstrators whose forward models learn, in phase one's order; every
+        demonstration's demonstrator must be named.
+    config : LearningConfig, optional
+        Every learning constant; the thesis's by default.
+    phase_one : {"by-model", "interleaved"}
+        Whether phase one shows each model its demonstrations in turn, or all of them mixed.
+    seed : int
+        The trial's seed, in ``[0, 2**64)``: the trial depends on it alone.
+    body : str or polymimic.bodies.WheeledBody
+        The imitator's body, whose setting the trial learns in.
+
+    Returns
+    -------
+    TrialResult
+        Every demonstrator's model (``models``) and the imitator's (``imitator``), with their
+        LPs, match rates and behaviour counts.
+
+    Raises
+    ------
+    ValueError
+        For no demonstrations, a demonstrator missing from ``ordering``, or an argument out of
+        range.
     """
     if len(demonstrations) == 0:
         raise ValueError("no demonstrations: a trial needs at least one")
@@ -314,7 +354,25 @@ def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int 
              field_config: dict[str, Any] | str | None = None) -> Evaluation:
     """``attempts_per_configuration`` attempts from each field configuration, in parallel, on the
     field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's),
-    with the policy's body; the attempts are recorded as that body's."""
+    with the policy's body; the attempts are recorded as that body's.
+
+    Parameters
+    ----------
+    policy : ImitatorPolicy
+        The trained imitator to play.
+    attempts_per_configuration : int
+        Attempts from each of the two field configurations (at least 1).
+    seed : int
+        The evaluation's seed, in ``[0, 2**64)``: the same seed plays the same starts and noise.
+    field_config : dict or str, optional
+        Field parameters laid over the default world (see :func:`polymimic.field.default_config`).
+
+    Returns
+    -------
+    Evaluation
+        ``goals``, ``own_goals``, every attempt as a :class:`Demonstration`, and the behaviours
+        each attempt ran.
+    """
     attempts_per_configuration = integer("attempts_per_configuration", attempts_per_configuration, 1)
     seed = integer("seed", seed, 0, 2**64 - 1)
     raw = policy.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))

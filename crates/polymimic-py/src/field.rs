@@ -197,6 +197,11 @@ pub fn check_field_config(config: &str) -> PyResult<String> {
 }
 
 /// An episode on the field, stepped one tracker frame at a time by a policy.
+///
+/// The simulated field (rapier2d) with a body, the ball and the overhead tracker at 30 frames a
+/// second, from field configuration 1 or 2 (thesis Fig. 4.4). `run` plays a list of commands,
+/// `step` one at a time; `frames` holds every tracker frame so far as a `(k, 7)` array (time,
+/// robot x, y, θ, ball x, y, command), millimetres, radians and seconds.
 #[pyclass(name = "Episode", module = "polymimic", frozen)]
 pub struct PyEpisode {
     episode: Mutex<Episode>,

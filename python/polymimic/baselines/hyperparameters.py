@@ -95,6 +95,7 @@ class Hyperparameters:
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Hyperparameters:
+        """The hyperparameters :meth:`to_dict` wrote (lists read back as tuples)."""
         params = {k: tuple(v) if isinstance(v, list) else v for k, v in dict(data["params"]).items()}
         return cls(classifier=data["classifier"], params=tuple(sorted(params.items())),
                    feature_set=data["feature_set"], frames_per_action=int(data["frames_per_action"]),

@@ -36,6 +36,7 @@ nothing); ``ppo`` learns from the environment instead (:mod:`polymimic.baselines
 
 
 def check_method(method: Any) -> str:
+    """``method`` if it is one of :data:`METHODS`, else a ``ValueError`` naming them."""
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}; expected one of {', '.join(METHODS)}")
     return str(method)

@@ -43,6 +43,7 @@ class Pretraining:
     batch_size: int = 256
 
     def to_dict(self) -> dict[str, Any]:
+        """The pretraining's settings as plain JSON values."""
         return dataclasses.asdict(self)
 
 

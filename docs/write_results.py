@@ -1,4 +1,5 @@
-"""Writes the results pages' main tables from the result files committed under ``docs/results/``.
+"""Writes the results pages' main tables, and the README's summary of them, from the result files
+committed under ``docs/results/``.
 
 Each table sits in its page between ``<!-- table:NAME -->`` and ``<!-- /table:NAME -->``; this
 script rewrites what lies between from the files, so every number of those tables has one
@@ -189,6 +190,60 @@ def practice_table() -> str | None:
     return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
 
 
+def benchmark_summary() -> str | None:
+    """The README's table: net goals alone, mean ± sd, every method and profile."""
+    benchmark = load("benchmark.json")
+    if benchmark is None:
+        return None
+    profiles = benchmark["profiles"]
+    lines = ["| method | " + " | ".join(PROFILES) + " |", "| --- " * (len(PROFILES) + 1) + "|"]
+    for method in METHODS:
+        cells = [f"{m['net_goals']['mean']:.1f} ± {m['net_goals']['sd']:.1f}" if m else "—"
+                 for m in (profiles[p]["methods"].get(method) for p in PROFILES)]
+        lines.append(f"| `{method}` | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
+
+
+WHEELED_FROM_OTHER = {"lego": "tiny", "tiny": "expert", "wagon": "expert"}
+"""Each wheeled learner and the other wheeled body's built-in demonstrator it learns from."""
+
+
+def matrix_summary() -> str | None:
+    """The README's line on the matrix."""
+    matrix = load("matrix.json")
+    if matrix is None:
+        return None
+    cells = matrix["cells"]
+    transfers = [cells[row][column]["transfer"]["polymimic"] for row, column in WHEELED_FROM_OTHER.items()
+                 if row in cells]
+    beaten = [(row, column) for row, columns in cells.items() for column, cell in columns.items()
+              if cell["polymimic"]["net_goals"]["mean"] <= cell["bco"]["net_goals"]["mean"]]
+    rows = ", ".join(cells)
+    lead = ("polymimic nets more than `bco` in every cell" if not beaten
+            else f"polymimic nets more than `bco` in all but {len(beaten)} of the cells")
+    made = provenance("matrix.json")
+    return (f"**Who learns from whom** (`{made['command']}`, {made['world']}): "
+            f"each wheeled imitator learns from another wheeled body's demonstrator at least "
+            f"{min(transfers):.2f} × as well as from its own body, and {lead} ({rows} learning from the "
+            "Expert, the Tiny, the Humanoid, their own body and the `mixed_bodies` crowd; "
+            "[the matrix](docs/results/matrix.md)).")
+
+
+def thesis_summary() -> str | None:
+    """The README's line on the reproduction."""
+    results = load("results.json")
+    if results is None:
+        return None
+    goals = [results["experiments"][e]["imitator"] for e in ("heterogeneous_rcb", "heterogeneous_bcr", "varying_skill")]
+    own = "without an own goal" if not any(g["own_goals"] for g in goals) else "with own goals"
+    made = provenance("results.json")
+    return (f"**The thesis side by side** (`{made['command']}`): the report's shape checks hold, "
+            f"{shape_checks(results)}, in {made['world']}, calibrated against the "
+            f"thesis's own numbers; the improved imitators score {min(g['goals'] for g in goals):.1f} to "
+            f"{max(g['goals'] for g in goals):.1f} goals of 50 {own}, where the thesis's scored 7 to 11 "
+            "([the thesis side by side](docs/results/thesis.md)).")
+
+
 TABLES: dict[str, tuple[str, Callable[[], str | None]]] = {
     "reproduction": ("results/thesis.md", reproduction_table),
     "matrix_polymimic": ("results/matrix.md", lambda: matrix_table("polymimic")),
@@ -220,9 +275,10 @@ def page_with_table(name: str) -> tuple[pathlib.Path, str, str | None]:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--check", action="store_true", help="exit 1 if a page is not what the files give")
+    parser.add_argument("--tables", nargs="+", choices=sorted(TABLES), default=list(TABLES), help="only these")
     args = parser.parse_args(argv)
     stale = []
-    for name in TABLES:
+    for name in args.tables:
         path, text, new = page_with_table(name)
         if new is None:
             print(f"{name}: no result file committed yet; {path.name} left as it is")
@@ -230,7 +286,7 @@ def main(argv: list[str] | None = None) -> int:
             stale.append(name)
             if not args.check:
                 path.write_text(new)
-                print(f"{name}: written to {path.relative_to(DOCS)}")
+                print(f"{name}: written to {path.name}")
     if args.check and stale:
         print("stale: " + ", ".join(stale), file=sys.stderr)
         return 1

@@ -131,7 +131,19 @@ class Demonstration:
 @dataclasses.dataclass(frozen=True, eq=False)
 class PrimitiveSequence:
     """One second of an imitator executing one primitive, as the tracker saw it, and the body
-    that executed it."""
+    that executed it.
+
+    Attributes
+    ----------
+    primitive : str
+        The primitive executed (``"forward"``, ``"backward"``, ``"left"``, ``"right"``,
+        ``"stop"``, or one of the humanoid's own).
+    frames : numpy structured array of shape (30,)
+        The tracker's frames in :data:`FRAME_DTYPE`: ``t_s``, ``robot_x_mm``, ``robot_y_mm``,
+        ``robot_theta_rad``, ``ball_x_mm``, ``ball_y_mm`` and ``command``.
+    body : str
+        The body that executed it.
+    """
 
     primitive: str
     frames: np.ndarray
@@ -420,7 +432,17 @@ def primitive_set_of(sequences: Sequence[PrimitiveSequence]) -> Literal["wheeled
 
 
 def command_table() -> list[dict[str, Any]]:
-    """Every command of every controller (id, name, language) with its equivalent primitive."""
+    """Every command of every controller (id, name, language) with its equivalent primitive.
+
+    Returns
+    -------
+    list of dict
+        One ``{"id", "name", "language", "primitive"}`` per command: the five primitives
+        (language ``"primitive"``), the Expert's named wheel-speed pairs (``"expert"``), the
+        wheel-speed pairs a Python policy sends, by the primitive they resemble (``"wheels"``),
+        and the humanoid's commands (``"humanoid"``), each with the primitive it resembles
+        (thesis Table 4.4 for the humanoid's).
+    """
     return list(_native.commands())
 
 

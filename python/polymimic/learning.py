@@ -341,8 +341,21 @@ class ImitatorPolicy(_native.ImitatorPolicy):
 
 @dataclasses.dataclass(frozen=True)
 class Evaluation:
-    """Goals and own goals of a policy over its attempts (Tables 4.8, 4.11), and every attempt,
-    recorded like a demonstration."""
+    """Goals and own goals of a policy over its attempts (thesis Tables 4.8, 4.11), and every
+    attempt, recorded like a demonstration.
+
+    Attributes
+    ----------
+    goals : int
+        Attempts that ended in the target goal.
+    own_goals : int
+        Attempts that ended in the imitator's own goal.
+    attempts : list of Demonstration
+        Every attempt, configuration 1's first, recorded as the policy's body's (demonstrator
+        ``"imitator"``).
+    behaviours : list of list of str
+        The behaviours each attempt ran, in order.
+    """
 
     goals: int
     own_goals: int

@@ -1,4 +1,4 @@
-"""Bodies as data (SPEC §6.4): a two-wheeled robot of your own, described by its constants.
+"""Bodies as data (docs/guides/own-data.md): a two-wheeled robot of your own, described by its constants.
 
 A :class:`WheeledBody` is a robot's size, wheel base, top wheel speed, motor lag and slip, and
 the field it plays on (``"large"``, 1020 × 810 mm with a 100 mm ball, or ``"small"``, 560 × 345

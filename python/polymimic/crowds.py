@@ -1,4 +1,4 @@
-"""Crowds of demonstrators of graded skill and mixed bodies (SPEC §6.1).
+"""Crowds of demonstrators of graded skill and mixed bodies (docs/guides/crowd.md).
 
 A crowd **member** is a built-in controller degraded by a lapse ε: at the start of every second
 of an episode, with probability ε, it executes one random imitator primitive for that second
@@ -53,6 +53,7 @@ class Member:
 
     @property
     def body(self) -> str:
+        """The body the member's controller drives."""
         return BODIES[self.controller]
 
 
@@ -78,9 +79,11 @@ class Crowd:
 
     @property
     def names(self) -> tuple[str, ...]:
+        """The members' names, in order."""
         return tuple(m.name for m in self.members)
 
     def lapses(self) -> dict[str, float]:
+        """Each member's lapse rate ε, by name."""
         return {m.name: m.lapse for m in self.members}
 
     def best(self) -> tuple[str, ...]:
@@ -133,7 +136,7 @@ PROFILES: dict[str, Crowd] = {
     "mixed_bodies": _profile("mixed_bodies", [(c, e) for c in ("expert", "tiny", "humanoid")
                                               for e in (0.05, 0.5, 0.9)]),
 }
-"""The benchmark's five crowds (SPEC §6.1)."""
+"""The benchmark's five crowds (docs/guides/crowd.md)."""
 
 
 def profile(name: str) -> Crowd:

@@ -20,7 +20,7 @@ Actions, one of the five primitives a step, come from one of two places:
   segments alike. A second too close to call (a gap: no primitive fits, as for a humanoid
   side-step read by a wheeled recogniser) names nothing; its step takes the nearest named step's
   primitive (the earlier on a tie), flagged ``infos["gap"]``. ``labels="segments"`` gives each
-  step the primitive most of its frames' segments are named instead (SPEC §3). A segment grows
+  step the primitive most of its frames' segments are named instead (thesis §3.2.2). A segment grows
   until its motion exceeds any one primitive's, so the Expert's are 98 % forward while it turns
   in 31 % of its frames: over ten Expert demonstrations read by the full reproduction's
   recogniser, the step names agree with the commands sent in 87.1 % of frames, the segments' in
@@ -147,7 +147,7 @@ def to_minari(demonstrations: Sequence[Demonstration], dataset_id: str, *, actio
         How the recogniser names a step: by the second of motion from its first frame, or by
         the segments its frames lie in (see the module's documentation).
     lapses : mapping of str to float, optional
-        Each demonstrator's lapse ε (SPEC §6.1: a crowd member's, :meth:`polymimic.crowds.Crowd.lapses`),
+        Each demonstrator's lapse ε (docs/guides/crowd.md: a crowd member's, :meth:`polymimic.crowds.Crowd.lapses`),
         written in its episodes' metadata; a demonstrator not named is its controller itself, ε = 0.
     step_frames : int
         Tracker frames a step (the environment's ``frames_per_action``).

@@ -131,7 +131,19 @@ class Demonstration:
 @dataclasses.dataclass(frozen=True, eq=False)
 class PrimitiveSequence:
     """One second of an imitator executing one primitive, as the tracker saw it, and the body
-    that executed it."""
+    that executed it.
+
+    Attributes
+    ----------
+    primitive : str
+        The primitive executed (``"forward"``, ``"backward"``, ``"left"``, ``"right"``,
+        ``"stop"``, or one of the humanoid's own).
+    frames : numpy structured array of shape (30,)
+        The tracker's frames in :data:`FRAME_DTYPE`: ``t_s``, ``robot_x_mm``, ``robot_y_mm``,
+        ``robot_theta_rad``, ``ball_x_mm``, ``ball_y_mm`` and ``command``.
+    body : str
+        The body that executed it.
+    """
 
     primitive: str
     frames: np.ndarray
@@ -214,46 +226,55 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
            decision_hz: float | None = None, timeout_s: float | None = 10.0) -> list[Demonstration]:
     """``n`` valid demonstrations of ``demonstrator`` from field ``configuration`` (1 or 2).
 
-    ``demonstrator`` is a built-in's name (one of :data:`DEMONSTRATORS`), a trained imitator (a
-    :class:`polymimic.ImitatorPolicy`, practised or not: it plays its own body, and its
-    demonstrations are named ``name``, ``"imitator"`` by default), or a Python policy of your
-    own (see :mod:`polymimic.policies`; an :class:`polymimic.ImitatorPlayer` is one). A
-    demonstration whose tracking was lost is discarded and replaced, deterministically.
-    ``seed`` is any integer in ``[0, 2**64)``. ``config`` overrides the field configuration
-    (see :func:`default_config`).
+    A demonstration whose tracking was lost is discarded and replaced, deterministically.
+    Built-in demonstrators run in parallel in Rust with the GIL released; a Python policy drives
+    ``body`` on the Rust field, its episodes one after the other, the GIL held only while it is
+    called.
 
-    Built-in demonstrators run in parallel in Rust with the GIL released. ``lapse`` is their
-    lapse rate ε in [0, 1] (SPEC §6.1), a skill set by design: at the start of every second of
-    an episode (tracker frames 0, 30, 60, …), with probability ε, the demonstrator spends that
-    second on one uniformly random primitive instead of its controller's commands (on the
-    humanoid, which takes no primitives, the equivalent walk forward or backward, turn left or
-    right, or wait), then its controller takes over again. The frames record the commands
-    actually sent. The lapses are drawn from a random stream of their own under each episode's
-    seed, so the same ``seed`` gives the same lapses, the episodes keep their seeds at every ε,
-    and ``lapse=0.0`` is the controller's own demonstrations, bit for bit.
+    Parameters
+    ----------
+    demonstrator : str, ImitatorPolicy or policy
+        A built-in's name (one of :data:`DEMONSTRATORS`); a trained imitator (a
+        :class:`polymimic.ImitatorPolicy`, practised or not: it plays its own body, its
+        demonstrations named ``name``, ``"imitator"`` by default); or a Python policy of your
+        own: a callable ``policy(reading) -> command`` or an object with ``act`` (see
+        :mod:`polymimic.policies`; an :class:`polymimic.ImitatorPlayer` is one).
+    configuration : {1, 2}
+        The field configuration every episode starts from (thesis Fig. 4.4).
+    n : int
+        Valid demonstrations to return, at least 1.
+    seed : int
+        Any integer in ``[0, 2**64)``; the same seed gives the same demonstrations.
+    lapse : float
+        A built-in's lapse rate ε in [0, 1] (docs/guides/crowd.md), a skill set by design: at
+        the start of every second of an episode (tracker frames 0, 30, 60, …), with probability
+        ε, the demonstrator spends that second on one uniformly random primitive instead of its
+        controller's commands (on the humanoid, which takes no primitives, the equivalent walk
+        forward or backward, turn left or right, or wait). The frames record the commands
+        actually sent. The lapses are drawn from a random stream of their own under each
+        episode's seed, so the episodes keep their seeds at every ε, and ``lapse=0.0`` is the
+        controller's own demonstrations, bit for bit.
+    config : dict or str, optional
+        Field parameters laid over the default world (see :func:`default_config`).
+    body : str or polymimic.bodies.WheeledBody, optional
+        Puts a built-in controller on another body (one of :data:`BODY_NAMES` or a
+        :class:`polymimic.bodies.WheeledBody`: Poor's and Tiny's primitives drive any wheeled
+        body, the Expert's wheel speeds one that takes them, the humanoid's only the humanoid);
+        a policy's body, required.
+    name : str, optional
+        The name the demonstrations carry (a built-in's own by default; required for a policy).
+    decision_hz : float, optional
+        How often a policy decides (a divisor of 30; its own ``decision_hz`` attribute by
+        default, else every frame).
+    timeout_s : float or None
+        The longest a policy may take over one decision before it is interrupted (None: no
+        limit).
 
-    >>> sloppy = record("expert", configuration=1, n=1, seed=3, lapse=1.0)
-    >>> bool((sloppy[0].frames["command"] <= 4).all())  # primitives only; the Expert's own are 100 up
-    True
-
-    ``body`` puts a built-in controller on another body (one of :data:`BODY_NAMES` or a
-    :class:`polymimic.bodies.WheeledBody`: Poor's and Tiny's primitives drive any wheeled body,
-    the Expert's wheel speeds one that takes them, the humanoid's only the humanoid), and
-    ``name`` names the demonstrations (the demonstrator's own name by default).
-
-    A Python policy drives ``body`` on the Rust field, its
-    episodes one after the other; the GIL is held only while it is called. Its demonstrations
-    carry ``name``, and a policy that takes longer than ``timeout_s`` seconds over one decision
-    (``None``: no limit) is interrupted.
-
-    >>> import math
-    >>> def chase(reading):  # turn toward the ball, then drive at it
-    ...     bearing = math.atan2(reading.ball_y_mm - reading.robot_y_mm, reading.ball_x_mm - reading.robot_x_mm)
-    ...     error = math.remainder(bearing - reading.robot_theta_rad, math.tau)
-    ...     return "forward" if abs(error) < 0.3 else ("left" if error > 0 else "right")
-    >>> mine = record(chase, body="lego", name="chaser", configuration=1, n=2, seed=3, decision_hz=10)
-    >>> [(d.demonstrator, d.body) for d in mine]
-    [('chaser', 'lego'), ('chaser', 'lego')]
+    Returns
+    -------
+    list of Demonstration
+        The demonstrations, each with its frames (30 a second), outcome, configuration, seed,
+        demonstrator and body.
 
     Raises
     ------
@@ -268,6 +289,23 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
         When a policy raises (its exception is the cause), answers with something that is not a
         command its body executes, or does not answer within ``timeout_s``; the message names
         the policy, the attempt, its seed and the episode time.
+
+    Examples
+    --------
+    >>> sloppy = record("expert", configuration=1, n=1, seed=3, lapse=1.0)
+    >>> bool((sloppy[0].frames["command"] <= 4).all())  # primitives only; the Expert's own are 100 up
+    True
+
+    A policy of your own:
+
+    >>> import math
+    >>> def chase(reading):  # turn toward the ball, then drive at it
+    ...     bearing = math.atan2(reading.ball_y_mm - reading.robot_y_mm, reading.ball_x_mm - reading.robot_x_mm)
+    ...     error = math.remainder(bearing - reading.robot_theta_rad, math.tau)
+    ...     return "forward" if abs(error) < 0.3 else ("left" if error > 0 else "right")
+    >>> mine = record(chase, body="lego", name="chaser", configuration=1, n=2, seed=3, decision_hz=10)
+    >>> [(d.demonstrator, d.body) for d in mine]
+    [('chaser', 'lego'), ('chaser', 'lego')]
     """
     configuration, n = integer("configuration", configuration, 1, 2), integer("n", n, 1)
     seed, lapse = integer("seed", seed, 0, 2**64 - 1), probability("lapse", lapse)
@@ -362,8 +400,28 @@ def self_observation(n_per_primitive: int, *, seed: int = 0, config: dict[str, A
     a wheeled body's are the five, the humanoid's add ``sidestep_left``, ``sidestep_right``
     and ``kick``, the classes of its commands an overhead tracker tells apart. A kick shows
     only with a ball: before each one the experimenter puts a ball before the kicking foot,
-    and only a kick's frames hold a ball.
+    and only a kick's frames hold a ball. This is the thesis's self-observation (thesis §3.1.1).
 
+    Parameters
+    ----------
+    n_per_primitive : int
+        Valid sequences of each primitive, at least 1 (the thesis trains on 1000).
+    seed : int
+        Any integer in ``[0, 2**64)``.
+    config : dict or str, optional
+        Field parameters laid over the default world (see :func:`default_config`).
+    body : str or polymimic.bodies.WheeledBody
+        The imitator's body.
+    primitives : {"wheeled", "own"}
+        The wheeled five, or the body's own set.
+
+    Returns
+    -------
+    list of PrimitiveSequence
+        Each sequence's frames (one second: 30 tracker frames), its primitive and body.
+
+    Examples
+    --------
     >>> sequences = self_observation(1, seed=0, body="tiny")
     >>> sorted(s.primitive for s in sequences), sequences[0].body
     (['backward', 'forward', 'left', 'right', 'stop'], 'tiny')
@@ -394,7 +452,17 @@ def primitive_set_of(sequences: Sequence[PrimitiveSequence]) -> Literal["wheeled
 
 
 def command_table() -> list[dict[str, Any]]:
-    """Every command of every controller (id, name, language) with its equivalent primitive."""
+    """Every command of every controller (id, name, language) with its equivalent primitive.
+
+    Returns
+    -------
+    list of dict
+        One ``{"id", "name", "language", "primitive"}`` per command: the five primitives
+        (language ``"primitive"``), the Expert's named wheel-speed pairs (``"expert"``), the
+        wheel-speed pairs a Python policy sends, by the primitive they resemble (``"wheels"``),
+        and the humanoid's commands (``"humanoid"``), each with the primitive it resembles
+        (thesis Table 4.4 for the humanoid's).
+    """
     return list(_native.commands())
 
 

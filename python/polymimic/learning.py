@@ -130,10 +130,18 @@ class LearningConfig(_native.LearningConfig):
         return cls(**values)
 
     def save(self, path: str | os.PathLike[str]) -> None:
+        """Writes every constant to ``path`` as TOML (atomically); :meth:`load` reads it back."""
         atomic_write_text(path, self.to_toml())
 
     @classmethod
     def load(cls, path: str | os.PathLike[str]) -> LearningConfig:
+        """Reads a config written by :meth:`save` (or any TOML of its keys).
+
+        Raises
+        ------
+        ValueError
+            For an unknown key or a value out of range (the message names it).
+        """
         with open(path, encoding="utf-8") as file:
             return cls.from_toml(file.read())
 
@@ -184,7 +192,39 @@ def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRe
     ``demonstrations`` may be already segmented (a :class:`SegmentedDemonstrations`, as
     :func:`segmented` returns), so that many trials share one segmentation. The trial learns on
     the field of ``body``, the imitator's (the Lego robot's by default): a demonstration played
-    on another field is brought onto it first (:func:`polymimic.bodies.onto_field`).
+    on another field is brought onto it first (:func:`polymimic.bodies.onto_field`). The thesis's
+    two-phase training is its §3.4.
+
+    Parameters
+    ----------
+    demonstrations : sequence of Demonstration, or SegmentedDemonstrations
+        What the imitator watches, from any demonstrators; each is segmented by ``recognizer``
+        unless already segmented.
+    recognizer : PrimitiveRecognizer
+        The imitator's recogniser of its own primitives (trained on ``body``'s self-observation).
+    ordering : sequence of str
+        The demonstrators whose forward models learn, in phase one's order; every
+        demonstration's demonstrator must be named.
+    config : LearningConfig, optional
+        Every learning constant; the thesis's by default.
+    phase_one : {"by-model", "interleaved"}
+        Whether phase one shows each model its demonstrations in turn, or all of them mixed.
+    seed : int
+        The trial's seed, in ``[0, 2**64)``: the trial depends on it alone.
+    body : str or polymimic.bodies.WheeledBody
+        The imitator's body, whose setting the trial learns in.
+
+    Returns
+    -------
+    TrialResult
+        Every demonstrator's model (``models``) and the imitator's (``imitator``), with their
+        LPs, match rates and behaviour counts.
+
+    Raises
+    ------
+    ValueError
+        For no demonstrations, a demonstrator missing from ``ordering``, or an argument out of
+        range.
     """
     if len(demonstrations) == 0:
         raise ValueError("no demonstrations: a trial needs at least one")
@@ -341,8 +381,21 @@ class ImitatorPolicy(_native.ImitatorPolicy):
 
 @dataclasses.dataclass(frozen=True)
 class Evaluation:
-    """Goals and own goals of a policy over its attempts (Tables 4.8, 4.11), and every attempt,
-    recorded like a demonstration."""
+    """Goals and own goals of a policy over its attempts (thesis Tables 4.8, 4.11), and every
+    attempt, recorded like a demonstration.
+
+    Attributes
+    ----------
+    goals : int
+        Attempts that ended in the target goal.
+    own_goals : int
+        Attempts that ended in the imitator's own goal.
+    attempts : list of Demonstration
+        Every attempt, configuration 1's first, recorded as the policy's body's (demonstrator
+        ``"imitator"``).
+    behaviours : list of list of str
+        The behaviours each attempt ran, in order.
+    """
 
     goals: int
     own_goals: int
@@ -380,6 +433,33 @@ def evaluate(policy: Plays, *, attempts_per_configuration: int = 25, seed: int =
     policy's :meth:`~polymimic.ImitatorPolicy.player` stepped through the field one tracker
     reading at a time.
 
+    Parameters
+    ----------
+    policy : ImitatorPolicy or PractisedPolicy
+        The trained imitator to play (or anything that plays as it does: :class:`Plays`).
+    attempts_per_configuration : int
+        Attempts from each start (at least 1).
+    seed : int
+        The evaluation's seed, in ``[0, 2**64)``: the same seed plays the same starts and noise.
+    field_config : dict or str, optional
+        Field parameters laid over the default world (see :func:`polymimic.field.default_config`).
+    starts : sequence of 1, 2 or dict, optional
+        Where attempts start (default ``[1, 2]``).
+
+    Returns
+    -------
+    Evaluation
+        ``goals``, ``own_goals``, every attempt as a :class:`Demonstration`, and the behaviours
+        each attempt ran.
+
+    Raises
+    ------
+    ValueError
+        For attempts below 1, a seed out of range, or a start off the body's field or with the
+        ball on the robot.
+
+    Examples
+    --------
     >>> import polymimic
     >>> from polymimic import recognition
     >>> recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)

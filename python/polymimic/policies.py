@@ -1,4 +1,4 @@
-"""Python demonstrators (SPEC §6.4): what :func:`polymimic.record` accepts as a policy.
+"""Python demonstrators (docs/guides/own-data.md): what :func:`polymimic.record` accepts as a policy.
 
 A policy is a callable ``policy(reading) -> command`` or an object with ``act(reading) ->
 command`` and, optionally, ``reset(episode)`` (called before every episode with a dict of its
@@ -33,7 +33,20 @@ fall on frames."""
 
 
 class PolicyParts:
-    """A policy taken apart: its ``act`` and ``reset`` callables, rate and name."""
+    """A policy taken apart: its ``act`` and ``reset`` callables, rate and name.
+
+    Attributes
+    ----------
+    act : callable
+        Called with each :class:`polymimic.Reading`; returns the command to hold until the next
+        decision.
+    reset : callable or None
+        Called before every episode with its details.
+    decision_hz : float
+        Decisions a second (one of :data:`DECISION_RATES_HZ`).
+    name : str
+        The name the demonstrations are recorded under.
+    """
 
     __slots__ = ("act", "decision_hz", "name", "reset")
 

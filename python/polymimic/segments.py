@@ -6,6 +6,8 @@ One row per demonstration: its ``demonstrator``, ``outcome``, ``pitch`` (``"larg
 ``start`` and ``end`` (robot x, y, θ and ball x, y), ``scores`` (each HMM's log-likelihood)).
 A round trip is exact, and a demonstration with no segment keeps its row.
 
+Examples
+--------
 >>> import pathlib, tempfile
 >>> import polymimic
 >>> from polymimic import recognition

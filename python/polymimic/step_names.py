@@ -1,6 +1,6 @@
 """The recogniser's name for the second of motion that starts at a frame: what BCO's inverse
-model names a transition, read with the imitator's own HMMs (SPEC §2) and the segmenter's rules
-(SPEC §3).
+model names a transition, read with the imitator's own HMMs (thesis §3.1) and the segmenter's rules
+(thesis §3.2.2).
 
 A window of :data:`WINDOW_FRAMES` frames is a stop if the robot ends it within the stop
 tolerances of where it started it; otherwise the HMM that scores it highest names it, and none
@@ -9,6 +9,8 @@ run past the demonstration's end is moved back to its last full window. Both ``b
 (:func:`polymimic.baselines.labels.step_labels`) and Minari's actions
 (:func:`polymimic.export.steps_of`) are named so.
 
+Examples
+--------
 >>> import polymimic
 >>> from polymimic import recognition
 >>> recognizer = recognition.train_recognizer(polymimic.self_observation(30, seed=1), codebook_size=16)
@@ -34,7 +36,7 @@ __all__ = ["LABELS", "NO_NAME", "SEGMENTER_SETTINGS", "WINDOW_FRAMES", "name_win
 
 LABELS = ("steps", "segments")
 """How a recogniser may label demonstrations: by the second of motion from each step (the
-default), or by the segments (SPEC §3) the frames lie in."""
+default), or by the segments (thesis §3.2.2) the frames lie in."""
 
 SEGMENTER_SETTINGS = ("min_frames", "stop_distance_mm", "stop_rotation_deg", "limit_sds", "gap_margin")
 """The settings :meth:`polymimic.PrimitiveRecognizer.segment` takes."""

@@ -1,4 +1,4 @@
-"""The baselines of SPEC §6.2, on scripted demonstrators whose right answers are known."""
+"""The benchmark's baselines (docs/results/benchmark.md), on scripted demonstrators whose right answers are known."""
 
 import math
 import pickle

@@ -1,4 +1,4 @@
-"""Crowds: the five profiles as SPEC §6.1 lists them, crowds from data, and their recordings."""
+"""Crowds: the five profiles as docs/guides/crowd.md lists them, crowds from data, and their recordings."""
 
 import dataclasses
 import json

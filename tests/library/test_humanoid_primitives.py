@@ -1,4 +1,4 @@
-"""The humanoid imitator's own primitives (SPEC §7.1): it babbles the classes of its commands an
+"""The humanoid imitator's own primitives (docs/guides/bodies.md): it babbles the classes of its commands an
 overhead tracker tells apart, and its recogniser tells them apart on held-out seconds."""
 
 from __future__ import annotations

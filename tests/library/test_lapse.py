@@ -1,4 +1,4 @@
-"""Lapsing demonstrators through the library (SPEC §6.1) and 64-bit episode seeds."""
+"""Lapsing demonstrators through the library (docs/guides/crowd.md) and 64-bit episode seeds."""
 
 from __future__ import annotations
 

@@ -72,7 +72,7 @@ def sample():
 # At 60 Hz every frame is a reading: errors are rounding (measured 3e-11 mm, 1e-10°). At 45 and
 # 20 Hz most frames fall between readings that are themselves blends of frames: what is lost is
 # a frame's departure from its neighbours' straight line, the heading jitter (σ 3°, spikes to
-# 15°) and the ball's jolt at a kick. benches/tracks_round_trip.py, 128 episodes: 45 Hz up to
+# 15°) and the ball's jolt at a kick. studies/what_a_tracker_log_loses.py, 128 episodes: 45 Hz up to
 # 2.7 mm and 8.1° (95th percentile 1.2 mm, 6.9°); 20 Hz up to 5.3 mm and 15.3° (4.7 mm, 14.6°).
 @pytest.mark.parametrize(("rate_hz", "bound_mm", "bound_deg"), [(60, 0.5, 0.5), (45, 5.0, 15.0), (20, 10.0, 30.0)])
 def test_other_rates_keep_every_frame_and_outcome_within_a_measured_error(sample, tmp_path, rate_hz, bound_mm,

@@ -103,7 +103,7 @@ pub struct Demonstration {
     /// The episode seed: [`demonstrate`] with it and [`Demonstration::lapse`] replays this
     /// demonstration bit for bit.
     pub seed: u64,
-    /// The demonstrator's lapse rate (SPEC §6.1); absent in older files, which had none.
+    /// The demonstrator's lapse rate (docs/guides/crowd.md); absent in older files, which had none.
     #[serde(default)]
     pub lapse: LapseRate,
     /// How it ended.
@@ -115,7 +115,7 @@ pub struct Demonstration {
 }
 
 /// Run one demonstration episode with the given episode seed (valid or not), the demonstrator
-/// lapsing at `lapse` (SPEC §6.1; [`LapseRate::NONE`] is its controller alone, bit for bit).
+/// lapsing at `lapse` (docs/guides/crowd.md; [`LapseRate::NONE`] is its controller alone, bit for bit).
 ///
 /// # Errors
 /// A parameter error for an invalid config.
@@ -129,7 +129,7 @@ pub fn demonstrate(
     demonstrate_on(demonstrator, demonstrator.body(), configuration, seed, lapse, config)
 }
 
-/// [`demonstrate`] with the demonstrator's controller on another body (SPEC §6.4), which it
+/// [`demonstrate`] with the demonstrator's controller on another body (docs/guides/own-data.md), which it
 /// must be able to drive ([`Demonstrator::can_drive`]).
 ///
 /// # Errors
@@ -177,7 +177,7 @@ pub fn record(
     record_on(demonstrator, demonstrator.body(), configuration, n_valid, seed, lapse, config)
 }
 
-/// [`record`] with the demonstrator's controller on another body (SPEC §6.4); the same episode
+/// [`record`] with the demonstrator's controller on another body (docs/guides/own-data.md); the same episode
 /// seeds as on its own.
 ///
 /// # Errors

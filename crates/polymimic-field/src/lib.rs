@@ -25,7 +25,7 @@
 //! // Demonstrations: valid shots on goal with the outcome and the commands sent.
 //! let demos = record(Demonstrator::Expert, Configuration::One, 2, 7, LapseRate::NONE, &config)?;
 //! assert_eq!(demos.len(), 2);
-//! // The same Expert, spending about half of its seconds on a random primitive (SPEC §6.1).
+//! // The same Expert, spending about half of its seconds on a random primitive (docs/guides/crowd.md).
 //! let sloppy = record(Demonstrator::Expert, Configuration::One, 2, 7, LapseRate::new(0.5)?, &config)?;
 //! assert_eq!(sloppy.len(), 2);
 //!

@@ -50,7 +50,7 @@ pub(crate) mod stream {
     pub const CONTROLLER: u64 = 3;
     pub const SESSION: u64 = 5;
     pub const BALL: u64 = 6;
-    /// A demonstrator's lapses (SPEC §6.1), apart so that ε = 0 leaves every other stream as it was.
+    /// A demonstrator's lapses (docs/guides/crowd.md), apart so that ε = 0 leaves every other stream as it was.
     pub const LAPSE: u64 = 7;
 }
 

@@ -1,4 +1,4 @@
-//! Demonstrators whose decisions come from outside the field (SPEC §6.4): a policy that may
+//! Demonstrators whose decisions come from outside the field (docs/guides/own-data.md): a policy that may
 //! fail (a Python callable, a network peer) decides at a rate it declares, each command held
 //! until its next decision; a failure ends the recording with the attempt and time it struck.
 

@@ -57,7 +57,7 @@ impl Frame {
 }
 
 /// Tracker noise model. Defaults, calibrated against the thesis's own numbers
-/// (`benches/calibrate_thesis_world.py`, its best world rounded): σ 0.107 mm in x and y,
+/// (`studies/which_world_matches_the_thesis.py`, its best world rounded): σ 0.107 mm in x and y,
 /// σ 0.186° in θ, a spike of 1.49°–4.46° in θ on 0.091 % of frames, and a dropout starting on
 /// 0.005 % of frames. [`TrackerConfig::before_calibration`] is the noisier tracker that was
 /// the default before.

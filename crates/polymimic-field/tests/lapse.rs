@@ -1,4 +1,4 @@
-//! Lapsing demonstrators on the field (SPEC §6.1): ε = 0 is each controller bit for bit, ε = 1
+//! Lapsing demonstrators on the field (docs/guides/crowd.md): ε = 0 is each controller bit for bit, ε = 1
 //! is a random primitive every second in the body's own language, and a seed repeats its lapses.
 
 use polymimic_field::controller::primitive_command;

@@ -100,7 +100,7 @@ pub fn reach_mm(body: BodyKind) -> f64 {
 /// How far from its centre `body` moves the ball as an imitator, mm: its primitives drive or walk
 /// it into the ball, so the ball's radius beyond its front. The humanoid's too, even over its own
 /// set with a kick: measured with the kicking foot's reach instead, it learned worse from the
-/// Humanoid's demonstrations and nearly nothing from the Expert's (README).
+/// Humanoid's demonstrations and nearly nothing from the Expert's (docs/guides/bodies.md).
 #[must_use]
 pub fn imitator_reach_mm(body: BodyKind) -> f64 {
     0.5 * (body.footprint_mm().0 + body.field().ball_diameter_mm)

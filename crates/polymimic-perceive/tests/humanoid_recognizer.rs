@@ -1,4 +1,4 @@
-//! The humanoid imitator recognises its own primitive classes (SPEC §7.1): a recogniser trained
+//! The humanoid imitator recognises its own primitive classes (docs/guides/bodies.md): a recogniser trained
 //! on the humanoid's self-observation over its own eight tells held-out seconds of each moving
 //! class apart.
 

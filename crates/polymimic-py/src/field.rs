@@ -63,7 +63,7 @@ pub(crate) fn positive(name: &str, value: i64) -> PyResult<usize> {
 }
 
 /// Valid demonstrations of one demonstrator from one configuration, run in parallel, the
-/// demonstrator lapsing at rate `lapse` (SPEC §6.1).
+/// demonstrator lapsing at rate `lapse` (docs/guides/crowd.md).
 #[pyfunction]
 #[pyo3(signature = (demonstrator, *, configuration, n, seed=Seed(0), lapse=0.0, config=None, body=None),
        text_signature = "(demonstrator, *, configuration, n, seed=0, lapse=0.0, config=None, body=None)")]
@@ -199,6 +199,11 @@ pub fn check_field_config(config: &str) -> PyResult<String> {
 }
 
 /// An episode on the field, stepped one tracker frame at a time by a policy.
+///
+/// The simulated field (rapier2d) with a body, the ball and the overhead tracker at 30 frames a
+/// second, from field configuration 1 or 2 (thesis Fig. 4.4). `run` plays a list of commands,
+/// `step` one at a time; `frames` holds every tracker frame so far as a `(k, 7)` array (time,
+/// robot x, y, θ, ball x, y, command), millimetres, radians and seconds.
 #[pyclass(name = "Episode", module = "polymimic", frozen)]
 pub struct PyEpisode {
     episode: Mutex<Episode>,
@@ -324,11 +329,14 @@ impl PyEpisode {
         Ok(out)
     }
 
+    /// How the episode ended (`"goal"`, `"own_goal"`, `"ball_out"`, `"robot_out"` or
+    /// `"time_up"`), or None while it runs.
     #[getter]
     fn outcome(&self) -> Option<&'static str> {
         self.with(|e| e.outcome().map(polymimic_field::Outcome::name))
     }
 
+    /// Whether the episode has ended (`outcome` then says how).
     #[getter]
     fn finished(&self) -> bool {
         self.with(|e| e.is_finished())

@@ -17,7 +17,58 @@ use crate::errors::{NotFittedError, hmm_error};
 /// Sampled symbols and hidden states, each `(n, length)`.
 type SymbolsAndStates<'py> = (Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>);
 
-/// A discrete hidden Markov model trained by scaled Baum-Welch.
+/// A discrete hidden Markov model trained by scaled Baum-Welch over many sequences at once.
+///
+/// The thesis's recogniser holds one per moving primitive (thesis §3.1.3–3.1.4): a left-right
+/// model whose states each link to themselves and the next `links` states (thesis Fig. 3.10), or
+/// an ergodic one. Training starts from the temporal split of every sequence into `n_states`
+/// pieces (thesis Fig. 3.11) or from parameters you give (`from_params`, `fit(init="given")`).
+///
+/// Parameters
+/// ----------
+/// n_states : int
+///     Hidden states, at least 1.
+/// n_symbols : int
+///     Size of the symbol alphabet: every sequence holds integers in `0..n_symbols`.
+/// topology : {"left-right", "ergodic"}
+///     Which transitions may be non-zero.
+/// links : int
+///     For a left-right model, how many states ahead each state may move (2: itself, the next
+///     and the one after). Ignored for an ergodic model.
+/// max_iter : int
+///     Most Baum-Welch re-estimations per `fit`.
+/// tol : float
+///     A fit stops when the log-likelihood gains less than this; `-inf` runs exactly `max_iter`.
+/// emission_floor : float
+///     Every emission probability is floored here (and rows renormalised), so an unseen symbol
+///     does not make a sequence impossible.
+/// seed : int
+///     Seeds the random transitions a fit starts from and `sample`'s default stream.
+///
+/// Attributes
+/// ----------
+/// startprob_ : ndarray of shape (n_states,)
+///     Initial state probabilities (after `fit` or `from_params`).
+/// transmat_ : ndarray of shape (n_states, n_states)
+///     Transition probabilities; row i is P(next state | state i).
+/// emissionprob_ : ndarray of shape (n_states, n_symbols)
+///     Emission probabilities; row i is P(symbol | state i).
+/// history_ : ndarray of shape (n_iterations,)
+///     The training data's log-likelihood before each re-estimation of the last fit.
+/// converged_ : bool
+///     Whether the last fit stopped because the gain fell below `tol`.
+///
+/// Raises
+/// ------
+/// ValueError
+///     For a parameter out of range (the message names it).
+///
+/// Examples
+/// --------
+/// >>> import numpy as np, polymimic
+/// >>> model = polymimic.DiscreteHMM(2, 3, seed=1).fit([np.array([0, 0, 1, 2, 2]), np.array([0, 1, 2])])
+/// >>> model.transmat_.shape, model.emissionprob_.shape
+/// ((2, 2), (2, 3))
 #[pyclass(name = "DiscreteHMM", module = "polymimic", frozen)]
 pub struct PyDiscreteHmm {
     model: RwLock<DiscreteHmm>,
@@ -91,6 +142,25 @@ impl PyDiscreteHmm {
         Ok(Self::wrap(DiscreteHmm::new(valid)))
     }
 
+    /// A model with the probabilities you give, ready to score, decode, sample or train further.
+    ///
+    /// Parameters
+    /// ----------
+    /// startprob : array_like of shape (n_states,)
+    /// transmat : array_like of shape (n_states, n_states)
+    /// emissionprob : array_like of shape (n_states, n_symbols)
+    ///     Probabilities; each (row) must sum to 1.
+    /// topology : {"left-right", "ergodic"}, optional
+    ///     Without it (and without `links`), the topology `transmat` implies: left-right with as many
+    ///     links as its longest forward jump where it starts in state 0 and never moves back, ergodic
+    ///     otherwise. Giving `links` alone names a left-right model.
+    /// links, max_iter, tol, emission_floor, seed
+    ///     As for the constructor.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     If the shapes disagree, a probability is negative or a row does not sum to 1.
     #[classmethod]
     #[pyo3(signature = (startprob, transmat, emissionprob, *, topology=None, links=None, max_iter=100, tol=1e-4, emission_floor=1e-8, seed=0))]
     #[allow(clippy::too_many_arguments)]
@@ -132,7 +202,31 @@ impl PyDiscreteHmm {
         Ok(Self::wrap(model))
     }
 
-    /// Trains on a list of 1-D integer sequences; returns the model.
+    /// Trains the model by scaled Baum-Welch on many sequences of any lengths; returns the model.
+    ///
+    /// Parameters
+    /// ----------
+    /// sequences : iterable of array_like of int
+    ///     One-dimensional sequences of symbols in `0..n_symbols`.
+    /// init : {"segments", "given"}
+    ///     `"segments"` starts from the temporal split of every sequence into `n_states` pieces
+    ///     (state i counts the symbols of piece i, floored at `emission_floor`) and random
+    ///     transitions that respect the topology; `"given"` starts from the model's current
+    ///     probabilities (those of `from_params`, or of an earlier fit).
+    ///
+    /// Returns
+    /// -------
+    /// DiscreteHMM
+    ///     The model itself, fitted (`startprob_`, `transmat_`, `emissionprob_`, `history_`,
+    ///     `converged_`).
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     If a sequence is empty or holds a symbol outside `0..n_symbols` (the message names the
+    ///     sequence and position); the model is left as it was.
+    /// NotFittedError
+    ///     For `init="given"` on a model that has no probabilities yet.
     #[pyo3(signature = (sequences, *, init="segments"))]
     fn fit<'py>(slf: Bound<'py, Self>, sequences: &Bound<'py, PyAny>, init: &str) -> PyResult<Bound<'py, Self>> {
         let init = one_of("init", init, &[("segments", Init::Segments), ("given", Init::Given)])?;
@@ -282,12 +376,18 @@ impl PyDiscreteHmm {
         Ok((matrix(py, flat_symbols, count, len)?, matrix(py, flat_states, count, len)?))
     }
 
+    /// Initial state probabilities, shape `(n_states,)`.
+    ///
+    /// Raises `NotFittedError` before the model has probabilities.
     #[getter]
     fn startprob_<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let start = self.with_model(|m| m.probabilities().map(|p| p.startprob.clone())).map_err(hmm_error)?;
         Ok(PyArray1::from_vec(py, start))
     }
 
+    /// Transition probabilities, shape `(n_states, n_states)`; row i is P(next state | state i).
+    ///
+    /// Raises `NotFittedError` before the model has probabilities.
     #[getter]
     fn transmat_<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let (trans, n) =
@@ -295,6 +395,9 @@ impl PyDiscreteHmm {
         matrix(py, trans, n, n)
     }
 
+    /// Emission probabilities, shape `(n_states, n_symbols)`; row i is P(symbol | state i).
+    ///
+    /// Raises `NotFittedError` before the model has probabilities.
     #[getter]
     fn emissionprob_<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let (emit, n, m) = self
@@ -309,21 +412,26 @@ impl PyDiscreteHmm {
         PyArray1::from_vec(py, self.with_model(|m| m.history().to_vec()))
     }
 
+    /// Whether the last fit stopped because the log-likelihood gain fell below `tol` (False
+    /// before any fit, and for a fit that ran out of `max_iter`).
     #[getter]
     fn converged_(&self) -> bool {
         self.with_model(DiscreteHmm::converged)
     }
 
+    /// Number of hidden states.
     #[getter]
     fn n_states(&self) -> usize {
         self.with_model(|m| m.params().n_states)
     }
 
+    /// Size of the symbol alphabet: symbols are `0..n_symbols`.
     #[getter(n_symbols)]
     fn get_n_symbols(&self) -> usize {
         self.n_symbols()
     }
 
+    /// `"left-right"` or `"ergodic"`.
     #[getter]
     fn topology(&self) -> &'static str {
         self.with_model(|m| match m.params().topology {
@@ -332,6 +440,7 @@ impl PyDiscreteHmm {
         })
     }
 
+    /// How many states ahead a left-right model's states may move; None for an ergodic model.
     #[getter]
     fn links(&self) -> Option<usize> {
         self.with_model(|m| match m.params().topology {
@@ -340,21 +449,25 @@ impl PyDiscreteHmm {
         })
     }
 
+    /// Most Baum-Welch re-estimations per fit.
     #[getter]
     fn max_iter(&self) -> usize {
         self.with_model(|m| m.params().max_iter)
     }
 
+    /// The log-likelihood gain below which a fit stops (`-inf`: run `max_iter`).
     #[getter]
     fn tol(&self) -> f64 {
         self.with_model(|m| m.params().tol)
     }
 
+    /// The floor of every emission probability.
     #[getter]
     fn emission_floor(&self) -> f64 {
         self.with_model(|m| m.params().emission_floor)
     }
 
+    /// The seed of the random start and of `sample`'s default stream.
     #[getter]
     fn seed(&self) -> u64 {
         self.with_model(|m| m.params().seed)

@@ -21,6 +21,23 @@ const POSE_COLUMNS: [&str; 3] = ["robot_x_mm", "robot_y_mm", "robot_theta_rad"];
 const FRAME_COLUMNS: [&str; 5] = ["robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm"];
 
 /// Recognises the imitator's primitives in tracker frames and segments demonstrations.
+///
+/// One codebook per representation and one HMM per moving primitive of the imitator's set, each
+/// reading one-second sequences of frames through its own representation (thesis §3.1); a
+/// sequence that barely moves is `stop`. `segment` cuts a demonstration into segments it names
+/// (thesis §3.2.2). Train one with `PrimitiveRecognizer.train`, or with
+/// `polymimic.recognition.train_recognizer` from self-observation sequences.
+///
+/// Examples
+/// --------
+/// >>> import polymimic
+/// >>> from polymimic import recognition
+/// >>> recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=16)
+/// >>> recognizer.moving
+/// ['forward', 'backward', 'left', 'right']
+/// >>> frames = polymimic.record("expert", configuration=1, n=1, seed=0)[0].frames
+/// >>> sorted(recognizer.segment(frames))
+/// ['end', 'first_frame', 'label', 'last_frame', 'scores', 'start']
 #[pyclass(name = "PrimitiveRecognizer", module = "polymimic", frozen)]
 pub struct PyPrimitiveRecognizer {
     pub(crate) recognizer: Recognizer,
@@ -357,11 +374,13 @@ impl PyPrimitiveRecognizer {
         }
     }
 
+    /// States of each primitive's HMM.
     #[getter]
     fn n_states(&self) -> usize {
         self.recognizer.config().n_states
     }
 
+    /// Codewords of each representation's codebook (the HMMs' alphabet size).
     #[getter]
     fn codebook_size(&self) -> usize {
         self.recognizer.config().codebook_size

@@ -1,4 +1,4 @@
-//! Python demonstrators (SPEC §6.4): a policy written in Python drives a body on the Rust
+//! Python demonstrators (docs/guides/own-data.md): a policy written in Python drives a body on the Rust
 //! field, called with the GIL held only for the call, under a watchdog for calls that hang.
 
 use std::time::Duration;
@@ -29,16 +29,21 @@ pub struct PyReading {
     pub(crate) t_s: f64,
     /// Index of the frame about to be recorded.
     pub(crate) frame: usize,
-    /// The robot's tracked pose, mm and rad.
+    /// The robot's tracked x, mm (origin at the field's centre, +x toward the target goal).
     pub(crate) robot_x_mm: f64,
+    /// The robot's tracked y, mm.
     pub(crate) robot_y_mm: f64,
+    /// The robot's tracked heading, rad.
     pub(crate) robot_theta_rad: f64,
-    /// The tracked ball, mm (NaN when the robot cannot see it: a humanoid sees only ahead).
+    /// The tracked ball's x, mm (NaN when the robot cannot see it: a humanoid sees only ahead).
     pub(crate) ball_x_mm: f64,
+    /// The tracked ball's y, mm (NaN when the robot cannot see it).
     pub(crate) ball_y_mm: f64,
-    /// The field's size and its goal mouths' width, mm.
+    /// The field's length, mm.
     pub(crate) field_length_mm: f64,
+    /// The field's width, mm.
     pub(crate) field_width_mm: f64,
+    /// The width of the goal mouths, mm.
     pub(crate) goal_mouth_mm: f64,
 }
 
@@ -210,7 +215,7 @@ pub fn record_python_policy<'py>(
 }
 
 /// A built-in demonstrator's controller recorded through the policy path at `decision_hz`: the
-/// same episodes and seeds a Python policy gets, for comparing the two (`benches/`).
+/// same episodes and seeds a Python policy gets, for comparing the two (`benches/python_policy_vs_rust.py`).
 #[pyfunction]
 #[pyo3(signature = (demonstrator, *, configuration, n, seed=Seed(0), decision_hz=30.0),
        text_signature = "(demonstrator, *, configuration, n, seed=0, decision_hz=30.0)")]

@@ -11,6 +11,34 @@ use crate::convert::{floats, matrix, non_negative, read_model, reduce_to_json, w
 use crate::errors::{vq_error, vq_params_error};
 
 /// A vector-quantisation codebook: codewords and nearest-codeword encoding.
+///
+/// The recogniser quantises each representation of the tracker's frames with one (thesis
+/// §3.1.3). `Codebook.fit` grows it by LBG: from the points' mean, every codeword splits in two and
+/// k-means (Lloyd) refines them, until there are `size`; `encode` finds each point's nearest
+/// codeword with a k-d tree.
+///
+/// Parameters
+/// ----------
+/// centroids : array_like of shape (k, d)
+///     The codewords, for a codebook you already have (`fit` grows one from points).
+///
+/// Attributes
+/// ----------
+/// centroids : ndarray of shape (k, d)
+///     The codewords.
+/// distortion_ : float
+///     Mean squared distance of the training points to their nearest codewords at the end of the
+///     last `fit` or `refine`.
+/// n_iter_ : int
+///     Lloyd iterations of the last `fit` (over every size) or `refine`.
+///
+/// Examples
+/// --------
+/// >>> import numpy as np, polymimic
+/// >>> points = np.random.default_rng(0).normal(size=(1000, 3))
+/// >>> codebook = polymimic.Codebook.fit(points, size=8, seed=0)
+/// >>> codebook.centroids.shape, codebook.encode(points[:4]).shape
+/// ((8, 3), (4,))
 #[pyclass(name = "Codebook", module = "polymimic", frozen)]
 pub struct PyCodebook {
     codebook: Codebook,
@@ -39,6 +67,30 @@ impl PyCodebook {
     }
 
     /// Grows a codebook of `size` codewords on `(n, d)` points by LBG.
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like of shape (n, d)
+    ///     The training points (finite).
+    /// size : int
+    ///     Codewords to grow, at least 1 (the thesis's 512 by default).
+    /// tol : float
+    ///     Each Lloyd refinement stops when the distortion falls by less than this share.
+    /// max_iter : int
+    ///     Most Lloyd iterations per refinement.
+    /// seed : int
+    ///     Seeds the perturbation that splits codewords.
+    /// split_epsilon : float
+    ///     How far apart, relative to the data's scale, a split puts the two new codewords.
+    ///
+    /// Returns
+    /// -------
+    /// Codebook
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For points that are not a finite 2-D array, or a parameter out of range.
     #[classmethod]
     #[pyo3(signature = (points, *, size=512, tol=1e-4, max_iter=100, seed=0, split_epsilon=1e-3))]
     #[allow(clippy::too_many_arguments)]
@@ -91,11 +143,13 @@ impl PyCodebook {
         matrix(py, self.codebook.codewords().to_vec(), self.codebook.len(), self.codebook.dim())
     }
 
+    /// Number of codewords, k.
     #[getter]
     fn size(&self) -> usize {
         self.codebook.len()
     }
 
+    /// Dimension of every codeword, d.
     #[getter]
     fn dim(&self) -> usize {
         self.codebook.dim()

@@ -1,5 +1,5 @@
 //! The imitator's one-second primitives (thesis §1.3, §3.1.1): the wheeled bodies' five and the
-//! humanoid's own classes beyond them, and a body's set of them as data (SPEC §7.1).
+//! humanoid's own classes beyond them, and a body's set of them as data (docs/guides/bodies.md).
 
 use serde::{Deserialize, Serialize};
 

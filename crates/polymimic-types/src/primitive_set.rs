@@ -1,4 +1,4 @@
-//! A body's primitives as data (SPEC §7.1): the classes of its commands that an overhead tracker
+//! A body's primitives as data (docs/guides/bodies.md): the classes of its commands that an overhead tracker
 //! can tell apart. The wheeled bodies share the thesis's five; the humanoid adds side-steps and a
 //! kick.
 

@@ -1,4 +1,4 @@
-"""The baselines polymimic is compared with (SPEC §6.2), each usable on its own.
+"""The baselines polymimic is compared with (docs/results/benchmark.md), each usable on its own.
 
 =========== ===================================== =================================================
 method      learns from                           module

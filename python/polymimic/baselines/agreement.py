@@ -7,7 +7,7 @@ configuration, seed 3) and on two crowds (five per member and configuration, cro
 the full benchmark's recogniser (1000 self-observed sequences a primitive, 512 codewords; its
 steps leave about 1 % of frames unlabelled, gaps) and the Lego's inverse dynamics model
 (:mod:`polymimic.baselines.inverse_dynamics`, which labels every frame; ``python
-benches/bco_labellers.py``):
+studies/which_labels_bco_should_learn_from.py``):
 
 ========================== ================== ==================
 demonstrations             recogniser steps   inverse dynamics

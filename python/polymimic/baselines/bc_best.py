@@ -1,5 +1,5 @@
 """``bc_best``: :mod:`~polymimic.baselines.bc` on one named member's demonstrations only (an
-oracle of who is best: SPEC §6.2 names the member of lowest lapse ε), or on those of several
+oracle of who is best: the benchmark names the member of lowest lapse ε), or on those of several
 named members where several share the lowest ε.
 
 >>> import polymimic

@@ -2,7 +2,7 @@
 
 BCO learns an inverse model from the imitator's own experience and labels each step of the
 demonstrations with it; here the inverse model is by default the imitator's primitive
-recogniser, learned from self-observation (SPEC §2). Each decision sample is labelled with the primitive the
+recogniser, learned from self-observation (thesis §3.1). Each decision sample is labelled with the primitive the
 recogniser names for the second of motion that starts at its frame
 (:func:`polymimic.baselines.labels.step_labels`: a stop by the segmenter's stop rule, else the
 best-scoring HMM). **A second too close to call (a gap) is no primitive and gives no sample.**
@@ -18,13 +18,13 @@ small ``linear`` crowd's, where the benchmark's recogniser's step labels agree i
 (:mod:`polymimic.baselines.agreement`).
 On small crowds (five demonstrations per member and configuration; each labelling tuned among
 the benchmark's six candidates on 40 validation attempts, then five fits, each playing the same
-50 attempts: ``python benches/bco_labellers.py --profiles linear one_good half equal
+50 attempts: ``python studies/which_labels_bco_should_learn_from.py --profiles linear one_good half equal
 mixed_bodies --n 5 --fits 5 --budget 6 --max-samples 10000``) ``bco`` netted, per 50, on
 ``linear``, ``one_good``, ``half``, ``equal`` and ``mixed_bodies``, 15.6, 18.4, 14.6, 21.6 and
 17.2 with the inverse model's labels against 9.6, 8.2, 18.2, 9.2 and 13.6 with the steps
 (``bc``, from the commands sent: 15.4, 16.0, 12.2, 18.4 and 14.8).
 
-``labels="segments"`` labels each frame with its segment's primitive instead (SPEC §3). On ten
+``labels="segments"`` labels each frame with its segment's primitive instead (thesis §3.2.2). On ten
 Expert demonstrations, read by the full reproduction's recogniser, the step labels agree with
 the commands sent in 87 % of frames and the segment labels in 70 %: a segment grows until its
 motion exceeds any one primitive's, so the Expert's segments are 98 % forward while it turns in

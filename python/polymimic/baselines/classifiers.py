@@ -51,6 +51,9 @@ class SmallBatchForest(RandomForestClassifier):  # type: ignore[misc]
     trees' own work. The same sums in the same order: the same probabilities, to the bit."""
 
     def predict_proba(self, X: np.ndarray) -> np.ndarray:
+        """Class probabilities of shape ``(n, n_classes)``: the mean of the trees' leaf
+        probabilities, scikit-learn's to the bit.
+        """
         check_is_fitted(self)
         X = self._validate_X_predict(X)
         proba = np.zeros((X.shape[0], self.n_classes_), dtype=np.float64)
@@ -69,6 +72,9 @@ class SmallBatchBoosting(HistGradientBoostingClassifier):  # type: ignore[misc]
     splits, which no feature set makes, are left to scikit-learn."""
 
     def fit(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None = None) -> SmallBatchBoosting:
+        """Fits as scikit-learn's ``HistGradientBoostingClassifier`` does, then flattens the trees
+        for batched prediction; returns the classifier.
+        """
         super().fit(X, y, sample_weight=sample_weight)
         self._flat_trees_ = _flat_trees(self._predictors)
         return self
@@ -158,6 +164,9 @@ class WeightedKNeighbors(ClassifierMixin, BaseEstimator):  # type: ignore[misc]
         self.weights = weights
 
     def fit(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None = None) -> WeightedKNeighbors:
+        """Indexes the samples of positive ``sample_weight`` (all weigh 1 without it); returns the
+        classifier.
+        """
         weight = np.ones(len(y)) if sample_weight is None else np.asarray(sample_weight, dtype=np.float64)
         keep = weight > 0
         self.classes_, self.y_ = np.unique(np.asarray(y)[keep], return_inverse=True)
@@ -166,6 +175,9 @@ class WeightedKNeighbors(ClassifierMixin, BaseEstimator):  # type: ignore[misc]
         return self
 
     def predict_proba(self, X: np.ndarray) -> np.ndarray:
+        """Class probabilities of shape ``(n, n_classes)``: the neighbours' weights (divided by their
+        distance under ``weights="distance"``) summed per class and normalised.
+        """
         distance, index = self.index_.kneighbors(X)
         vote = self.weight_[index]
         if self.weights == "distance":
@@ -176,6 +188,7 @@ class WeightedKNeighbors(ClassifierMixin, BaseEstimator):  # type: ignore[misc]
         return np.asarray(proba / np.where(total > 0, total, 1.0))
 
     def predict(self, X: np.ndarray) -> np.ndarray:
+        """The most probable class of each row."""
         return np.asarray(self.classes_[self.predict_proba(X).argmax(axis=1)])
 
 

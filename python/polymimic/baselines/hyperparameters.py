@@ -2,7 +2,7 @@
 and for ``bco`` how the demonstrations are labelled.
 
 :func:`candidates` draws the same number of candidates for every method from one grid, with a
-seed, so that every method gets the same tuning effort (SPEC §6.2); the first two candidates
+seed, so that every method gets the same tuning effort (docs/results/benchmark.md); the first two candidates
 are always :data:`DEFAULT` and :data:`PLAIN_BOOSTING`. ``bco`` tries the first half of them
 with each of its two labellings in turn (:func:`with_labellings`): as many candidates, paired
 so that the labellings meet the same classifiers.
@@ -95,6 +95,7 @@ class Hyperparameters:
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any]) -> Hyperparameters:
+        """The hyperparameters :meth:`to_dict` wrote (lists read back as tuples)."""
         params = {k: tuple(v) if isinstance(v, list) else v for k, v in dict(data["params"]).items()}
         return cls(classifier=data["classifier"], params=tuple(sorted(params.items())),
                    feature_set=data["feature_set"], frames_per_action=int(data["frames_per_action"]),
@@ -132,7 +133,7 @@ trees as ``GradientBoostingClassifier`` grows them by default (100 of them, dept
 hold one sample) on the ball-relative features, unbalanced. With it among the candidates, a
 method's tuning can always choose the plain cloner's recipe; without it ``bc`` netted 9, 8 and
 12 on a small mixed crowd where a plain gradient-boosting cloner netted 22, 23 and 19
-(``benches/plain_cloner_small_crowd.py``). Leaves of one sample matter on so few
+(``studies/does_bc_match_a_plain_cloner_on_a_small_crowd.py``). Leaves of one sample matter on so few
 demonstrations: on that crowd, over eight fits at ten frames a step, these trees netted
 20.9 ± 2.9, scikit-learn's own 21.9 ± 2.4, and trees of seven leaves holding at least 20
 samples each (this candidate before) 14.8 ± 7.0."""

@@ -24,7 +24,7 @@ frame of :data:`EXPLORATION_EPISODES` episodes: the same seed gives the same mod
 
 Where the recogniser's steps agree with the commands sent in 84 % of an Expert's frames and
 75 % of a ``linear`` crowd's (whose lapses are seconds of random primitives), this model's
-labels agree in 92 % and 93 % (``python benches/bco_labellers.py``). Its weak spot is a window
+labels agree in 92 % and 93 % (``python studies/which_labels_bco_should_learn_from.py``). Its weak spot is a window
 from the very frame a primitive starts, as every self-observed sequence is: read with the
 second before it, 79 % of held-out self-observed primitives are named as executed.
 

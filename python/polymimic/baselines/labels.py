@@ -1,14 +1,14 @@
 """Demonstrations as a cloning method learns from them: what the robot saw, frame by frame,
 and which primitive each frame is labelled with.
 
-Three ways to label; the first is ``bc``'s, the second ``bco``'s (SPEC §6.2):
+Three ways to label; the first is ``bc``'s, the second ``bco``'s (docs/results/benchmark.md):
 
 - :func:`command_labels` (privileged): the primitive equivalent of the command the
   demonstrator sent in each frame (``polymimic.field.command_primitives()``);
 - :func:`step_labels` (tracker frames only): the primitive the recogniser names for the
   second of motion that starts at each frame, as BCO's inverse model names each transition;
 - :func:`segment_labels` (tracker frames only): the primitive of the recogniser's segment
-  covering each frame (``recognizer.segment_many``, SPEC §3). A segment grows until its motion
+  covering each frame (``recognizer.segment_many``, thesis §3.2.2). A segment grows until its motion
   exceeds any one primitive's, so the Expert's segments are 98 % forward while it turns in 31 %
   of its frames: a coarser label, kept for comparison (``bco.labelled(..., labels="segments")``).
 
@@ -22,7 +22,7 @@ demonstration from a field no longer than the imitator's (the tiny's) is taken a
 its field centred on the imitator's, and one from a longer field (a RoboCup-size log) has its
 ball brought across by the correspondence while the robot keeps its offset from the ball in
 millimetres. Measured on the benchmark's ``mixed_bodies`` crowd (``python
-benches/bc_field_mapping.py RUN_DIR --fits 5``: histogram gradient boosting on the
+studies/how_bc_should_read_another_field.py RUN_DIR --fits 5``: histogram gradient boosting on the
 ball-relative features, 5 frames a step, on the benchmark's evaluation attempts, kicks labelled
 forward), ``bc``'s samples as recorded netted 16.0 ± 6.4 goals per 50 (5.4 own goals), brought
 over by the correspondence (the humanoid's kicking reach and the tiny's touch mapped onto the

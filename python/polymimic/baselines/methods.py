@@ -31,11 +31,12 @@ from polymimic.field import Demonstration
 __all__ = ["METHODS", "Prepared", "check_method", "fit", "fit_prepared", "prepare"]
 
 METHODS = ("bc", "bco", "bco_lp", "bc_best", "random")
-"""The baselines of SPEC §6.2 that learn from demonstrations (or nothing); ``ppo`` learns from
-the environment instead (:mod:`polymimic.baselines.ppo`)."""
+"""The benchmark's baselines (docs/results/benchmark.md) that learn from demonstrations (or
+nothing); ``ppo`` learns from the environment instead (:mod:`polymimic.baselines.ppo`)."""
 
 
 def check_method(method: Any) -> str:
+    """``method`` if it is one of :data:`METHODS`, else a ``ValueError`` naming them."""
     if method not in METHODS:
         raise ValueError(f"unknown method {method!r}; expected one of {', '.join(METHODS)}")
     return str(method)

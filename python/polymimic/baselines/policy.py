@@ -38,13 +38,27 @@ class Policy(Protocol):
     """What :func:`polymimic.baselines.evaluate_policy` drives."""
 
     @property
-    def frames_per_action(self) -> int: ...
+    def frames_per_action(self) -> int:
+        """Tracker frames each chosen primitive is held for."""
 
-    def predict(self, observations: np.ndarray) -> np.ndarray: ...
+    def predict(self, observations: np.ndarray) -> np.ndarray:
+        """The primitive id (0–4) to play for each observation.
 
-    def reset(self) -> None: ...
+        Parameters
+        ----------
+        observations : ndarray of shape (n, 5)
+            Tracker readings: robot x, y (mm), θ (rad), ball x, y (mm).
 
-    def save(self, path: str | os.PathLike[str]) -> None: ...
+        Returns
+        -------
+        ndarray of int64, shape (n,)
+        """
+
+    def reset(self) -> None:
+        """Called before every episode; a stateless policy does nothing."""
+
+    def save(self, path: str | os.PathLike[str]) -> None:
+        """Writes the policy to ``path``, to be read back by :func:`polymimic.baselines.load_policy`."""
 
 
 class ClonedPolicy:
@@ -72,6 +86,7 @@ class ClonedPolicy:
 
     @property
     def frames_per_action(self) -> int:
+        """Tracker frames each chosen primitive is held for (30 is one second)."""
         return int(self.hyperparameters.frames_per_action)
 
     def predict(self, observations: np.ndarray) -> np.ndarray:
@@ -91,6 +106,9 @@ class ClonedPolicy:
         """Nothing to restart: a cloned policy is deterministic."""
 
     def save(self, path: str | os.PathLike[str]) -> None:
+        """Writes the policy (its method, body, hyperparameters and fitted classifier) to ``path``;
+        :func:`polymimic.baselines.load_policy` reads it back.
+        """
         write_policy_file(path, {"kind": "cloned", "method": self.method, "body": self.body,
                                  "hyperparameters": self.hyperparameters.to_dict()}, self)
 
@@ -127,6 +145,7 @@ class RandomPolicy:
 
     @property
     def frames_per_action(self) -> int:
+        """Tracker frames each random primitive is held for."""
         return self._frames_per_action
 
     def predict(self, observations: np.ndarray) -> np.ndarray:
@@ -139,6 +158,7 @@ class RandomPolicy:
         self._rng = np.random.default_rng(self.seed)
 
     def save(self, path: str | os.PathLike[str]) -> None:
+        """Writes the policy (its seed, body and step length) to ``path``."""
         write_policy_file(path, {"kind": "random", "method": "random", "seed": self.seed, "body": self.body,
                                  "frames_per_action": self._frames_per_action}, self)
 

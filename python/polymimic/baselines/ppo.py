@@ -70,9 +70,11 @@ class Checkpoint:
 
     @property
     def net_goals(self) -> int:
+        """Goals minus own goals."""
         return self.goals - self.own_goals
 
     def to_dict(self) -> dict[str, Any]:
+        """The checkpoint as plain JSON values (wall time rounded to 0.1 s)."""
         return {"env_steps": self.env_steps, "goals": self.goals, "own_goals": self.own_goals,
                 "net_goals": self.net_goals, "attempts": self.attempts, "wall_s": round(self.wall_s, 1)}
 
@@ -125,9 +127,21 @@ class PPOPolicy:
 
     @property
     def frames_per_action(self) -> int:
+        """Tracker frames each chosen primitive is held for (30: one environment step)."""
         return self._frames_per_action
 
     def predict(self, observations: np.ndarray) -> np.ndarray:
+        """The primitive id PPO's network plays, deterministically, for each observation.
+
+        Parameters
+        ----------
+        observations : ndarray of shape (n, 5)
+            Tracker readings: robot x, y (mm), θ (rad), ball x, y (mm).
+
+        Returns
+        -------
+        ndarray of int64, shape (n,)
+        """
         obs = check_observations(observations)
         if len(obs) == 0:
             return np.empty(0, dtype=np.int64)
@@ -138,6 +152,7 @@ class PPOPolicy:
         """Nothing to restart: the policy acts deterministically."""
 
     def save(self, path: str | os.PathLike[str]) -> None:
+        """Writes the policy (its network, body and features) to ``path``."""
         write_policy_file(path, {"kind": "ppo", "method": self.method, "body": self.body,
                                  "feature_set": self.feature_set,
                                  "frames_per_action": self._frames_per_action,

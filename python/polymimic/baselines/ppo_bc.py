@@ -1,6 +1,6 @@
 """``ppo_bc`` (optional): PPO whose policy network first clones the crowd's commands, then
 learns from the reward: the peer a user would pick to combine demonstrations and reinforcement
-learning (issue "Practice", SPEC §7.2).
+learning (docs/guides/practice.md).
 
 Cloning is real behavioural cloning of the network PPO then fine-tunes: the decision samples
 ``bc`` learns from (:func:`polymimic.baselines.labels.command_labels`, the commands sent, drawn
@@ -43,6 +43,7 @@ class Pretraining:
     batch_size: int = 256
 
     def to_dict(self) -> dict[str, Any]:
+        """The pretraining's settings as plain JSON values."""
         return dataclasses.asdict(self)
 
 

@@ -10,7 +10,7 @@ demonstration's first frame gives a sample when its demonstrator has the imitato
 state; where its strided samples start is drawn with the fit's seed (:func:`sample_rows`): fits
 under other seeds learn from other frames, so that even a deterministic classifier (gradient
 boosting without early stopping, k-NN, logistic regression) gives a spread over fits, not one
-draw. With fixed hyperparameters (``python benches/bc_first_frames.py RUN_DIR``: histogram
+draw. With fixed hyperparameters (``python studies/whose_first_frames_bc_should_take.py RUN_DIR``: histogram
 gradient boosting, ball-relative features, 15 frames a step, eight fits on the benchmark's
 evaluation attempts), the first frames raised ``bc``'s mean net goals per 50 from 2.1 to 11.6 on
 ``one_good``, 4.0 to 8.6 on ``half``, 17.9 to 22.1 on ``equal`` and 6.9 to 15.4 on ``linear``.

@@ -1,5 +1,5 @@
 """Every baseline at its best: hyperparameters chosen on validation attempts, never on the
-evaluation's, with the same number of candidates for every method (SPEC §6.2).
+evaluation's, with the same number of candidates for every method (docs/results/benchmark.md).
 
 **The seed rule.** Validation attempts are those of
 ``polymimic._native.attempt_seeds(n, seed=VALIDATION_SEED_BASE + validation_seed)``, and an

@@ -1,4 +1,4 @@
-"""``polymimic benchmark``: polymimic against the baselines on crowds of demonstrators (SPEC §6).
+"""``polymimic benchmark``: polymimic against the baselines on crowds of demonstrators (docs/results/benchmark.md).
 
 An application, like :mod:`polymimic.reproduce`: it drives the library (crowds, learning
 trials, baselines) into a run directory and reports; nothing in the library imports it.

@@ -35,12 +35,12 @@ __all__ = ["METHODS", "OPTIONAL_METHODS", "BenchmarkConfig", "BenchmarkSettings"
 
 METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
            "bc", "bc_best", "random")
-"""The methods a benchmark compares by default (SPEC §6.2, §7.2)."""
+"""The methods a benchmark compares by default (docs/results/benchmark.md, docs/guides/practice.md)."""
 
 OPTIONAL_METHODS = ("ppo", "ppo_bc")
 """Methods run only when named: ``ppo`` learns from the reward rather than from demonstrations,
 needs stable-baselines3 (``pip install "polymimic[rl]"``) and took 13 minutes of one core per
-million environment steps in the README's run (:mod:`polymimic.baselines.ppo`); ``ppo_bc``
+million environment steps in the run docs/results/benchmark.md quotes (:mod:`polymimic.baselines.ppo`); ``ppo_bc``
 clones each crowd's commands first, then learns from the reward as ``ppo`` does, so it runs
 once per profile (:mod:`polymimic.baselines.ppo_bc`)."""
 
@@ -130,22 +130,27 @@ class BenchmarkConfig:
     # The run's sections, by their names.
     @property
     def seeds(self) -> Any:
+        """The run's seeds (``[seeds]``)."""
         return self.run.seeds
 
     @property
     def field(self) -> dict[str, Any]:
+        """The field's parameters (``[field]``)."""
         return self.run.field
 
     @property
     def recognizer(self) -> Any:
+        """The recogniser's settings (``[recognizer]``)."""
         return self.run.recognizer
 
     @property
     def segmenter(self) -> Any:
+        """The segmenter's settings (``[segmenter]``)."""
         return self.run.segmenter
 
     @property
     def learning(self) -> Any:
+        """The learning constants (``[learning]``)."""
         return self.run.learning
 
     def imitator_body(self) -> Any:
@@ -188,6 +193,7 @@ class BenchmarkConfig:
                                           ppo_eval_every=4096, practice_steps=1000, practice_trials=1))
 
     def to_dict(self) -> dict[str, Any]:
+        """The whole config as plain tables (the run's, ``[benchmark]`` and ``[profiles]``)."""
         run = self.run.to_dict()
         del run["experiments"]
         benchmark = {k: list(v) if isinstance(v, tuple) else v for k, v in dataclasses.asdict(self.benchmark).items()}
@@ -196,6 +202,13 @@ class BenchmarkConfig:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
+        """A config from tables such as :meth:`to_dict` gives, laid over ``base`` (the defaults).
+
+        Raises
+        ------
+        ConfigError
+            For an unknown key or a value out of range.
+        """
         base = base or cls()
         own = {"benchmark", "profiles"}
         run = RunConfig.from_dict({k: v for k, v in data.items() if k not in own}, base=base.run)
@@ -222,6 +235,7 @@ class BenchmarkConfig:
         return cls(run=run, benchmark=benchmark, profiles=profiles)
 
     def to_toml(self) -> str:
+        """The config as commented TOML."""
         lines = self.run.to_toml().split("\n[experiments]")[0].rstrip().split("\n")
         lines[0] = "# polymimic benchmark configuration"
         lines.append("")
@@ -238,13 +252,15 @@ class BenchmarkConfig:
 
     @classmethod
     def from_toml(cls, text: str, *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
+        """A config from TOML text, laid over ``base`` (the defaults)."""
         return cls.from_dict(toml_tables(text), base=base)
 
     @classmethod
     def load(cls, path: str | os.PathLike[str], *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
+        """A config from a TOML file, laid over ``base`` (the defaults)."""
         return read_config(path, lambda text: cls.from_toml(text, base=base))
 
 
 def _with_lp_weighting(run: RunConfig) -> RunConfig:
-    """The benchmark's imitator learns more from members of higher LP (SPEC §6.3)."""
+    """The benchmark's imitator learns more from members of higher LP (docs/results/benchmark.md)."""
     return dataclasses.replace(run, learning=run.learning.replace(imitator_weighting="lp"))

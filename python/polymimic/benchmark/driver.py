@@ -119,6 +119,7 @@ class Benchmark(Stepped):
     # 1. The recogniser.
 
     def recognise(self) -> int:
+        """Stage: self-observation and the recogniser; returns how many were made (0 if done)."""
         if self.run.finished(self.run.recognizer_path, PrimitiveRecognizer.load):
             return 0
         settings, path = self.config.recognizer, self.run.self_observation_path("train")
@@ -133,6 +134,7 @@ class Benchmark(Stepped):
     # 2. The crowds.
 
     def record(self) -> int:
+        """Stage: every profile's crowd recorded; returns the crowds recorded now."""
         made, n = 0, self.config.benchmark.demonstrations_per_configuration
         crowds = self.config.crowds()
         with progress(total=len(crowds), desc="record", quiet=self.quiet) as bar:
@@ -146,6 +148,7 @@ class Benchmark(Stepped):
         return made
 
     def shared(self) -> Shared:
+        """What every task reads: the recogniser and each profile's demonstrations and segments."""
         recognizer = PrimitiveRecognizer.load(self.run.require(self.run.recognizer_path, "benchmark"))
         segmenter = dataclasses.asdict(self.config.segmenter)
         profiles = {}
@@ -157,6 +160,7 @@ class Benchmark(Stepped):
     # 3. Trials.
 
     def learn(self, shared: Shared) -> int:
+        """Stage: polymimic's learning trials (uniform-LP ones too where asked); returns the trials run."""
         jobs = [(crowd.name, seed, uniform) for crowd in self.config.crowds() for seed in self.config.trial_seeds()
                 for uniform in self._trial_kinds()
                 if not self.run.finished(self.run.trial_path(crowd.name, seed, uniform_lp=uniform), TrialResult.load)]
@@ -189,6 +193,7 @@ class Benchmark(Stepped):
         return set(crowd.best()) == set(crowd.names) and {"bc", "bc_best"} <= set(self._baselines())
 
     def tune(self, shared: Shared) -> int:
+        """Stage: each baseline's hyperparameters chosen on the validation attempts; returns the tunings run."""
         first = self.config.seeds.first_trial
         copies = [crowd.name for crowd in self.config.crowds() if self._bc_best_is_bc(crowd)
                   and not self.run.finished(self.run.tuning_path(crowd.name, "bc_best"), load_tuning)]
@@ -226,6 +231,7 @@ class Benchmark(Stepped):
                                       and saved["seed"] == self.config.seeds.evaluation)
 
     def evaluation_jobs(self) -> list[tuple[str, str, int, str | None, dict[str, Any] | None]]:
+        """The evaluations still to run: ``(profile, method, seed, trial JSON, tuned hyperparameters)``."""
         jobs: list[tuple[str, str, int, str | None, dict[str, Any] | None]] = []
         methods = self.config.benchmark.methods
         for crowd in self.config.crowds():
@@ -243,6 +249,7 @@ class Benchmark(Stepped):
 
     def evaluate(self, shared: Shared) -> int:
         # bco_lp's refits first: the other evaluations are short and fill in around them.
+        """Stage: every method plays the evaluation attempts; returns the evaluations run."""
         jobs = sorted(self.evaluation_jobs(), key=lambda job: job[1] != "bco_lp")
         with progress(total=len(jobs), desc="evaluate", quiet=self.quiet) as bar:
             for _, result in self.runner.map(evaluation_task, shared, jobs):
@@ -261,6 +268,7 @@ class Benchmark(Stepped):
             method=settings.practice_method)
 
     def practice(self, shared: Shared) -> int:
+        """Stage: the first trials' imitators practise; returns the practices run."""
         jobs = [(crowd.name, seed, self._trial_json(crowd.name, seed)) for crowd in self.config.crowds()
                 for seed in self.config.evaluated_seeds(PRACTISED) if not self._practice_done(crowd.name, seed)]
         with progress(total=len(jobs), desc="practice", quiet=self.quiet) as bar:
@@ -285,6 +293,7 @@ class Benchmark(Stepped):
                                          settings.ppo_timesteps, settings.ppo_eval_every)
 
     def ppo(self, shared: Shared) -> int:
+        """Stage: ``ppo``'s runs and their curves; returns the runs made."""
         jobs = [seed for seed in range(self.config.benchmark.ppo_runs) if not self._ppo_done(seed)]
         self.run.ppo_curve_path(0).parent.mkdir(parents=True, exist_ok=True)
         with progress(total=len(jobs), desc="ppo", quiet=self.quiet) as bar:
@@ -307,6 +316,7 @@ class Benchmark(Stepped):
                                      settings.ppo_timesteps, settings.ppo_eval_every)
 
     def ppo_bc(self, shared: Shared) -> int:
+        """Stage: ``ppo_bc``'s cloning tuned per profile, then its runs; returns the pieces of work done."""
         profiles = [crowd.name for crowd in self.config.crowds()]
         untuned = [p for p in profiles if not self.run.finished(self.run.ppo_bc_tuning_path(p), load_ppo_bc_tuning)]
         with progress(total=len(untuned), desc="ppo_bc tune", quiet=self.quiet) as bar:
@@ -331,6 +341,7 @@ class Benchmark(Stepped):
     # 9. The summary and the report.
 
     def report(self) -> int:
+        """Stage: ``benchmark.json``, its figures and the report; returns the files written (3)."""
         summary = gather(self.run, self.config)
         atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
         draw_figures(summary, self.run.plots)

@@ -166,4 +166,5 @@ def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, floa
 
 
 def benchmark_html(markdown: str, *, images_from: str) -> str:
+    """The report's markdown as one HTML page, its images embedded from ``images_from``."""
     return to_html(markdown, title="polymimic benchmark", images_from=images_from)

@@ -45,34 +45,45 @@ class BenchmarkDir(RunHouse[BenchmarkConfig]):
         self.report_html_path = self.path / "benchmark.html"
 
     def crowd_path(self, profile: str) -> pathlib.Path:
+        """The profile's recorded crowd (Parquet)."""
         return self.datasets / f"crowd_{profile}.parquet"
 
     def profile_dir(self, profile: str) -> pathlib.Path:
+        """The folder of the profile's trials, tunings and evaluations."""
         return self.models / "benchmark" / profile
 
     def trial_path(self, profile: str, seed: int, *, uniform_lp: bool = False) -> pathlib.Path:
+        """A learning trial's file (the uniform-LP ablation's with ``uniform_lp``)."""
         return self.profile_dir(profile) / f"trial_{seed}{'_uniform_lp' if uniform_lp else ''}.json"
 
     def tuning_path(self, profile: str, method: str) -> pathlib.Path:
+        """A baseline's tuning on the profile."""
         return self.profile_dir(profile) / f"tuning_{method}.json"
 
     def evaluation_path(self, profile: str, method: str, seed: int) -> pathlib.Path:
+        """One evaluation of a method (a trial's or a fit's seed)."""
         return self.profile_dir(profile) / f"evaluation_{method}_{seed}.json"
 
     def practice_path(self, profile: str, seed: int) -> pathlib.Path:
+        """One trial's practice curve."""
         return self.profile_dir(profile) / f"practice_{seed}.json"
 
     def ppo_curve_path(self, seed: int) -> pathlib.Path:
+        """One ``ppo`` run's learning curve."""
         return self.models / "benchmark" / "ppo" / f"curve_{seed}.json"
 
     def ppo_bc_tuning_path(self, profile: str) -> pathlib.Path:
+        """``ppo_bc``'s cloning choice on the profile."""
         return self.profile_dir(profile) / "ppo_bc_tuning.json"
 
     def ppo_bc_curve_path(self, profile: str, seed: int) -> pathlib.Path:
+        """One ``ppo_bc`` run's learning curve on the profile."""
         return self.profile_dir(profile) / f"ppo_bc_curve_{seed}.json"
 
     def ppo_bc_policy_path(self, profile: str, seed: int) -> pathlib.Path:
+        """One ``ppo_bc`` run's final policy."""
         return self.profile_dir(profile) / f"ppo_bc_policy_{seed}.pmp"
 
     def ppo_policy_path(self, seed: int) -> pathlib.Path:
+        """One ``ppo`` run's final policy."""
         return self.models / "benchmark" / "ppo" / f"policy_{seed}.pmp"

@@ -1,4 +1,4 @@
-"""``benchmark.json``: what a benchmark measured, gathered from its run directory (SPEC §6.3).
+"""``benchmark.json``: what a benchmark measured, gathered from its run directory (docs/results/benchmark.md).
 
 Per profile: every member's own outcomes; skill recovery (Spearman ρ and Kendall τ between the
 members' final LPs and true skill, mean and sd over trials, and how many trials put a member of

@@ -49,6 +49,7 @@ class Shared:
     profiles: dict[str, ProfileInputs]
 
     def learning(self, uniform_lp: bool) -> LearningConfig:
+        """The learning constants, with every LP held (``hold_lp``) for the uniform-LP ablation."""
         config: LearningConfig = self.config.learning
         return config.replace(hold_lp=True) if uniform_lp else config
 

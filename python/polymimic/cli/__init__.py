@@ -30,6 +30,7 @@ EXIT_INTERRUPTED = 130
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The ``polymimic`` command's argument parser, one subcommand per module of :mod:`polymimic.cli`."""
     parser = argparse.ArgumentParser(prog="polymimic", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
@@ -40,6 +41,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    """Runs the ``polymimic`` command with ``argv`` (the process's arguments by default); returns
+    the exit code (2 for a missing input or a refused config, naming it).
+    """
     parser = build_parser()
     args = parser.parse_args(argv)
     if getattr(args, "address", None) is not None and args.backend != "ray":

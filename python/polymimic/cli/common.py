@@ -18,6 +18,7 @@ if TYPE_CHECKING:
 
 
 def positive(text: str) -> int:
+    """``text`` as an integer of at least 1, for argparse."""
     value = int(text)
     if value < 1:
         raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
@@ -25,6 +26,9 @@ def positive(text: str) -> int:
 
 
 def run_options(*, tasks: bool) -> argparse.ArgumentParser:
+    """The options every run command shares (``--run-dir``, ``--config``, ``--quiet``, and with
+    ``tasks`` the workers and backend).
+    """
     options = argparse.ArgumentParser(add_help=False)
     options.add_argument("--run-dir", type=pathlib.Path,
                          help="the run directory (default: a new runs/<timestamp> for self-observe and reproduce, "
@@ -50,10 +54,12 @@ class AskableConfig(Protocol):
     def __init__(self) -> None: ...
 
     @classmethod
-    def quick(cls) -> Self: ...
+    def quick(cls) -> Self:
+        """The quick config: seconds end to end."""
 
     @classmethod
-    def load(cls, path: str | os.PathLike[str], *, base: Self | None = None) -> Self: ...
+    def load(cls, path: str | os.PathLike[str], *, base: Self | None = None) -> Self:
+        """A config from a TOML file, laid over ``base``."""
 
 
 Asked = TypeVar("Asked", bound=AskableConfig)
@@ -73,6 +79,9 @@ def requested_config(args: argparse.Namespace) -> RunConfig | None:
 
 
 def run_path(args: argparse.Namespace, *, new: bool) -> pathlib.Path:
+    """The run directory: ``--run-dir``, else a new ``runs/<timestamp>`` (``new``), else the
+    newest run under ``runs/``.
+    """
     if args.run_dir is not None:
         return pathlib.Path(args.run_dir)
     if new:

@@ -1,4 +1,4 @@
-"""`polymimic practice`: a finished run's imitators keep learning by playing (SPEC §7.2).
+"""`polymimic practice`: a finished run's imitators keep learning by playing (docs/guides/practice.md).
 
 On a benchmark run, polymimic's imitator of each profile; on a reproduction, the improved
 imitator of each experiment: those of the first ``--trials`` trials practise for ``--steps``

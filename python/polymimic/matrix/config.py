@@ -117,6 +117,7 @@ class DemonstratorSet:
 
     @property
     def names(self) -> tuple[str, ...]:
+        """The members' names, in order."""
         return tuple(m[0] for m in self.members)
 
 
@@ -138,7 +139,7 @@ def demonstrator_sets(row: str) -> dict[str, DemonstratorSet]:
 
 def _default_run() -> RunConfig:
     run = RunConfig()
-    # The benchmark's polymimic: it learns more from members of higher LP (SPEC §6.3).
+    # The benchmark's polymimic: it learns more from members of higher LP (docs/results/benchmark.md).
     return dataclasses.replace(run, bodies={**run.bodies, "wagon": WAGON},
                                learning=run.learning.replace(imitator_weighting="lp"))
 
@@ -160,6 +161,7 @@ class MatrixConfig:
 
     @property
     def seeds(self) -> Any:
+        """The run's seeds (``[seeds]``)."""
         return self.run.seeds
 
     def body(self, row: str) -> str | WheeledBody:
@@ -167,9 +169,11 @@ class MatrixConfig:
         return row if row in IMITATOR_BODIES else self.run.bodies[row]
 
     def trial_seeds(self) -> list[int]:
+        """The seeds of polymimic's trials in every cell."""
         return [self.seeds.first_trial + i for i in range(self.matrix.trials)]
 
     def fit_seeds(self) -> list[int]:
+        """The seeds of ``bco``'s fits in every cell."""
         return [self.seeds.first_trial + i for i in range(self.matrix.bco_fits)]
 
     @classmethod
@@ -186,6 +190,7 @@ class MatrixConfig:
                                        validation_attempts_per_configuration=3, max_decision_samples=1000))
 
     def to_dict(self) -> dict[str, Any]:
+        """The whole config as plain tables (the run's and ``[matrix]``)."""
         run = self.run.to_dict()
         for section in ("experiments", "imitator"):
             del run[section]
@@ -194,6 +199,13 @@ class MatrixConfig:
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, base: MatrixConfig | None = None) -> MatrixConfig:
+        """A config from tables such as :meth:`to_dict` gives, laid over ``base`` (the defaults).
+
+        Raises
+        ------
+        ConfigError
+            For an unknown key, a value out of range, or a table a matrix has no place for.
+        """
         base = base or cls()
         for section in ("experiments", "imitator", "demonstrators"):
             if section in data:
@@ -208,6 +220,7 @@ class MatrixConfig:
         return cls(run=run, matrix=settings)
 
     def to_toml(self) -> str:
+        """The config as commented TOML."""
         lines = self.run.to_toml().split("\n[experiments]")[0].rstrip().split("\n")
         lines = [line for line in _without_table(lines, "imitator")]
         lines[0] = "# polymimic matrix configuration"
@@ -221,10 +234,12 @@ class MatrixConfig:
 
     @classmethod
     def from_toml(cls, text: str, *, base: MatrixConfig | None = None) -> MatrixConfig:
+        """A config from TOML text, laid over ``base`` (the defaults)."""
         return cls.from_dict(toml_tables(text), base=base)
 
     @classmethod
     def load(cls, path: str | os.PathLike[str], *, base: MatrixConfig | None = None) -> MatrixConfig:
+        """A config from a TOML file, laid over ``base`` (the defaults)."""
         return read_config(path, lambda text: cls.from_toml(text, base=base))
 
 

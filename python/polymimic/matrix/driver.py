@@ -74,9 +74,11 @@ class Matrix(Stepped):
         return time.perf_counter() - started
 
     def rows(self) -> tuple[str, ...]:
+        """The imitator bodies, one row each."""
         return self.config.matrix.imitators
 
     def sets(self) -> dict[str, dict[str, DemonstratorSet]]:
+        """Each row's demonstrator set per column."""
         return {row: demonstrator_sets(row) for row in self.rows()}
 
     def cells(self) -> list[tuple[str, str]]:
@@ -87,6 +89,7 @@ class Matrix(Stepped):
     # 1. Each imitator's recogniser.
 
     def recognise(self) -> int:
+        """Stage: each row's self-observation and recogniser; returns the rows done now."""
         rows = [row for row in self.rows()
                 if not self.run.finished(self.run.recognizer_of(row), PrimitiveRecognizer.load)]
         with progress(total=len(rows), desc="recognise", quiet=self.quiet) as bar:
@@ -103,6 +106,7 @@ class Matrix(Stepped):
         return {s.name: s for sets in self.sets().values() for s in sets.values()}
 
     def record(self) -> int:
+        """Stage: every demonstrator set recorded; returns the sets recorded now."""
         made, n = 0, self.config.matrix.demonstrations_per_configuration
         unique = self._unique_sets()
         with progress(total=len(unique), desc="record", quiet=self.quiet) as bar:
@@ -127,6 +131,7 @@ class Matrix(Stepped):
         return out
 
     def shared(self) -> Shared:
+        """What every task reads: the rows' recognisers, the sets' demonstrations, the sets."""
         recognizers = {row: PrimitiveRecognizer.load(self.run.require(self.run.recognizer_of(row), "matrix"))
                        for row in self.rows()}
         demonstrations = {name: load_demonstrations(self.run.require(self.run.set_path(name), "matrix"))
@@ -140,6 +145,7 @@ class Matrix(Stepped):
         return [(row, column) for row, column in self.cells() if is_weighed(self.config, row, column)]
 
     def weigh(self, shared: Shared) -> int:
+        """Stage: polymimic's weighting of a crowd's members chosen on validation; returns the trials run."""
         jobs = [(row, column, weighting) for row, column in self._weighed_cells()
                 for weighting in self.config.matrix.weightings
                 if not self.run.finished(self.run.weighing_path(row, column, weighting), load_cell_weighing)]
@@ -159,6 +165,7 @@ class Matrix(Stepped):
                        result)
 
     def polymimic(self, shared: Shared) -> int:
+        """Stage: polymimic's trials and evaluations in every cell; returns those run now."""
         weighting = {(row, column): chosen_weighting(self.run, self.config, row, column)[0]
                      for row, column in self.cells()}
         jobs = [(row, column, seed, weighting[row, column]) for row, column in self.cells()
@@ -173,6 +180,7 @@ class Matrix(Stepped):
         return len(jobs)
 
     def tune(self, shared: Shared) -> int:
+        """Stage: ``bco`` tuned in every cell; returns the tunings run."""
         jobs = [(row, column) for row, column in self.cells()
                 if not self.run.finished(self.run.tuning_path(row, column), load_cell_tuning)]
         jobs.sort(key=lambda job: job[1] != "mixed_bodies")
@@ -185,6 +193,7 @@ class Matrix(Stepped):
         return len(jobs)
 
     def bco(self, shared: Shared) -> int:
+        """Stage: ``bco``'s fits evaluated in every cell; returns the fits run."""
         jobs = []
         for row, column in self.cells():
             tuned = load_cell_tuning(self.run.require(self.run.tuning_path(row, column), "matrix"))["hyperparameters"]
@@ -200,6 +209,7 @@ class Matrix(Stepped):
     # 7. The summary and the report.
 
     def report(self) -> int:
+        """Stage: ``matrix.json``, the heat map and the report; returns the files written (3)."""
         summary = gather(self.run, self.config)
         atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
         draw_heat_map(summary, self.run.plots)

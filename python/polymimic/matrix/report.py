@@ -106,4 +106,5 @@ def matrix_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] 
 
 
 def matrix_html(markdown: str, *, images_from: str) -> str:
+    """The report's markdown as one HTML page, its images embedded from ``images_from``."""
     return to_html(markdown, title="polymimic matrix", images_from=images_from)

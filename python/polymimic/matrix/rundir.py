@@ -41,22 +41,29 @@ class MatrixDir(RunHouse[MatrixConfig]):
         self.report_html_path = self.path / "matrix.html"
 
     def own_self_observation_path(self, row: str) -> pathlib.Path:
+        """The row's own self-observation (Parquet)."""
         return self.datasets / f"self_observation_{row}.parquet"
 
     def recognizer_of(self, row: str) -> pathlib.Path:
+        """The row's recogniser."""
         return self.models / f"recognizer_{row}.json"
 
     def set_path(self, name: str) -> pathlib.Path:
+        """A demonstrator set's recordings (Parquet)."""
         return self.datasets / f"demonstrations_{name}.parquet"
 
     def cell_dir(self, row: str, column: str) -> pathlib.Path:
+        """The folder of one cell's evaluations, weighings and tuning."""
         return self.models / "matrix" / row / column
 
     def evaluation_path(self, row: str, column: str, method: str, seed: int) -> pathlib.Path:
+        """One evaluation of a method in a cell (a trial's or a fit's seed)."""
         return self.cell_dir(row, column) / f"{method}_{seed}.json"
 
     def weighing_path(self, row: str, column: str, weighting: str) -> pathlib.Path:
+        """One weighting's validation in a cell."""
         return self.cell_dir(row, column) / f"weighing_{weighting}.json"
 
     def tuning_path(self, row: str, column: str) -> pathlib.Path:
+        """``bco``'s tuning in a cell."""
         return self.cell_dir(row, column) / "bco_tuning.json"

@@ -1,6 +1,6 @@
 """``matrix.json``: every cell's net goals, polymimic's and bco's, mean and sd over trials or fits,
 polymimic's weighting of the members and bco's hyperparameters as chosen on validation, and its
-transfer ratio (the cell over its row's own-body cell, SPEC §7.1), and the heat map.
+transfer ratio (the cell over its row's own-body cell, docs/results/matrix.md), and the heat map.
 
 >>> transfer(30.0, 40.0), transfer(30.0, 0.0), transfer(None, 40.0)
 (0.75, None, None)

@@ -38,6 +38,7 @@ class Shared:
     sets: dict[str, dict[str, DemonstratorSet]]
 
     def cell(self, row: str, column: str) -> tuple[DemonstratorSet, list[Demonstration]]:
+        """A cell's demonstrator set and its demonstrations."""
         chosen = self.sets[row][column]
         return chosen, self.demonstrations[chosen.name]
 
@@ -168,4 +169,5 @@ def _evaluation(shared: Shared, row: str, column: str, method: str, seed: int, p
 
 
 def dumps(data: dict[str, Any]) -> str:
+    """``data`` as JSON with sorted keys and a final newline: the same data, the same bytes."""
     return json.dumps(data, sort_keys=True) + "\n"

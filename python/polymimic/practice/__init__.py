@@ -1,4 +1,4 @@
-"""Practice: the imitator keeps learning by playing (SPEC §7.2, the thesis's future work §5.4).
+"""Practice: the imitator keeps learning by playing (docs/guides/practice.md; the thesis's future work, thesis §5.4).
 
 >>> from polymimic.practice import DEFAULT_CHECKPOINTS, PRACTICE_SEED_BASE
 >>> DEFAULT_CHECKPOINTS[-1], PRACTICE_SEED_BASE == 2**63

@@ -36,6 +36,7 @@ class CurvePoint:
     attempts_lost: int
 
     def to_dict(self) -> dict[str, int]:
+        """The point as plain JSON values."""
         return dataclasses.asdict(self)
 
 

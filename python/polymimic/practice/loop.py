@@ -1,4 +1,4 @@
-"""Practice (SPEC §7.2): after watching, the imitator plays attempts on its own field and learns
+"""Practice (docs/guides/practice.md): after watching, the imitator plays attempts on its own field and learns
 from what the tracker showed of them.
 
 Each round the policy plays ``attempts_per_round`` attempts from each field configuration, from

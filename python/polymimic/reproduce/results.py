@@ -2,7 +2,7 @@
 
 Shares are fractions in [0, 1]; ``{mean, sd}`` pairs are over trials (sd with n − 1; 0 for one
 trial); numbers that do not exist (a share of nothing) are ``null``. The schema is described in
-the README (“The results file”). The summaries are pure functions of trial results, so they can
+docs/formats.md (“Results of a reproduction”). The summaries are pure functions of trial results, so they can
 be checked on made-up trials:
 
 >>> mean_sd([1.0, 2.0, 3.0])

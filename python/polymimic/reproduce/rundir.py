@@ -47,9 +47,11 @@ class RunDir(RunHouse[RunConfig]):
         self.report_html_path = self.path / "report.html"
 
     def demonstrations_path(self, demonstrator: str) -> pathlib.Path:
+        """A demonstrator's recordings (Parquet)."""
         return self.datasets / f"demonstrations_{demonstrator}.parquet"
 
     def segments_path(self, demonstrator: str) -> pathlib.Path:
+        """A demonstrator's segments (Parquet)."""
         return self.datasets / f"segments_{demonstrator}.parquet"
 
     def attempts_path(self, experiment: str, control: str) -> pathlib.Path:
@@ -57,10 +59,13 @@ class RunDir(RunHouse[RunConfig]):
         return self.datasets / f"attempts_{experiment}_{control}.parquet"
 
     def experiment_dir(self, experiment: str) -> pathlib.Path:
+        """The folder of an experiment's trials and evaluations."""
         return self.models / "experiments" / experiment
 
     def trial_path(self, experiment: str, seed: int) -> pathlib.Path:
+        """One learning trial of an experiment."""
         return self.experiment_dir(experiment) / f"trial_{seed}.json"
 
     def evaluation_path(self, experiment: str, seed: int, control: str) -> pathlib.Path:
+        """One trained imitator's evaluation under a control (``thesis`` or ``improved``)."""
         return self.experiment_dir(experiment) / f"evaluation_{seed}_{control}.json"

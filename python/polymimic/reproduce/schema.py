@@ -1,7 +1,7 @@
 """The shape of ``results.json``, as types: what :func:`~polymimic.reproduce.results.gather`
 builds and what the report and the figures read. Shares are fractions; ``None`` stands where a
-number does not exist (a share of nothing, the sd of no trials). The README ("The results
-file") describes each key. ``MeanSd`` (a mean and its sample sd over trials, sd 0 for one
+number does not exist (a share of nothing, the sd of no trials). docs/formats.md ("Results of a
+reproduction") describes each key. ``MeanSd`` (a mean and its sample sd over trials, sd 0 for one
 trial) is the plots' own, so that the summaries go to the bar charts as they are.
 """
 

@@ -64,6 +64,7 @@ class Context:
     quiet: bool = False
 
     def say(self, message: str) -> None:
+        """Prints a stage message to stderr, unless quiet."""
         if not self.quiet:
             print(message, file=sys.stderr)
 

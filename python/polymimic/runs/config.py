@@ -325,10 +325,12 @@ class RunConfig:
     @classmethod
     def from_toml(cls, text: str, *, base: RunConfig | None = None,
                   base_dir: str | os.PathLike[str] = ".") -> RunConfig:
+        """A config from TOML text laid over ``base``; paths in it are read from ``base_dir``."""
         return cls.from_dict(toml_tables(text), base=base, base_dir=base_dir)
 
     @classmethod
     def load(cls, path: str | os.PathLike[str], *, base: RunConfig | None = None) -> RunConfig:
+        """A config from a TOML file laid over ``base``; paths in it are read from the file's folder."""
         folder = os.path.dirname(os.path.abspath(path))
         return read_config(path, lambda text: cls.from_toml(text, base=base, base_dir=folder))
 
@@ -363,6 +365,7 @@ def read_config(path: str | os.PathLike[str], parse: Callable[[str], Loaded]) ->
 
 
 def as_table(section: str, value: Any) -> dict[str, Any]:
+    """``value`` if it is a table (a dict), else a ``ConfigError`` naming ``[section]``."""
     if not isinstance(value, dict):
         raise ConfigError(f"[{section}] must be a table, got {value!r}")
     return value

@@ -37,6 +37,7 @@ def json_object(path: str | os.PathLike[str], what: str) -> dict[str, Any]:
 
 
 def integer_key(data: dict[str, Any], key: str, where: str, low: int, high: int | None = None) -> int:
+    """``data[key]`` if it is an integer in ``low..high``, else a ``ModelFileError`` naming ``where``."""
     value = data.get(key)
     if type(value) is not int or value < low or (high is not None and value > high):
         span = f"{low}..{high}" if high is not None else f"at least {low}"
@@ -45,6 +46,7 @@ def integer_key(data: dict[str, Any], key: str, where: str, low: int, high: int 
 
 
 def name_key(data: dict[str, Any], key: str, where: str, allowed: tuple[str, ...] | None = None) -> str:
+    """``data[key]`` if it is a string (one of ``allowed``), else a ``ModelFileError`` naming ``where``."""
     value = data.get(key)
     if not isinstance(value, str) or (allowed is not None and value not in allowed):
         expected = f"one of {', '.join(allowed)}" if allowed else "a string"

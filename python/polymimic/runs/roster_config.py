@@ -1,4 +1,4 @@
-"""The roster a run config adds to the thesis's (SPEC §6.4): bodies, demonstrators and
+"""The roster a run config adds to the thesis's (docs/guides/own-data.md): bodies, demonstrators and
 experiments of your own, as TOML tables, recorded, segmented, learned from, evaluated and
 reported like the thesis's.
 

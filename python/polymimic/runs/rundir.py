@@ -210,6 +210,15 @@ class RunHouse(Generic[ConfigT]):
         return config
 
     def manifest(self) -> dict[str, Any]:
+        """The run's ``manifest.json``.
+
+        Raises
+        ------
+        MissingInputError
+            If the folder is not a run directory.
+        RunError
+            If the manifest cannot be read.
+        """
         try:
             data = json.loads(self.manifest_path.read_text(encoding="utf-8"))
         except FileNotFoundError:
@@ -236,11 +245,13 @@ class RunHouse(Generic[ConfigT]):
         return manifest
 
     def stage_started(self, stage: str, **details: Any) -> None:
+        """Records in the manifest that ``stage`` started now, with ``details``."""
         manifest = self.manifest()
         manifest["stages"][stage] = {"started": _now(), "finished": None, **details}
         self._write(manifest)
 
     def stage_finished(self, stage: str, seconds: float, **details: Any) -> None:
+        """Records in the manifest that ``stage`` finished now, after ``seconds``, with ``details``."""
         manifest = self.manifest()
         entry = manifest["stages"].setdefault(stage, {})
         entry.update(finished=_now(), seconds=round(seconds, 3), **details)

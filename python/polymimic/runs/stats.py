@@ -30,6 +30,7 @@ def pct(share: float | None, digits: int = 1) -> str:
 
 
 def num(value: float | None, digits: int = 1) -> str:
+    """``value`` with ``digits`` decimals, or an em dash for None."""
     return "—" if value is None else f"{value:.{digits}f}"
 
 

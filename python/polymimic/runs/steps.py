@@ -51,6 +51,7 @@ class Stepped:
     quiet: bool
 
     def say(self, message: str) -> None:
+        """Prints a stage message to stderr, unless quiet."""
         if not self.quiet:
             print(message, file=sys.stderr)
 

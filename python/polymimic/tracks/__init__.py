@@ -1,11 +1,13 @@
 """Tracker logs: your own overhead tracker's readings imported as demonstrations, and
-demonstrations written as tracker logs (SPEC §6.4).
+demonstrations written as tracker logs (docs/guides/own-data.md).
 
 A log is a CSV or Parquet table, one row per reading: time, the robot's x, y and heading, the
 ball's x and y, and optionally the episode, its outcome, the command sent and the field
 configuration. Units and column names are declared on import; readings are resampled to
 polymimic's 30 frames a second.
 
+Examples
+--------
 >>> import pathlib, tempfile, polymimic
 >>> log = pathlib.Path(tempfile.mkdtemp()) / "tiny.parquet"
 >>> write_tracks(polymimic.record("tiny", configuration=2, n=2, seed=4), log, rate_hz=50, include=())

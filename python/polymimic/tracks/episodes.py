@@ -5,7 +5,7 @@ between two attempts: a gap of more than :data:`EPISODE_GAP_S` between readings,
 the ball moving more than :data:`RESET_SHARE` of the field's length from one reading to the next
 (a reset: at 30 readings a second that would be over 7 m/s on the large field). Inside an
 episode, a stretch of NaN readings, or no reading for more than :data:`LOST_PERIODS` nominal
-periods, is lost tracking: the episode is invalid (SPEC §3.2.1).
+periods, is lost tracking: the episode is invalid (thesis §3.2.1).
 
 Real trackers drop frames, so a longest gap may be given instead (``max_gap_s``,
 :func:`bridged_gaps`): a gap (a pause, or a run of readings with a NaN, the robot's or the

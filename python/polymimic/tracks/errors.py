@@ -11,4 +11,4 @@ class TrackLogError(ValueError):
 
 
 class LostTrackingWarning(UserWarning):
-    """Some episodes of a log were not imported: tracking was lost in them (SPEC §3.2.1)."""
+    """Some episodes of a log were not imported: tracking was lost in them (thesis §3.2.1)."""

@@ -120,6 +120,8 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
         as far as a reset, are not bridged: there no gap over 0.5 s is bridged, whatever
         ``max_gap_s``. By default a pause of up to three periods is bridged, a NaN reading never.
 
+    Notes
+    -----
     Episodes are the log's episode ids in order, or, without an episode column, cut where the
     log pauses for more than 0.5 s or the robot or ball jumps more than a quarter of the field's
     length between two readings (:mod:`polymimic.tracks.episodes`). Each episode is resampled to

@@ -44,6 +44,7 @@ class Log:
 
     @property
     def n_rows(self) -> int:
+        """Readings in the log."""
         return len(self.measured["t"])
 
     def where(self, row: int, name: str | None = None) -> str:

@@ -17,7 +17,7 @@ use crate::error::FieldParamError;
 use crate::geometry::{FieldGeometry, FieldSize};
 use crate::math::Rng;
 
-/// The robots of the thesis, and wheeled robots described as data (SPEC §6.4).
+/// The robots of the thesis, and wheeled robots described as data (docs/guides/own-data.md).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub enum BodyKind {
     /// The Lego Mindstorms two-wheeled robot: the imitator, and the Expert and Poor demonstrators.

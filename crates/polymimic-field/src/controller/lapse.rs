@@ -1,4 +1,4 @@
-//! Lapses (SPEC §6.1): a demonstrator of known, graded skill. At the start of every second,
+//! Lapses (docs/guides/crowd.md): a demonstrator of known, graded skill. At the start of every second,
 //! with probability ε, the demonstrator spends that second on one uniformly random imitator
 //! primitive instead of its controller's commands; the controller is still asked every frame,
 //! so that its clocks and its view of the ball stay current when it takes over again.

@@ -151,11 +151,13 @@ impl PyModelResult {
         Ok(Self::wrap(record))
     }
 
+    /// The demonstrator the model represents (`"imitator"` for the imitator's own).
     #[getter]
     fn name(&self) -> &str {
         &self.record.name
     }
 
+    /// The final learning preference, in [0, 1] under the default bounds (the imitator's is fixed).
     #[getter]
     fn lp(&self) -> f64 {
         self.record.lp
@@ -167,46 +169,57 @@ impl PyModelResult {
         self.record.lp_history.clone()
     }
 
+    /// Share of prediction rounds in which the model's prediction matched the demonstration
+    /// (thesis Tables 4.7 and 4.10), in [0, 1].
     #[getter]
     fn match_rate(&self) -> f64 {
         self.record.match_rate
     }
 
+    /// Behaviours the model created over the trial (thesis Figs. 4.7 and 4.19).
     #[getter]
     fn created(&self) -> u64 {
         self.record.created
     }
 
+    /// Behaviours the model deleted over the trial (thesis Figs. 4.8 and 4.20).
     #[getter]
     fn deleted(&self) -> u64 {
         self.record.deleted
     }
 
+    /// Behaviours permanent in the model at the end of the trial (thesis Figs. 4.9 and 4.21).
     #[getter]
     fn permanent(&self) -> u64 {
         self.record.permanent
     }
 
+    /// Candidate behaviours moved from this model to the imitator's (thesis Figs. 4.10 and 4.22).
     #[getter]
     fn candidates(&self) -> u64 {
         self.record.candidates
     }
 
+    /// Candidates not moved because the imitator's model already held them (thesis Figs. 4.11
+    /// and 4.23).
     #[getter]
     fn duplicates(&self) -> u64 {
         self.record.duplicates
     }
 
+    /// Moved candidates that became permanent in the imitator's model (thesis Figs. 4.12 and 4.24).
     #[getter]
     fn candidates_permanent(&self) -> u64 {
         self.record.candidates_permanent
     }
 
+    /// Prediction rounds the model took part in.
     #[getter]
     fn rounds(&self) -> u64 {
         self.record.rounds
     }
 
+    /// Prediction rounds in which its prediction matched (`match_rate` = this / `rounds`).
     #[getter]
     fn rounds_matched(&self) -> u64 {
         self.record.rounds_matched
@@ -354,11 +367,13 @@ impl PyTrialResult {
         self.models_dict(py)
     }
 
+    /// The imitator's own model's record (a `ModelResult`).
     #[getter]
     fn imitator(&self) -> PyModelResult {
         PyModelResult::wrap(self.record.imitator.clone())
     }
 
+    /// The trial's seed: the trial depends on it alone.
     #[getter]
     fn seed(&self) -> u64 {
         self.record.seed

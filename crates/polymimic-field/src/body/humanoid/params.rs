@@ -87,7 +87,7 @@ pub struct HumanoidParams {
 }
 
 /// The Bioloid-like humanoid, its turn, sway, foot placement and lineup calibrated against the
-/// thesis's own numbers (`benches/calibrate_thesis_world.py`, its best world rounded): it turns
+/// thesis's own numbers (`studies/which_world_matches_the_thesis.py`, its best world rounded): it turns
 /// about a stance foot 20 mm to the side, places its kicking foot only roughly and swings it
 /// slowly, and walks only roughly behind the ball before side-stepping the rest of the way.
 pub const HUMANOID: HumanoidParams = HumanoidParams {

@@ -1,7 +1,7 @@
 """Calibrate the simulated world against the thesis's own numbers: search the tracker's noise and
 the humanoid's constants together (Optuna, TPE sampler, seeded) for the world in which a
 reproduction measures most nearly what the thesis published. Run:
-``python benches/calibrate_thesis_world.py [--hours 2] [--trials N]`` (``pip install optuna``
+``python studies/which_world_matches_the_thesis.py [--hours 2] [--trials N]`` (``pip install optuna``
 first; it is not a dependency of polymimic). Linux or macOS.
 
 Each trial writes a run config (the sizes ``--size`` names, the trial's ``[field.tracker]`` and
@@ -102,7 +102,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 PRESETS = {"tracker_table_3_1": ROOT / "docs/configs/tracker_table_3_1.toml",
            "humanoid_thesis_like": ROOT / "docs/configs/humanoid_thesis_like.toml"}
 WORLD_BEFORE_CALIBRATION = ROOT / "docs/configs/world_before_calibration.toml"
-DEFAULT_LOG = ROOT / "benches/calibration/thesis_world.jsonl"
+DEFAULT_LOG = ROOT / "studies/calibration/thesis_world.jsonl"
 DEFAULT_BEST = ROOT / "docs/configs/thesis_world.toml"
 STUDY = "thesis_world"
 DISTANCE_VERSION = 1
@@ -427,7 +427,7 @@ def best_toml(trial: Any, *, size: str, storage: str, command: str, path: pathli
     about = (f"The simulated world calibrated against the thesis's own numbers: the tracker's noise and the "
              f"humanoid's constants searched together (Optuna TPE) for the reproduction whose Table 3.1, Table 4.5, "
              f"Table 4.7 and Figs 4.7-4.18 lie nearest the thesis's (the distance is defined in "
-             f"benches/calibrate_thesis_world.py). The best trial so far of the study {STUDY!r} in {storage}: "
+             f"studies/which_world_matches_the_thesis.py). The best trial so far of the study {STUDY!r} in {storage}: "
              f"trial {trial.number}, measured at size {size!r} with the run config's default seeds, "
              f"{terms_text(trial.value, trial.user_attrs['terms'])}.")
     lines = [f"# {line}" for line in textwrap.wrap(about, 96)]

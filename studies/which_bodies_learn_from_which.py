@@ -9,7 +9,7 @@ imitator plays the same 50 evaluation attempts (seed 1000) under the thesis's co
 improved one. The humanoid takes no primitives: each is sent as the command that executes it
 (``polymimic.field.primitive_command``). Prints one JSON line per (imitator, demonstrator):
 goals and own goals under each control.
-Run: ``python benches/imitator_bodies.py [--demonstrations 25] [--self-observation 200]``.
+Run: ``python studies/which_bodies_learn_from_which.py [--demonstrations 25] [--self-observation 200]``.
 """
 
 import argparse

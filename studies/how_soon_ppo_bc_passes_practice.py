@@ -6,7 +6,7 @@ profile of a run made without it.
 
 Prints one JSON line: the cloning chosen, every candidate's validation score, and the curve.
 Needs stable-baselines3 (``pip install "polymimic[rl]"``). Run:
-``python benches/ppo_bc_curve.py RUN_DIR --profile one_good [--timesteps 1000000] [--seed 0]``.
+``python studies/how_soon_ppo_bc_passes_practice.py RUN_DIR --profile one_good [--timesteps 1000000] [--seed 0]``.
 """
 
 import argparse

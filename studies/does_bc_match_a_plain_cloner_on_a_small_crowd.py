@@ -1,11 +1,12 @@
-"""``bc`` beside the plain cloner of ``benches/plain_cloner_vs_bc.py`` on a small mixed-body
+"""``bc`` beside the plain cloner of ``studies/does_bc_match_a_plain_cloner.py`` on a small mixed-body
 crowd recorded here; ``tests/library/test_bc_vs_plain_cloner.py`` keeps it in the suite.
 
 The crowd is ``mixed_bodies`` with 3 demonstrations per member and configuration (crowd seed
 0). Both methods take at most 3000 decision samples and are chosen on the same 40 validation
 attempts (the plain cloner its step length, ``bc`` the benchmark's 6 candidates), then fitted
 under seeds 0, 1 and 2 and played on the same 50 evaluation attempts (seed 1000). Prints both
-methods' net goals per fit and ``bc``'s choice. Run: ``python benches/plain_cloner_small_crowd.py``.
+methods' net goals per fit and ``bc``'s choice. Run:
+``python studies/does_bc_match_a_plain_cloner_on_a_small_crowd.py``.
 """
 
 import importlib.util
@@ -22,8 +23,8 @@ FITS, MAX_SAMPLES, EVALUATION_SEED, BUDGET = (0, 1, 2), 3000, 1000, 6
 
 
 def plain_cloner():
-    path = pathlib.Path(__file__).with_name("plain_cloner_vs_bc.py")
-    spec = importlib.util.spec_from_file_location("plain_cloner_vs_bc", path)
+    path = pathlib.Path(__file__).with_name("does_bc_match_a_plain_cloner.py")
+    spec = importlib.util.spec_from_file_location("does_bc_match_a_plain_cloner", path)
     assert spec is not None and spec.loader is not None
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)

@@ -8,7 +8,7 @@ and three ways with the demonstrations' first frames: those of the imitator's ow
 (the rule), every demonstration's, and none. Each fit plays the run's evaluation attempts.
 Prints one JSON line per profile and way: net goals per fit. A crowd of the imitator's body
 alone gives the same samples the first two ways. Run:
-``python benches/bc_first_frames.py RUN_DIR [--profiles one_good half] [--fits 8]``.
+``python studies/whose_first_frames_bc_should_take.py RUN_DIR [--profiles one_good half] [--fits 8]``.
 """
 
 import os

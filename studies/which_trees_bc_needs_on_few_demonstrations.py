@@ -1,6 +1,6 @@
 """Which boosted trees ``bc`` needs to clone as well as the plain cloner on few demonstrations.
 
-On the small mixed-body crowd of ``benches/plain_cloner_small_crowd.py`` (three demonstrations
+On the small mixed-body crowd of ``studies/does_bc_match_a_plain_cloner_on_a_small_crowd.py`` (three demonstrations
 per member and configuration, at most 3000 decision samples), ``bc``'s decision samples are
 fitted under seeds 0 to 7 by three boosted-tree classifiers, each played at ten frames a step on
 the same 50 evaluation attempts: histogram boosting with seven leaves of at least 20 samples
@@ -8,7 +8,7 @@ the same 50 evaluation attempts: histogram boosting with seven leaves of at leas
 (``PLAIN_BOOSTING`` now), and scikit-learn's ``GradientBoostingClassifier`` with its defaults
 (what the plain cloner fits). The plain cloner's own fits under the same seeds are printed
 first. Prints one JSON line per way: net goals per fit, their mean and sd.
-Run: ``python benches/bc_boosting_leaves.py``.
+Run: ``python studies/which_trees_bc_needs_on_few_demonstrations.py``.
 """
 
 import os
@@ -21,7 +21,7 @@ import statistics  # noqa: E402
 
 from sklearn.ensemble import GradientBoostingClassifier  # noqa: E402
 
-import plain_cloner_small_crowd as bench  # noqa: E402
+import does_bc_match_a_plain_cloner_on_a_small_crowd as bench  # noqa: E402
 from polymimic.baselines.classifiers import SmallBatchBoosting  # noqa: E402
 from polymimic.baselines.evaluation import attempts_of  # noqa: E402
 from polymimic.baselines.features import features  # noqa: E402

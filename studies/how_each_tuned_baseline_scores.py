@@ -1,5 +1,5 @@
-"""Every baseline of SPEC §6.2 tuned on validation attempts, then evaluated on the imitator's
-50 attempts (25 per configuration).
+"""Every baseline of the benchmark (docs/results/benchmark.md) tuned on validation attempts, then
+evaluated on the imitator's 50 attempts (25 per configuration).
 
 The demonstrations are the Expert's 50 (25 per configuration), or with ``--mix`` the Expert's
 and the Poor's (100); ``bc_best`` clones the Expert alone, and ``bco_lp`` weighs each member by
@@ -8,7 +8,7 @@ interleaved). Every method gets ``--budget`` candidates, scored on ``--validatio
 per configuration under validation seed ``--validation-seed`` (disjoint from the evaluation's
 by construction: see ``polymimic.baselines.tuning``). Prints one JSON object per method: its
 chosen hyperparameters, its validation scores, and its goals and own goals on evaluation.
-Run: ``python benches/baselines_tuned.py [--mix]``.
+Run: ``python studies/how_each_tuned_baseline_scores.py [--mix]``.
 
 Measured on a shared two-core node (budget 12, 10 validation attempts per configuration,
 validation seed 0; goals / own goals over the 50 evaluation attempts, configuration 1 + 2):

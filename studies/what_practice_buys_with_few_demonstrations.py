@@ -4,7 +4,7 @@ scored on 50 evaluation attempts at every default checkpoint.
 
 Prints one line per trial: the demonstrator, n, the trial's seed and its curve
 ``[(checkpoint, net goals), …]``. Run:
-``python benches/practice_few_demonstrations.py [--who expert] [--n 10] [--steps 10000]``.
+``python studies/what_practice_buys_with_few_demonstrations.py [--who expert] [--n 10] [--steps 10000]``.
 """
 
 import argparse

@@ -9,7 +9,7 @@ Lego, the Tiny controller on the tiny, the Humanoid controller) and each of ``--
 25 demonstrations per configuration (seed 100 + t) teach one trial (seed t) on the imitator's
 setting, and the improved control plays the same 50 evaluation attempts (seed 1000). Prints one
 JSON line per (imitator, demonstrator): net goals per trial under each rule.
-Run: ``python benches/field_correspondence.py [--trials 3]`` (about 30 s a trial).
+Run: ``python studies/what_the_reach_correspondence_buys.py [--trials 3]`` (about 30 s a trial).
 """
 
 import argparse

@@ -3,7 +3,7 @@ trials of each profile practise for ``--steps`` environment steps (practice seed
 seed) and are scored at every default checkpoint on the run's evaluation attempts.
 
 Prints one JSON line per profile: the mean net goals at each checkpoint over the trials, and
-each trial's curve. Run: ``python benches/practice_curve.py RUN_DIR [--trials 5] [--steps 25000]``.
+each trial's curve. Run: ``python studies/what_practice_buys.py RUN_DIR [--trials 5] [--steps 25000]``.
 """
 
 import argparse

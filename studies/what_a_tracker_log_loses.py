@@ -2,7 +2,7 @@
 rates (polymimic.write_tracks), imported back (polymimic.import_tracks, outcomes derived from the
 field), and compared frame by frame with the originals; then the recogniser's segments of the
 Expert's imported demonstrations against those of the originals. Run:
-``python benches/tracks_round_trip.py [--per-case 8]``.
+``python studies/what_a_tracker_log_loses.py [--per-case 8]``.
 
 Every demonstrator, both configurations, and lapses 0 and 0.9 (for outcomes other than goals);
 errors are the largest over all frames (positions in mm; headings in degrees along the shorter

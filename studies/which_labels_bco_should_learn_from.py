@@ -13,7 +13,7 @@ learned from the imitator's exploration (:mod:`polymimic.baselines.inverse_dynam
 
 The recogniser is the full benchmark's (1000 self-observed sequences a primitive, 512
 codewords, its seeds), the segmenter's settings the benchmark's. Prints one JSON line per
-measurement. Run: ``python benches/bco_labellers.py [--profiles linear] [--n 3] [--fits 3]
+measurement. Run: ``python studies/which_labels_bco_should_learn_from.py [--profiles linear] [--n 3] [--fits 3]
 [--budget 4] [--max-samples 6000]``.
 """
 

@@ -8,7 +8,7 @@ onto another), with at most the benchmark's number of decision samples, drawn wi
 seed. Its step length is chosen on the benchmark's validation attempts. It then plays the
 benchmark's evaluation attempts once per fit seed. The script prints one JSON line per profile:
 the plain cloner's net goals per seed and ``bc``'s, as the run's ``evaluation_bc_*.json`` has
-them. Run: ``python benches/plain_cloner_vs_bc.py RUN_DIR [--profiles mixed_bodies] [--fits 3]``.
+them. Run: ``python studies/does_bc_match_a_plain_cloner.py RUN_DIR [--profiles mixed_bodies] [--fits 3]``.
 
 Measured on the full benchmark's run (default seeds and sizes), net goals per fit seed 0, 1, 2:
 the plain cloner netted 3, 5, 11 on ``one_good``; 6, 6, 2 on ``half``; 18, 19, 18 on ``equal``;
@@ -94,7 +94,7 @@ def chosen_step(demonstrations, validation, *, max_samples: int, field_config=No
 
 
 def main() -> None:
-    # Here, not at the top: this file is also loaded by path, where benches/ is not importable.
+    # Here, not at the top: this file is also loaded by path, where studies/ is not importable.
     from _benchmark_run import arguments, opened
 
     args = arguments(__doc__, fits=3)

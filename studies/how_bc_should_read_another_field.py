@@ -18,7 +18,7 @@ attempts. The ways:
 
 Kicks are labelled ``backward`` (as they look from above, Table 4.4) or ``forward`` (what
 ``bc`` does). Prints one JSON line per way and label: net goals, goals and own goals per fit.
-Run: ``python benches/bc_field_mapping.py RUN_DIR [--profile mixed_bodies] [--fits 10]``.
+Run: ``python studies/how_bc_should_read_another_field.py RUN_DIR [--profile mixed_bodies] [--fits 10]``.
 """
 
 import os

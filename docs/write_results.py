@@ -1,0 +1,297 @@
+"""Writes the results pages' main tables, and the README's summary of them, from the result files
+committed under ``docs/results/``.
+
+Each table sits in its page between ``<!-- table:NAME -->`` and ``<!-- /table:NAME -->``; this
+script rewrites what lies between from the files, so every number of those tables has one
+source. ``docs/results/provenance.json`` says, for each file, the command that made it, the
+world it was measured in and the machine. ``tests/test_results_pages.py`` fails when a page's
+table is not what this script writes. Run::
+
+    python docs/write_results.py            # rewrite the tables
+    python docs/write_results.py --check    # exit 1 if a page is stale
+
+A table whose result file is not committed yet is left as it is (and said so by ``--check``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import pathlib
+import re
+import sys
+from collections.abc import Callable
+from typing import Any
+
+DOCS = pathlib.Path(__file__).resolve().parent
+RESULTS = DOCS / "results"
+
+
+def load(name: str) -> dict[str, Any] | None:
+    """A committed result file, or None if it is not there."""
+    path = RESULTS / name
+    return json.loads(path.read_text()) if path.is_file() else None
+
+
+def provenance(name: str) -> dict[str, str]:
+    """The command, world and machine of a result file."""
+    entry: dict[str, str] = json.loads((RESULTS / "provenance.json").read_text())[name]
+    return entry
+
+
+def measured_by(*names: str) -> str:
+    """The line under a table: where each of its files comes from."""
+    parts = []
+    for name in names:
+        p = provenance(name)
+        parts.append(f"`docs/results/{name}`: `{p['command']}`, {p['world']}, on {p['machine']}")
+    return "Written by `docs/write_results.py` from " + "; ".join(parts) + "."
+
+
+def signed(value: float, digits: int) -> str:
+    return f"{value:.{digits}f}".replace("-", "−")
+
+
+def percent(share: float) -> str:
+    return f"{100 * share:.1f}"
+
+
+# ---------------------------------------------------------------------------------------------
+# The thesis reproduced (results/thesis.md)
+
+THESIS_COLUMN = [
+    "−1.15° (0.57°)", "31.4 / 35.5 / 11.6 %", "2.8 %", "89.4 / 91.6 / 81.3 %", "the most / the most",
+    "the humanoid slowest", "27 / 15 / 12", "≈ 0.3 / — / ≈ 0.9", "11 / 7 / 11 (9, 13, 13)", "",
+]
+"""The thesis's own figures (thesis Tables 3.1, 4.5, 4.6, 4.7, 4.8, 4.11, Figs. 4.7–4.8,
+4.13–4.18, 4.25), as the reproduction's report sets them."""
+
+ROWS = [
+    "forward's rotation over a second, mean (sd)",
+    "segments matching the commands: Tiny / Expert / humanoid",
+    "the humanoid's gaps",
+    "prediction rounds with a match, RCB: Expert / Tiny / humanoid",
+    "behaviours the humanoid's models create / delete, RCB",
+    "LP changes to settle, RCB: Expert / Tiny / humanoid",
+    "goals in 50: Expert / Tiny / humanoid",
+    "final LP, varying skill: Poor / Average / Expert",
+    "improved imitators' goals: RCB / BCR / varying skill (own goals)",
+    "shape checks that hold",
+]
+
+
+def shape_checks(results: dict[str, Any]) -> str:
+    """How many of the report's shape checks hold, as the report counts them."""
+    from polymimic.reproduce.report import render
+
+    found = re.search(r"Shape checks: (\d+) of (\d+) hold", render(results, {}))
+    assert found is not None, "the report counts its shape checks"
+    return f"{found.group(1)} of {found.group(2)}"
+
+
+def reproduction_column(r: dict[str, Any]) -> list[str]:
+    """One world's column of the reproduction table."""
+    forward = r["primitive_stats"]["forward"]
+    seg = r["segments"]
+    rcb = r["experiments"]["heterogeneous_rcb"]
+    who = ("expert", "tiny", "humanoid")
+    behaviours = rcb["behaviours"]
+    imitators = [r["experiments"][e]["imitator"] for e in ("heterogeneous_rcb", "heterogeneous_bcr", "varying_skill")]
+    own = [i["own_goals"] for i in imitators]
+    own_text = "0" if not any(own) else ", ".join(f"{o:.1f}" for o in own)
+    lp = r["experiments"]["varying_skill"]["final_lp"]
+    return [
+        f"{signed(forward['rotation_mean_deg'], 2)}° ({forward['rotation_sd_deg']:.2f}°)",
+        " / ".join(percent(seg[d]["command_match"]) for d in ("tiny", "expert", "humanoid")) + " %",
+        f"{percent(seg['humanoid']['gaps'])} % of {seg['humanoid']['segments']}",
+        " / ".join(percent(rcb["match_rate"][d]["mean"]) for d in who) + " %",
+        f"{behaviours['humanoid']['created']['mean']:.1f} / {behaviours['humanoid']['deleted']['mean']:.1f} "
+        f"(the Expert's {behaviours['expert']['created']['mean']:.1f} / {behaviours['expert']['deleted']['mean']:.1f})",
+        " / ".join(f"{rcb['lp_climb'][d]['changes']['mean']:.0f}" for d in who),
+        " / ".join(str(r["demonstrators"][d]["goals"]) for d in who),
+        " / ".join(f"{lp[d]['mean']:.2f}" for d in ("poor", "average", "expert")),
+        " / ".join(f"{i['goals']:.1f}" for i in imitators) + f" ({own_text})",
+        shape_checks(r),
+    ]
+
+
+def reproduction_table() -> str | None:
+    default, before = load("results.json"), load("results_before_calibration.json")
+    if default is None or before is None:
+        return None
+    rows = zip(ROWS, reproduction_column(before), reproduction_column(default), THESIS_COLUMN)
+    lines = ["| | before the calibration | the default world | thesis |", "| --- | --- | --- | --- |"]
+    lines += [f"| {label} | {b} | {d} | {t} |" for label, b, d, t in rows]
+    return "\n".join(lines) + "\n\n" + measured_by("results.json", "results_before_calibration.json")
+
+
+# ---------------------------------------------------------------------------------------------
+# The matrix (results/matrix.md)
+
+COLUMNS = ("expert", "tiny", "humanoid", "own_body", "mixed_bodies")
+HEADINGS = ("expert", "tiny", "humanoid", "own body", "mixed bodies")
+
+
+def matrix_table(method: str) -> str | None:
+    matrix = load("matrix.json")
+    if matrix is None:
+        return None
+    lines = ["| imitator | " + " | ".join(HEADINGS) + " |", "| --- " * (len(COLUMNS) + 1) + "|"]
+    for row, cells in matrix["cells"].items():
+        entries = []
+        for column in COLUMNS:
+            cell = cells[column]
+            net = cell[method]["net_goals"]
+            ratio = cell["transfer"][method]
+            text = f"{net['mean']:.1f} ({net['sd']:.1f})"
+            entries.append(text if ratio is None else f"{text} ×{ratio:.2f}")
+        lines.append(f"| {row} | " + " | ".join(entries) + " |")
+    return "\n".join(lines) + "\n\n" + measured_by("matrix.json")
+
+
+# ---------------------------------------------------------------------------------------------
+# The benchmark (results/benchmark.md)
+
+PROFILES = ("one_good", "half", "equal", "linear", "mixed_bodies")
+METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
+           "bc", "bc_best", "random")
+
+
+def benchmark_table() -> str | None:
+    benchmark = load("benchmark.json")
+    if benchmark is None:
+        return None
+    profiles = benchmark["profiles"]
+    lines = ["| method | " + " | ".join(PROFILES) + " |", "| --- " * (len(PROFILES) + 1) + "|"]
+    for method in METHODS:
+        cells = []
+        for profile in PROFILES:
+            m = profiles[profile]["methods"].get(method)
+            if m is None:
+                cells.append("—")
+                continue
+            cells.append(f"{m['net_goals']['mean']:.1f} ± {m['net_goals']['sd']:.1f} "
+                         f"({m['goals']['mean']:.1f} / {m['own_goals']['mean']:.1f})")
+        lines.append(f"| `{method}` | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
+
+
+def practice_table() -> str | None:
+    benchmark = load("benchmark.json")
+    if benchmark is None:
+        return None
+    first = next(p["practice"] for p in benchmark["profiles"].values() if p.get("practice"))
+    header = ["0 steps" if c == 0 else f"{c:,}".replace(",", " ") for c in first["checkpoints"]]
+    lines = ["| profile | " + " | ".join(header) + " |", "| --- " * (len(header) + 1) + "|"]
+    for profile in PROFILES:
+        practice = benchmark["profiles"][profile]["practice"]
+        lines.append(f"| {profile} | " + " | ".join(f"{p['mean']:.1f} ({p['sd']:.1f})" for p in practice["net_goals"])
+                     + " |")
+    return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
+
+
+def benchmark_summary() -> str | None:
+    """The README's table: net goals alone, mean ± sd, every method and profile."""
+    benchmark = load("benchmark.json")
+    if benchmark is None:
+        return None
+    profiles = benchmark["profiles"]
+    lines = ["| method | " + " | ".join(PROFILES) + " |", "| --- " * (len(PROFILES) + 1) + "|"]
+    for method in METHODS:
+        cells = [f"{m['net_goals']['mean']:.1f} ± {m['net_goals']['sd']:.1f}" if m else "—"
+                 for m in (profiles[p]["methods"].get(method) for p in PROFILES)]
+        lines.append(f"| `{method}` | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
+
+
+WHEELED_FROM_OTHER = {"lego": "tiny", "tiny": "expert", "wagon": "expert"}
+"""Each wheeled learner and the other wheeled body's built-in demonstrator it learns from."""
+
+
+def matrix_summary() -> str | None:
+    """The README's line on the matrix."""
+    matrix = load("matrix.json")
+    if matrix is None:
+        return None
+    cells = matrix["cells"]
+    transfers = [cells[row][column]["transfer"]["polymimic"] for row, column in WHEELED_FROM_OTHER.items()
+                 if row in cells]
+    beaten = [(row, column) for row, columns in cells.items() for column, cell in columns.items()
+              if cell["polymimic"]["net_goals"]["mean"] <= cell["bco"]["net_goals"]["mean"]]
+    rows = ", ".join(cells)
+    lead = ("polymimic nets more than `bco` in every cell" if not beaten
+            else f"polymimic nets more than `bco` in all but {len(beaten)} of the cells")
+    made = provenance("matrix.json")
+    return (f"**Who learns from whom** (`{made['command']}`, {made['world']}): "
+            f"each wheeled imitator learns from another wheeled body's demonstrator at least "
+            f"{min(transfers):.2f} × as well as from its own body, and {lead} ({rows} learning from the "
+            "Expert, the Tiny, the Humanoid, their own body and the `mixed_bodies` crowd; "
+            "[the matrix](docs/results/matrix.md)).")
+
+
+def thesis_summary() -> str | None:
+    """The README's line on the reproduction."""
+    results = load("results.json")
+    if results is None:
+        return None
+    goals = [results["experiments"][e]["imitator"] for e in ("heterogeneous_rcb", "heterogeneous_bcr", "varying_skill")]
+    own = "without an own goal" if not any(g["own_goals"] for g in goals) else "with own goals"
+    made = provenance("results.json")
+    return (f"**The thesis side by side** (`{made['command']}`): the report's shape checks hold, "
+            f"{shape_checks(results)}, in {made['world']}, calibrated against the "
+            f"thesis's own numbers; the improved imitators score {min(g['goals'] for g in goals):.1f} to "
+            f"{max(g['goals'] for g in goals):.1f} goals of 50 {own}, where the thesis's scored 7 to 11 "
+            "([the thesis side by side](docs/results/thesis.md)).")
+
+
+TABLES: dict[str, tuple[str, Callable[[], str | None]]] = {
+    "reproduction": ("results/thesis.md", reproduction_table),
+    "matrix_polymimic": ("results/matrix.md", lambda: matrix_table("polymimic")),
+    "matrix_bco": ("results/matrix.md", lambda: matrix_table("bco")),
+    "benchmark": ("results/benchmark.md", benchmark_table),
+    "practice": ("results/practice.md", practice_table),
+}
+"""Each table's name, the page it sits in, and what writes it."""
+
+
+def marked(name: str) -> re.Pattern[str]:
+    return re.compile(rf"(<!-- table:{name} -->\n)(.*?)(\n<!-- /table:{name} -->)", re.S)
+
+
+def page_with_table(name: str) -> tuple[pathlib.Path, str, str | None]:
+    """The page, its text, and its text with the table rewritten (None: no result file yet)."""
+    page, write = TABLES[name]
+    path = DOCS / page
+    text = path.read_text()
+    pattern = marked(name)
+    if not pattern.search(text):
+        raise SystemExit(f"{page} has no <!-- table:{name} --> marks")
+    table = write()
+    if table is None:
+        return path, text, None
+    return path, text, pattern.sub(lambda m: m.group(1) + table + m.group(3), text)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--check", action="store_true", help="exit 1 if a page is not what the files give")
+    parser.add_argument("--tables", nargs="+", choices=sorted(TABLES), default=list(TABLES), help="only these")
+    args = parser.parse_args(argv)
+    stale = []
+    for name in args.tables:
+        path, text, new = page_with_table(name)
+        if new is None:
+            print(f"{name}: no result file committed yet; {path.name} left as it is")
+        elif new != text:
+            stale.append(name)
+            if not args.check:
+                path.write_text(new)
+                print(f"{name}: written to {path.name}")
+    if args.check and stale:
+        print("stale: " + ", ".join(stale), file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -54,7 +54,7 @@ def test_practise_names_its_methods_and_refuses_others(teacher):
 
     taught = practise(teacher, method="jsrl", steps=300, evaluation_attempts=1)
     assert [p.checkpoint for p in taught.curve][-1] == 300 and taught.attempts == []
-    with pytest.raises(ValueError, match="unknown practice method 'rl'; expected one of refine, explore, jsrl"):
+    with pytest.raises(ValueError, match="unknown practice method 'rl'; expected one of refine, explore, jsrl, distil"):
         practise(teacher, method="rl", steps=10)
 
 
@@ -77,3 +77,15 @@ def test_the_practised_policy_saves_loads_and_plays_through_evaluate_predict_and
     with pytest.raises(polymimic.ModelFileError, match="not a practised policy"):
         PractisedPolicy.load(tmp_path / "bad.zip")
 
+
+
+def test_distilling_clones_the_teacher_then_fine_tunes_within_the_budget(teacher):
+    from polymimic.practice.distil import distil
+
+    taught = distil(teacher, steps=700, checkpoints=[0, 300, 700], evaluation_attempts=2, dagger_rounds=1,
+                    dagger_steps=300, warmup_steps=200, n_steps=64, batch_size=32)
+    alone = evaluate(teacher, attempts_per_configuration=2)
+    # Before the actor first clones it, the practised policy is the teacher itself.
+    assert taught.curve[0].net_goals == alone.goals - alone.own_goals
+    assert [(p.checkpoint, p.steps) for p in taught.curve] == [(0, 0), (300, 300), (700, 700)]
+    assert taught.policy.handover == 0 and taught.policy.method == "distil"

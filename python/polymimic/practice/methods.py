@@ -7,6 +7,9 @@
   (:mod:`polymimic.practice.exploring`).
 - ``jsrl``: it guides an RL learner by jump-start RL (:func:`polymimic.practice.teacher.jsrl`;
   needs the ``rl`` extra).
+- ``distil``: it is distilled into an RL actor by DAgger, whose critic warms up before PPO
+  fine-tunes it with the teacher's term annealed (:func:`polymimic.practice.distil.distil`;
+  needs the ``rl`` extra).
 """
 
 from __future__ import annotations
@@ -18,7 +21,7 @@ from polymimic.practice.loop import Practice, practice
 
 __all__ = ["EXPLORE_RATE", "METHODS", "practise"]
 
-METHODS = ("refine", "explore", "jsrl")
+METHODS = ("refine", "explore", "jsrl", "distil")
 EXPLORE_RATE = 0.3
 """``explore``'s rate of random primitives with the ball near."""
 
@@ -33,13 +36,15 @@ def practise(policy: ImitatorPolicy, *, method: str = "refine", steps: int, seed
     own (``attempts`` empty)."""
     if method not in METHODS:
         raise ValueError(f"unknown practice method {method!r}; expected one of {', '.join(METHODS)}")
-    if method == "jsrl":
+    if method in ("jsrl", "distil"):
         from polymimic.practice.curve import DEFAULT_CHECKPOINTS
+        from polymimic.practice.distil import distil
         from polymimic.practice.teacher import jsrl
 
         marks = [c for c in DEFAULT_CHECKPOINTS if c < steps] + [steps]
-        taught = jsrl(policy, steps=steps, seed=seed, checkpoints=marks, evaluation_seed=evaluation_seed,
-                      evaluation_attempts=evaluation_attempts, field_config=field_config)
+        taught = (jsrl if method == "jsrl" else distil)(
+            policy, steps=steps, seed=seed, checkpoints=marks, evaluation_seed=evaluation_seed,
+            evaluation_attempts=evaluation_attempts, field_config=field_config)
         return Practice(policy=taught.policy, curve=taught.curve, steps=taught.steps, attempts=[], attempts_lost=0)
     explore = EXPLORE_RATE if method == "explore" else 0.0
     return practice(policy, steps=steps, seed=seed, evaluation_seed=evaluation_seed,

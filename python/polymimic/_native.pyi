@@ -537,8 +537,9 @@ class EpisodeBatch:
     def body(self) -> str:
         """The name of the body every slot drives."""
     def __len__(self) -> int: ...
-    def reset(self, index: int, *, configuration: int, seed: int) -> None:
-        """Starts slot `index` afresh from `configuration` (1 or 2) with episode `seed`."""
+    def reset(
+        self, index: int, *, configuration: int | None = None, seed: int, start: int | Mapping[str, Any] | None = None
+    ) -> None: ...
     def step(
         self, actions: list[int]
     ) -> tuple[npt.NDArray[np.float32], npt.NDArray[np.float64], npt.NDArray[np.int8], npt.NDArray[np.bool_]]:
@@ -560,18 +561,18 @@ class Episode:
     robot x, y, θ, ball x, y, command), millimetres, radians and seconds.
     """
     def __new__(
-        cls, body: _Body = "lego", *, configuration: int | None = 1, seed: int = 0, config: str | None = None
+        cls,
+        body: _Body = "lego",
+        *,
+        configuration: int | None = 1,
+        seed: int = 0,
+        config: str | None = None,
+        start: int | Mapping[str, Any] | None = None,
     ) -> Episode: ...
-    def step(self, command: str | int) -> tuple[npt.NDArray[np.float64], str | None]:
-        """Sends one command for one tracker frame; returns the frame recorded and the outcome
-        (None while the episode goes on). `command` is a primitive name, a command name or id.
-        """
-    def run(self, commands: list[str | int]) -> tuple[npt.NDArray[np.float64], str | None]:
-        """Sends a whole list of commands (one per frame) in Rust with the GIL released, stopping
-        early if the episode ends; returns the frames recorded and the outcome.
-        """
-    def place_robot(self, x_mm: float, y_mm: float, theta_rad: float) -> None:
-        """Puts the robot at a pose (the experimenter's hand)."""
+    def command_for(self, primitive: str) -> str: ...
+    def step(self, command: str | int) -> tuple[npt.NDArray[np.float64], str | None]: ...
+    def run(self, commands: list[str | int]) -> tuple[npt.NDArray[np.float64], str | None]: ...
+    def place_robot(self, x_mm: float, y_mm: float, theta_rad: float) -> None: ...
     @property
     def frames(self) -> npt.NDArray[np.float64]:
         """Every frame so far, `(k, 7)`."""
@@ -996,6 +997,24 @@ def body_reach_mm(body: _Body, *, imitating: bool = False) -> float: ...
 def lp_order_hits(trials: Sequence[TrialResult], order: Sequence[str]) -> int: ...
 def spare_attempts(per_configuration: int) -> int: ...
 
+@final
+class ImitatorPlayer:
+    def reset(
+        self,
+        episode: Mapping[str, Any] | None = None,
+        *,
+        start: int | Mapping[str, Any] | None = None,
+        seed: int | None = None,
+    ) -> None: ...
+    def act(self, reading: Reading | Sequence[float] | npt.NDArray[np.float64]) -> str: ...
+    def decide(
+        self, robot_x_mm: float, robot_y_mm: float, robot_theta_rad: float, ball_x_mm: float, ball_y_mm: float
+    ) -> int: ...
+    @property
+    def executed(self) -> list[str]: ...
+    @property
+    def episode(self) -> dict[str, Any]: ...
+
 @disjoint_base
 class ImitatorPolicy:
     """The imitator's final model driving ``body`` (default the Lego robot) on that body's field.
@@ -1039,9 +1058,15 @@ class ImitatorPolicy:
         new policy.
         """
     def evaluate(
-        self, attempts_per_configuration: int, *, seed: int = 0, field_config: str | None = None
-    ) -> list[dict[str, Any]]:
-        """Attempts from each configuration; one dict per attempt with `frames`, `outcome`,
-        `configuration`, `seed` and the `behaviours` executed.
-        """
+        self,
+        attempts_per_configuration: int,
+        *,
+        seed: int = 0,
+        field_config: str | None = None,
+        starts: Sequence[int | Mapping[str, Any]] | None = None,
+    ) -> list[dict[str, Any]]: ...
+    def record(
+        self, *, configuration: int, n: int, seed: int = 0, field_config: str | None = None
+    ) -> list[dict[str, Any]]: ...
+    def player(self) -> ImitatorPlayer: ...
     def __len__(self) -> int: ...

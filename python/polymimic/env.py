@@ -1,8 +1,8 @@
 """The penalty kick as a Gymnasium environment, so standard imitation and RL tools can play it.
 
 The imitator (the Lego robot, or the ``body`` given) faces the ball in configuration 1 or 2 of
-its field, and each action is one of its five primitives. Importing this module registers ``PenaltyKick-v0`` when
-Gymnasium is installed (``pip install "polymimic[gym]"``);
+its field, or at a start of one's own, and each action is one of its own primitives. Importing
+this module registers ``PenaltyKick-v0`` when Gymnasium is installed (``pip install "polymimic[gym]"``);
 ``gymnasium.make("polymimic.env:PenaltyKick-v0")`` imports it and makes the environment in one
 call.
 
@@ -10,9 +10,12 @@ call.
   ball x mm, ball y mm]`` as float32, in field coordinates (origin at the centre, +x toward the
   target goal). During a tracking dropout the last good reading is repeated, as the field's
   own controllers see it.
-- **Action**: ``Discrete(5)``: 0 forward, 1 backward, 2 left, 3 right, 4 stop (on the
-  humanoid, which takes no primitives, the command that executes it:
-  :func:`polymimic.field.primitive_command`).
+- **Action**: the body's own primitive set, :data:`polymimic.field.PRIMITIVE_SETS`: on a
+  wheeled body ``Discrete(5)``, 0 forward, 1 backward, 2 left, 3 right, 4 stop; on the
+  humanoid ``Discrete(8)``, the same five as the walks, turns and waiting that execute them
+  (:func:`polymimic.field.primitive_command`), then 5 side-step left, 6 side-step right and
+  7 kick, with the foot on the side of the ball the robot sees, as the imitator's control
+  kicks.
 - **Step**: one primitive held for one second (30 tracker frames, via ``Episode.run``), as the
   thesis's imitator executes primitives (§3.1.1); the motors' lag carries motion from one step
   into the next. ``frames_per_action`` changes it.
@@ -20,8 +23,13 @@ call.
 - **End**: ``terminated`` when the ball crosses a line (goal, own goal, out) or the robot leaves
   the field; ``truncated`` when the field's time limit (60 s, so 60 steps) runs out (outcome
   ``time_up``): the clock is not part of the observation, so by Gymnasium's convention this is
-  a truncation, not a terminal state. ``info`` holds ``t_s``, ``outcome`` (None while running)
-  and ``valid`` (False once tracking has dropped out).
+  a truncation, not a terminal state. ``info`` holds ``t_s``, ``outcome`` (None while running),
+  ``valid`` (False once tracking has dropped out) and the ``episode_seed``.
+- **Reset options**: ``configuration`` (1, 2 or ``"random"``), or a ``start`` of one's own
+  (``{"robot": (x_mm, y_mm, theta_rad), "ball": (x_mm, y_mm)}``, refused by name off the
+  field or on the robot); ``episode_seed`` fixes the episode's noise (any integer in
+  ``[0, 2**64)``, so :func:`polymimic.evaluate`'s episodes can be played here too: its
+  attempts' ``seed``), otherwise drawn from the env's generator.
 
 >>> import gymnasium
 >>> env = gymnasium.make("polymimic.env:PenaltyKick-v0")
@@ -40,9 +48,10 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from polymimic._arguments import integer
 from polymimic._native import Episode, FieldRunError
 from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, body_name, field_of, resolve
-from polymimic.field import PRIMITIVES, _field_config, primitive_command
+from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, _field_config, primitive_command
 from polymimic.plots import state_image
 
 try:
@@ -109,27 +118,38 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         self.render_mode = render_mode
         self._config = _field_config(config)
         self.body, self._body = body_name(body), resolve(body)
+        self.primitives = PRIMITIVE_SETS["humanoid" if self.body == "humanoid" else "wheeled"]
         self._commands = [primitive_command(p, self._body) for p in PRIMITIVES]
         # Fails now on a bad config, and tells the body's field.
         field_mm = Episode(self._body, configuration=1, seed=0, config=self._config).observation()["field"]
         self.observation_space = observation_space(field_mm)
-        self.action_space = spaces.Discrete(len(PRIMITIVES))
+        self.action_space = spaces.Discrete(len(self.primitives))
+        self._episode_seed = 0
         self._episode: Episode | None = None
 
     def reset(self, *, seed: int | None = None,
               options: dict[str, Any] | None = None) -> tuple[np.ndarray, dict[str, Any]]:
-        """Start a new episode: ``options={"configuration": 1, 2 or "random"}`` picks the start
-        (default: the constructor's)."""
+        """Start a new episode: ``options={"configuration": 1, 2 or "random"}`` (default: the
+        constructor's) or ``{"start": {...}}`` picks the start, ``{"episode_seed": s}`` the
+        episode's noise (see the module's documentation)."""
         super().reset(seed=seed)
         options = dict(options or {})
-        configuration = options.pop("configuration", self.configuration)
+        start = options.pop("start", None)
+        configuration = options.pop("configuration", None if start is not None else self.configuration)
+        episode_seed = options.pop("episode_seed", None)
         if options:
-            raise ValueError(f"unknown reset option(s) {', '.join(map(repr, options))}; expected 'configuration'")
-        _check_configuration(configuration)
-        if configuration == "random":
-            configuration = int(self.np_random.integers(1, 3))
-        episode_seed = int(self.np_random.integers(0, 2**63))
-        self._episode = Episode(self._body, configuration=configuration, seed=episode_seed, config=self._config)
+            raise ValueError(f"unknown reset option(s) {', '.join(map(repr, options))}; expected 'configuration', "
+                             f"'start' or 'episode_seed'")
+        if start is not None and configuration is not None:
+            raise ValueError("reset options: give 'configuration' or 'start', not both")
+        if configuration is not None:
+            _check_configuration(configuration)
+            if configuration == "random":
+                configuration = int(self.np_random.integers(1, 3))
+        drawn = int(self.np_random.integers(0, 2**63))
+        self._episode_seed = drawn if episode_seed is None else integer("episode_seed", episode_seed, 0, 2**64 - 1)
+        self._episode = Episode(self._body, configuration=configuration, seed=self._episode_seed,
+                                config=self._config, start=start)
         return self._observation(), self._info()
 
     def step(self, action: int) -> tuple[np.ndarray, float, bool, bool, dict[str, Any]]:
@@ -139,8 +159,13 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         if self._episode.finished:
             raise FieldRunError(f"the episode has ended ({self._episode.outcome}); call reset()")
         if not self.action_space.contains(action):
-            raise ValueError(f"action must be an integer in 0..4 ({', '.join(PRIMITIVES)}), got {action!r}")
-        _, outcome = self._episode.run([self._commands[int(action)]] * self.frames_per_action)
+            raise ValueError(f"action must be an integer in 0..{len(self.primitives) - 1} "
+                             f"({', '.join(self.primitives)}), got {action!r}")
+        index = int(action)
+        # Only a kick depends on what the robot sees now (which foot).
+        command = self._commands[index] if index < len(self._commands) else \
+            self._episode.command_for(self.primitives[index])
+        _, outcome = self._episode.run([command] * self.frames_per_action)
         reward = _REWARDS.get(outcome, 0.0) if outcome is not None else 0.0
         terminated = outcome is not None and outcome not in _TRUNCATING
         truncated = outcome in _TRUNCATING
@@ -162,7 +187,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
     def _info(self) -> dict[str, Any]:
         assert self._episode is not None
         return {"t_s": self._episode.observation()["t_s"], "outcome": self._episode.outcome,
-                "valid": self._episode.valid}
+                "valid": self._episode.valid, "episode_seed": self._episode_seed}
 
 
 def observation_space(field_mm: tuple[float, float] = (1020.0, 810.0)) -> Any:

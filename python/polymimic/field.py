@@ -233,10 +233,12 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
 
     Parameters
     ----------
-    demonstrator : str or policy
-        A built-in's name (one of :data:`DEMONSTRATORS`), or a Python policy of your own: a
-        callable ``policy(reading) -> command`` or an object with ``act`` (see
-        :mod:`polymimic.policies`).
+    demonstrator : str, ImitatorPolicy or policy
+        A built-in's name (one of :data:`DEMONSTRATORS`); a trained imitator (a
+        :class:`polymimic.ImitatorPolicy`, practised or not: it plays its own body, its
+        demonstrations named ``name``, ``"imitator"`` by default); or a Python policy of your
+        own: a callable ``policy(reading) -> command`` or an object with ``act`` (see
+        :mod:`polymimic.policies`; an :class:`polymimic.ImitatorPlayer` is one).
     configuration : {1, 2}
         The field configuration every episode starts from (thesis Fig. 4.4).
     n : int
@@ -307,6 +309,9 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     """
     configuration, n = integer("configuration", configuration, 1, 2), integer("n", n, 1)
     seed, lapse = integer("seed", seed, 0, 2**64 - 1), probability("lapse", lapse)
+    if isinstance(demonstrator, _native.ImitatorPolicy):
+        return _record_imitator(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse,
+                                config=config, body=body, name=name, decision_hz=decision_hz)
     if not isinstance(demonstrator, str):
         return _record_policy(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse, config=config,
                               body=body, name=name, decision_hz=decision_hz, timeout_s=timeout_s)
@@ -344,6 +349,21 @@ def _own_name(name: Any, demonstrator: str) -> str:
         raise ValueError(f"name {name!r} is another demonstrator's; the {demonstrator}'s demonstrations need a name "
                          f"of their own")
     return name
+
+
+def _record_imitator(policy: _native.ImitatorPolicy, *, configuration: int, n: int, seed: int, lapse: float,
+                     config: dict[str, Any] | str | None, body: str | WheeledBody | None, name: str | None,
+                     decision_hz: float | None) -> list[Demonstration]:
+    """A trained imitator's attempts, recorded in Rust as a demonstrator's (its own body)."""
+    if lapse != 0.0:
+        raise ValueError("lapse= is for the built-in demonstrators; an imitator plays as it learned to")
+    if decision_hz is not None:
+        raise ValueError("decision_hz= is for a Python policy; an imitator holds each primitive for a second")
+    if body is not None and body_name(body) != policy.body:
+        raise ValueError(f"body={body_name(body)!r}, but the imitator drives the {policy.body!r} body; leave body= out")
+    who = "imitator" if name is None else _own_name(name, "imitator")
+    raw = policy.record(configuration=configuration, n=n, seed=seed, field_config=_field_config(config))
+    return _demonstrations(raw, who, policy.body)
 
 
 def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse: float,

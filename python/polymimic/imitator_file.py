@@ -96,6 +96,9 @@ class PolicyInputs:
     demonstrations: SegmentedDemonstrations | None = None
     practice: SegmentedDemonstrations | None = None
     practice_weight: float = 1.0
+    practice_refines: tuple[str, ...] | None = None
+    """The world model's parts its own attempts refine (None: the ball's response and the
+    states' values)."""
 
 
 def write_policy_file(path: str | os.PathLike[str], inputs: PolicyInputs) -> None:
@@ -105,6 +108,8 @@ def write_policy_file(path: str | os.PathLike[str], inputs: PolicyInputs) -> Non
               "control": inputs.control, "body": body_name}
     if inputs.practice is not None:
         header["practice_weight"] = inputs.practice_weight
+        if inputs.practice_refines is not None:
+            header["practice_refines"] = list(inputs.practice_refines)
     # The recogniser pickles as the JSON its save writes.
     parts: dict[str, str | bytes] = {HEADER: json.dumps(header, indent=2) + "\n", TRIAL: inputs.trial.to_json(),
                                      RECOGNIZER: inputs.recognizer.__reduce__()[1][0],
@@ -158,7 +163,17 @@ def read_policy_file(path: str | os.PathLike[str]) -> PolicyInputs:
             practice = read_segments(io.BytesIO(_part(archive, PRACTICE, where)), f"{where}: {PRACTICE}")
     return PolicyInputs(trial=trial, recognizer=recognizer, config=config, control=control, body=body,
                         demonstrations=demonstrations, practice=practice,
-                        practice_weight=header.get("practice_weight", 1.0))
+                        practice_weight=header.get("practice_weight", 1.0),
+                        practice_refines=_refines(header, where))
+
+
+def _refines(header: dict[str, Any], where: str) -> tuple[str, ...] | None:
+    refines = header.get("practice_refines")
+    if refines is None:
+        return None
+    if not isinstance(refines, list) or not all(isinstance(r, str) for r in refines):
+        raise ModelFileError(f"{where}: {HEADER} has practice_refines {refines!r}; expected a list of part names")
+    return tuple(refines)
 
 
 def _header(archive: zipfile.ZipFile, where: str) -> dict[str, Any]:

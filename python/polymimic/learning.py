@@ -17,7 +17,10 @@ from __future__ import annotations
 import dataclasses
 import os
 from collections.abc import Mapping, Sequence
-from typing import Any, Union
+from typing import Any, Protocol, Union
+
+import numpy as np
+import numpy.typing as npt
 
 from polymimic import _native
 from polymimic._arguments import integer
@@ -27,6 +30,7 @@ from polymimic._toml import dumps, loads
 from polymimic.bodies import WheeledBody, body_name, pitch_of, reach_mm, resolve
 from polymimic.field import Demonstration, _field_config, as_frames, record
 from polymimic.imitator_file import PolicyInputs, read_policy_file, write_policy_file
+from polymimic.stepping import predict as predict_with
 
 __all__ = ["Demonstrations", "Evaluation", "ImitatorPolicy", "LearningConfig", "ModelResult",
            "SegmentedDemonstrations", "TrialResult", "as_segmented", "average_demonstrator", "evaluate",
@@ -277,14 +281,15 @@ class ImitatorPolicy(_native.ImitatorPolicy):
     True
     """
 
-    __slots__ = ("_made_from",)
+    __slots__ = ("_made_from", "_players")
     _made_from: PolicyInputs
+    _players: list[_native.ImitatorPlayer]
 
     def __new__(cls, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
                 config: LearningConfig | None = None, control: str = "thesis",
                 demonstrations: Demonstrations | None = None,
                 body: str | WheeledBody = "lego", practice: SegmentedDemonstrations | None = None,
-                practice_weight: float = 1.0) -> ImitatorPolicy:
+                practice_weight: float = 1.0, refines: Sequence[str] | None = None) -> ImitatorPolicy:
         batch = None
         if demonstrations is not None and control == "improved":
             batch = as_segmented(demonstrations, recognizer)
@@ -293,25 +298,59 @@ class ImitatorPolicy(_native.ImitatorPolicy):
         resolved = resolve(body)
         policy = super().__new__(cls, trial, recognizer=recognizer, config=config, control=control,
                                  demonstrations=batch, body=resolved, practice=practice,
-                                 practice_weight=practice_weight)
+                                 practice_weight=practice_weight, refines=None if refines is None else list(refines))
         policy._made_from = PolicyInputs(trial=trial, recognizer=recognizer, config=config or LearningConfig(),
                                          control=control, body=resolved, demonstrations=batch, practice=practice,
-                                         practice_weight=float(practice_weight))
+                                         practice_weight=float(practice_weight),
+                                         practice_refines=None if refines is None else tuple(refines))
+        policy._players = []
         return policy
+
+    def predict(self, observation: npt.ArrayLike, state: Sequence[_native.ImitatorPlayer] | None = None,
+                episode_start: npt.ArrayLike | None = None,
+                deterministic: bool = True) -> tuple[np.ndarray, tuple[_native.ImitatorPlayer, ...]]:
+        """stable-baselines3's ``predict`` on ``PenaltyKick-v0``'s observations, one ``(5,)`` or a
+        batch ``(n, 5)``: the primitive (an index into the body's set, the env's action) the
+        imitator runs next in each, and the players that decided (``state``: pass it back, or
+        None to use the policy's own). ``episode_start`` marks the observations that begin an
+        episode (each player then starts afresh from what it shows). The control is
+        deterministic: ``deterministic`` is accepted and has no effect. See
+        :mod:`polymimic.stepping`.
+
+        >>> import gymnasium, polymimic
+        >>> from polymimic import recognition
+        >>> recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
+        >>> demos = polymimic.record("expert", configuration=1, n=2, seed=0)
+        >>> policy = ImitatorPolicy(run_trial(demos, recognizer=recognizer, ordering=["expert"]),
+        ...                         recognizer=recognizer, control="improved", demonstrations=demos)
+        >>> env = gymnasium.make("PenaltyKick-v0")
+        >>> observation, info = env.reset(seed=0, options={"configuration": 1})
+        >>> state, done = None, False
+        >>> while not done:
+        ...     action, state = policy.predict(observation, state=state, episode_start=state is None)
+        ...     observation, reward, terminated, truncated, info = env.step(action)
+        ...     done = terminated or truncated
+        >>> info["outcome"]
+        'goal'
+        """
+        return predict_with(self, self._players, observation, state, episode_start)
 
     @property
     def made_from(self) -> PolicyInputs:
         """What the policy is made from: its constructor's arguments, demonstrations segmented."""
         return self._made_from
 
-    def practised(self, attempts: SegmentedDemonstrations, *, weight: float = 1.0) -> ImitatorPolicy:
+    def practised(self, attempts: SegmentedDemonstrations, *, weight: float = 1.0,
+                  refines: Sequence[str] | None = None) -> ImitatorPolicy:
         """This policy, its world model learned again with ``attempts`` (its own, segmented by
         its own recogniser) beside the demonstrations: what :func:`polymimic.practice` makes
-        after each round. ``weight`` is what every sample of its own attempts weighs."""
+        after each round. ``weight`` is what every sample of its own attempts weighs;
+        ``refines`` the parts they refine (``"ball_response"``, ``"state_value"``,
+        ``"push_region"``; default the first two)."""
         made = self._made_from
         return type(self)(made.trial, recognizer=made.recognizer, config=LearningConfig(**made.config.to_dict()),
                           control=made.control, demonstrations=made.demonstrations, body=made.body,
-                          practice=attempts, practice_weight=weight)
+                          practice=attempts, practice_weight=weight, refines=refines)
 
     def save(self, path: str | os.PathLike[str]) -> None:
         """Write the policy to ``path``, atomically: one zip archive of its trial, recogniser,
@@ -334,7 +373,8 @@ class ImitatorPolicy(_native.ImitatorPolicy):
             return cls(made_from.trial, recognizer=made_from.recognizer,
                        config=LearningConfig(**made_from.config.to_dict()),
                        control=made_from.control, demonstrations=made_from.demonstrations, body=made_from.body,
-                       practice=made_from.practice, practice_weight=made_from.practice_weight)
+                       practice=made_from.practice, practice_weight=made_from.practice_weight,
+                       refines=made_from.practice_refines)
         except ValueError as error:
             raise ModelFileError(f"{os.fspath(path)}: its parts make no policy ({error})") from None
 
@@ -363,32 +403,79 @@ class Evaluation:
     behaviours: list[list[str]]
 
 
-def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int = 25, seed: int = 0,
-             field_config: dict[str, Any] | str | None = None) -> Evaluation:
-    """``attempts_per_configuration`` attempts from each field configuration, in parallel, on the
-    field ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's),
-    with the policy's body; the attempts are recorded as that body's.
+class Plays(Protocol):
+    """Anything :func:`evaluate` scores: an :class:`ImitatorPolicy`, or a policy that plays
+    the same attempts as it does (a practised imitator,
+    :class:`polymimic.practice.practised.PractisedPolicy`)."""
+
+    @property
+    def body(self) -> str:
+        """The name of the body it drives."""
+
+    def evaluate(self, attempts_per_configuration: int, *, seed: int = 0, field_config: str | None = None,
+                 starts: Sequence[int | Mapping[str, Any]] | None = None) -> list[dict[str, Any]]:
+        """Its attempts as dicts (``frames``, ``outcome``, ``configuration``, ``seed``,
+        ``behaviours``), as :meth:`ImitatorPolicy.evaluate` plays them."""
+
+
+def evaluate(policy: Plays, *, attempts_per_configuration: int = 25, seed: int = 0,
+             field_config: dict[str, Any] | str | None = None,
+             starts: Sequence[int | Mapping[str, Any]] | None = None) -> Evaluation:
+    """``attempts_per_configuration`` attempts from each start, in parallel, on the field
+    ``field_config`` describes (as for :func:`polymimic.record`; default: the thesis's), with the
+    policy's body; the attempts are recorded as that body's.
+
+    ``starts`` are the thesis's field configurations ``1`` and ``2`` by default; a start of your
+    own is ``{"robot": (x_mm, y_mm, theta_rad), "ball": (x_mm, y_mm)}`` on the body's field
+    (a ``ValueError`` names one off the field or with the ball on the robot). A configuration
+    plays the same episodes whatever else is listed; the k-th chosen start's attempts have
+    episode seeds of their own, and are recorded with configuration ``0``. Each attempt is the
+    policy's :meth:`~polymimic.ImitatorPolicy.player` stepped through the field one tracker
+    reading at a time.
 
     Parameters
     ----------
-    policy : ImitatorPolicy
-        The trained imitator to play.
+    policy : ImitatorPolicy or PractisedPolicy
+        The trained imitator to play (or anything that plays as it does: :class:`Plays`).
     attempts_per_configuration : int
-        Attempts from each of the two field configurations (at least 1).
+        Attempts from each start (at least 1).
     seed : int
         The evaluation's seed, in ``[0, 2**64)``: the same seed plays the same starts and noise.
     field_config : dict or str, optional
         Field parameters laid over the default world (see :func:`polymimic.field.default_config`).
+    starts : sequence of 1, 2 or dict, optional
+        Where attempts start (default ``[1, 2]``).
 
     Returns
     -------
     Evaluation
         ``goals``, ``own_goals``, every attempt as a :class:`Demonstration`, and the behaviours
         each attempt ran.
+
+    Raises
+    ------
+    ValueError
+        For attempts below 1, a seed out of range, or a start off the body's field or with the
+        ball on the robot.
+
+    Examples
+    --------
+    >>> import polymimic
+    >>> from polymimic import recognition
+    >>> recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
+    >>> demos = polymimic.record("expert", configuration=1, n=2, seed=0)
+    >>> policy = ImitatorPolicy(run_trial(demos, recognizer=recognizer, ordering=["expert"]), recognizer=recognizer,
+    ...                         control="improved", demonstrations=demos)
+    >>> near = {"robot": (150.0, 0.0, 0.0), "ball": (300.0, 0.0)}   # close in front of the goal
+    >>> played = evaluate(policy, attempts_per_configuration=2, starts=[near], seed=1)
+    >>> [a.configuration for a in played.attempts], played.goals
+    ([0, 0], 2)
     """
     attempts_per_configuration = integer("attempts_per_configuration", attempts_per_configuration, 1)
     seed = integer("seed", seed, 0, 2**64 - 1)
-    raw = policy.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config))
+    given = None if starts is None else list(starts)
+    raw = policy.evaluate(attempts_per_configuration, seed=seed, field_config=_field_config(field_config),
+                          starts=given)
     attempts = _attempts(raw, "imitator", body=policy.body)
     return Evaluation(goals=sum(a.outcome == "goal" for a in attempts),
                       own_goals=sum(a.outcome == "own_goal" for a in attempts), attempts=attempts,
@@ -396,8 +483,9 @@ def evaluate(policy: _native.ImitatorPolicy, *, attempts_per_configuration: int 
 
 
 def _attempts(raw: list[dict[str, Any]], demonstrator: str, *, body: str = "lego") -> list[Demonstration]:
+    """Native attempts as demonstrations; an attempt from a chosen start has configuration 0."""
     return [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator=demonstrator,
-                          configuration=a["configuration"], seed=a["seed"], body=body) for a in raw]
+                          configuration=a["configuration"] or 0, seed=a["seed"], body=body) for a in raw]
 
 
 def spare_attempts(n: int) -> int:

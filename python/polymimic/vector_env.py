@@ -30,7 +30,7 @@ import numpy as np
 from polymimic._native import EpisodeBatch
 from polymimic.bodies import WheeledBody, body_name, playing_field, resolve
 from polymimic.env import _check_configuration, observation_space
-from polymimic.field import OUTCOMES, _field_config
+from polymimic.field import OUTCOMES, PRIMITIVE_SETS, _field_config
 
 try:
     import gymnasium
@@ -76,11 +76,13 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
         self.frames_per_action = int(frames_per_action)
         field = playing_field(body)
         self.single_observation_space = observation_space((field.length_mm, field.width_mm))
-        self.single_action_space = gymnasium.spaces.Discrete(5)
+        self.primitives = PRIMITIVE_SETS["humanoid" if self.body == "humanoid" else "wheeled"]
+        self.single_action_space = gymnasium.spaces.Discrete(len(self.primitives))
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
         self.action_space = batch_space(self.single_action_space, self.num_envs)
         self._generators: list[np.random.Generator | None] = [None] * self.num_envs
         self._autoreset = np.zeros(self.num_envs, dtype=np.bool_)
+        self._episode_seeds = np.zeros(self.num_envs, dtype=np.int64)
         self._started = False
 
     def reset(self, *, seed: int | Sequence[int | None] | None = None,
@@ -131,7 +133,9 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
         assert generator is not None
         if configuration == "random":
             configuration = int(generator.integers(1, 3))
-        self._batch.reset(index, configuration=int(configuration), seed=int(generator.integers(0, 2**63)))
+        episode_seed = int(generator.integers(0, 2**63))
+        self._episode_seeds[index] = episode_seed
+        self._batch.reset(index, configuration=int(configuration), seed=episode_seed)
 
     def _seeds(self, seed: int | Sequence[int | None] | None) -> list[int | None]:
         if seed is None:
@@ -155,13 +159,14 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
         return mask
 
     def _actions(self, actions: Any) -> np.ndarray:
-        array = np.asarray(actions)
+        array, last = np.asarray(actions), len(self.primitives) - 1
         if array.shape != (self.num_envs,) or not np.issubdtype(array.dtype, np.integer):
-            raise ValueError(f"actions must be {self.num_envs} integers in 0..4 (one per sub-environment), got "
+            raise ValueError(f"actions must be {self.num_envs} integers in 0..{last} (one per sub-environment), got "
                              f"shape {array.shape} of {array.dtype}")
-        bad = np.flatnonzero((array < 0) | (array > 4))
+        bad = np.flatnonzero((array < 0) | (array > last))
         if len(bad):
-            raise ValueError(f"actions[{bad[0]}] = {array[bad[0]]}: an action is an integer in 0..4")
+            raise ValueError(f"actions[{bad[0]}] = {array[bad[0]]}: an action is an integer in 0..{last} "
+                             f"({', '.join(self.primitives)})")
         return array.astype(np.int64)
 
     def _infos(self, t_s: np.ndarray, outcomes: np.ndarray, valid: np.ndarray,
@@ -172,5 +177,6 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
         names = np.array([None, *OUTCOMES], dtype=object)[outcomes + 1]
         return {"t_s": np.where(given, t_s, 0.0), "_t_s": given.copy(),
                 "outcome": np.where(given, names, None), "_outcome": given.copy(),
-                "valid": np.where(given, valid, False), "_valid": given.copy()}
+                "valid": np.where(given, valid, False), "_valid": given.copy(),
+                "episode_seed": np.where(given, self._episode_seeds, 0), "_episode_seed": given.copy()}
 

@@ -21,7 +21,9 @@ def test_make_with_the_module_prefix_registers_it():
     env = gymnasium.make(f"polymimic.env:{ENV_ID}", configuration=2)
     observation, info = env.reset(seed=0)
     assert observation.shape == (5,) and observation.dtype == np.float32
+    seed = info.pop("episode_seed")
     assert info == {"t_s": 0.0, "outcome": None, "valid": True}
+    assert isinstance(seed, int) and 0 <= seed < 2**63
 
 
 def play(env, seed, configuration):

@@ -6,10 +6,10 @@
 use rayon::prelude::*;
 
 use crate::body::BodyKind;
-use crate::controller::primitive_command;
+use crate::controller::{primitive_command, primitive_command_seeing};
 use crate::episode::Episode;
 use crate::error::{FieldError, FieldParamError};
-use crate::setup::{Configuration, EpisodeSetup, FieldConfig};
+use crate::setup::{Configuration, EpisodeSetup, FieldConfig, Start};
 use polymimic_types::Primitive;
 
 /// A fixed number of episode slots, each empty or holding an episode.
@@ -68,14 +68,27 @@ impl EpisodeBatch {
     /// # Errors
     /// A slot out of range.
     pub fn reset(&mut self, index: usize, configuration: Configuration, seed: u64) -> Result<(), FieldError> {
+        let setup = EpisodeSetup::configuration(self.body, configuration, &self.config);
+        self.place(index, &setup, seed)
+    }
+
+    /// [`Self::reset`] from a chosen start.
+    ///
+    /// # Errors
+    /// A slot out of range, or a start the body cannot play from (see [`Start::check`]).
+    pub fn reset_at(&mut self, index: usize, start: Start, seed: u64) -> Result<(), FieldError> {
+        let setup = EpisodeSetup::starting(self.body, start, &self.config)?;
+        self.place(index, &setup, seed)
+    }
+
+    fn place(&mut self, index: usize, setup: &EpisodeSetup, seed: u64) -> Result<(), FieldError> {
         let n = self.episodes.len();
         let slot = self.episodes.get_mut(index).ok_or(FieldParamError::OutOfRange {
             name: "index",
             value: index as f64,
             expected: if n == 1 { "0, the batch's one slot" } else { "a slot of the batch, from 0" },
         })?;
-        let setup = EpisodeSetup::configuration(self.body, configuration, &self.config);
-        *slot = Some(Episode::new(&setup, &self.config, seed)?);
+        *slot = Some(Episode::new(setup, &self.config, seed)?);
         Ok(())
     }
 
@@ -100,8 +113,13 @@ impl EpisodeBatch {
         let (frames, body) = (self.frames_per_action, self.body);
         self.episodes.par_iter_mut().zip(actions.par_iter()).enumerate().try_for_each(|(index, (slot, &action))| {
             let Some(action) = action else { return Ok(()) };
-            let command = primitive_command(action, body);
             let episode = slot.as_mut().ok_or(FieldError::NotStarted { index })?;
+            // A kick is the foot on the ball's side, as the robot sees it now.
+            let command = if action == Primitive::Kick {
+                primitive_command_seeing(action, &episode.observation())
+            } else {
+                primitive_command(action, body)
+            };
             for frame in 0..frames {
                 if frame > 0 && episode.is_finished() {
                     break;

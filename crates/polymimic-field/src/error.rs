@@ -51,6 +51,20 @@ pub enum FieldParamError {
         /// Body name.
         body: &'static str,
     },
+    /// A start puts the ball on (under) the robot.
+    #[error(
+        "the ball at ({x_mm:.1}, {y_mm:.1}) mm overlaps the {body} robot by {overlap_mm:.1} mm: start it clear of the robot's footprint"
+    )]
+    BallUnderRobot {
+        /// Ball x, mm.
+        x_mm: f64,
+        /// Ball y, mm.
+        y_mm: f64,
+        /// Body name.
+        body: &'static str,
+        /// How far the ball reaches into the footprint, mm.
+        overlap_mm: f64,
+    },
     /// A pose or ball position lies outside the field.
     #[error("{what} at ({x_mm:.1}, {y_mm:.1}) mm is outside the field")]
     OutsideField {

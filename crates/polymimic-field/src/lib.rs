@@ -79,6 +79,6 @@ pub use record::{
     PrimitiveSequence, run_controller, self_observation, self_observation_batch, self_observation_of,
     self_observation_of_set,
 };
-pub use setup::{Configuration, EpisodeSetup, FieldConfig};
+pub use setup::{Configuration, EpisodeSetup, FieldConfig, Start};
 pub use stats::{THESIS_TABLE_3_1, primitive_motion, primitive_stats, table_3_1_row};
 pub use tracker::{FRAME_DT_S, FRAME_RATE_HZ, Frame, TrackerConfig};

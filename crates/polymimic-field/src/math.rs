@@ -2,6 +2,7 @@
 //! the system libm behind `f64::sin`), seed derivation and Gaussian draws. Angles wrap with
 //! `polymimic_types::wrap_angle_rad`.
 
+use polymimic_types::Point;
 pub use polymimic_types::wrap_angle_rad;
 use rand::{RngExt, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -58,6 +59,14 @@ pub(crate) type Rng = ChaCha8Rng;
 
 pub(crate) fn rng(seed: u64, stream: u64) -> Rng {
     ChaCha8Rng::seed_from_u64(derive_seed(seed, stream, 0))
+}
+
+/// Distance, mm, from `p` (in the box's frame) to the box of half-sides `half_x_mm` and
+/// `half_y_mm` centred at the origin; 0 inside it.
+pub(crate) fn dist_to_box_mm(p: Point, half_x_mm: f64, half_y_mm: f64) -> f64 {
+    let dx = (p.x_mm().abs() - half_x_mm).max(0.0);
+    let dy = (p.y_mm().abs() - half_y_mm).max(0.0);
+    libm::hypot(dx, dy)
 }
 
 /// Uniform in [0, 1).

@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 use crate::body::{BodyKind, HUMANOID, HumanoidParams};
 use crate::error::{FieldParamError, check_counts, check_range};
 use crate::geometry::FieldGeometry;
+use crate::math::dist_to_box_mm;
 use crate::physics::BallParams;
 use crate::tracker::TrackerConfig;
 
@@ -119,6 +120,53 @@ impl Configuration {
     }
 }
 
+/// Where an attempt starts: the robot's pose and the ball's position on the body's field.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Start {
+    /// The robot's pose, mm and rad.
+    pub robot: Pose,
+    /// The ball's position, mm.
+    pub ball: Point,
+}
+
+impl Start {
+    /// The start of `configuration` on `body`'s field (Fig 4.4).
+    #[must_use]
+    pub fn of(configuration: Configuration, body: BodyKind) -> Self {
+        let (robot, ball) = configuration.start(&body.field());
+        Self { robot, ball }
+    }
+
+    /// Check that this start can be played by `body`: both on its field, finite, and the ball
+    /// clear of the robot's footprint.
+    ///
+    /// # Errors
+    /// `OutsideField` for a robot or ball off the field (or not finite); `BallUnderRobot` for
+    /// a ball that overlaps the robot.
+    pub fn check(&self, body: BodyKind) -> Result<(), FieldParamError> {
+        let field = body.field();
+        for (what, p, finite) in
+            [("robot", self.robot.point(), self.robot.is_finite()), ("ball", self.ball, self.ball.is_finite())]
+        {
+            if !(finite && field.contains(p)) {
+                return Err(FieldParamError::OutsideField { what, x_mm: p.x_mm(), y_mm: p.y_mm() });
+            }
+        }
+        let (length_mm, width_mm) = body.footprint_mm();
+        let clearance_mm = dist_to_box_mm(self.robot.robot_from_field(self.ball), length_mm / 2.0, width_mm / 2.0)
+            - field.ball_diameter_mm / 2.0;
+        if clearance_mm < 0.0 {
+            return Err(FieldParamError::BallUnderRobot {
+                x_mm: self.ball.x_mm(),
+                y_mm: self.ball.y_mm(),
+                body: body.name(),
+                overlap_mm: -clearance_mm,
+            });
+        }
+        Ok(())
+    }
+}
+
 /// Where an episode starts and when it ends.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct EpisodeSetup {
@@ -139,6 +187,15 @@ impl EpisodeSetup {
         let field = body.field();
         let (robot, ball) = configuration.start(&field);
         Self { body, robot, ball: Some(ball), time_limit_s: config.time_limit_s }
+    }
+
+    /// A chosen start on the body's own field, with the config's time limit.
+    ///
+    /// # Errors
+    /// As [`Start::check`].
+    pub fn starting(body: BodyKind, start: Start, config: &FieldConfig) -> Result<Self, FieldParamError> {
+        start.check(body)?;
+        Ok(Self { body, robot: start.robot, ball: Some(start.ball), time_limit_s: config.time_limit_s })
     }
 
     /// The robot alone at the centre facing +x, without a time limit (self-observation).
@@ -165,6 +222,42 @@ mod tests {
         let s = FieldGeometry::of(FieldSize::Small);
         let (r, _) = Configuration::One.start(&s);
         assert!((r.x_mm() + 560.0 / 6.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_chosen_start_is_refused_off_the_field_or_on_the_robot() {
+        let config = FieldConfig::default();
+        let body = BodyKind::Lego;
+        let at = |x, y, bx, by| Start { robot: Pose::new(x, y, 0.0), ball: Point::new(bx, by) };
+        let fine = EpisodeSetup::starting(body, at(0.0, 0.0, 200.0, 100.0), &config).expect("plays");
+        assert_eq!((fine.robot, fine.ball), (Pose::new(0.0, 0.0, 0.0), Some(Point::new(200.0, 100.0))));
+        assert!(matches!(
+            EpisodeSetup::starting(body, at(600.0, 0.0, 0.0, 0.0), &config),
+            Err(FieldParamError::OutsideField { what: "robot", .. })
+        ));
+        assert!(matches!(
+            EpisodeSetup::starting(body, at(0.0, 0.0, 0.0, -500.0), &config),
+            Err(FieldParamError::OutsideField { what: "ball", .. })
+        ));
+        assert!(matches!(
+            EpisodeSetup::starting(body, at(f64::NAN, 0.0, 0.0, 100.0), &config),
+            Err(FieldParamError::OutsideField { what: "robot", .. })
+        ));
+        // The ball's edge inside the footprint (half its length ahead, less than a radius on).
+        let (length_mm, _) = body.footprint_mm();
+        let e = EpisodeSetup::starting(body, at(0.0, 0.0, length_mm / 2.0 + 40.0, 0.0), &config);
+        assert!(
+            matches!(e, Err(FieldParamError::BallUnderRobot { overlap_mm, .. }) if (overlap_mm - 10.0).abs() < 1e-9)
+        );
+        assert!(EpisodeSetup::starting(body, at(0.0, 0.0, length_mm / 2.0 + 50.0, 0.0), &config).is_ok());
+        // The two configurations are starts like any other.
+        for c in Configuration::ALL {
+            let start = Start::of(c, body);
+            assert_eq!(
+                EpisodeSetup::starting(body, start, &config).expect("plays"),
+                EpisodeSetup::configuration(body, c, &config)
+            );
+        }
     }
 
     #[test]

@@ -103,7 +103,7 @@ impl AverageSearch<'_> {
             let valid: Vec<Attempt> = Configuration::ALL
                 .iter()
                 .flat_map(|&c| {
-                    let of_c = attempts.iter().filter(move |a| a.configuration == c);
+                    let of_c = attempts.iter().filter(move |a| a.configuration == Some(c));
                     of_c.filter(|a| tracked_throughout(&a.frames)).take(n).cloned()
                 })
                 .collect();

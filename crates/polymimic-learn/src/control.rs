@@ -8,11 +8,10 @@
 //! primitive by primitive, stopping early if the next primitive would take the robot off the
 //! field.
 
-use polymimic_field::controller::{primitive_command, primitive_command_seeing};
 use polymimic_field::{
-    BodyKind, Configuration, Episode, EpisodeSetup, FieldConfig, FieldError, Frame, Outcome, derive_seed,
+    BodyKind, Configuration, Episode, EpisodeSetup, FieldConfig, FieldError, Frame, Outcome, Start, derive_seed,
 };
-use polymimic_types::{Primitive, TrackedFrame};
+use polymimic_types::{Point, Primitive, TrackedFrame};
 use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
@@ -26,13 +25,13 @@ use crate::shaping::approach_shaping;
 use crate::state::{Pitch, ball_to_goal_mm, robot_to_ball_mm};
 use crate::world::WorldModel;
 
-/// Tracker frames one primitive is held for.
-const FRAMES_PER_PRIMITIVE: usize = 30;
-
 /// One attempt of the imitator at the penalty kick.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Attempt {
-    pub configuration: Configuration,
+    /// The thesis's configuration it started from, if it did.
+    pub configuration: Option<Configuration>,
+    /// Where it started.
+    pub start: Start,
     pub seed: u64,
     pub outcome: Outcome,
     pub frames: Vec<Frame>,
@@ -65,6 +64,7 @@ pub enum ControlMode {
 
 /// The imitator's model with what it needs to predict, and the body it drives (on that body's
 /// field: [`Self::pitch`]).
+#[derive(Clone, Copy)]
 pub struct ImitatorPolicy<'a> {
     pub model: &'a ForwardModel,
     pub motion: &'a MotionTable,
@@ -134,7 +134,7 @@ impl ImitatorPolicy<'_> {
     /// behaviour predicts a goal, or no route is known): the first primitive of the behaviour
     /// whose predicted outcome rates best. Elsewhere: the next primitive of the route there.
     /// `None` if every behaviour would leave the field at once.
-    fn choose_primitive(&self, tree: &PrefixTree, state: &TrackedFrame) -> Option<Primitive> {
+    pub(crate) fn choose_primitive(&self, tree: &PrefixTree, state: &TrackedFrame) -> Option<Primitive> {
         let behaviours = &self.model.behaviours;
         let ratings = self.outcomes(tree, state);
         let (rating, best) =
@@ -271,58 +271,51 @@ impl Rating {
     }
 }
 
-fn tracked(episode: &Episode, last_ball: &mut (f64, f64)) -> TrackedFrame {
-    let seen = episode.observation();
-    if let Some(ball) = seen.ball {
-        *last_ball = (ball.x_mm(), ball.y_mm());
-    }
-    TrackedFrame { robot: seen.robot, ball_x_mm: last_ball.0, ball_y_mm: last_ball.1 }
-}
-
 impl ImitatorPolicy<'_> {
     /// One attempt from `configuration` with the imitator's body (a primitive runs as
-    /// [`primitive_command`] has the body execute it).
+    /// [`primitive_command`](polymimic_field::controller::primitive_command) has the body
+    /// execute it).
     ///
     /// # Errors
     /// A field configuration that does not validate.
     pub fn attempt(&self, configuration: Configuration, field: &FieldConfig, seed: u64) -> Result<Attempt, FieldError> {
         let setup = EpisodeSetup::configuration(self.body, configuration, field);
-        let mut episode = Episode::new(&setup, field, seed)?;
-        let mut rng = ChaCha8Rng::seed_from_u64(derive_seed(seed, 7, 0));
-        let mut last_ball = setup.ball.map_or((0.0, 0.0), |b| (b.x_mm(), b.y_mm()));
-        let mut executed = Vec::new();
-        // Only the improved mode chains every behaviour at each decision.
-        let tree = (self.mode == ControlMode::Improved)
-            .then(|| PrefixTree::new(self.model.behaviours.iter().map(|b| b.primitives.as_slice())));
+        self.attempt_from(&setup, Some(configuration), field, seed)
+    }
+
+    /// One attempt from a chosen `start` (see [`Start::check`]).
+    ///
+    /// # Errors
+    /// A start the body cannot play from, or a field configuration that does not validate.
+    pub fn attempt_at(&self, start: Start, field: &FieldConfig, seed: u64) -> Result<Attempt, FieldError> {
+        let setup = EpisodeSetup::starting(self.body, start, field)?;
+        self.attempt_from(&setup, None, field, seed)
+    }
+
+    /// The player stepped through the field from `setup`, one tracker reading at a time.
+    fn attempt_from(
+        &self,
+        setup: &EpisodeSetup,
+        configuration: Option<Configuration>,
+        field: &FieldConfig,
+        seed: u64,
+    ) -> Result<Attempt, FieldError> {
+        let mut episode = Episode::new(setup, field, seed)?;
+        let start = Start { robot: setup.robot, ball: setup.ball.unwrap_or(Point::new(0.0, 0.0)) };
+        let mut stepping = self.start(&start, seed);
         while !episode.is_finished() {
-            let state = tracked(&episode, &mut last_ball);
-            if let Some(tree) = &tree {
-                let primitive = self.choose_primitive(tree, &state).unwrap_or(Primitive::Stop);
-                executed.push(primitive.letter().to_string());
-                run_primitive(&mut episode, primitive, self.body)?;
-                continue;
-            }
-            let Some(index) = self.choose(&state, &mut rng) else {
-                // Nothing can move without leaving the field: wait a second.
-                run_primitive(&mut episode, Primitive::Stop, self.body)?;
-                continue;
-            };
-            let behaviour = &self.model.behaviours[index];
-            executed.push(behaviour.letters());
-            for (k, &primitive) in behaviour.primitives.iter().enumerate() {
-                if episode.is_finished() {
-                    break;
-                }
-                let now = tracked(&episode, &mut last_ball).robot;
-                let next = self.motion.step(now, primitive, f64::INFINITY, &mut rng);
-                if k > 0 && !self.pitch().contains(next.x_mm(), next.y_mm()) {
-                    break;
-                }
-                run_primitive(&mut episode, primitive, self.body)?;
-            }
+            let command = self.act(&mut stepping, &episode.observation());
+            episode.step(command)?;
         }
         let outcome = episode.outcome().unwrap_or(Outcome::TimeUp);
-        Ok(Attempt { configuration, seed, outcome, frames: episode.into_frames(), behaviours: executed })
+        Ok(Attempt {
+            configuration,
+            start,
+            seed,
+            outcome,
+            frames: episode.into_frames(),
+            behaviours: stepping.into_executed(),
+        })
     }
 
     /// `attempts_per_configuration` attempts from each configuration, in parallel; attempt i
@@ -336,9 +329,68 @@ impl ImitatorPolicy<'_> {
         field: &FieldConfig,
         seed: u64,
     ) -> Result<Vec<Attempt>, FieldError> {
-        let jobs = attempt_seeds(attempts_per_configuration, seed);
-        jobs.par_iter().map(|&(configuration, s)| self.attempt(configuration, field, s)).collect()
+        let named = [StartAt::Configuration(Configuration::One), StartAt::Configuration(Configuration::Two)];
+        self.evaluate_from(&named, attempts_per_configuration, field, seed)
     }
+
+    /// `attempts_per_start` attempts from each of `starts`, in parallel, in order; a named
+    /// configuration's attempts run with the seeds [`Self::evaluate`] gives it, the k-th chosen
+    /// start's with seeds of their own (see [`start_attempt_seeds`]).
+    ///
+    /// # Errors
+    /// A chosen start the body cannot play from, or a field configuration that does not
+    /// validate.
+    pub fn evaluate_from(
+        &self,
+        starts: &[StartAt],
+        attempts_per_start: usize,
+        field: &FieldConfig,
+        seed: u64,
+    ) -> Result<Vec<Attempt>, FieldError> {
+        for start in starts {
+            if let StartAt::Chosen(start) = start {
+                start.check(self.body)?;
+            }
+        }
+        let jobs = start_attempt_seeds(starts, attempts_per_start, seed);
+        jobs.par_iter()
+            .map(|&(start, s)| match start {
+                StartAt::Configuration(configuration) => self.attempt(configuration, field, s),
+                StartAt::Chosen(start) => self.attempt_at(start, field, s),
+            })
+            .collect()
+    }
+}
+
+/// Where an evaluated attempt starts: one of the thesis's two configurations, or a start of
+/// one's own.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum StartAt {
+    /// Configuration 1 or 2 (Fig 4.4) on the body's field.
+    Configuration(Configuration),
+    /// A chosen robot pose and ball position.
+    Chosen(Start),
+}
+
+/// The start and episode seed of every attempt an evaluation from `starts` under `seed` makes,
+/// `attempts_per_start` from each in order: configuration c's attempt i with a seed derived
+/// from (`seed`, 100 + c − 1, i), as [`attempt_seeds`] gives; the k-th chosen start's (counting
+/// chosen starts only) from (`seed`, 1000 + k, i).
+#[must_use]
+pub fn start_attempt_seeds(starts: &[StartAt], attempts_per_start: usize, seed: u64) -> Vec<(StartAt, u64)> {
+    let mut chosen = 0_u64;
+    let mut jobs = Vec::with_capacity(starts.len() * attempts_per_start);
+    for &start in starts {
+        let stream = match start {
+            StartAt::Configuration(c) => 99 + u64::from(c.number()),
+            StartAt::Chosen(_) => {
+                chosen += 1;
+                999 + chosen
+            }
+        };
+        jobs.extend((0..attempts_per_start as u64).map(|i| (start, derive_seed(seed, stream, i))));
+    }
+    jobs
 }
 
 /// The configuration and episode seed of every attempt an evaluation under `seed` makes:
@@ -354,22 +406,6 @@ pub fn attempt_seeds(attempts_per_configuration: usize, seed: u64) -> Vec<(Confi
             (0..attempts_per_configuration as u64).map(move |i| (configuration, derive_seed(seed, 100 + c as u64, i)))
         })
         .collect()
-}
-
-fn run_primitive(episode: &mut Episode, primitive: Primitive, body: BodyKind) -> Result<(), FieldError> {
-    // Only a kick depends on what the robot sees: which foot.
-    let command = if primitive == Primitive::Kick {
-        primitive_command_seeing(primitive, &episode.observation())
-    } else {
-        primitive_command(primitive, body)
-    };
-    for _ in 0..FRAMES_PER_PRIMITIVE {
-        if episode.is_finished() {
-            break;
-        }
-        episode.step(command)?;
-    }
-    Ok(())
 }
 
 #[cfg(test)]

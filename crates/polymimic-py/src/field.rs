@@ -16,6 +16,8 @@ use crate::bodies::Body;
 use crate::command::parse_command;
 use crate::convert::{Seed, matrix, non_negative};
 use crate::errors::{field_error, field_param_error};
+use crate::starts::StartArg;
+use polymimic_learn::StartAt;
 
 /// Columns of the frame arrays handed to Python.
 pub const FRAME_COLUMNS: [&str; 7] =
@@ -216,16 +218,27 @@ impl PyEpisode {
 #[pymethods]
 impl PyEpisode {
     /// A new episode: `body` on the field of its size, in `configuration` 1 or 2 (or alone,
-    /// without a ball, when `configuration` is None).
+    /// without a ball, when `configuration` is None), or from a chosen `start`
+    /// (``{"robot": (x_mm, y_mm, theta_rad), "ball": (x_mm, y_mm)}``, or 1 or 2) instead.
     #[new]
-    #[pyo3(signature = (body=Body(BodyKind::Lego), *, configuration=Some(1), seed=Seed(0), config=None),
-           text_signature = "(body='lego', *, configuration=1, seed=0, config=None)")]
-    fn new(body: Body, configuration: Option<i64>, seed: Seed, config: Option<&str>) -> PyResult<Self> {
+    #[pyo3(signature = (body=Body(BodyKind::Lego), *, configuration=Some(1), seed=Seed(0), config=None, start=None),
+           text_signature = "(body='lego', *, configuration=1, seed=0, config=None, start=None)")]
+    fn new(
+        body: Body,
+        configuration: Option<i64>,
+        seed: Seed,
+        config: Option<&str>,
+        start: Option<StartArg>,
+    ) -> PyResult<Self> {
         let body = body.0;
         let config = field_config(config)?;
-        let setup = match configuration {
-            Some(number) => EpisodeSetup::configuration(body, self::configuration(number)?, &config),
-            None => EpisodeSetup::alone(body),
+        let setup = match (start, configuration) {
+            (Some(StartArg(StartAt::Chosen(start))), _) => {
+                EpisodeSetup::starting(body, start, &config).map_err(field_param_error)?
+            }
+            (Some(StartArg(StartAt::Configuration(c))), _) => EpisodeSetup::configuration(body, c, &config),
+            (None, Some(number)) => EpisodeSetup::configuration(body, self::configuration(number)?, &config),
+            (None, None) => EpisodeSetup::alone(body),
         };
         let episode = Episode::new(&setup, &config, seed.0).map_err(field_error)?;
         Ok(Self { episode: Mutex::new(episode) })
@@ -272,6 +285,22 @@ impl PyEpisode {
             })
             .map_err(field_error)?;
         Ok((frames_array(py, &frames)?, outcome.map(polymimic_field::Outcome::name)))
+    }
+
+    /// The command that runs `primitive` (a name of the body's primitive set) on this body now:
+    /// on the humanoid a kick is the foot on the side of the ball it sees.
+    fn command_for(&self, primitive: &str) -> PyResult<&'static str> {
+        let seen = self.with(|e| e.observation());
+        let set = seen.body.primitive_set();
+        let Some(p) = Primitive::from_name(primitive).filter(|p| set.contains(*p)) else {
+            let names: Vec<&str> = set.primitives().iter().map(|p| p.name()).collect();
+            return Err(PyValueError::new_err(format!(
+                "unknown primitive {primitive:?} for the {} body; expected one of {}",
+                seen.body.name(),
+                names.join(", ")
+            )));
+        };
+        Ok(polymimic_field::controller::primitive_command_seeing(p, &seen).name())
     }
 
     /// Puts the robot at a pose (the experimenter's hand).

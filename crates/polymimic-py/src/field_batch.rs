@@ -8,6 +8,8 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
 use crate::bodies::Body;
+use crate::starts::StartArg;
+use polymimic_learn::StartAt;
 use crate::convert::{matrix, non_negative};
 use crate::errors::field_error;
 use crate::field::{configuration, field_config};
@@ -67,25 +69,42 @@ impl PyEpisodeBatch {
         self.with(|b| b.len())
     }
 
-    /// Starts slot `index` afresh from `configuration` (1 or 2) with episode `seed`.
-    #[pyo3(signature = (index, *, configuration, seed))]
-    fn reset(&self, index: i64, configuration: i64, seed: u64) -> PyResult<()> {
-        let (index, configuration) = (non_negative("index", index)?, self::configuration(configuration)?);
-        self.with(|b| b.reset(index, configuration, seed)).map_err(field_error)
+    /// Starts slot `index` afresh from `configuration` (1 or 2), or from a chosen `start`
+    /// (``{"robot": (x_mm, y_mm, theta_rad), "ball": (x_mm, y_mm)}``), with episode `seed`.
+    #[pyo3(signature = (index, *, configuration=None, seed, start=None))]
+    fn reset(&self, index: i64, configuration: Option<i64>, seed: u64, start: Option<StartArg>) -> PyResult<()> {
+        let index = non_negative("index", index)?;
+        match (start, configuration) {
+            (Some(StartArg(StartAt::Chosen(start))), None) => self.with(|b| b.reset_at(index, start, seed)),
+            (Some(StartArg(StartAt::Configuration(c))), None) => self.with(|b| b.reset(index, c, seed)),
+            (None, Some(number)) => {
+                let configuration = self::configuration(number)?;
+                self.with(|b| b.reset(index, configuration, seed))
+            }
+            _ => return Err(PyValueError::new_err("reset: give configuration= or start=, one of them")),
+        }
+        .map_err(field_error)
     }
 
-    /// Holds `actions[i]` (0 forward … 4 stop) in slot `i`, every slot at once with the GIL
+    /// Holds `actions[i]` (an index into the body's primitive set: 0 forward … 4 stop, and on
+    /// the humanoid 5 side-step left, 6 side-step right, 7 kick) in slot `i`, every slot at once with the GIL
     /// released; a slot whose action is −1 is left as it is. Returns what every slot shows then.
     #[allow(clippy::needless_pass_by_value)] // pyo3 extracts the list by value
     fn step<'py>(&self, py: Python<'py>, actions: Vec<i64>) -> PyResult<Status<'py>> {
+        let body = self.with(|b| b.body());
+        let set = body.primitive_set();
         let primitives = actions
             .iter()
             .enumerate()
             .map(|(i, &a)| match a {
                 -1 => Ok(None),
-                _ => usize::try_from(a).ok().and_then(|a| Primitive::WHEELED.get(a).copied()).map(Some).ok_or_else(
-                    || PyValueError::new_err(format!("actions[{i}] = {a}: an action is an integer in 0..4 (−1: none)")),
-                ),
+                _ => usize::try_from(a).ok().and_then(|a| set.primitives().get(a).copied()).map(Some).ok_or_else(|| {
+                    PyValueError::new_err(format!(
+                        "actions[{i}] = {a}: an action is an integer in 0..{} (the {} body's primitives; −1: none)",
+                        set.primitives().len() - 1,
+                        body.name()
+                    ))
+                }),
             })
             .collect::<PyResult<Vec<_>>>()?;
         py.detach(|| self.with(|b| b.step(&primitives))).map_err(field_error)?;

@@ -11,6 +11,7 @@ mod hmm;
 mod learn;
 mod perceive;
 mod policy;
+mod starts;
 mod vq;
 mod watchdog;
 
@@ -34,9 +35,9 @@ mod _native {
     use super::hmm::PyDiscreteHmm;
     #[pymodule_export]
     use super::learn::{
-        PyImitatorPolicy, PyLearningConfig, PyModelResult, PySegmentedDemonstrations, PyTrialResult, attempt_seeds,
-        average_demonstrator, body_reach_mm, learning_trial, lp_order_hits, net_goals, observations_onto,
-        spare_attempts,
+        PyImitatorPlayer, PyImitatorPolicy, PyLearningConfig, PyModelResult, PySegmentedDemonstrations, PyTrialResult,
+        attempt_seeds, average_demonstrator, body_reach_mm, learning_trial, lp_order_hits, net_goals,
+        observations_onto, spare_attempts,
     };
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;

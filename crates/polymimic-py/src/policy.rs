@@ -26,25 +26,25 @@ const MAX_TIMEOUT_S: f64 = 86_400.0;
 #[pyclass(name = "Reading", module = "polymimic", frozen, get_all)]
 pub struct PyReading {
     /// Episode time, s.
-    t_s: f64,
+    pub(crate) t_s: f64,
     /// Index of the frame about to be recorded.
-    frame: usize,
+    pub(crate) frame: usize,
     /// The robot's tracked x, mm (origin at the field's centre, +x toward the target goal).
-    robot_x_mm: f64,
+    pub(crate) robot_x_mm: f64,
     /// The robot's tracked y, mm.
-    robot_y_mm: f64,
+    pub(crate) robot_y_mm: f64,
     /// The robot's tracked heading, rad.
-    robot_theta_rad: f64,
+    pub(crate) robot_theta_rad: f64,
     /// The tracked ball's x, mm (NaN when the robot cannot see it: a humanoid sees only ahead).
-    ball_x_mm: f64,
+    pub(crate) ball_x_mm: f64,
     /// The tracked ball's y, mm (NaN when the robot cannot see it).
-    ball_y_mm: f64,
+    pub(crate) ball_y_mm: f64,
     /// The field's length, mm.
-    field_length_mm: f64,
+    pub(crate) field_length_mm: f64,
     /// The field's width, mm.
-    field_width_mm: f64,
+    pub(crate) field_width_mm: f64,
     /// The width of the goal mouths, mm.
-    goal_mouth_mm: f64,
+    pub(crate) goal_mouth_mm: f64,
 }
 
 #[pymethods]

@@ -19,6 +19,7 @@ evaluation seed is below it.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -27,7 +28,7 @@ from threadpoolctl import threadpool_limits  # type: ignore[import-untyped, unus
 from polymimic import _native
 from polymimic.baselines.policy import Policy
 from polymimic.bodies import resolve
-from polymimic.field import PRIMITIVES, Demonstration, _field_config, as_frames, primitive_command
+from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, Demonstration, _field_config, as_frames, primitive_command
 from polymimic.learning import Evaluation
 
 __all__ = ["VALIDATION_SEED_BASE", "attempts_of", "evaluate_policy", "play"]
@@ -38,7 +39,7 @@ never meet, and the episode seeds derived from them (a hash of the seed, the con
 the attempt) are disjoint but for a 64-bit collision, which :func:`polymimic.baselines.tune`
 checks for."""
 
-_LETTERS = ("F", "B", "L", "R", "S")
+_LETTERS = ("F", "B", "L", "R", "S", "A", "D", "K")
 
 
 def _check_seed(seed: Any, *, low: int, high: int, what: str) -> int:
@@ -72,16 +73,19 @@ def play(policy: Policy, attempts: list[tuple[int, int]], *,
     episodes = [_native.Episode(driven, configuration=c, seed=s, config=config) for c, s in attempts]
     policy.reset()
     with threadpool_limits(limits=1):  # a batch of ≤ 50 rows gains nothing from threads, and loses on a busy node
-        executed = _step_together(policy, episodes, [primitive_command(p, driven) for p in PRIMITIVES])
+        own = PRIMITIVE_SETS["humanoid" if body == "humanoid" else "wheeled"]
+        executed = _step_together(policy, episodes, [primitive_command(p, driven) for p in PRIMITIVES], own)
     demos = [Demonstration(frames=as_frames(e.frames), outcome=str(e.outcome), demonstrator=_name(policy),
                            configuration=c, seed=s, body=body) for e, (c, s) in zip(episodes, attempts)]
     return Evaluation(goals=sum(d.outcome == "goal" for d in demos),
                       own_goals=sum(d.outcome == "own_goal" for d in demos), attempts=demos, behaviours=executed)
 
 
-def _step_together(policy: Policy, episodes: list[_native.Episode], commands: list[str]) -> list[list[str]]:
-    """Every episode to its end, one batched decision at a time, primitive i sent as
-    ``commands[i]``; the primitives each chose."""
+def _step_together(policy: Policy, episodes: list[_native.Episode], commands: list[str],
+                   own: Sequence[str] = PRIMITIVES) -> list[list[str]]:
+    """Every episode to its end, one batched decision at a time, primitive i of the body's
+    ``own`` set sent as ``commands[i]`` (one of the humanoid's own beyond the five as its
+    body executes it now: a kick with the foot on the ball's side); the primitives each chose."""
     hold = int(policy.frames_per_action)
     last_seen = [_observation(e, None) for e in episodes]
     executed: list[list[str]] = [[] for _ in episodes]
@@ -93,10 +97,12 @@ def _step_together(policy: Policy, episodes: list[_native.Episode], commands: li
         if actions.shape != (len(active),):
             raise ValueError(f"policy.predict returned shape {actions.shape} for {len(active)} observations")
         for i, action in zip(active, actions.tolist()):
-            if not 0 <= action < len(PRIMITIVES):
-                raise ValueError(f"policy.predict returned {action!r}; actions are 0..4 ({', '.join(PRIMITIVES)})")
+            if not 0 <= action < len(own):
+                raise ValueError(f"policy.predict returned {action!r}; actions are 0..{len(own) - 1} "
+                                 f"({', '.join(own)})")
             executed[i].append(_LETTERS[action])
-            episodes[i].run([commands[action]] * hold)
+            command = commands[action] if action < len(commands) else episodes[i].command_for(own[action])
+            episodes[i].run([command] * hold)
         active = [i for i in active if not episodes[i].finished]
     return executed
 

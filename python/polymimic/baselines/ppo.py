@@ -206,9 +206,11 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
 
 def new_model(*, frames_per_action: int = 30, feature_set: str = "goal_relative", seed: int = 0,
               field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
-              **ppo_kwargs: Any) -> Any:
+              wrap: Callable[[Any], Any] | None = None, **ppo_kwargs: Any) -> Any:
     """A new, untrained ``stable_baselines3.PPO`` on ``PenaltyKick-v0`` with ``imitator``'s
-    body, one environment per field configuration, seeing the scaled ``feature_set`` features."""
+    body, one environment per field configuration, seeing the scaled ``feature_set`` features.
+    ``wrap`` wraps each field's env before its observations are scaled (practice's roll-in by
+    a teacher, :mod:`polymimic.practice.teacher`)."""
     _require()
     import gymnasium
     from stable_baselines3 import PPO  # type: ignore[import-not-found, unused-ignore]
@@ -241,8 +243,11 @@ def new_model(*, frames_per_action: int = 30, feature_set: str = "goal_relative"
             return np.asarray(scaled(read[None, :], feature_set, imitator)[0])
 
     def make(configuration: int) -> Any:
-        return lambda: Scaled(PenaltyKickEnv(configuration=configuration, frames_per_action=frames_per_action,
-                                             config=field_config, body=imitator))
+        def env() -> Any:
+            field = PenaltyKickEnv(configuration=configuration, frames_per_action=frames_per_action,
+                                   config=field_config, body=imitator)
+            return Scaled(field if wrap is None else wrap(field))
+        return env
 
     env = DummyVecEnv([make(1), make(2)])
     env.seed(seed)

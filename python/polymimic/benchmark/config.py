@@ -28,6 +28,7 @@ from typing import Any
 
 from polymimic._toml import write_table, write_value
 from polymimic.crowds import PROFILES, Crowd
+from polymimic.practice.methods import METHODS as PRACTICE_METHODS
 from polymimic.runs.config import ConfigError, RunConfig, as_table, checked_section, in_range, read_config, toml_tables
 
 __all__ = ["METHODS", "OPTIONAL_METHODS", "BenchmarkConfig", "BenchmarkSettings"]
@@ -81,6 +82,8 @@ class BenchmarkSettings:
     practice_steps: int = _doc("environment steps polymimic_practice's imitators practise for, after learning "
                                "(polymimic.practice; scored at 0, 1000, 2500, 5000, 10000, 25000 and 50000 steps "
                                "within it)", 25_000)
+    practice_method: str = _doc("how polymimic_practice's imitators practise: refine, explore or jsrl "
+                                "(polymimic.practice.methods; jsrl needs polymimic[rl])", "refine")
     practice_trials: int = _doc("trials whose polymimic imitator practises, the first ones (every trial where "
                                 "there are fewer; each practice costs practice_steps)", 5)
     baseline_fits: int = _doc("fits of bc, bco, bc_best and random, each evaluated, under seeds first_trial, "
@@ -94,6 +97,9 @@ class BenchmarkSettings:
                      "practice_steps", "practice_trials"):
             in_range("benchmark", name, getattr(self, name), 1)
         in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
+        if self.practice_method not in PRACTICE_METHODS:
+            raise ConfigError(f"[benchmark] practice_method must be one of {', '.join(PRACTICE_METHODS)}, got "
+                              f"{self.practice_method!r}")
         for name in ("profiles", "methods"):
             value = getattr(self, name)
             if not isinstance(value, (list, tuple)) or not value:

@@ -264,7 +264,8 @@ class Benchmark(Stepped):
         saved = self.run.loaded(self.run.practice_path(profile, seed), load_practice)
         return self._evaluation_done(profile, PRACTISED, seed) and is_practice_of(
             saved, profile, seed, evaluation_seed=self.config.seeds.evaluation,
-            attempts=2 * settings.attempts_per_configuration, budget=settings.practice_steps)
+            attempts=2 * settings.attempts_per_configuration, budget=settings.practice_steps,
+            method=settings.practice_method)
 
     def practice(self, shared: Shared) -> int:
         """Stage: the first trials' imitators practise; returns the practices run."""

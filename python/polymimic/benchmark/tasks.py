@@ -122,7 +122,8 @@ def practice_inputs(shared: Shared) -> PracticeInputs:
                           body=config.imitator_body(), field=config.field,
                           segmenter=dataclasses.asdict(config.segmenter), steps=config.benchmark.practice_steps,
                           evaluation_seed=config.seeds.evaluation,
-                          attempts_per_configuration=config.benchmark.attempts_per_configuration)
+                          attempts_per_configuration=config.benchmark.attempts_per_configuration,
+                          method=config.benchmark.practice_method)
 
 
 def practised_evaluation(shared: Shared, result: dict[str, Any]) -> dict[str, Any]:

@@ -7,7 +7,8 @@ writes benchmark.html beside benchmark.json (runs/benchmark/<timestamp> unless -
 `polymimic matrix` shows who learns what from whom: imitator bodies against sets of demonstrators
 (runs/matrix/<timestamp> unless --run-dir). `polymimic practice` lets a finished run's imitators
 keep learning by playing, and writes their curves beside its results. `polymimic import-tracks`
-turns a tracker log into a run's demonstrations.
+turns a tracker log into a run's demonstrations. `polymimic live` lets a saved imitator drive a
+robot from a live tracker stream.
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ import time
 
 from polymimic import __version__
 from polymimic._native import PolymimicError
-from polymimic.cli import benchmark, demo, export, import_tracks, matrix, practice, replay, stages
+from polymimic.cli import benchmark, demo, export, import_tracks, live, matrix, practice, replay, stages
 from polymimic.runs.config import ConfigError
 
 __all__ = ["EXIT_INTERRUPTED", "EXIT_USAGE", "build_parser", "main"]
@@ -34,7 +35,7 @@ def build_parser() -> argparse.ArgumentParser:
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
-    for command in (demo, stages, replay, export, benchmark, matrix, practice, import_tracks):
+    for command in (demo, stages, replay, export, benchmark, matrix, practice, import_tracks, live):
         command.add(commands)
     return parser
 

@@ -19,6 +19,7 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.cli.common import positive
 from polymimic.learning import segmented
+from polymimic.practice.methods import METHODS
 from polymimic.reproduce.rundir import RunDir
 from polymimic.runs.backends import BACKENDS, TaskRunner
 from polymimic.runs.config import ConfigError
@@ -34,6 +35,10 @@ def add(commands: Any) -> None:
                           help="a finished `polymimic reproduce` or `polymimic benchmark` run directory")
     practice.add_argument("--steps", type=positive, default=25_000,
                           help="environment steps (seconds of play) each imitator practises for (default 25000)")
+    practice.add_argument("--method", choices=METHODS, default="refine",
+                          help="refine: replay its own play, refine its world model (default); explore: play "
+                               "exploring around the ball, learn its physics; jsrl: guide an RL learner (needs "
+                               "polymimic[rl])")
     practice.add_argument("--trials", type=positive, default=5,
                           help="how many trials' imitators practise, the first ones (default 5)")
     practice.add_argument("--only", nargs="+", metavar="NAME",
@@ -83,7 +88,8 @@ def _benchmark_inputs(path: pathlib.Path, args: argparse.Namespace) -> tuple[Any
     inputs = PracticeInputs(recognizer=recognizer, learning=config.learning, demonstrations=demos,
                             body=config.imitator_body(), field=config.field, segmenter=segmenter, steps=args.steps,
                             evaluation_seed=config.seeds.evaluation,
-                            attempts_per_configuration=config.benchmark.attempts_per_configuration)
+                            attempts_per_configuration=config.benchmark.attempts_per_configuration,
+                            method=args.method)
     return run, inputs, groups, config.trial_seeds()
 
 
@@ -101,7 +107,8 @@ def _reproduction_inputs(path: pathlib.Path,
                             body=config.imitator_body(), field=config.field,
                             segmenter=dataclasses.asdict(config.segmenter), steps=args.steps,
                             evaluation_seed=config.seeds.evaluation,
-                            attempts_per_configuration=config.experiments.attempts_per_configuration)
+                            attempts_per_configuration=config.experiments.attempts_per_configuration,
+                            method=args.method)
     return run, inputs, groups, trial_seeds(config)
 
 
@@ -118,7 +125,7 @@ def _practice(args: argparse.Namespace) -> int:
         path = run.require(run.trial_path(group, seed), "learn")
         return str(path.read_text(encoding="utf-8"))
 
-    folder = run.path / "practice" / f"{args.steps}_steps"
+    folder = run.path / "practice" / (f"{args.steps}_steps" + ("" if args.method == "refine" else f"_{args.method}"))
     with run.lock("polymimic practice"), TaskRunner(backend=args.backend, workers=args.workers,
                                                     address=args.address) as runner:
         summary, ran = practise_run(run, folder, inputs, [(g, s) for g in groups for s in seeds], trial_json, runner,

@@ -31,9 +31,11 @@ from typing import Any
 from polymimic import _native
 from polymimic._native import SegmentedDemonstrations
 from polymimic.bodies import pitch_of, playing_field, reach_mm
-from polymimic.field import Demonstration
+from polymimic.field import Demonstration, _field_config
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import DEFAULT_CHECKPOINTS, CurvePoint
+from polymimic.practice.exploring import explored_attempts
+from polymimic.practice.practised import PractisedPolicy
 from polymimic.practice.seeds import MAX_ROUNDS, check_apart, round_seed
 from polymimic.tracks.outcomes import outcome_of
 
@@ -48,7 +50,7 @@ class Practice:
     checkpoint), the environment ``steps`` it played, and its own ``attempts`` (the ones it
     learned from, each with the outcome read off its frames)."""
 
-    policy: ImitatorPolicy
+    policy: ImitatorPolicy | PractisedPolicy
     curve: list[CurvePoint]
     steps: int
     attempts: list[Demonstration]
@@ -70,7 +72,8 @@ def steps_of(attempt: Demonstration) -> int:
 def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
              checkpoints: Sequence[int] | None = None, attempts_per_round: int = 10,
              evaluation_seed: int = 0, evaluation_attempts: int = 25, field_config: Any = None,
-             segmenter: dict[str, Any] | None = None, weight: float = 1.0, quiet: bool = True) -> Practice:
+             segmenter: dict[str, Any] | None = None, weight: float = 1.0, quiet: bool = True,
+             explore: float = 0.0, refines: Sequence[str] | None = None) -> Practice:
     """Practise ``policy`` (an improved-control :class:`~polymimic.ImitatorPolicy` made with its
     constructor) for a budget of ``steps`` environment steps under practice ``seed``.
 
@@ -82,6 +85,11 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     its own attempts weighs beside the demonstrations' (1: as much as the best demonstrator's
     under LP weighting); ``quiet=False`` shows a progress bar of steps. Zero steps return the
     policy as it was, bit for bit.
+
+    ``explore`` above 0 plays each round's attempts exploring around the ball at that rate
+    (:func:`~polymimic.practice.exploring.explored_attempts`) instead of as the policy chooses;
+    ``refines`` names the parts of the world model its own attempts refine (default: the ball's
+    response and the states' values; exploring play is physics, ``["ball_response"]``).
 
     >>> import polymimic
     >>> from polymimic import learning, recognition
@@ -122,8 +130,12 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
                 check_apart(_native.attempt_seeds(per_round, seed=round_at), evaluation_seed=evaluation_seed,
                             attempts_per_configuration=evaluation_attempts)
                 round_index += 1
-                attempts = evaluate(refined, attempts_per_configuration=per_round, seed=round_at,
-                                    field_config=field_config).attempts
+                if explore > 0.0:
+                    attempts = explored_attempts(refined, attempts_per_configuration=per_round, seed=round_at,
+                                                 epsilon=explore, field_config=_field_config(field_config))
+                else:
+                    attempts = evaluate(refined, attempts_per_configuration=per_round, seed=round_at,
+                                        field_config=field_config).attempts
                 new = []
                 for attempt in attempts:
                     cost = steps_of(attempt)
@@ -140,7 +152,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
                     learned += new
                     batch = SegmentedDemonstrations(_segmented(new, made_from.recognizer, body_name, segmenter))
                     own = batch if own is None else own + batch
-                    refined = policy.practised(own, weight=weight)
+                    refined = policy.practised(own, weight=weight, refines=refines)
             score(mark)
     return Practice(policy=refined, curve=curve, steps=played_steps, attempts=learned, attempts_lost=lost)
 

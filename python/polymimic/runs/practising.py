@@ -21,8 +21,8 @@ from polymimic._native import ModelFileError, PrimitiveRecognizer
 from polymimic.bodies import WheeledBody
 from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate
 from polymimic.plots import MeanSd
-from polymimic.practice import practice
 from polymimic.practice.curve import plot_curves
+from polymimic.practice.methods import METHODS, practise
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.files import integer_key, json_object, name_key
 from polymimic.runs.progress import progress
@@ -51,6 +51,8 @@ class PracticeInputs:
     steps: int
     evaluation_seed: int
     attempts_per_configuration: int
+    method: str = "refine"
+    """How the imitators practise (:data:`polymimic.practice.methods.METHODS`)."""
 
 
 def practice_task(inputs: PracticeInputs, job: tuple[str, int, str]) -> dict[str, Any]:
@@ -60,13 +62,14 @@ def practice_task(inputs: PracticeInputs, job: tuple[str, int, str]) -> dict[str
     group, trial_seed, trial_json = job
     policy = ImitatorPolicy(TrialResult.from_json(trial_json), recognizer=inputs.recognizer, config=inputs.learning,
                             control="improved", demonstrations=inputs.demonstrations[group], body=inputs.body)
-    result = practice(policy, steps=inputs.steps, seed=trial_seed, evaluation_seed=inputs.evaluation_seed,
-                      evaluation_attempts=inputs.attempts_per_configuration, field_config=inputs.field,
-                      segmenter=inputs.segmenter)
+    result = practise(policy, method=inputs.method, steps=inputs.steps, seed=trial_seed,
+                      evaluation_seed=inputs.evaluation_seed, evaluation_attempts=inputs.attempts_per_configuration,
+                      field_config=inputs.field, segmenter=inputs.segmenter)
     final = evaluate(result.policy, attempts_per_configuration=inputs.attempts_per_configuration,
                      seed=inputs.evaluation_seed, field_config=inputs.field)
     return {"group": group, "trial_seed": trial_seed, "evaluation_seed": inputs.evaluation_seed,
             "attempts": 2 * inputs.attempts_per_configuration, "budget": inputs.steps, "steps": result.steps,
+            "method": inputs.method,
             "attempts_learned": len(result.attempts), "attempts_lost": result.attempts_lost,
             "checkpoints": [p.to_dict() for p in result.curve], "outcomes": [a.outcome for a in final.attempts]}
 
@@ -83,6 +86,8 @@ class SavedPractice(TypedDict):
     attempts_learned: int
     attempts_lost: int
     checkpoints: list[dict[str, int]]
+    method: str
+    """How it practised (files from before there was a choice: ``"refine"``)."""
 
 
 def load_practice(path: str | os.PathLike[str]) -> SavedPractice:
@@ -108,7 +113,15 @@ def load_practice(path: str | os.PathLike[str]) -> SavedPractice:
                          evaluation_seed=integer_key(data, "evaluation_seed", where, 0), attempts=attempts,
                          budget=budget, steps=integer_key(data, "steps", where, 0, budget),
                          attempts_learned=integer_key(data, "attempts_learned", where, 0),
-                         attempts_lost=integer_key(data, "attempts_lost", where, 0), checkpoints=checkpoints)
+                         attempts_lost=integer_key(data, "attempts_lost", where, 0), checkpoints=checkpoints,
+                         method=_method(data, where))
+
+
+def _method(data: dict[str, Any], where: str) -> str:
+    method = data.get("method", "refine")
+    if method not in METHODS:
+        raise ModelFileError(f"{where}: key 'method' must be one of {', '.join(METHODS)}, got {method!r}")
+    return str(method)
 
 
 class PracticeCurve(TypedDict):
@@ -135,11 +148,12 @@ FORMAT, VERSION = "polymimic.practice", 1
 
 
 def is_practice_of(saved: SavedPractice | None, group: str, trial_seed: int, *, evaluation_seed: int,
-                   attempts: int, budget: int) -> bool:
+                   attempts: int, budget: int, method: str = "refine") -> bool:
     """Whether ``saved`` (a practice file read whole, or None) is the practice asked for: of this
-    group's trial, scored on these evaluation attempts, for this budget of steps."""
+    group's trial, scored on these evaluation attempts, for this budget of steps, by this method."""
     return saved is not None and (saved["group"], saved["trial_seed"], saved["evaluation_seed"], saved["attempts"],
-                                  saved["budget"]) == (group, trial_seed, evaluation_seed, attempts, budget)
+                                  saved["budget"], saved["method"]) == (group, trial_seed, evaluation_seed, attempts,
+                                                                        budget, method)
 
 
 def practise_run(run: RunHouse[Any], folder: pathlib.Path, inputs: PracticeInputs, jobs: Sequence[tuple[str, int]],
@@ -155,7 +169,7 @@ def practise_run(run: RunHouse[Any], folder: pathlib.Path, inputs: PracticeInput
     def done(group: str, seed: int) -> bool:
         return is_practice_of(run.loaded(path(group, seed), load_practice), group, seed,
                               evaluation_seed=inputs.evaluation_seed, attempts=2 * inputs.attempts_per_configuration,
-                              budget=inputs.steps)
+                              budget=inputs.steps, method=inputs.method)
 
     todo = [(group, seed, trial_json(group, seed)) for group, seed in jobs if not done(group, seed)]
     for group in {group for group, _ in jobs}:

@@ -3,6 +3,7 @@
 //! net goals, the LP order) out.
 
 mod config;
+mod player;
 mod policy;
 mod segments;
 mod trial;
@@ -19,6 +20,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyList;
 
 pub use config::PyLearningConfig;
+pub use player::PyImitatorPlayer;
 pub use policy::PyImitatorPolicy;
 pub use segments::PySegmentedDemonstrations;
 pub use trial::{PyModelResult, PyTrialResult};

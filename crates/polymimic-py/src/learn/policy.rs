@@ -5,7 +5,7 @@ use std::sync::Arc;
 use polymimic_field::BodyKind;
 use polymimic_learn::{
     Attempt, ControlMode, ForwardModel, ImitatorPolicy, ImitatorWeighting, LearningConfig, MotionTable, Pitch,
-    Practice, Refines, Setting, WorldModel, demonstration_weights, onto_setting,
+    Practice, Refines, Setting, StartAt, WorldModel, demonstration_weights, onto_setting,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -13,11 +13,13 @@ use pyo3::types::{PyDict, PyList};
 
 use super::config::{PyLearningConfig, config_or_default, weighting_name};
 use super::motion_table;
+use super::player::PyImitatorPlayer;
 use super::segments::batch;
 use super::trial::PyTrialResult;
 use crate::bodies::Body;
-use crate::convert::{non_negative, one_of};
+use crate::convert::{Seed, non_negative, one_of};
 use crate::perceive::PyPrimitiveRecognizer;
+use crate::starts::{StartArg, start_dict};
 
 /// Attempts as Python dictionaries: ``frames``, ``outcome``, ``configuration``, ``seed`` and the
 /// ``behaviours`` executed.
@@ -27,7 +29,8 @@ pub(crate) fn attempt_list<'py>(py: Python<'py>, attempts: &[Attempt]) -> PyResu
         let item = PyDict::new(py);
         item.set_item("frames", crate::field::frames_array(py, &attempt.frames)?)?;
         item.set_item("outcome", attempt.outcome.name())?;
-        item.set_item("configuration", crate::field::configuration_number(attempt.configuration))?;
+        item.set_item("configuration", attempt.configuration.map(crate::field::configuration_number))?;
+        item.set_item("start", start_dict(py, attempt.configuration, &attempt.start)?)?;
         item.set_item("seed", attempt.seed)?;
         item.set_item("behaviours", attempt.behaviours.clone())?;
         out.append(item)?;
@@ -120,28 +123,62 @@ impl PyImitatorPolicy {
         Ok(Self { model, motion, config, mode, body, world })
     }
 
-    /// Attempts from each configuration; one dict per attempt with `frames`, `outcome`,
-    /// `configuration`, `seed` and the `behaviours` executed.
-    #[pyo3(signature = (attempts_per_configuration, *, seed=0, field_config=None))]
+    /// Attempts from each start (by default the thesis's configurations 1 and 2; a chosen
+    /// start is ``{"robot": (x_mm, y_mm, theta_rad), "ball": (x_mm, y_mm)}``), played by the
+    /// stepped player; one dict per attempt with `frames`, `outcome`, `configuration` (None for
+    /// a chosen start), `start`, `seed` and the `behaviours` executed.
+    #[pyo3(signature = (attempts_per_configuration, *, seed=0, field_config=None, starts=None))]
     fn evaluate<'py>(
         &self,
         py: Python<'py>,
         attempts_per_configuration: i64,
         seed: u64,
         field_config: Option<&str>,
+        starts: Option<Vec<StartArg>>,
     ) -> PyResult<Bound<'py, PyList>> {
         let attempts = non_negative("attempts_per_configuration", attempts_per_configuration)?;
         let field = crate::field::field_config(field_config)?;
-        let policy = ImitatorPolicy {
-            model: &self.model,
-            motion: &self.motion,
-            config: &self.config,
-            body: self.body,
-            mode: self.mode,
-            world: self.world.as_deref(),
-        };
-        let results = py.detach(|| policy.evaluate(attempts, &field, seed)).map_err(crate::errors::field_error)?;
+        let policy = self.view();
+        let results = match starts {
+            None => py.detach(|| policy.evaluate(attempts, &field, seed)),
+            Some(starts) => {
+                let starts: Vec<StartAt> = starts.into_iter().map(|s| s.0).collect();
+                py.detach(|| policy.evaluate_from(&starts, attempts, &field, seed))
+            }
+        }
+        .map_err(crate::errors::field_error)?;
         attempt_list(py, &results)
+    }
+
+    /// ``n`` valid attempts of the imitator from ``configuration``, recorded as a
+    /// demonstrator's are (episode seeds from ``seed`` as a Python policy's; attempts whose
+    /// tracking was lost replaced): dicts like :func:`polymimic.record`'s.
+    #[pyo3(signature = (*, configuration, n, seed=Seed(0), field_config=None),
+           text_signature = "($self, *, configuration, n, seed=0, field_config=None)")]
+    fn record<'py>(
+        &self,
+        py: Python<'py>,
+        configuration: i64,
+        n: i64,
+        seed: Seed,
+        field_config: Option<&str>,
+    ) -> PyResult<Bound<'py, PyList>> {
+        let (configuration, n) = (crate::field::configuration(configuration)?, crate::field::positive("n", n)?);
+        let field = crate::field::field_config(field_config)?;
+        let policy = self.view();
+        let recorded =
+            py.detach(|| policy.record(configuration, n, seed.0, &field)).map_err(crate::errors::field_error)?;
+        let out = PyList::empty(py);
+        for r in &recorded {
+            out.append(crate::field::recording(py, &r.frames, r.outcome, r.configuration, r.seed)?)?;
+        }
+        Ok(out)
+    }
+
+    /// A player of this imitator, stepped one tracker reading at a time (see
+    /// :class:`polymimic.ImitatorPlayer`); call its ``reset`` first.
+    fn player(slf: Py<Self>) -> PyImitatorPlayer {
+        PyImitatorPlayer::new(slf)
     }
 
     /// The same control driving ``trial``'s imitator, with what this one learned from the
@@ -188,12 +225,31 @@ impl PyImitatorPolicy {
     }
 
     fn __repr__(&self) -> String {
-        format!(
-            "ImitatorPolicy(control={:?}, body={:?}, behaviours={})",
-            self.control(),
-            self.body(),
-            self.model.behaviours.len()
-        )
+        format!("ImitatorPolicy({})", self.describe())
+    }
+}
+
+impl PyImitatorPolicy {
+    /// The control over this policy's parts.
+    pub(crate) fn view(&self) -> ImitatorPolicy<'_> {
+        ImitatorPolicy {
+            model: &self.model,
+            motion: &self.motion,
+            config: &self.config,
+            body: self.body,
+            mode: self.mode,
+            world: self.world.as_deref(),
+        }
+    }
+
+    /// The body the imitator drives.
+    pub(crate) const fn body_kind(&self) -> BodyKind {
+        self.body
+    }
+
+    /// Control, body and size, as the reprs show them.
+    pub(crate) fn describe(&self) -> String {
+        format!("control={:?}, body={:?}, behaviours={}", self.control(), self.body(), self.model.behaviours.len())
     }
 }
 

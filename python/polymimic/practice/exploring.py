@@ -1,0 +1,55 @@
+"""Attempts that explore around the ball: the imitator plays, but at a decision with the ball
+near, with probability ``epsilon`` it runs a random primitive of its own set instead of its
+choice, so that its own attempts show pushes from states its policy never chooses (what a
+crowd of poor players shows: many pushes, from many places, into both goals).
+
+The draws follow each attempt's episode seed, so the same attempts explore the same way.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from polymimic import _native
+from polymimic.bodies import reach_mm, resolve
+from polymimic.field import PRIMITIVE_SETS, Demonstration, as_frames, primitive_command
+from polymimic.learning import ImitatorPolicy
+
+__all__ = ["explored_attempts"]
+
+_EXPLORATION_STREAM = 0x6578706C  # apart from every stream the field draws from
+
+
+def explored_attempts(policy: ImitatorPolicy, *, attempts_per_configuration: int, seed: int, epsilon: float,
+                      near_ball_mm: float | None = None, field_config: str | None = None) -> list[Demonstration]:
+    """``attempts_per_configuration`` attempts from each configuration under ``seed`` (the
+    episodes :func:`polymimic.evaluate` would play), exploring at rate ``epsilon`` whenever the
+    ball is within ``near_ball_mm`` of the robot (default: four times the body's reach)."""
+    if not 0.0 <= epsilon <= 1.0:
+        raise ValueError(f"epsilon must be a probability in [0, 1], got {epsilon!r}")
+    body = policy.body
+    driven = resolve(body)
+    near_mm = 4.0 * reach_mm(body, imitating=True) if near_ball_mm is None else float(near_ball_mm)
+    own = PRIMITIVE_SETS["humanoid" if body == "humanoid" else "wheeled"]
+    commands = [primitive_command(p, driven) for p in own[:5]]
+    out = []
+    for configuration, episode_seed in _native.attempt_seeds(attempts_per_configuration, seed=seed):
+        rng = np.random.default_rng([episode_seed, _EXPLORATION_STREAM])
+        player = policy.player()
+        player.reset(start=configuration, seed=episode_seed)
+        episode = _native.Episode(driven, configuration=configuration, seed=episode_seed, config=field_config)
+        while not episode.finished:
+            seen = episode.observation()
+            ball = seen["ball"] if seen["ball"] is not None else (math.nan, math.nan)
+            chosen = player.act((seen["t_s"], *seen["robot"], *ball))
+            near = seen["ball"] is not None and math.dist(seen["robot"][:2], ball) < near_mm
+            if near and rng.random() < epsilon:
+                index = int(rng.integers(len(own)))
+                chosen = commands[index] if index < len(commands) else episode.command_for(own[index])
+            episode.run([chosen] * 30)
+        out.append(Demonstration(frames=as_frames(episode.frames), outcome=str(episode.outcome),
+                                 demonstrator="imitator", configuration=configuration, seed=episode_seed,
+                                 body=body))
+    return out

@@ -1,0 +1,79 @@
+"""Practice through the teacher (jump-start RL): the imitator guides a PPO learner; the practised
+policy plays wherever an imitator plays. Needs the optional `rl` extra (stable-baselines3 and
+torch), which the test line leaves out: its install is measured in the README."""
+
+import importlib.util
+
+import gymnasium
+import pytest
+
+import polymimic
+from polymimic import recognition
+from polymimic.learning import ImitatorPolicy, evaluate, run_trial
+
+pytestmark = pytest.mark.skipif(importlib.util.find_spec("stable_baselines3") is None,
+                                reason="stable-baselines3 is the optional `rl` extra")
+
+
+@pytest.fixture(scope="module")
+def teacher():
+    recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
+    demos = [d for c in (1, 2) for d in polymimic.record("expert", configuration=c, n=3, seed=0)]
+    trial = run_trial(demos, recognizer=recognizer, ordering=["expert"])
+    return ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=demos)
+
+
+@pytest.fixture(scope="module")
+def practised(teacher):
+    from polymimic.practice.teacher import jsrl
+
+    return jsrl(teacher, steps=600, checkpoints=[0, 600], evaluation_attempts=2, handover_start=60,
+                curriculum=1.0, n_steps=64, batch_size=32)
+
+
+def test_at_the_start_the_practised_policy_is_its_teacher_bit_for_bit(teacher, practised):
+    # Handing over after 60 decisions (the whole minute) leaves every decision to the teacher.
+    assert [p.checkpoint for p in practised.curve] == [0, 600]
+    alone = evaluate(teacher, attempts_per_configuration=2)
+    assert practised.curve[0].net_goals == alone.goals - alone.own_goals
+    from polymimic.practice.practised import PractisedPolicy
+
+    guided = evaluate(PractisedPolicy(teacher, practised.policy.actor, handover=60), attempts_per_configuration=2)
+    assert [a.frames.tobytes() for a in guided.attempts] == [a.frames.tobytes() for a in alone.attempts]
+
+
+def test_every_step_counts_the_teachers_roll_ins_too_and_the_budget_holds(practised):
+    # No checkpoint is scored with more steps played than it names, the teacher's included.
+    assert all(p.steps <= p.checkpoint for p in practised.curve)
+    assert 590 <= practised.steps <= 600
+    assert practised.policy.handover == 0  # the curriculum shrank to the learner alone
+
+
+def test_practise_names_its_methods_and_refuses_others(teacher):
+    from polymimic.practice.methods import practise
+
+    taught = practise(teacher, method="jsrl", steps=300, evaluation_attempts=1)
+    assert [p.checkpoint for p in taught.curve][-1] == 300 and taught.attempts == []
+    with pytest.raises(ValueError, match="unknown practice method 'rl'; expected one of refine, explore, jsrl"):
+        practise(teacher, method="rl", steps=10)
+
+
+def test_the_practised_policy_saves_loads_and_plays_through_evaluate_predict_and_record(tmp_path, practised):
+    from polymimic.practice.practised import PractisedPolicy
+
+    policy = PractisedPolicy(practised.policy.guide, practised.policy.actor, handover=3)
+    policy.save(tmp_path / "practised.zip")
+    again = PractisedPolicy.load(tmp_path / "practised.zip")
+    assert (again.handover, again.body, again.method) == (3, "lego", "jsrl")
+    played = [evaluate(p, attempts_per_configuration=2, seed=4).attempts for p in (policy, again)]
+    assert [a.frames.tobytes() for a in played[0]] == [a.frames.tobytes() for a in played[1]]
+    env = gymnasium.make("PenaltyKick-v0")
+    observation, _ = env.reset(seed=1)
+    action, state = again.predict(observation)
+    assert env.action_space.contains(action) and len(state) == 1
+    shown = polymimic.record(again.player(), configuration=1, n=1, seed=2, body="lego", name="practised")
+    assert shown[0].demonstrator == "practised"
+    (tmp_path / "bad.zip").write_text("no")
+    with pytest.raises(polymimic.ModelFileError, match="not a practised policy"):
+        PractisedPolicy.load(tmp_path / "bad.zip")
+

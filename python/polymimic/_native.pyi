@@ -539,11 +539,15 @@ class EpisodeBatch:
     def __len__(self) -> int: ...
     def reset(
         self, index: int, *, configuration: int | None = None, seed: int, start: int | Mapping[str, Any] | None = None
-    ) -> None: ...
+    ) -> None:
+        """Starts slot `index` afresh from `configuration` (1 or 2), or from a chosen `start`
+        (``{"robot": (x_mm, y_mm, theta_rad), "ball": (x_mm, y_mm)}``), with episode `seed`.
+        """
     def step(
         self, actions: list[int]
     ) -> tuple[npt.NDArray[np.float32], npt.NDArray[np.float64], npt.NDArray[np.int8], npt.NDArray[np.bool_]]:
-        """Holds `actions[i]` (0 forward … 4 stop) in slot `i`, every slot at once with the GIL
+        """Holds `actions[i]` (an index into the body's primitive set: 0 forward … 4 stop, and on
+        the humanoid 5 side-step left, 6 side-step right, 7 kick) in slot `i`, every slot at once with the GIL
         released; a slot whose action is −1 is left as it is. Returns what every slot shows then.
         """
     def status(
@@ -569,10 +573,20 @@ class Episode:
         config: str | None = None,
         start: int | Mapping[str, Any] | None = None,
     ) -> Episode: ...
-    def command_for(self, primitive: str) -> str: ...
-    def step(self, command: str | int) -> tuple[npt.NDArray[np.float64], str | None]: ...
-    def run(self, commands: list[str | int]) -> tuple[npt.NDArray[np.float64], str | None]: ...
-    def place_robot(self, x_mm: float, y_mm: float, theta_rad: float) -> None: ...
+    def command_for(self, primitive: str) -> str:
+        """The command that runs `primitive` (a name of the body's primitive set) on this body now:
+        on the humanoid a kick is the foot on the side of the ball it sees.
+        """
+    def step(self, command: str | int) -> tuple[npt.NDArray[np.float64], str | None]:
+        """Sends one command for one tracker frame; returns the frame recorded and the outcome
+        (None while the episode goes on). `command` is a primitive name, a command name or id.
+        """
+    def run(self, commands: list[str | int]) -> tuple[npt.NDArray[np.float64], str | None]:
+        """Sends a whole list of commands (one per frame) in Rust with the GIL released, stopping
+        early if the episode ends; returns the frames recorded and the outcome.
+        """
+    def place_robot(self, x_mm: float, y_mm: float, theta_rad: float) -> None:
+        """Puts the robot at a pose (the experimenter's hand)."""
     @property
     def frames(self) -> npt.NDArray[np.float64]:
         """Every frame so far, `(k, 7)`."""
@@ -999,21 +1013,52 @@ def spare_attempts(per_configuration: int) -> int: ...
 
 @final
 class ImitatorPlayer:
+    """A trained imitator as an owned, stateful player: :meth:`reset` starts an episode and
+    :meth:`act` takes one tracker reading and answers the command to send until the next (a
+    primitive is held for one second, decisions falling on a one-second grid from the
+    episode's first reading). It keeps what the control keeps between decisions: the thesis
+    control's behaviour in progress and its random generator (seeded by the episode seed), and
+    the ball where it was last seen at a decision (the start's ball until then). Made by
+    :meth:`polymimic.ImitatorPolicy.player`.
+    """
     def reset(
         self,
         episode: Mapping[str, Any] | None = None,
         *,
         start: int | Mapping[str, Any] | None = None,
         seed: int | None = None,
-    ) -> None: ...
-    def act(self, reading: Reading | Sequence[float] | npt.NDArray[np.float64]) -> str: ...
+    ) -> None:
+        """Start an episode.
+
+        ``episode`` is what :func:`polymimic.record` passes a demonstrator (a dict with the
+        episode's ``configuration`` and ``seed``); otherwise ``start`` (1, 2 or ``{"robot": (x_mm,
+        y_mm, theta_rad), "ball": (x_mm, y_mm)}``, default 1) and ``seed`` (the episode seed,
+        whose draws the thesis control makes; default 0). Raises ``ValueError`` for a start off
+        the body's field or with the ball on the robot.
+        """
+    def act(self, reading: Reading | Sequence[float] | npt.NDArray[np.float64]) -> str:
+        """The command to send after ``reading`` until the next one: a :class:`polymimic.Reading`
+        or six numbers ``(t_s, robot_x_mm, robot_y_mm, robot_theta_rad, ball_x_mm, ball_y_mm)``
+        (float64; NaN where the tracker lost it). Returns the command's name (a primitive's on a
+        wheeled body, ``"forward"`` …; the humanoid's own, ``"Walk Forward"``, ``"Kick Left"`` …).
+        """
     def decide(
         self, robot_x_mm: float, robot_y_mm: float, robot_theta_rad: float, ball_x_mm: float, ball_y_mm: float
-    ) -> int: ...
+    ) -> int:
+        """One decision now from the robot's pose and the ball (NaN where not seen): the primitive
+        to run for the next second, as its index in the body's primitive set (the action
+        :class:`polymimic.env.PenaltyKickEnv` takes). No time grid: every call decides.
+        """
     @property
-    def executed(self) -> list[str]: ...
+    def executed(self) -> list[str]:
+        """What was executed this episode, in order, as letters: whole behaviours by the thesis's
+        rule, single primitives by the improved one.
+        """
     @property
-    def episode(self) -> dict[str, Any]: ...
+    def episode(self) -> dict[str, Any]:
+        """The episode's start (``configuration``: 1, 2 or None for a chosen one; ``robot``;
+        ``ball``) and ``seed``.
+        """
 
 @disjoint_base
 class ImitatorPolicy:
@@ -1064,9 +1109,21 @@ class ImitatorPolicy:
         seed: int = 0,
         field_config: str | None = None,
         starts: Sequence[int | Mapping[str, Any]] | None = None,
-    ) -> list[dict[str, Any]]: ...
+    ) -> list[dict[str, Any]]:
+        """Attempts from each start (by default the thesis's configurations 1 and 2; a chosen
+        start is ``{"robot": (x_mm, y_mm, theta_rad), "ball": (x_mm, y_mm)}``), played by the
+        stepped player; one dict per attempt with `frames`, `outcome`, `configuration` (None for
+        a chosen start), `start`, `seed` and the `behaviours` executed.
+        """
     def record(
         self, *, configuration: int, n: int, seed: int = 0, field_config: str | None = None
-    ) -> list[dict[str, Any]]: ...
-    def player(self) -> ImitatorPlayer: ...
+    ) -> list[dict[str, Any]]:
+        """``n`` valid attempts of the imitator from ``configuration``, recorded as a
+        demonstrator's are (episode seeds from ``seed`` as a Python policy's; attempts whose
+        tracking was lost replaced): dicts like :func:`polymimic.record`'s.
+        """
+    def player(self) -> ImitatorPlayer:
+        """A player of this imitator, stepped one tracker reading at a time (see
+        :class:`polymimic.ImitatorPlayer`); call its ``reset`` first.
+        """
     def __len__(self) -> int: ...

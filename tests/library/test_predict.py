@@ -107,7 +107,8 @@ def test_the_humanoids_env_acts_in_its_own_eight_and_kicks_with_the_foot_the_bal
                     reason="stable-baselines3 is the optional `rl` extra")
 def test_stable_baselines3s_evaluate_policy_runs_the_imitator_unchanged(policy):
     from stable_baselines3.common.evaluation import evaluate_policy
+    from stable_baselines3.common.monitor import Monitor
 
-    env = gymnasium.make("PenaltyKick-v0", configuration=1)
+    env = Monitor(gymnasium.make("PenaltyKick-v0", configuration=1))
     rewards, lengths = evaluate_policy(policy, env, n_eval_episodes=4, return_episode_rewards=True)
     assert len(rewards) == 4 and all(r in (-1.0, 0.0, 1.0) for r in rewards)

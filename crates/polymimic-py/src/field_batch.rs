@@ -3,7 +3,7 @@
 use std::sync::Mutex;
 
 use numpy::{PyArray1, PyArray2};
-use polymimic_field::{BodyKind, EpisodeBatch, Outcome, Primitive};
+use polymimic_field::{BodyKind, EpisodeBatch, Outcome};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 

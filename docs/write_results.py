@@ -245,6 +245,9 @@ def thesis_summary() -> str | None:
 
 
 TABLES: dict[str, tuple[str, Callable[[], str | None]]] = {
+    "readme_benchmark": ("../README.md", benchmark_summary),
+    "readme_matrix": ("../README.md", matrix_summary),
+    "readme_thesis": ("../README.md", thesis_summary),
     "reproduction": ("results/thesis.md", reproduction_table),
     "matrix_polymimic": ("results/matrix.md", lambda: matrix_table("polymimic")),
     "matrix_bco": ("results/matrix.md", lambda: matrix_table("bco")),

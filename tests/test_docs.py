@@ -97,3 +97,15 @@ def test_own_data_roster_is_a_run_config():
     assert list(config.demonstrators) == ["wanderer_poor", "chaser", "logged", "alice"]
     assert config.own_experiments["mine"].skill_order[0] == "expert"
     assert config.demonstrators["logged"].log == str(ROOT / "logs" / "overhead.csv")
+
+
+def test_readme_is_a_front_page():
+    """The README stays a front page: short, the headline comparison near the top, the citation
+    and the API reference one link away."""
+    lines = README.read_text().splitlines()
+    assert len(lines) <= 250
+    first_screen = "\n".join(lines[:60])
+    assert "| `polymimic` |" in first_screen and "| `bc` |" in first_screen
+    text = "\n".join(lines)
+    assert "## Citing" in text and "CITATION.cff" in text
+    assert "docs/api/index.md" in text

@@ -9,8 +9,8 @@ run's evaluation attempts at the same checkpoints. Each finished (method, profil
 written at once to ``--out`` (JSON): a rerun skips what is there and goes on with the rest.
 ``--plot`` draws the curves (mean over seeds) as one picture.
 
-Run: ``python benches/practice_vs_rl.py RUN_DIR [--steps 500000] [--seeds 0 1 2] [--out FILE]
-[--plot PNG]`` (needs ``polymimic[rl]``; hours at full size).
+Run: ``python studies/how_practice_through_the_teacher_compares_with_rl.py RUN_DIR [--steps 500000]
+[--seeds 0 1 2] [--out FILE] [--plot PNG]`` (needs ``polymimic[rl]``; hours at full size).
 """
 
 from __future__ import annotations

@@ -310,6 +310,7 @@ class LearningConfig:
         imitator_lp: float = 0.9,
         hold_lp: bool = False,
         imitator_weighting: Literal["even", "lp", "lp_gain"] = "even",
+        world_weighting: Literal["every", "intent", "outcome"] = "intent",
         lp_goal: float = 0.01,
         lp_own_goal_weight: float = 3.0,
         lp_ball_to_goal: float = 0.005,
@@ -360,6 +361,8 @@ class LearningConfig:
     def hold_lp(self) -> bool: ...
     @property
     def imitator_weighting(self) -> str: ...
+    @property
+    def world_weighting(self) -> str: ...
     @property
     def lp_goal(self) -> float: ...
     @property
@@ -542,6 +545,7 @@ class ImitatorPolicy:
         practice: SegmentedDemonstrations | Iterable[Mapping[str, Any]] | None = None,
         practice_weight: float = 1.0,
         refines: Sequence[str] | None = None,
+        unlearned: Sequence[str] | None = None,
     ) -> Self: ...
     @property
     def control(self) -> str: ...

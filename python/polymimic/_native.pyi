@@ -310,7 +310,7 @@ class LearningConfig:
         imitator_lp: float = 0.9,
         hold_lp: bool = False,
         imitator_weighting: Literal["even", "lp", "lp_gain"] = "even",
-        world_weighting: Literal["every", "intent", "outcome"] = "intent",
+        world_weighting: Literal["every", "intent", "outcome"] = "outcome",
         lp_goal: float = 0.01,
         lp_own_goal_weight: float = 3.0,
         lp_ball_to_goal: float = 0.005,

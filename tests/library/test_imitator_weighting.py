@@ -121,7 +121,7 @@ def test_the_gain_leaves_out_a_member_whose_lp_never_rose(recognizer, demonstrat
 
 def test_the_world_weighting_is_configured_and_refused_by_name():
     config = polymimic.LearningConfig()
-    assert config.world_weighting == "intent" and config.to_dict()["world_weighting"] == "intent"
+    assert config.world_weighting == "outcome" and config.to_dict()["world_weighting"] == "outcome"
     every = config.replace(world_weighting="every")
     assert every.world_weighting == "every" and polymimic.LearningConfig.from_toml(every.to_toml()) == every
     with pytest.raises(ValueError, match='world_weighting must be "every" or "intent" or "outcome", got "physics"'):

@@ -91,11 +91,13 @@ pub enum WorldWeighting {
     Every,
     /// *Choice*: intent only. The ball's response learns from every demonstration at full
     /// weight; the push region and the states' values weigh each demonstration's samples.
-    #[default]
     Intent,
-    /// *Choice*: no part: every sample counts by the outcome it led to alone (the push region
-    /// keeps only the pushes of scoring demonstrations, a state's value is the outcome its
-    /// demonstration ended in), whoever demonstrated it.
+    /// *Choice*, the default: no part. Every sample counts by the outcome it led to alone
+    /// (the push region keeps only the pushes of scoring demonstrations, a state's value is the
+    /// outcome its demonstration ended in), whoever demonstrated it; the weights still reach
+    /// the imitator's behaviours. Chosen on the benchmark's validation attempts: summed over
+    /// its nine crowds, 682 net goals of 900 against `Intent`'s 672 and `Every`'s 667.
+    #[default]
     Outcome,
 }
 
@@ -209,7 +211,7 @@ impl Default for LearningConfig {
             imitator_lp: 0.9,
             hold_lp: false,
             imitator_weighting: ImitatorWeighting::Even,
-            world_weighting: WorldWeighting::Intent,
+            world_weighting: WorldWeighting::Outcome,
             lp_goal: 0.01,
             lp_own_goal_weight: 3.0,
             lp_ball_to_goal: 0.005,
@@ -339,8 +341,8 @@ mod tests {
     }
 
     #[test]
-    fn the_world_weighting_defaults_to_intent_and_names_what_it_reaches() {
-        assert_eq!(LearningConfig::default().world_weighting, WorldWeighting::Intent);
+    fn the_world_weighting_defaults_to_outcome_and_names_what_it_reaches() {
+        assert_eq!(LearningConfig::default().world_weighting, WorldWeighting::Outcome);
         let every = LearningConfig::from_json(r#"{"world_weighting": "every"}"#).expect("a valid config");
         assert_eq!(every.world_weighting, WorldWeighting::Every);
         assert_eq!(LearningConfig::from_json(&every.to_json()), Ok(every));

@@ -174,10 +174,10 @@ fn set(c: &mut LearningConfig, name: &str, value: &Bound<'_, PyAny>) -> PyResult
 /// its samples in the improved control's world model (the final LPs); or ``"lp_gain"``: the
 /// same, each member weighed by how far its LP rose above ``initial_lp``,
 /// ``(LP_m − LP₀)⁺ / max_k (LP_k − LP₀)⁺`` (all 1 if none rose). ``world_weighting`` names
-/// the parts of the improved control's world model those weights reach: ``"intent"`` (the
-/// default) the push region and the states' values, while the ball's response (physics, the
-/// same whoever pushes) learns from every demonstration at full weight; ``"every"`` all three;
-/// ``"outcome"`` none (each sample counts by the outcome it led to alone).
+/// the parts of the improved control's world model those weights reach: ``"outcome"`` (the
+/// default) none, each sample counting by the outcome it led to alone; ``"intent"`` the push
+/// region and the states' values, while the ball's response (physics, the same whoever
+/// pushes) learns from every demonstration at full weight; ``"every"`` all three.
 ///
 /// Examples
 /// --------
@@ -373,7 +373,7 @@ impl PyLearningConfig {
     fn imitator_weighting(&self) -> &'static str {
         name_of(&WEIGHTINGS, self.config.imitator_weighting)
     }
-    /// `"intent"`, `"every"` or `"outcome"`: the parts of the improved control's world model
+    /// `"outcome"`, `"intent"` or `"every"`: the parts of the improved control's world model
     /// the imitator weighting reaches.
     #[getter]
     fn world_weighting(&self) -> &'static str {

@@ -652,6 +652,7 @@ class LearningConfig:
         imitator_lp: float = 0.9,
         hold_lp: bool = False,
         imitator_weighting: Literal["even", "lp", "lp_gain"] = "even",
+        world_weighting: Literal["every", "intent", "outcome"] = "outcome",
         lp_goal: float = 0.01,
         lp_own_goal_weight: float = 3.0,
         lp_ball_to_goal: float = 0.005,
@@ -714,6 +715,8 @@ class LearningConfig:
     @property
     def imitator_weighting(self) -> str:
         """`"even"`, `"lp"` or `"lp_gain"`."""
+    @property
+    def world_weighting(self) -> str: ...
     @property
     def lp_goal(self) -> float: ...
     @property
@@ -1087,6 +1090,7 @@ class ImitatorPolicy:
         practice: SegmentedDemonstrations | Iterable[Mapping[str, Any]] | None = None,
         practice_weight: float = 1.0,
         refines: Sequence[str] | None = None,
+        unlearned: Sequence[str] | None = None,
     ) -> Self: ...
     @property
     def control(self) -> str:

@@ -2,15 +2,20 @@
 
 A crowd **member** is a built-in controller degraded by a lapse ε: at the start of every second
 of an episode, with probability ε, it executes one random imitator primitive for that second
-instead of what its controller commands (:func:`polymimic.record`'s ``lapse``). Lower ε is
-more skill; a crowd's **true skill** is that design rank. The five profiles of the benchmark
-are :data:`PROFILES`; a crowd of your own is plain data (:meth:`Crowd.from_members`).
+instead of what its controller commands (:func:`polymimic.record`'s ``lapse``). A member's
+**true skill** is the net goals its controller scores without lapses (:func:`controller_skill`)
+times the share of seconds that controller is in command, 1 − ε (:meth:`Crowd.skill`), so a
+Poor player at ε = 0 does not outrank an Expert at ε = 0.05; without measured skills, ε alone
+ranks (lower is more skill). The benchmark's
+profiles are :data:`PROFILES`; a crowd of your own is plain data (:meth:`Crowd.from_members`).
 
 >>> crowd = PROFILES["linear"]
 >>> len(crowd), crowd.members[0]
 (10, Member(name='expert_00', controller='expert', lapse=0.05))
 >>> crowd.best()
 ('expert_00',)
+>>> PROFILES["one_good_poor"].best(), PROFILES["one_good_poor"].best({"expert": 0.9, "poor": 0.0})
+(('poor_01', 'poor_02', 'poor_03', 'poor_04', 'poor_05', 'poor_06', 'poor_07', 'poor_08', 'poor_09'), ('expert_00',))
 >>> Crowd.from_members("pair", [{"controller": "tiny", "lapse": 0.1}, {"controller": "poor", "lapse": 0.0}]).names
 ('tiny_00', 'poor_01')
 >>> Crowd.from_members("solo", [{"controller": "expert", "lapse": 0.1}])
@@ -22,14 +27,14 @@ ValueError: crowd 'solo' has 1 member; a crowd needs at least two
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
 
 from polymimic.field import BODIES, DEMONSTRATORS, Demonstration, record
 
-__all__ = ["PROFILES", "Crowd", "Member", "member_seed", "profile", "record_crowd"]
+__all__ = ["FLOOR", "PROFILES", "Crowd", "Member", "controller_skill", "member_seed", "profile", "record_crowd"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -86,10 +91,29 @@ class Crowd:
         """Each member's lapse rate ε, by name."""
         return {m.name: m.lapse for m in self.members}
 
-    def best(self) -> tuple[str, ...]:
-        """The members of the lowest lapse (several if they tie)."""
-        lowest = min(m.lapse for m in self.members)
-        return tuple(m.name for m in self.members if m.lapse == lowest)
+    def skill(self, controllers: Mapping[str, float] | None = None) -> dict[str, float]:
+        """Every member's true skill, higher is better: the net goals per attempt its controller
+        scores without lapses (``controllers[controller]``, :func:`controller_skill`) times the
+        share of seconds that controller is in command, 1 − ε; without ``controllers``, −ε
+        (lower ε is better). A ``ValueError`` names a member's controller missing from
+        ``controllers``.
+
+        >>> PROFILES["half_poor"].skill({"expert": 0.96, "poor": 0.02})["expert_00"]
+        0.912
+        """
+        if controllers is None:
+            return {m.name: -m.lapse for m in self.members}
+        missing = sorted({m.controller for m in self.members} - set(controllers))
+        if missing:
+            raise ValueError(f"crowd {self.name!r}: no measured skill for controller {missing[0]!r}; "
+                             f"controllers has {', '.join(sorted(controllers)) or 'none'}")
+        return {m.name: round(float(controllers[m.controller]) * (1.0 - m.lapse), 12) for m in self.members}
+
+    def best(self, controllers: Mapping[str, float] | None = None) -> tuple[str, ...]:
+        """The members of the highest true skill (several if they tie; see :meth:`skill`)."""
+        skill = self.skill(controllers)
+        top = max(skill.values())
+        return tuple(name for name, value in skill.items() if value == top)
 
     def to_members(self) -> list[dict[str, Any]]:
         """The crowd as plain data, one table per member (what :meth:`from_members` reads)."""
@@ -135,8 +159,20 @@ PROFILES: dict[str, Crowd] = {
     "linear": _profile("linear", [("expert", round(0.05 + 0.1 * k, 2)) for k in range(10)]),
     "mixed_bodies": _profile("mixed_bodies", [(c, e) for c in ("expert", "tiny", "humanoid")
                                               for e in (0.05, 0.5, 0.9)]),
+    "random": _profile("random", [("expert", 1.0)] * 10),
+    "all_poor": _profile("all_poor", [("poor", 0.0)] * 10),
+    "half_poor": _profile("half_poor", [("expert", 0.05)] * 5 + [("poor", 0.0)] * 5),
+    "one_good_poor": _profile("one_good_poor", [("expert", 0.05)] + [("poor", 0.0)] * 9),
 }
-"""The benchmark's five crowds (docs/guides/crowd.md)."""
+"""The benchmark's crowds: five of graded skill and mixed bodies (docs/guides/crowd.md); ``random``, ten
+members who play a random primitive every second (ε = 1), the floor of what any method learns
+from demonstrations that carry no skill; ``all_poor``, ten Poor players at ε = 0, who score about
+as many own goals as goals; and two crowds that mislead a ranking by ε, whose Poor members never
+lapse: ``half_poor`` (five Experts at ε = 0.05, five Poor) and ``one_good_poor`` (one Expert at
+ε = 0.05, nine Poor)."""
+
+FLOOR = "random"
+"""The profile whose demonstrations carry no skill: each method's floor."""
 
 
 def profile(name: str) -> Crowd:
@@ -145,6 +181,24 @@ def profile(name: str) -> Crowd:
         return PROFILES[name]
     except (KeyError, TypeError):
         raise ValueError(f"unknown profile {name!r}; expected one of {', '.join(PROFILES)}") from None
+
+
+def controller_skill(controllers: Iterable[str], *, n: int = 25, seed: int = 0,
+                     config: dict[str, Any] | str | None = None) -> dict[str, float]:
+    """Each of ``controllers``' net goals per attempt without lapses, on its own body and field:
+    ``n`` valid demonstrations per field configuration under ``seed``, (goals − own goals) / 2n.
+
+    >>> skill = controller_skill(["expert", "poor"], n=2, seed=0)
+    >>> skill["expert"] > skill["poor"]
+    True
+    """
+    out: dict[str, float] = {}
+    for controller in dict.fromkeys(controllers):
+        demos = [d for configuration in (1, 2)
+                 for d in record(controller, configuration=configuration, n=n, seed=seed, config=config)]
+        out[controller] = (sum(d.outcome == "goal" for d in demos) - sum(d.outcome == "own_goal" for d in demos)) \
+            / len(demos)
+    return out
 
 
 def member_seed(seed: int, index: int) -> int:

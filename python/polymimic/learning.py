@@ -91,13 +91,20 @@ class LearningConfig(_native.LearningConfig):
       scale the imitator's gains from the demonstration (the frequency step of eq 3.11 and the
       permanency step; not the decay), so behaviours shown only by members of low LP gain
       little and decay away; :class:`ImitatorPolicy` with ``control="improved"`` weighs each
-      demonstration's samples by the trial's final LP weight of its demonstrator (the ball's
-      response and a state's value as weighted means, the push region as weighted
-      percentiles); or ``"lp_gain"``: the same, each member weighed by how far its LP rose
+      demonstration's samples by the trial's final LP weight of its demonstrator in the parts
+      of its world model ``world_weighting`` names (a state's value as a weighted mean, the push
+      region as weighted percentiles; ``"every"`` weighs the ball's response too, ``"outcome"``
+      no part); or ``"lp_gain"``: the same, each member weighed by how far its LP rose
       above ``initial_lp``, ``w_m = (LP_m − LP₀)⁺ / max_k (LP_k − LP₀)⁺`` (all 1 if none rose),
       so a member the LP likes no better than a stranger teaches nothing. With ``"even"``, or
       with ``hold_lp`` (all LPs equal), every weight is 1 and the results are exactly those of
       the thesis's scheme.
+    - ``world_weighting``, improved control only: the parts of its world model those weights
+      reach. ``"outcome"`` (the default): none, each sample counting by the outcome it led to
+      alone (the push region keeps the pushes of scoring demonstrations, a state's value is its
+      demonstration's outcome); ``"intent"``: where pushes begin and which states lead to
+      goals, while what a primitive does to the ball (physics, the same whoever pushes) learns
+      from every demonstration at full weight; ``"every"``: the ball's response too.
 
     ``save``/``load`` use TOML.
 

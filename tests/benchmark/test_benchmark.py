@@ -55,7 +55,8 @@ def test_the_run_holds_every_file(benchmarked):
     names = {p.name for p in benchmarked.rglob("*") if p.is_file()}
     assert {"benchmark.json", "benchmark.md", "benchmark.html", "crowd_pair.parquet", "crowd_duo.parquet",
             "trial_0.json", "trial_1_uniform_lp.json", "tuning_bc.json", "evaluation_polymimic_1.json",
-            "evaluation_bco_lp_1.json", "evaluation_bc_0.json", "benchmark_net_goals.png"} <= names
+            "evaluation_bco_lp_1.json", "evaluation_bc_0.json", "benchmark_net_goals.png", "controller_skill.json",
+            "weighing_intent.json", "weighing_every.json", "weighing_outcome.json"} <= names
     # bc learns the same data in every trial: fitted and evaluated under three fit seeds.
     assert {"evaluation_bc_1.json", "evaluation_bc_2.json"} <= names and "evaluation_bc_3.json" not in names
 
@@ -69,23 +70,54 @@ def test_the_summary_follows_its_schema(benchmarked):
                          "lp_over_training", "practice"}
     assert pair["trials"] == 2
     assert set(pair["demonstrators"]["good"]) == {"controller", "body", "lapse", "goals", "own_goals", "attempts",
-                                                  "final_lp"}
+                                                  "final_lp", "true_skill"}
     assert pair["demonstrators"]["good"]["attempts"] == 4
     assert set(pair["skill_recovery"]) == {"spearman", "kendall", "best_hits", "top_among_best"}
     assert list(pair["methods"]) == list(METHODS)
     for method, entry in pair["methods"].items():
         assert set(entry) == {"goals", "own_goals", "net_goals", "attempts", "evaluated", "hyperparameters",
-                              "validation"}
+                              "validation", "floor", "gain_over_floor"}
+        assert entry["floor"] is None and entry["gain_over_floor"] is None, "the run has no random crowd"
         assert entry["attempts"] == 4
         assert entry["evaluated"] == (3 if method in ("bc", "bco", "bc_best", "random") else
                                       1 if method == "polymimic_practice" else 2)
-        assert (entry["validation"] is None) == method.startswith("polymimic")
+        assert (entry["validation"] is None) == (method.startswith("polymimic") and method != "polymimic")
         assert entry["net_goals"]["mean"] == pytest.approx(entry["goals"]["mean"] - entry["own_goals"]["mean"])
     assert pair["methods"]["bc"]["hyperparameters"]["classifier"]
     assert summary["sizes"]["baseline_fits"] == 3
     assert pair["methods"]["polymimic"]["hyperparameters"]["control"] == "improved"
     duo = summary["profiles"]["duo"]
     assert duo["demonstrators"]["tiny_00"]["body"] == "tiny"
+
+
+def test_polymimic_weighs_its_world_model_as_its_validation_prefers(benchmarked):
+    """Each world weighting is played after the first trial on the baselines' validation
+    attempts; the best by net goals, then goals (the first of equals), is evaluated."""
+    from polymimic.baselines.tuning import validation_rank
+
+    run = BenchmarkDir(benchmarked)
+    summary = _summary(benchmarked)
+    for profile in ("pair", "duo"):
+        scores = [json.loads(run.weighing_path(profile, w).read_text()) for w in ("outcome", "intent", "every")]
+        assert {(s["attempts"], s["seed"], s["validation_seed"]) for s in scores} == {(2, 0, 0)}
+        best = max(range(3), key=lambda i: (validation_rank(scores[i]), -i))
+        entry = summary["profiles"][profile]["methods"]["polymimic"]
+        assert entry["hyperparameters"]["world_weighting"] == scores[best]["weighting"]
+        assert entry["validation"]["candidates"] == 3
+        assert entry["validation"]["chosen"]["net_goals"] == scores[best]["goals"] - scores[best]["own_goals"]
+        for seed in (0, 1):
+            saved = json.loads(run.evaluation_path(profile, "polymimic", seed).read_text())
+            assert saved["world_weighting"] == scores[best]["weighting"]
+
+
+def test_members_rank_by_their_controllers_measured_skill(benchmarked):
+    run = BenchmarkDir(benchmarked)
+    skill = json.loads(run.controller_skill_path.read_text())
+    assert set(skill) == {"expert", "tiny", "poor"}
+    duo = _summary(benchmarked)["profiles"]["duo"]["demonstrators"]
+    assert duo["tiny_00"]["true_skill"] == pytest.approx(skill["tiny"] * 0.9)
+    assert duo["poor_01"]["true_skill"] == pytest.approx(skill["poor"] * 0.4)
+    assert _summary(benchmarked)["controller_skill"] == skill
 
 
 def test_practice_is_polymimics_imitator_after_the_first_trial_practising(benchmarked):
@@ -214,7 +246,7 @@ def test_bad_crowds_and_sizes_are_named(extra, message, tmp_path, capsys):
 def test_the_report_states_every_choice(benchmarked):
     text = (benchmarked / "benchmark.md").read_text()
     assert "## Targets" in text and "chosen on validation" in text
-    assert "classifier=" in text
+    assert "classifier=" in text and "world_weighting=" in text
 
 
 def test_the_report_names_the_improved_controls_choices_where_they_are_not_the_defaults(benchmarked, tmp_path):
@@ -349,7 +381,7 @@ def test_bc_best_is_bc_where_every_member_shares_the_lowest_lapse_and_is_copied_
     copied, fitted = tmp_path / "copied", tmp_path / "fitted"
     assert main(["benchmark", "--config", str(path), "--run-dir", str(copied), "--quiet", "--workers", "1"]) == 0
     assert tuned == ["bc"]
-    monkeypatch.setattr(driver.Benchmark, "_bc_best_is_bc", lambda self, crowd: False)
+    monkeypatch.setattr(driver.Benchmark, "_bc_best_is_bc", lambda self, crowd, skill: False)
     assert main(["benchmark", "--config", str(path), "--run-dir", str(fitted), "--quiet", "--workers", "1"]) == 0
     assert tuned == ["bc", "bc", "bc_best"]
     assert (copied / "benchmark.json").read_bytes() == (fitted / "benchmark.json").read_bytes()

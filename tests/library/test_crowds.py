@@ -1,4 +1,5 @@
-"""Crowds: the five profiles as docs/guides/crowd.md lists them, crowds from data, and their recordings."""
+"""Crowds: the profiles as docs/guides/crowd.md and the floors and misleading crowds list them, true skill,
+crowds from data, and their recordings."""
 
 import dataclasses
 import json
@@ -9,7 +10,7 @@ import pytest
 
 import polymimic
 from polymimic import recognition
-from polymimic.crowds import PROFILES, Crowd, Member, member_seed, profile, record_crowd
+from polymimic.crowds import PROFILES, Crowd, Member, controller_skill, member_seed, profile, record_crowd
 from polymimic.field import FRAME_DTYPE, Demonstration
 from polymimic.learning import segmented
 
@@ -26,6 +27,38 @@ def test_the_five_profiles_are_the_specs():
     assert {m.body for m in mixed.members} == {"lego", "tiny", "humanoid"}
     assert PROFILES["one_good"].best() == ("expert_00",)
     assert len(PROFILES["half"].best()) == 5
+
+
+def test_the_floor_and_the_misleading_crowds():
+    members = {name: sorted((m.controller, m.lapse) for m in PROFILES[name].members)
+               for name in ("random", "all_poor", "half_poor", "one_good_poor")}
+    assert members["random"] == [("expert", 1.0)] * 10
+    assert members["all_poor"] == [("poor", 0.0)] * 10
+    assert members["half_poor"] == [("expert", 0.05)] * 5 + [("poor", 0.0)] * 5
+    assert members["one_good_poor"] == [("expert", 0.05)] + [("poor", 0.0)] * 9
+    assert all(len(PROFILES[name]) == 10 for name in members)
+
+
+def test_true_skill_is_the_controllers_net_goals_while_it_is_in_command():
+    crowd = PROFILES["one_good_poor"]
+    # By ε alone the nine Poor players, who never lapse, are the best…
+    assert set(crowd.best()) == {f"poor_{i:02d}" for i in range(1, 10)}
+    # …by what their controllers score, the Expert is.
+    controllers = {"expert": 0.96, "poor": -0.02}
+    skill = crowd.skill(controllers)
+    assert skill["expert_00"] == pytest.approx(0.96 * 0.95) and skill["poor_03"] == pytest.approx(-0.02)
+    assert crowd.best(controllers) == ("expert_00",)
+    # Within one controller, lower ε ranks higher, as before.
+    linear = PROFILES["linear"].skill({"expert": 1.0})
+    assert sorted(linear, key=linear.__getitem__, reverse=True) == list(PROFILES["linear"].names)
+    with pytest.raises(ValueError, match="no measured skill for controller 'poor'"):
+        crowd.skill({"expert": 1.0})
+
+
+def test_a_controllers_skill_is_its_net_goals_per_attempt_without_lapses():
+    demos = [d for c in (1, 2) for d in polymimic.record("poor", configuration=c, n=3, seed=4)]
+    net = sum(d.outcome == "goal" for d in demos) - sum(d.outcome == "own_goal" for d in demos)
+    assert controller_skill(["poor"], n=3, seed=4) == {"poor": net / 6}
 
 
 def test_a_crowd_round_trips_as_data():

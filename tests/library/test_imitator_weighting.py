@@ -7,7 +7,7 @@ import json
 import pytest
 
 import polymimic
-from polymimic import learning, recognition
+from polymimic import _native, learning, recognition
 
 
 def test_the_switches_default_to_the_thesis():
@@ -108,8 +108,40 @@ def test_the_gain_leaves_out_a_member_whose_lp_never_rose(recognizer, demonstrat
                                           demonstrations=demos)
         return [a.frames.tobytes() for a in polymimic.evaluate(policy, attempts_per_configuration=2, seed=5).attempts]
 
-    # The Poor weighs (0.45 − 0.5)⁺ = 0 and the Expert 1: as if only the Expert had been watched.
-    gain = polymimic.LearningConfig(imitator_weighting="lp_gain")
+    # The Poor weighs (0.45 − 0.5)⁺ = 0 and the Expert 1: with the weights reaching every part of
+    # the world model, as if only the Expert had been watched.
+    gain = polymimic.LearningConfig(imitator_weighting="lp_gain", world_weighting="every")
     assert frames(gain, demonstrations) == frames(polymimic.LearningConfig(), expert_only)
     # Under "lp" the Poor still weighs 0.45 / LP_expert: it is not left out.
     assert frames(gain.replace(imitator_weighting="lp"), demonstrations) != frames(gain, demonstrations)
+    # Reaching no part ("outcome"), the weights change nothing the improved control learns.
+    outcome = gain.replace(world_weighting="outcome")
+    assert frames(outcome, demonstrations) == frames(outcome.replace(imitator_weighting="even"), demonstrations)
+
+
+def test_the_world_weighting_is_configured_and_refused_by_name():
+    config = polymimic.LearningConfig()
+    assert config.world_weighting == "outcome" and config.to_dict()["world_weighting"] == "outcome"
+    every = config.replace(world_weighting="every")
+    assert every.world_weighting == "every" and polymimic.LearningConfig.from_toml(every.to_toml()) == every
+    with pytest.raises(ValueError, match='world_weighting must be "every" or "intent" or "outcome", got "physics"'):
+        polymimic.LearningConfig(world_weighting="physics")
+
+
+def test_parts_learned_from_no_demonstration_ignore_the_demonstrations(recognizer, demonstrations):
+    trial = polymimic.run_trial(demonstrations, recognizer=recognizer, ordering=ORDERING, seed=3)
+    expert_only = [d for d in demonstrations if d["demonstrator"] == "expert"]
+
+    def frames(demos, unlearned):
+        policy = _native.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=demos,
+                                        unlearned=unlearned)
+        return [a.frames.tobytes() for a in polymimic.evaluate(policy, attempts_per_configuration=2, seed=5).attempts]
+
+    # With no part of the world model learned, what was watched makes no difference…
+    world = ["ball_response", "push_region", "state_value"]
+    assert frames(demonstrations, world) == frames(expert_only, world)
+    # …and with every part learned, it does.
+    assert frames(demonstrations, []) != frames(expert_only, [])
+    with pytest.raises(ValueError, match='unlearned: "ball" is no part'):
+        _native.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=demonstrations,
+                               unlearned=["ball"])

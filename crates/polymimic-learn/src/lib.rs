@@ -31,7 +31,7 @@ pub use approach::ApproachPlan;
 pub use average::{AverageChoice, AverageSearch, net_goals, net_goals_of, spare_attempts, tracked_throughout};
 pub use ball_response::BallResponse;
 pub use behaviour::Behaviour;
-pub use config::{ImitatorWeighting, LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
+pub use config::{ImitatorWeighting, LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope, WorldWeighting};
 pub use control::{Attempt, ControlMode, ImitatorPolicy, StartAt, attempt_seeds, start_attempt_seeds};
 pub use correspondence::{Setting, imitator_reach_mm, onto_setting, reach_mm};
 pub use error::{LearnError, LearnParamsError};

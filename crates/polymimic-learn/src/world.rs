@@ -65,7 +65,8 @@ impl WorldModel {
     }
 
     /// [`Self::learn`] with every sample of demonstration i weighing `weights[i]` (1 for a
-    /// demonstration beyond the end of `weights`; one of weight 0 is left out): the ball's
+    /// demonstration beyond the end of `weights`; one of weight 0 is left out) in the parts
+    /// `config.world_weighting` names (the others weigh every demonstration 1): the ball's
     /// response and a state's value are weighted means, the push region's ranges weighted
     /// percentiles. Weights of 1 give exactly [`Self::learn`].
     #[must_use]
@@ -91,25 +92,31 @@ impl WorldModel {
         motion: &MotionTable,
         config: &LearningConfig,
     ) -> Self {
-        let (with_own, with_own_weights);
+        // Physics is the same whoever shows it; only intent is weighed where the config says so.
+        let physics: &[f64] = if config.world_weighting.weighs_physics() { weights } else { &[] };
+        let intent: &[f64] = if config.world_weighting.weighs_intent() { weights } else { &[] };
+        let (with_own, ball_weights, value_weights, region_weights);
         let (mut ball, mut value, mut region) =
-            ((demonstrations, weights), (demonstrations, weights), (demonstrations, weights));
+            ((demonstrations, physics), (demonstrations, intent), (demonstrations, intent));
         if !practice.attempts.is_empty() {
             with_own = [demonstrations, practice.attempts].concat();
-            with_own_weights = (0..demonstrations.len())
-                .map(|i| weights.get(i).copied().unwrap_or(1.0))
-                .chain(std::iter::repeat_n(practice.weight, practice.attempts.len()))
-                .collect::<Vec<f64>>();
-            let both = (with_own.as_slice(), with_own_weights.as_slice());
+            let with_own_weights = |weights: &[f64]| {
+                (0..demonstrations.len())
+                    .map(|i| weights.get(i).copied().unwrap_or(1.0))
+                    .chain(std::iter::repeat_n(practice.weight, practice.attempts.len()))
+                    .collect::<Vec<f64>>()
+            };
+            (ball_weights, value_weights, region_weights) =
+                (with_own_weights(physics), with_own_weights(intent), with_own_weights(intent));
             let refines = practice.refines;
             if refines.ball_response {
-                ball = both;
+                ball = (with_own.as_slice(), ball_weights.as_slice());
             }
             if refines.state_value {
-                value = both;
+                value = (with_own.as_slice(), value_weights.as_slice());
             }
             if refines.push_region {
-                region = both;
+                region = (with_own.as_slice(), region_weights.as_slice());
             }
         }
         let (min_mm, min_rad) = MIN_REGION_HALF_WIDTH;
@@ -128,12 +135,28 @@ impl WorldModel {
     }
 }
 
+impl WorldModel {
+    /// This model with the parts `parts` names learned from no demonstration: what the
+    /// imitator's self-observation alone (its primitives, with no ball and no goal) tells of
+    /// them: the ball stays where it lies, every state is worth 0, and there is no push region
+    /// to route to. The ablation of what each part brings.
+    #[must_use]
+    pub fn without(self, parts: Refines) -> Self {
+        Self {
+            ball_response: if parts.ball_response { BallResponse::default() } else { self.ball_response },
+            state_value: if parts.state_value { StateValue::default() } else { self.state_value },
+            approach: if parts.push_region { None } else { self.approach },
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use polymimic_perceive::{Label, Segment};
     use polymimic_types::{Pose, Primitive, TrackedFrame};
 
     use super::*;
+    use crate::config::WorldWeighting;
     use crate::round::Ending;
 
     /// Ten scoring pushes, every one from 150 mm behind the ball facing the goal.
@@ -235,6 +258,49 @@ mod tests {
         assert!(close(practised(1.0), (20.0, 20.0)), "{:?}", practised(1.0));
         // …and three quarters of the way to straight ahead at weight 3.
         assert!(close(practised(3.0), (30.0, 10.0)), "{:?}", practised(3.0));
+    }
+
+    #[test]
+    fn the_world_weighting_reaches_intent_alone_by_default_and_physics_only_under_every() {
+        // Two scoring demonstrations of ten pushes each, the second by a member weighing 0.
+        let demos = [straight_pushes(), straight_pushes()].concat();
+        let motion = MotionTable::exact(40.0, 30.0);
+        let learned = |world_weighting| {
+            let config = LearningConfig { world_weighting, ..LearningConfig::default() };
+            WorldModel::learn_weighted(&demos, &[1.0, 0.0], &Pitch::LARGE, &motion, &config)
+        };
+        let parts = |w: &WorldModel| {
+            let region = w.approach.as_ref().map_or(0, |a| a.push_region.pushes);
+            (w.ball_response.sample_count(Primitive::Forward), w.state_value.len(), region)
+        };
+        // One demonstration's samples: 1 ball sample (the later pushes start with the ball
+        // rolling), 11 states, 10 pushes; both give twice as many.
+        assert_eq!(parts(&learned(WorldWeighting::Every)), (1, 11, 10));
+        assert_eq!(parts(&learned(WorldWeighting::Intent)), (2, 11, 10));
+        assert_eq!(parts(&learned(WorldWeighting::Outcome)), (2, 22, 20));
+        // Weights of 1 are no weights under any choice.
+        for choice in [WorldWeighting::Every, WorldWeighting::Intent, WorldWeighting::Outcome] {
+            let config = LearningConfig { world_weighting: choice, ..LearningConfig::default() };
+            let ones = WorldModel::learn_weighted(&demos, &[1.0, 1.0], &Pitch::LARGE, &motion, &config);
+            assert_eq!(ones, WorldModel::learn(&demos, &Pitch::LARGE, &motion, &config));
+        }
+    }
+
+    #[test]
+    fn a_part_learned_from_no_demonstration_is_what_self_observation_gives() {
+        let demos = straight_pushes();
+        let motion = MotionTable::exact(40.0, 30.0);
+        let world = WorldModel::learn(&demos, &Pitch::LARGE, &motion, &LearningConfig::default());
+        let none = Refines { ball_response: false, state_value: false, push_region: false };
+        assert_eq!(world.clone().without(none), world);
+        let state = TrackedFrame { robot: Pose::new(-150.0, 0.0, 0.0), ball_x_mm: 0.0, ball_y_mm: 0.0 };
+        let ball = world.clone().without(Refines { ball_response: true, ..none });
+        assert_eq!(ball.ball_response.predict(&state, Primitive::Forward), (0.0, 0.0), "the ball stays");
+        assert_eq!((&ball.state_value, &ball.approach), (&world.state_value, &world.approach));
+        let value = world.clone().without(Refines { state_value: true, ..none });
+        assert!(value.state_value.is_empty() && value.approach.is_some());
+        let region = world.clone().without(Refines { push_region: true, ..none });
+        assert!(region.approach.is_none() && region.ball_response == world.ball_response);
     }
 
     #[test]

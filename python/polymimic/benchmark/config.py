@@ -4,12 +4,14 @@ The sections a reproduction has (``[seeds]``, ``[field]``, ``[recognizer]``, ``[
 ``[learning]``, read by :class:`~polymimic.runs.config.RunConfig`), then ``[benchmark]``
 (sizes, methods, tuning effort) and one ``[profiles.<name>]`` table per crowd, whose
 ``members`` list tables of ``controller`` and ``lapse`` (and optionally ``name`` and
-``count``). The five built-in profiles are there unless a file redefines one; a file may add
+``count``). The built-in profiles are there unless a file redefines one; a file may add
 its own and run it with ``profiles = [...]``.
 
 >>> config = BenchmarkConfig()
 >>> config.benchmark.trials, config.benchmark.profiles[:2], config.learning.imitator_weighting
 (20, ('one_good', 'half'), 'lp')
+>>> config.benchmark.world_weightings
+('outcome', 'intent', 'every')
 >>> text = '[benchmark]\\nprofiles = ["pair"]\\n[profiles.pair]\\nmembers = [{controller = "expert", lapse = 0.1}, ' \\
 ...        '{controller = "poor", lapse = 0.0}]\\n'
 >>> BenchmarkConfig.from_toml(text).crowds()[0].names
@@ -31,7 +33,7 @@ from polymimic.crowds import PROFILES, Crowd
 from polymimic.practice.methods import METHODS as PRACTICE_METHODS
 from polymimic.runs.config import ConfigError, RunConfig, as_table, checked_section, in_range, read_config, toml_tables
 
-__all__ = ["METHODS", "OPTIONAL_METHODS", "BenchmarkConfig", "BenchmarkSettings"]
+__all__ = ["METHODS", "OPTIONAL_METHODS", "WORLD_WEIGHTINGS", "BenchmarkConfig", "BenchmarkSettings"]
 
 METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
            "bc", "bc_best", "random")
@@ -47,6 +49,10 @@ once per profile (:mod:`polymimic.baselines.ppo_bc`)."""
 TRIAL_INDEPENDENT = ("bc", "bco", "bc_best", "random")
 """Baselines that learn the same thing in every trial: the crowd's demonstrations, unweighted.
 They are fitted ``baseline_fits`` times, each fit under its own seed."""
+
+WORLD_WEIGHTINGS = ("every", "intent", "outcome")
+"""The parts of polymimic's world model its LP weighting may reach (``LearningConfig``'s
+``world_weighting``)."""
 
 RENAMED = {"refit_baselines": "baseline_fits (how many fits of bc, bco, bc_best and random, each under its own seed; "
                               "refit_baselines = true was baseline_fits = trials)"}
@@ -86,6 +92,12 @@ class BenchmarkSettings:
                                 "(polymimic.practice.methods; jsrl needs polymimic[rl])", "refine")
     practice_trials: int = _doc("trials whose polymimic imitator practises, the first ones (every trial where "
                                 "there are fewer; each practice costs practice_steps)", 5)
+    world_weightings: tuple[str, ...] = _doc("the parts of polymimic's world model its LP weighting may reach "
+                                             "(outcome: none; intent: the push region and the states' values; "
+                                             "every: the ball's response too), chosen per profile on the "
+                                             "validation attempts, one trial each under the first trial's seed, "
+                                             "as the baselines are tuned (the first of equals; one candidate: used "
+                                             "untried)", ("outcome", "intent", "every"))
     baseline_fits: int = _doc("fits of bc, bco, bc_best and random, each evaluated, under seeds first_trial, "
                               "first_trial + 1, …: a seed draws the fit's decision samples and seeds its "
                               "classifier (bco_lp is fitted after each of the first lp_plugin_trials trials)", 3)
@@ -100,13 +112,17 @@ class BenchmarkSettings:
         if self.practice_method not in PRACTICE_METHODS:
             raise ConfigError(f"[benchmark] practice_method must be one of {', '.join(PRACTICE_METHODS)}, got "
                               f"{self.practice_method!r}")
-        for name in ("profiles", "methods"):
+        for name in ("profiles", "methods", "world_weightings"):
             value = getattr(self, name)
             if not isinstance(value, (list, tuple)) or not value:
                 raise ConfigError(f"[benchmark] {name} must be a non-empty list, got {value!r}")
             if len(set(value)) != len(value):
                 raise ConfigError(f"[benchmark] {name} names {next(v for v in value if value.count(v) > 1)!r} twice")
             object.__setattr__(self, name, tuple(value))
+        for weighting in self.world_weightings:
+            if weighting not in WORLD_WEIGHTINGS:
+                raise ConfigError(f"[benchmark] world_weightings: unknown weighting {weighting!r}; expected one of "
+                                  f"{', '.join(WORLD_WEIGHTINGS)}")
         for method in self.methods:
             if method not in METHODS + OPTIONAL_METHODS:
                 raise ConfigError(f"[benchmark] methods: unknown method {method!r}; expected one of "

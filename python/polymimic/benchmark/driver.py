@@ -6,8 +6,11 @@ arrives, and a rerun redoes only what is missing or damaged):
 
 1. **recognise** — self-observation and the recogniser, as a reproduction makes them;
 2. **record** — each profile's crowd, 25 valid demonstrations per member and configuration,
-   to ``datasets/crowd_<profile>.parquet``;
+   to ``datasets/crowd_<profile>.parquet``, and as many of each controller without lapses, whose
+   net goals are its members' true skill (``datasets/controller_skill.json``);
 3. **learn** — every trial of every profile, LP-weighted and with every LP held at 0.5;
+   **weigh** — polymimic's world weighting, each candidate played after the first trial on the
+   validation attempts (:mod:`polymimic.benchmark.weighing`);
 4. **tune** — every baseline's hyperparameters on validation attempts (``bco_lp`` weighs by
    the first trial's LPs); the chosen candidate, fitted as the evaluation after the first
    trial would fit it, is evaluated there and then;
@@ -36,11 +39,13 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.benchmark.config import OPTIONAL_METHODS, BenchmarkConfig
 from polymimic.benchmark.figures import draw_figures
 from polymimic.benchmark.files import (
+    load_controller_skill,
     load_method_evaluation,
     load_ppo_bc_curve,
     load_ppo_bc_tuning,
     load_ppo_curve,
     load_tuning,
+    load_weighing,
 )
 from polymimic.benchmark.report import benchmark_html, benchmark_markdown
 from polymimic.benchmark.rundir import BenchmarkDir
@@ -48,6 +53,7 @@ from polymimic.benchmark.summary import gather
 from polymimic.benchmark.tasks import (
     POLYMIMIC_METHODS,
     PRACTISED,
+    WEIGHED,
     ProfileInputs,
     Shared,
     dumps,
@@ -59,8 +65,10 @@ from polymimic.benchmark.tasks import (
     practised_evaluation,
     trial_task,
     tuning_task,
+    weighing_task,
 )
-from polymimic.crowds import Crowd, record_crowd
+from polymimic.benchmark.weighing import chosen_world_weighting, is_weighed
+from polymimic.crowds import Crowd, controller_skill, record_crowd
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
 from polymimic.field import PRIMITIVES, self_observation
 from polymimic.learning import TrialResult, segmented
@@ -105,6 +113,8 @@ class Benchmark(Stepped):
         self._step("record", self.record)
         shared = self.shared()
         self._step("learn", lambda: self.learn(shared))
+        if is_weighed(self.config):
+            self._step("weigh", lambda: self.weigh(shared))
         self._step("tune", lambda: self.tune(shared))
         self._step("evaluate", lambda: self.evaluate(shared))
         if PRACTISED in self.config.benchmark.methods:
@@ -145,6 +155,11 @@ class Benchmark(Stepped):
                                                      config=self.config.field), path)
                     made += 1
                 bar.update(1)
+        if not self.run.finished(self.run.controller_skill_path, load_controller_skill):
+            controllers = sorted({m.controller for crowd in crowds for m in crowd.members})
+            skill = controller_skill(controllers, n=n, seed=self.config.seeds.demonstrations, config=self.config.field)
+            atomic_write_text(self.run.controller_skill_path, dumps(skill))
+            made += 1
         return made
 
     def shared(self) -> Shared:
@@ -155,7 +170,8 @@ class Benchmark(Stepped):
         for crowd in self.config.crowds():
             demos = load_demonstrations(self.run.require(self.run.crowd_path(crowd.name), "benchmark"))
             profiles[crowd.name] = ProfileInputs(crowd, demos, segmented(demos, recognizer, **segmenter))
-        return Shared(self.config, recognizer, profiles)
+        skill = load_controller_skill(self.run.require(self.run.controller_skill_path, "benchmark"))
+        return Shared(self.config, recognizer, profiles, skill)
 
     # 3. Trials.
 
@@ -181,21 +197,34 @@ class Benchmark(Stepped):
         path = self.run.require(self.run.trial_path(profile, seed, uniform_lp=uniform_lp), "benchmark")
         return path.read_text(encoding="utf-8")
 
+    # 3b. polymimic's world weighting, on validation.
+
+    def weigh(self, shared: Shared) -> int:
+        first = self.config.seeds.first_trial
+        jobs = [(crowd.name, weighting, self._trial_json(crowd.name, first)) for crowd in self.config.crowds()
+                for weighting in self.config.benchmark.world_weightings
+                if not self.run.finished(self.run.weighing_path(crowd.name, weighting), load_weighing)]
+        with progress(total=len(jobs), desc="weigh", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(weighing_task, shared, jobs):
+                atomic_write_text(self.run.weighing_path(result["profile"], result["weighting"]), dumps(result))
+                bar.update(1)
+        return len(jobs)
+
     # 4. Tuning.
 
     def _baselines(self) -> list[str]:
         return [m for m in self.config.benchmark.methods if m not in POLYMIMIC_METHODS and m not in OPTIONAL_METHODS]
 
-    def _bc_best_is_bc(self, crowd: Crowd) -> bool:
+    def _bc_best_is_bc(self, crowd: Crowd, skill: dict[str, float] | None) -> bool:
         """Whether ``bc_best`` learns just what ``bc`` does in ``crowd`` (every member shares the
-        lowest ε): the same demonstrations, candidates and seeds make the same fits, so its tuning
-        is ``bc``'s, copied rather than run again."""
-        return set(crowd.best()) == set(crowd.names) and {"bc", "bc_best"} <= set(self._baselines())
+        highest true skill): the same demonstrations, candidates and seeds make the same fits, so
+        its tuning is ``bc``'s, copied rather than run again."""
+        return set(crowd.best(skill)) == set(crowd.names) and {"bc", "bc_best"} <= set(self._baselines())
 
     def tune(self, shared: Shared) -> int:
         """Stage: each baseline's hyperparameters chosen on the validation attempts; returns the tunings run."""
         first = self.config.seeds.first_trial
-        copies = [crowd.name for crowd in self.config.crowds() if self._bc_best_is_bc(crowd)
+        copies = [crowd.name for crowd in self.config.crowds() if self._bc_best_is_bc(crowd, shared.controller_skill)
                   and not self.run.finished(self.run.tuning_path(crowd.name, "bc_best"), load_tuning)]
         jobs = [(crowd.name, method, self._trial_json(crowd.name, first) if method == "bco_lp" else None)
                 for crowd in self.config.crowds() for method in self._baselines()
@@ -226,9 +255,15 @@ class Benchmark(Stepped):
     # 5. Evaluation.
 
     def _evaluation_done(self, profile: str, method: str, seed: int) -> bool:
-        saved = self.run.loaded(self.run.evaluation_path(profile, method, seed), load_method_evaluation)
-        return saved is not None and (saved["attempts"] == 2 * self.config.benchmark.attempts_per_configuration
+        path = self.run.evaluation_path(profile, method, seed)
+        saved = self.run.loaded(path, load_method_evaluation)
+        done = saved is not None and (saved["attempts"] == 2 * self.config.benchmark.attempts_per_configuration
                                       and saved["seed"] == self.config.seeds.evaluation)
+        if done and method == WEIGHED and is_weighed(self.config):
+            # Played under another world weighting than its validation now chooses: play again.
+            chosen = chosen_world_weighting(self.run, self.config, profile)[0]
+            return bool(json.loads(path.read_text(encoding="utf-8")).get("world_weighting") == chosen)
+        return done
 
     def evaluation_jobs(self) -> list[tuple[str, str, int, str | None, dict[str, Any] | None]]:
         """The evaluations still to run: ``(profile, method, seed, trial JSON, tuned hyperparameters)``."""
@@ -238,6 +273,8 @@ class Benchmark(Stepped):
             for method in (m for m in methods if m not in OPTIONAL_METHODS and m != PRACTISED):
                 tuned = None if method in POLYMIMIC_METHODS else load_tuning(
                     self.run.require(self.run.tuning_path(crowd.name, method), "benchmark"))["hyperparameters"]
+                if method == WEIGHED:
+                    tuned = {"world_weighting": chosen_world_weighting(self.run, self.config, crowd.name)[0]}
                 for seed in self.config.evaluated_seeds(method):
                     if self._evaluation_done(crowd.name, method, seed):
                         continue
@@ -346,7 +383,7 @@ class Benchmark(Stepped):
         atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
         draw_figures(summary, self.run.plots)
         stages = self.run.manifest()["stages"]
-        steps = ("recognise", "record", "learn", "tune", "evaluate", "practice", "ppo", "ppo_bc")
+        steps = ("recognise", "record", "learn", "weigh", "tune", "evaluate", "practice", "ppo", "ppo_bc")
         seconds = {name: float(stages[name]["seconds"]) for name in steps
                    if isinstance(stages.get(name, {}).get("seconds"), (int, float))}
         markdown = benchmark_markdown(summary, seconds=seconds)

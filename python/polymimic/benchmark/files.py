@@ -7,11 +7,11 @@ import os
 from typing import Any, TypedDict
 
 from polymimic._native import ModelFileError
-from polymimic.benchmark.config import METHODS
+from polymimic.benchmark.config import METHODS, WORLD_WEIGHTINGS
 from polymimic.runs.files import checked_outcomes, checked_tuning, integer_key, json_object, name_key
 
-__all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_method_evaluation", "load_ppo_bc_curve",
-           "load_ppo_bc_tuning", "load_ppo_curve", "load_tuning"]
+__all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_controller_skill", "load_method_evaluation",
+           "load_ppo_bc_curve", "load_ppo_bc_tuning", "load_ppo_curve", "load_tuning", "load_weighing"]
 
 
 class SavedMethodEvaluation(TypedDict):
@@ -119,3 +119,26 @@ def load_ppo_bc_curve(path: str | os.PathLike[str]) -> dict[str, Any]:
         raise ModelFileError(f"{where}: key 'pretraining' must be a cloning (epochs, learning_rate, batch_size), "
                              f"got {pretraining!r}")
     return {**load_ppo_curve(path), "profile": name_key(data, "profile", where), "pretraining": pretraining}
+
+
+def load_weighing(path: str | os.PathLike[str]) -> dict[str, Any]:
+    """A weighing file, checked: polymimic under one world weighting on the validation attempts."""
+    where, data = os.fspath(path), json_object(path, "weighing")
+    attempts = integer_key(data, "attempts", where, 1)
+    goals, own = integer_key(data, "goals", where, 0, attempts), integer_key(data, "own_goals", where, 0, attempts)
+    if goals + own > attempts:
+        raise ModelFileError(f"{where}: {goals} goals and {own} own goals in {attempts} attempts")
+    name_key(data, "profile", where)
+    name_key(data, "weighting", where, WORLD_WEIGHTINGS)
+    integer_key(data, "seed", where, 0)
+    integer_key(data, "validation_seed", where, 0)
+    return data
+
+
+def load_controller_skill(path: str | os.PathLike[str]) -> dict[str, float]:
+    """Each controller's net goals per attempt without lapses, checked: numbers in [−1, 1]."""
+    where, data = os.fspath(path), json_object(path, "controller skill")
+    for name, value in data.items():
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not -1.0 <= value <= 1.0:
+            raise ModelFileError(f"{where}: controller {name!r} has skill {value!r}; expected a number in [-1, 1]")
+    return {name: float(value) for name, value in data.items()}

@@ -8,6 +8,7 @@ from typing import Any
 
 from polymimic.benchmark.figures import FIGURES
 from polymimic.benchmark.targets import check_targets
+from polymimic.crowds import FLOOR
 from polymimic.runs.markdown import to_html
 from polymimic.runs.stats import msd
 
@@ -31,21 +32,52 @@ def _validation(scored: Mapping[str, Any] | None) -> str:
     return f"{scored['chosen']['net_goals']} ({second}) of {scored['attempts']}"
 
 
+def _floor(value: float | None, *, signed: bool = False) -> str:
+    return "n/a" if value is None else f"{value:+.1f}" if signed else f"{value:.1f}"
+
+
 def _methods_table(profile: Mapping[str, Any]) -> list[str]:
-    rows = ["| method | goals | own goals | net goals | evaluated | validation net goals | chosen on validation |",
-            "| --- | --- | --- | --- | --- | --- | --- |"]
+    rows = ["| method | goals | own goals | net goals | random-crowd floor | gain over floor | evaluated | "
+            "validation net goals | chosen on validation |",
+            "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for method, s in profile["methods"].items():
         rows.append(f"| {method} | {msd(s['goals'])} | {msd(s['own_goals'])} | {msd(s['net_goals'])} | "
+                    f"{_floor(s.get('floor'))} | {_floor(s.get('gain_over_floor'), signed=True)} | "
                     f"{s['evaluated']} × {s['attempts']} | {_validation(s.get('validation'))} | "
                     f"{_hyperparameters(s['hyperparameters'])} |")
     return rows
 
 
+def _gain_rows(summary: Mapping[str, Any]) -> list[str]:
+    """What the demonstrations add: every method's gain over its own random-crowd floor."""
+    profiles = {name: p for name, p in summary["profiles"].items() if name != FLOOR}
+    methods = list(dict.fromkeys(m for p in profiles.values() for m in p["methods"]))
+    floors = summary["profiles"][FLOOR]["methods"]
+    rows = ["## What the demonstrations add", "",
+            f"Each method's net goals on the `{FLOOR}` crowd (ten members playing a random primitive every "
+            "second: demonstrations that carry no skill) are its floor, what it scores from what it knows of the "
+            "task and the field without being shown how; the gain over that floor is what a crowd's demonstrations "
+            "add. Mean net goals over the trials or fits evaluated, gain in brackets:", "",
+            "| method | floor | " + " | ".join(profiles) + " |", "| --- | --- | " + " | ".join("---" for _ in profiles)
+            + " |"]
+    for method in methods:
+        floor = floors.get(method, {}).get("net_goals", {}).get("mean")
+        cells = []
+        for profile in profiles.values():
+            s = profile["methods"].get(method)
+            cells.append("n/a" if s is None else f"{s['net_goals']['mean']:.1f} "
+                         f"({_floor(s.get('gain_over_floor'), signed=True)})")
+        rows.append(f"| {method} | {_floor(floor)} | " + " | ".join(cells) + " |")
+    return [*rows, ""]
+
+
 def _members_table(profile: Mapping[str, Any]) -> list[str]:
-    rows = ["| member | controller | body | ε | goals | own goals | attempts | final LP |",
-            "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    rows = ["| member | controller | body | ε | true skill | goals | own goals | attempts | final LP |",
+            "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
     for name, m in profile["demonstrators"].items():
-        rows.append(f"| {name} | {m['controller']} | {m['body']} | {m['lapse']:g} | {m['goals']} | "
+        skill = m.get("true_skill")
+        rows.append(f"| {name} | {m['controller']} | {m['body']} | {m['lapse']:g} | "
+                    f"{'n/a' if skill is None else f'{skill:.3f}'} | {m['goals']} | "
                     f"{m['own_goals']} | {m['attempts']} | {msd(m['final_lp'], digits=2)} |")
     return rows
 
@@ -122,6 +154,11 @@ def _practice_rows(summary: Mapping[str, Any]) -> list[str]:
     return [*lines, "", f"![Net goals over practice](plots/{FIGURES['practice_curve']})", ""]
 
 
+def _skills(summary: Mapping[str, Any]) -> str:
+    skills = summary.get("controller_skill") or {}
+    return ", ".join(f"{name} {value:.2f}" for name, value in skills.items()) or "not measured"
+
+
 def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] | None = None) -> str:
     """The report of a ``benchmark.json``; ``seconds`` are the steps' times, from the manifest."""
     sizes = summary["sizes"]
@@ -148,16 +185,26 @@ def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, floa
                   + f"; {sum(seconds.values()):.0f} s in all.", ""]
     lines += ["## Targets", "", "| target | measured | verdict |", "| --- | --- | --- |"]
     lines += [f"| {t['statement']} | {t['measured']} | {_verdict(t['met'])} |" for t in check_targets(summary)]
-    lines += ["", "## Net goals", "", f"![Net goals by method and profile](plots/{FIGURES['net_goals']})", ""]
+    lines += ["", "## Net goals", "", f"![Net goals by method and profile](plots/{FIGURES['net_goals']})", "",
+              "polymimic chooses, per profile, which parts of its world model its LP weighting reaches "
+              "(`world_weighting`: `intent`, the push region and the states' values, the ball's response learned "
+              "from every demonstration at full weight; `every`, all three; `outcome`, none), each candidate played "
+              "after the first trial on the baselines' validation attempts: its validation net goals are the "
+              "chosen weighting's and the best other one's. polymimic_practice keeps the config's weighting.", ""]
     for name, profile in summary["profiles"].items():
         lines += [f"### {name}", "", *_methods_table(profile), ""]
+    if FLOOR in summary["profiles"] and len(summary["profiles"]) > 1:
+        lines += _gain_rows(summary)
     if "ppo" in summary:
         lines += _ppo_rows(summary)
     if any(p.get("practice") for p in summary["profiles"].values()):
         lines += _practice_rows(summary)
     lines += ["## Skill recovery", "",
-              "How well each estimate ranks the members by true skill (lower ε is better): the members' final LPs, "
-              "and the plain estimator that ranks them by the net goals of their own demonstrations.", "",
+              "How well each estimate ranks the members by true skill: the net goals per attempt each member's "
+              "controller scores without lapses (" + _skills(summary) + "), times the share of seconds it is in "
+              "command, 1 − ε; so a Poor player at ε = 0 ranks below an Expert at ε = 0.05. The estimates: the "
+              "members' final LPs, and the plain estimator that ranks them by the net goals of their own "
+              "demonstrations.", "",
               *_recovery_rows(summary), "", f"![LP against lapse](plots/{FIGURES['lp_vs_lapse']})", "",
               f"![LP over training](plots/{FIGURES['lp_over_training']})", "", "## The crowds", ""]
     for name, profile in summary["profiles"].items():

@@ -5,9 +5,12 @@
     manifest.json                    version, config, start and finish of every stage
     datasets/self_observation_train.parquet, models/recognizer.json
     datasets/crowd_<profile>.parquet every member's demonstrations (load_demonstrations reads it)
+    datasets/controller_skill.json   each controller's net goals per attempt without lapses
     models/benchmark/<profile>/trial_<seed>.json               the LP-weighted trial
     models/benchmark/<profile>/trial_<seed>_uniform_lp.json    every LP held at 0.5
     models/benchmark/<profile>/tuning_<method>.json            the candidates tried, the choice
+    models/benchmark/<profile>/weighing_<weighting>.json       polymimic under one world weighting,
+                                                               on the validation attempts
     models/benchmark/<profile>/evaluation_<method>_<seed>.json one method's attempts after one trial
     models/benchmark/<profile>/practice_<seed>.json            the imitator's practice after one trial
     models/benchmark/ppo/curve_<seed>.json, policy_<seed>.pmp  a ppo run's checkpoints, its policy
@@ -47,6 +50,13 @@ class BenchmarkDir(RunHouse[BenchmarkConfig]):
     def crowd_path(self, profile: str) -> pathlib.Path:
         """The profile's recorded crowd (Parquet)."""
         return self.datasets / f"crowd_{profile}.parquet"
+
+    @property
+    def controller_skill_path(self) -> pathlib.Path:
+        return self.datasets / "controller_skill.json"
+
+    def weighing_path(self, profile: str, weighting: str) -> pathlib.Path:
+        return self.profile_dir(profile) / f"weighing_{weighting}.json"
 
     def profile_dir(self, profile: str) -> pathlib.Path:
         """The folder of the profile's trials, tunings and evaluations."""

@@ -1,10 +1,13 @@
 """``benchmark.json``: what a benchmark measured, gathered from its run directory (docs/results/benchmark.md).
 
-Per profile: every member's own outcomes; skill recovery (Spearman ρ and Kendall τ between the
-members' final LPs and true skill, mean and sd over trials, and how many trials put a member of
-the lowest ε on top) beside the same for the plain estimator that ranks members by the net
-goals of their own demonstrations; every method's goals, own goals and net goals after every
-trial. ``None`` stands where a number does not exist (ρ where every member has the same ε).
+Per profile: every member's own outcomes and true skill (its controller's net goals per attempt
+without lapses times 1 − ε, :meth:`polymimic.crowds.Crowd.skill`); skill recovery (Spearman ρ
+and Kendall τ between the members' final LPs and true skill, mean and sd over trials, and how
+many trials put a member of the highest true skill on top) beside the same for the plain
+estimator that ranks members by the net goals of their own demonstrations; every method's goals,
+own goals and net goals after every trial, and, where the run has the ``random`` crowd, its
+floor (its net goals there) and its gain over it: what the demonstrations add. ``None`` stands
+where a number does not exist (ρ where every member has the same skill).
 
 ``ppo``, where it ran, learns no crowd's data: its final checkpoints stand in every profile's
 methods, with the environment steps each run took to first score ``polymimic``'s mean net goals
@@ -30,6 +33,7 @@ from polymimic.baselines.ppo import steps_to_reach
 from polymimic.baselines.tuning import validation_rank
 from polymimic.benchmark.config import BenchmarkConfig
 from polymimic.benchmark.files import (
+    load_controller_skill,
     load_method_evaluation,
     load_ppo_bc_curve,
     load_ppo_bc_tuning,
@@ -37,8 +41,9 @@ from polymimic.benchmark.files import (
     load_tuning,
 )
 from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.benchmark.tasks import POLYMIMIC_METHODS, PRACTISED, final_lps, ppo_hyperparameters
-from polymimic.crowds import Crowd
+from polymimic.benchmark.tasks import POLYMIMIC_METHODS, PRACTISED, WEIGHED, final_lps, ppo_hyperparameters
+from polymimic.benchmark.weighing import chosen_world_weighting, is_weighed
+from polymimic.crowds import FLOOR, Crowd
 from polymimic.datasets import load_demonstrations
 from polymimic.field import PRIMITIVES
 from polymimic.learning import LearningConfig, TrialResult
@@ -48,7 +53,7 @@ from polymimic.runs.practising import PracticeCurve, load_practice, summarise
 from polymimic.runs.stats import mean_sd
 
 __all__ = ["FORMAT", "VERSION", "MemberSummary", "MethodSummary", "PPOSummary", "PracticeSummary", "ProfileSummary",
-           "SkillRecovery", "Validation", "ValidationScore", "gather", "validation"]
+           "SkillRecovery", "Validation", "ValidationScore", "gather", "validation", "with_floors"]
 
 FORMAT, VERSION = "polymimic.benchmark", 1
 LP_POINTS = 200
@@ -63,15 +68,16 @@ class MemberSummary(TypedDict):
     own_goals: int
     attempts: int
     final_lp: MeanSd
+    true_skill: float
 
 
 class SkillRecovery(TypedDict):
     spearman: MeanSd
     kendall: MeanSd
     best_hits: int | None
-    """Trials whose top-ranked member is the one of lowest ε (None where no single one is)."""
+    """Trials whose top-ranked member is the one of highest true skill (None where no single one is)."""
     top_among_best: int | None
-    """Trials whose top-ranked member is one of those of lowest ε (None where all share it)."""
+    """Trials whose top-ranked member is one of those of highest true skill (None where all share it)."""
 
 
 class ValidationScore(TypedDict):
@@ -98,7 +104,12 @@ class MethodSummary(TypedDict):
     evaluated: int
     hyperparameters: dict[str, Any]
     validation: Validation | None
-    """A tuned baseline's validation scores; None for polymimic's untuned methods and ppo."""
+    """A tuned method's validation scores (polymimic's: its world weighting's); None for
+    polymimic's untuned methods and ppo."""
+    floor: float | None
+    """The method's mean net goals on the ``random`` crowd (None where the run has none)."""
+    gain_over_floor: float | None
+    """Its mean net goals here less its floor: what the demonstrations add."""
 
 
 class PPOSummary(MethodSummary):
@@ -129,13 +140,15 @@ class ProfileSummary(TypedDict):
     practice: PracticeSummary | None
 
 
-def recovery(rankings: Sequence[Mapping[str, float]], crowd: Crowd) -> SkillRecovery:
-    """How well each ranking (a score per member, higher is better) recovers true skill."""
-    lapses = crowd.lapses()
+def recovery(rankings: Sequence[Mapping[str, float]], crowd: Crowd,
+             controllers: Mapping[str, float] | None = None) -> SkillRecovery:
+    """How well each ranking (a score per member, higher is better) recovers true skill
+    (:meth:`Crowd.skill` under ``controllers``' measured skills; by ε alone without them)."""
+    true_skill = crowd.skill(controllers)
     names = list(crowd.names)
-    skill = [-lapses[n] for n in names]
+    skill = [true_skill[n] for n in names]
     rhos, taus, on_top = [], [], 0
-    best = set(crowd.best())
+    best = set(crowd.best(controllers))
     for scores in rankings:
         values = [scores[n] for n in names]
         rho, tau = spearman(values, skill), kendall(values, skill)
@@ -192,24 +205,29 @@ def validation(tuning: Mapping[str, Any]) -> Validation:
 def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, method: str) -> MethodSummary:
     saved = [load_method_evaluation(run.require(run.evaluation_path(profile, method, s), "benchmark"))
              for s in config.evaluated_seeds(method)]
+    scored: Validation | None = None
     if method in POLYMIMIC_METHODS:
         control, uniform = POLYMIMIC_METHODS[method]
         chosen: dict[str, Any] = {"control": control, "lp": "held at 0.5" if uniform else "learned",
                                   "imitator_weighting": config.learning.imitator_weighting}
         if control == "improved":
             chosen.update(_improved_control_choices(config.learning))
+            chosen["world_weighting"] = config.learning.world_weighting
         if method == PRACTISED:
             chosen.update(practice_steps=config.benchmark.practice_steps, practice_trials=len(saved),
                           refines="the ball's response and the states' values, from its own attempts")
         chosen["tuned"] = "no: the thesis's constants"
-        scored = None
+        if method == WEIGHED and is_weighed(config):
+            weighting, scores = chosen_world_weighting(run, config, profile)
+            chosen.update(world_weighting=weighting, tuned="the world weighting alone; else the thesis's constants")
+            scored = validation({"scores": scores, "validation_attempts": scores[0]["attempts"]})
     else:
         tuning = load_tuning(run.require(run.tuning_path(profile, method), "benchmark"))
         chosen, scored = tuning["chosen"], validation(tuning)
     return MethodSummary(goals=mean_sd(e["goals"] for e in saved), own_goals=mean_sd(e["own_goals"] for e in saved),
                          net_goals=mean_sd(e["goals"] - e["own_goals"] for e in saved),
                          attempts=2 * config.benchmark.attempts_per_configuration, evaluated=len(saved),
-                         hyperparameters=chosen, validation=scored)
+                         hyperparameters=chosen, validation=scored, floor=None, gain_over_floor=None)
 
 
 def _ppo_curves(run: BenchmarkDir, config: BenchmarkConfig) -> list[dict[str, Any]]:
@@ -223,7 +241,8 @@ def _ppo_summary(curves: Sequence[Mapping[str, Any]], config: BenchmarkConfig, t
     return PPOSummary(goals=mean_sd(f["goals"] for f in finals), own_goals=mean_sd(f["own_goals"] for f in finals),
                       net_goals=mean_sd(f["net_goals"] for f in finals),
                       attempts=2 * config.benchmark.attempts_per_configuration, evaluated=len(curves),
-                      hyperparameters=ppo_hyperparameters(config), validation=None,
+                      hyperparameters=ppo_hyperparameters(config), validation=None, floor=None,
+                      gain_over_floor=None,
                       env_steps_to_polymimic=[None if target is None else steps_to_reach(c["checkpoints"], target)
                                               for c in curves])
 
@@ -250,20 +269,22 @@ def _practice_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str,
                            self_observation_steps=len(PRIMITIVES) * config.recognizer.train_per_primitive)
 
 
-def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd,
-             ppo_curves: Sequence[Mapping[str, Any]] | None) -> ProfileSummary:
+def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd, ppo_curves: Sequence[Mapping[str, Any]] | None,
+             controllers: Mapping[str, float]) -> ProfileSummary:
     demos = load_demonstrations(run.require(run.crowd_path(crowd.name), "benchmark"))
     trials = [TrialResult.load(run.require(run.trial_path(crowd.name, s), "benchmark")) for s in config.trial_seeds()]
     lps = [final_lps(t) for t in trials]
     net: dict[str, float] = {}
     members: dict[str, MemberSummary] = {}
+    true_skill = crowd.skill(controllers)
     for member in crowd.members:
         own = [d for d in demos if d.demonstrator == member.name]
         goals, own_goals = sum(d.outcome == "goal" for d in own), sum(d.outcome == "own_goal" for d in own)
         net[member.name] = (goals - own_goals) / len(own)
         members[member.name] = MemberSummary(controller=member.controller, body=member.body, lapse=member.lapse,
                                              goals=goals, own_goals=own_goals, attempts=len(own),
-                                             final_lp=mean_sd(lp[member.name] for lp in lps))
+                                             final_lp=mean_sd(lp[member.name] for lp in lps),
+                                             true_skill=true_skill[member.name])
     methods: dict[str, MethodSummary] = {m: _method_summary(run, config, crowd.name, m)
                                          for m in config.benchmark.methods if m not in ("ppo", "ppo_bc")}
     ours = methods["polymimic"]["net_goals"]["mean"] if "polymimic" in methods else None
@@ -279,10 +300,30 @@ def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd,
                                                 **{f"cloning_{k}": v for k, v in tuning["chosen"].items()}}
         methods["ppo_bc"]["validation"] = validation(tuning)
     return ProfileSummary(
-        demonstrators=members, trials=len(trials), skill_recovery=recovery(lps, crowd),
-        skill_by_outcomes=recovery([net] * len(trials), crowd), methods=methods,
+        demonstrators=members, trials=len(trials), skill_recovery=recovery(lps, crowd, controllers),
+        skill_by_outcomes=recovery([net] * len(trials), crowd, controllers), methods=methods,
         lp_over_training={name: _downsampled(model.lp_history) for name, model in trials[0].models.items()},
         practice=_practice_summary(run, config, crowd.name, ppo_curves, bc_curves) if PRACTISED in methods else None)
+
+
+def with_floors(profiles: Mapping[str, ProfileSummary]) -> None:
+    """Every method's floor (its mean net goals on the ``random`` crowd) and gain over it, where
+    both exist, set in place.
+
+    >>> net = lambda mean: {"net_goals": {"mean": mean, "sd": 0.0}}
+    >>> profiles = {"one_good": {"methods": {"bc": net(20.0), "ppo": net(40.0)}},
+    ...             FLOOR: {"methods": {"bc": net(5.0)}}}
+    >>> with_floors(profiles)
+    >>> profiles["one_good"]["methods"]["bc"]["gain_over_floor"], profiles["one_good"]["methods"]["ppo"]["floor"]
+    (15.0, None)
+    """
+    floors: Mapping[str, MethodSummary] = profiles[FLOOR]["methods"] if FLOOR in profiles else {}
+    for profile in profiles.values():
+        for method, s in profile["methods"].items():
+            floor = floors[method]["net_goals"]["mean"] if method in floors else None
+            here = s["net_goals"]["mean"]
+            s["floor"] = floor
+            s["gain_over_floor"] = None if floor is None or here is None else round(here - floor, 10)
 
 
 def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
@@ -298,9 +339,12 @@ def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
              "validation_seed": settings.validation_seed}
     # ppo's runs serve every profile: read once.
     curves = _ppo_curves(run, config) if "ppo" in settings.methods else None
+    controllers = load_controller_skill(run.require(run.controller_skill_path, "benchmark"))
+    profiles = {crowd.name: _profile(run, config, crowd, curves, controllers) for crowd in config.crowds()}
+    with_floors(profiles)
     summary = {"format": FORMAT, "version": VERSION, "polymimic_version": __version__,
-               "imitator": config.run.imitator.body, "sizes": sizes,
-               "profiles": {crowd.name: _profile(run, config, crowd, curves) for crowd in config.crowds()}}
+               "imitator": config.run.imitator.body, "sizes": sizes, "controller_skill": controllers,
+               "profiles": profiles}
     if curves is not None:
         runs = [{"seed": c["seed"], "checkpoints": c["checkpoints"]} for c in curves]
         summary["ppo"] = {"hyperparameters": ppo_hyperparameters(config), "eval_every": settings.ppo_eval_every,

@@ -12,15 +12,17 @@ from typing import Any
 
 from polymimic import baselines
 from polymimic._native import PrimitiveRecognizer
+from polymimic.baselines.evaluation import VALIDATION_SEED_BASE
+from polymimic.baselines.tuning import validation_attempts_apart
 from polymimic.benchmark.config import BenchmarkConfig
 from polymimic.crowds import Crowd
 from polymimic.field import Demonstration
 from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate, run_trial
 from polymimic.runs.practising import PracticeInputs
 
-__all__ = ["POLYMIMIC_METHODS", "PRACTISED", "ProfileInputs", "Shared", "evaluation_task", "final_lps",
+__all__ = ["POLYMIMIC_METHODS", "PRACTISED", "WEIGHED", "ProfileInputs", "Shared", "evaluation_task", "final_lps",
            "ppo_bc_task", "ppo_bc_tuning_task", "ppo_hyperparameters", "ppo_task", "practice_inputs",
-           "practised_evaluation", "trial_task", "tuning_task"]
+           "practised_evaluation", "trial_task", "tuning_task", "weighing_task"]
 
 POLYMIMIC_METHODS = {"polymimic": ("improved", False), "polymimic_thesis_control": ("thesis", False),
                      "polymimic_uniform_lp": ("improved", True), "polymimic_practice": ("improved", False)}
@@ -29,6 +31,10 @@ POLYMIMIC_METHODS = {"polymimic": ("improved", False), "polymimic_thesis_control
 (:func:`polymimic.runs.practising.practice_task`)."""
 
 PRACTISED = "polymimic_practice"
+
+WEIGHED = "polymimic"
+"""The method whose world weighting is chosen on the validation attempts (the uniform-LP one
+weighs every member 1, the thesis's control has no world model, and practice keeps the config's)."""
 
 
 @dataclasses.dataclass(frozen=True)
@@ -47,10 +53,13 @@ class Shared:
     config: BenchmarkConfig
     recognizer: PrimitiveRecognizer
     profiles: dict[str, ProfileInputs]
+    controller_skill: dict[str, float] | None = None
+    """Each controller's net goals per attempt without lapses (who is best: :meth:`Crowd.best`)."""
 
-    def learning(self, uniform_lp: bool) -> LearningConfig:
-        """The learning constants, with every LP held (``hold_lp``) for the uniform-LP ablation."""
+    def learning(self, uniform_lp: bool, world_weighting: str | None = None) -> LearningConfig:
         config: LearningConfig = self.config.learning
+        if world_weighting is not None:
+            config = config.replace(world_weighting=world_weighting)
         return config.replace(hold_lp=True) if uniform_lp else config
 
 
@@ -78,7 +87,7 @@ def _baseline_inputs(shared: Shared, profile: str, method: str, trial_json: str 
         assert trial_json is not None, "bco_lp weighs by a trial's LPs"
         extra["weights"] = final_lps(TrialResult.from_json(trial_json))
     if method == "bc_best":
-        best = inputs.crowd.best()
+        best = inputs.crowd.best(shared.controller_skill)
         extra["member"] = best[0] if len(best) == 1 else best
     return extra
 
@@ -105,11 +114,33 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
             "evaluation": _evaluated(shared, profile, method, seeds.first_trial, tuning.policy)}
 
 
-def _imitator(shared: Shared, profile: str, method: str, trial_json: str) -> ImitatorPolicy:
-    """polymimic's imitator (``method`` one of :data:`POLYMIMIC_METHODS`) after the trial."""
+def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:
+    """``(profile, world weighting, the first trial's JSON)`` → polymimic's imitator after that
+    trial, its world model weighed so, played on the validation attempts the baselines are tuned
+    on (never the evaluation's): polymimic's tuning, with a baseline's effort."""
+    profile, weighting, trial_json = job
+    settings, seeds = shared.config.benchmark, shared.config.seeds
+    attempts = validation_attempts_apart(
+        settings.validation_attempts_per_configuration, validation_seed=settings.validation_seed,
+        evaluation_seed=seeds.evaluation, evaluation_attempts_per_configuration=settings.attempts_per_configuration)
+    policy = _imitator(shared, profile, WEIGHED, trial_json, weighting)
+    played = evaluate(policy, attempts_per_configuration=settings.validation_attempts_per_configuration,
+                      seed=VALIDATION_SEED_BASE + settings.validation_seed,
+                      field_config=shared.config.field)
+    if [(a.configuration, a.seed) for a in played.attempts] != attempts:
+        raise RuntimeError("the imitator's validation attempts are not the baselines'")  # the seed rule, guarded
+    return {"profile": profile, "weighting": weighting, "seed": seeds.first_trial,
+            "validation_seed": settings.validation_seed, "goals": played.goals, "own_goals": played.own_goals,
+            "attempts": len(played.attempts)}
+
+
+def _imitator(shared: Shared, profile: str, method: str, trial_json: str,
+              world_weighting: str | None = None) -> ImitatorPolicy:
+    """polymimic's imitator (``method`` one of :data:`POLYMIMIC_METHODS`) after the trial, its
+    world model weighed by ``world_weighting`` (default the config's)."""
     control, uniform_lp = POLYMIMIC_METHODS[method]
     return ImitatorPolicy(TrialResult.from_json(trial_json), recognizer=shared.recognizer,
-                          config=shared.learning(uniform_lp), control=control,
+                          config=shared.learning(uniform_lp, world_weighting), control=control,
                           demonstrations=shared.profiles[profile].segmented if control == "improved" else None,
                           body=shared.config.imitator_body())
 
@@ -133,15 +164,19 @@ def practised_evaluation(shared: Shared, result: dict[str, Any]) -> dict[str, An
 
 def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[str, Any] | None]) -> dict[str, Any]:
     """``(profile, method, trial seed, the trial's JSON, the tuned hyperparameters)`` → the
-    method's goals and own goals on the evaluation attempts after that trial."""
+    method's goals and own goals on the evaluation attempts after that trial (polymimic's
+    hyperparameters: its ``world_weighting``, chosen on validation)."""
     profile, method, trial_seed, trial_json, hyperparameters = job
     settings, seeds, inputs = shared.config.benchmark, shared.config.seeds, shared.profiles[profile]
     if method in POLYMIMIC_METHODS:
         assert trial_json is not None and method != PRACTISED, "the practice stage evaluates practised imitators"
-        result = evaluate(_imitator(shared, profile, method, trial_json),
+        weighting = None if hyperparameters is None else hyperparameters["world_weighting"]
+        result = evaluate(_imitator(shared, profile, method, trial_json, weighting),
                           attempts_per_configuration=settings.attempts_per_configuration, seed=seeds.evaluation,
                           field_config=shared.config.field)
-        return _evaluation(shared, profile, method, trial_seed, [a.outcome for a in result.attempts])
+        outcomes = [a.outcome for a in result.attempts]
+        return {**_evaluation(shared, profile, method, trial_seed, outcomes),
+                **({} if weighting is None else {"world_weighting": weighting})}
     assert hyperparameters is not None
     chosen = baselines.Hyperparameters.from_dict(hyperparameters)
     demos = inputs.demonstrations if method != "random" else []

@@ -11,6 +11,7 @@ from typing import Any
 from polymimic.benchmark.config import METHODS, BenchmarkConfig
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.cli.common import benchmark_config, run_options
+from polymimic.crowds import PROFILES
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.config import ConfigError
 from polymimic.runs.rundir import new_run_path
@@ -22,8 +23,8 @@ def add(commands: Any) -> None:
             "demonstrators of graded skill and mixed bodies; resumable (starts a run)")
     benchmark = commands.add_parser("benchmark", parents=[run_options(tasks=True)], help=text, description=text)
     benchmark.add_argument("--profiles", nargs="+", metavar="PROFILE",
-                           help="only these crowds (built in: one_good half equal linear mixed_bodies; more in "
-                                "--config's [profiles.<name>])")
+                           help=f"only these crowds (built in: {' '.join(PROFILES)}; more in --config's "
+                                "[profiles.<name>])")
     benchmark.add_argument("--methods", nargs="+", metavar="METHOD",
                            help=f"only these methods (of {' '.join(METHODS)})")
     benchmark.add_argument("--imitator", metavar="BODY",

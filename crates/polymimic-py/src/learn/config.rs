@@ -4,7 +4,9 @@
 
 use std::hash::{DefaultHasher, Hash, Hasher};
 
-use polymimic_learn::{ImitatorWeighting, LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope};
+use polymimic_learn::{
+    ImitatorWeighting, LearningConfig, LpApproachWeight, LpBounds, LpCriteria, LpScope, WorldWeighting,
+};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyString, PyTuple, PyType};
@@ -12,7 +14,7 @@ use pyo3::types::{PyBool, PyDict, PyString, PyTuple, PyType};
 use crate::convert::one_of;
 
 /// Every constant, in the order `to_dict` and `repr` give them.
-const NAMES: [&str; 31] = [
+const NAMES: [&str; 32] = [
     "creation_threshold",
     "default_permanency",
     "permanency_threshold",
@@ -24,6 +26,7 @@ const NAMES: [&str; 31] = [
     "imitator_lp",
     "hold_lp",
     "imitator_weighting",
+    "world_weighting",
     "lp_goal",
     "lp_own_goal_weight",
     "lp_ball_to_goal",
@@ -53,6 +56,12 @@ const WEIGHTS: [(&str, LpApproachWeight); 2] =
     [("per_demonstration", LpApproachWeight::PerDemonstration), ("per_span", LpApproachWeight::PerSpan)];
 const WEIGHTINGS: [(&str, ImitatorWeighting); 3] =
     [("even", ImitatorWeighting::Even), ("lp", ImitatorWeighting::Lp), ("lp_gain", ImitatorWeighting::LpGain)];
+
+const WORLD_WEIGHTINGS: [(&str, WorldWeighting); 3] = [
+    ("every", WorldWeighting::Every),
+    ("intent", WorldWeighting::Intent),
+    ("outcome", WorldWeighting::Outcome),
+];
 
 /// The Python name of an imitator weighting.
 pub(crate) fn weighting_name(weighting: ImitatorWeighting) -> &'static str {
@@ -123,6 +132,7 @@ fn set(c: &mut LearningConfig, name: &str, value: &Bound<'_, PyAny>) -> PyResult
         "hold_lp" => flag(name, value).map(|v| c.hold_lp = v),
         "prefer_sooner_goals" => flag(name, value).map(|v| c.prefer_sooner_goals = v),
         "imitator_weighting" => choice(name, value, &WEIGHTINGS).map(|v| c.imitator_weighting = v),
+        "world_weighting" => choice(name, value, &WORLD_WEIGHTINGS).map(|v| c.world_weighting = v),
         "lp_goal" => float(&mut c.lp_goal),
         "lp_own_goal_weight" => float(&mut c.lp_own_goal_weight),
         "lp_ball_to_goal" => float(&mut c.lp_ball_to_goal),
@@ -163,7 +173,11 @@ fn set(c: &mut LearningConfig, name: &str, value: &Bound<'_, PyAny>) -> PyResult
 /// and permanency gains from it in phase 2 (the LPs of that moment; decay is not scaled) and
 /// its samples in the improved control's world model (the final LPs); or ``"lp_gain"``: the
 /// same, each member weighed by how far its LP rose above ``initial_lp``,
-/// ``(LP_m − LP₀)⁺ / max_k (LP_k − LP₀)⁺`` (all 1 if none rose).
+/// ``(LP_m − LP₀)⁺ / max_k (LP_k − LP₀)⁺`` (all 1 if none rose). ``world_weighting`` names
+/// the parts of the improved control's world model those weights reach: ``"outcome"`` (the
+/// default) none, each sample counting by the outcome it led to alone; ``"intent"`` the push
+/// region and the states' values, while the ball's response (physics, the same whoever
+/// pushes) learns from every demonstration at full weight; ``"every"`` all three.
 ///
 /// Examples
 /// --------
@@ -203,6 +217,7 @@ impl PyLearningConfig {
             "hold_lp" => Ok(PyBool::new(py, c.hold_lp).to_owned().into_any()),
             "prefer_sooner_goals" => Ok(PyBool::new(py, c.prefer_sooner_goals).to_owned().into_any()),
             "imitator_weighting" => Ok(PyString::new(py, name_of(&WEIGHTINGS, c.imitator_weighting)).into_any()),
+            "world_weighting" => Ok(PyString::new(py, name_of(&WORLD_WEIGHTINGS, c.world_weighting)).into_any()),
             "lp_bounds" => Ok(PyString::new(py, name_of(&BOUNDS, c.lp_bounds)).into_any()),
             "lp_scope" => Ok(PyString::new(py, name_of(&SCOPES, c.lp_scope)).into_any()),
             "lp_criteria" => Ok(PyString::new(py, name_of(&CRITERIA, c.lp_criteria)).into_any()),
@@ -357,6 +372,12 @@ impl PyLearningConfig {
     #[getter]
     fn imitator_weighting(&self) -> &'static str {
         name_of(&WEIGHTINGS, self.config.imitator_weighting)
+    }
+    /// `"outcome"`, `"intent"` or `"every"`: the parts of the improved control's world model
+    /// the imitator weighting reaches.
+    #[getter]
+    fn world_weighting(&self) -> &'static str {
+        name_of(&WORLD_WEIGHTINGS, self.config.world_weighting)
     }
     #[getter]
     fn lp_goal(&self) -> f64 {

@@ -50,6 +50,10 @@ pub(crate) fn attempt_list<'py>(py: Python<'py>, attempts: &[Attempt]) -> PyResu
 /// ``LP / max LP`` of its demonstrator's model in ``trial`` (the final LPs); a demonstration
 /// whose demonstrator has no model there is a ``ValueError``. The improved control learns the
 /// ball's response from the demonstrations played on the imitator's field only.
+/// ``unlearned`` names parts the demonstrations do not teach (an ablation), each left as the
+/// imitator's self-observation alone would: ``"ball_response"`` (the ball stays),
+/// ``"state_value"`` (every state worth 0), ``"push_region"`` (no region to route to) and
+/// ``"behaviours"`` (the imitator's primitives, none chained).
 #[pyclass(name = "ImitatorPolicy", module = "polymimic", frozen, subclass)]
 pub struct PyImitatorPolicy {
     model: Arc<ForwardModel>,
@@ -66,8 +70,8 @@ impl PyImitatorPolicy {
     #[new]
     #[pyo3(
         signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None, body=Body(BodyKind::Lego),
-                     practice=None, practice_weight=1.0, refines=None),
-        text_signature = "(trial, *, recognizer, config=None, control='thesis', demonstrations=None, body='lego', practice=None, practice_weight=1.0, refines=None)"
+                     practice=None, practice_weight=1.0, refines=None, unlearned=None),
+        text_signature = "(trial, *, recognizer, config=None, control='thesis', demonstrations=None, body='lego', practice=None, practice_weight=1.0, refines=None, unlearned=None)"
     )]
     #[allow(clippy::too_many_arguments)]
     fn new(
@@ -81,14 +85,22 @@ impl PyImitatorPolicy {
         practice: Option<&Bound<'_, PyAny>>,
         practice_weight: f64,
         refines: Option<Vec<String>>,
+        unlearned: Option<Vec<String>>,
     ) -> PyResult<Self> {
         let body = body.0;
+        let (unlearned, own_behaviours_only) = unlearned_parts(unlearned.as_deref().unwrap_or(&[]))?;
         let pitch = Pitch::of_body(body);
         let mode =
             one_of("control mode", control, &[("thesis", ControlMode::Thesis), ("improved", ControlMode::Improved)])?;
-        let model = trial.imitator_forward_model()?;
         let config = config_or_default(config);
         let motion = motion_table(recognizer)?;
+        let model = if own_behaviours_only {
+            // What self-observation alone gives the imitator: its own primitives, none chained.
+            let primitives: Vec<_> = motion.primitives().collect();
+            Arc::new(ForwardModel::of_primitives("imitator", config.imitator_lp, true, &primitives, &config))
+        } else {
+            trial.imitator_forward_model()?
+        };
         let world = match (mode, demonstrations) {
             (ControlMode::Thesis, _) => None,
             (ControlMode::Improved, None) => {
@@ -115,9 +127,9 @@ impl PyImitatorPolicy {
                     weight: at_least_zero("practice_weight", practice_weight)?,
                     refines: refined_parts(refines.as_deref())?,
                 };
-                Some(Arc::new(
-                    py.detach(|| WorldModel::learn_practised(&demos, &weights, &practice, &pitch, &motion, &config)),
-                ))
+                Some(Arc::new(py.detach(|| {
+                    WorldModel::learn_practised(&demos, &weights, &practice, &pitch, &motion, &config).without(unlearned)
+                })))
             }
         };
         Ok(Self { model, motion, config, mode, body, world })
@@ -273,6 +285,27 @@ fn refined_parts(names: Option<&[String]>) -> PyResult<Refines> {
         }
     }
     Ok(refines)
+}
+
+/// The parts ``unlearned`` names, learned from no demonstration (the ablation of what each
+/// brings): of the world model, and whether the behaviours are the imitator's primitives alone.
+fn unlearned_parts(names: &[String]) -> PyResult<(Refines, bool)> {
+    let mut parts = Refines { ball_response: false, state_value: false, push_region: false };
+    let mut behaviours = false;
+    for name in names {
+        match name.as_str() {
+            "ball_response" => parts.ball_response = true,
+            "state_value" => parts.state_value = true,
+            "push_region" => parts.push_region = true,
+            "behaviours" => behaviours = true,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "unlearned: {other:?} is no part learned from demonstrations (ball_response, state_value, push_region, behaviours)"
+                )));
+            }
+        }
+    }
+    Ok((parts, behaviours))
 }
 
 fn at_least_zero(name: &str, value: f64) -> PyResult<f64> {

@@ -624,7 +624,11 @@ class LearningConfig:
     and permanency gains from it in phase 2 (the LPs of that moment; decay is not scaled) and
     its samples in the improved control's world model (the final LPs); or ``"lp_gain"``: the
     same, each member weighed by how far its LP rose above ``initial_lp``,
-    ``(LP_m − LP₀)⁺ / max_k (LP_k − LP₀)⁺`` (all 1 if none rose).
+    ``(LP_m − LP₀)⁺ / max_k (LP_k − LP₀)⁺`` (all 1 if none rose). ``world_weighting`` names
+    the parts of the improved control's world model those weights reach: ``"outcome"`` (the
+    default) none, each sample counting by the outcome it led to alone; ``"intent"`` the push
+    region and the states' values, while the ball's response (physics, the same whoever
+    pushes) learns from every demonstration at full weight; ``"every"`` all three.
 
     Examples
     --------
@@ -716,7 +720,10 @@ class LearningConfig:
     def imitator_weighting(self) -> str:
         """`"even"`, `"lp"` or `"lp_gain"`."""
     @property
-    def world_weighting(self) -> str: ...
+    def world_weighting(self) -> str:
+        """`"outcome"`, `"intent"` or `"every"`: the parts of the improved control's world model
+        the imitator weighting reaches.
+        """
     @property
     def lp_goal(self) -> float: ...
     @property
@@ -1077,6 +1084,10 @@ class ImitatorPolicy:
     ``LP / max LP`` of its demonstrator's model in ``trial`` (the final LPs); a demonstration
     whose demonstrator has no model there is a ``ValueError``. The improved control learns the
     ball's response from the demonstrations played on the imitator's field only.
+    ``unlearned`` names parts the demonstrations do not teach (an ablation), each left as the
+    imitator's self-observation alone would: ``"ball_response"`` (the ball stays),
+    ``"state_value"`` (every state worth 0), ``"push_region"`` (no region to route to) and
+    ``"behaviours"`` (the imitator's primitives, none chained).
     """
     def __new__(
         cls,

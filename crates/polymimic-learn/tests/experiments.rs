@@ -73,7 +73,7 @@ fn the_experiments_show_the_thesis_shape_and_improved_control_beats_the_thesis_r
         .expect("the field runs")
         .attempts
         .iter()
-        .filter(|a| a.configuration == Configuration::Two && a.outcome == Outcome::Goal)
+        .filter(|a| a.configuration == Some(Configuration::Two) && a.outcome == Outcome::Goal)
         .count();
     assert!(from_configuration_two >= 8, "{from_configuration_two} goals of 25 from configuration 2");
     let (_, thesis_own) = scores(ControlMode::Thesis, &varying[..5]);

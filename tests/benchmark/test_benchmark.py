@@ -110,6 +110,19 @@ def test_polymimic_weighs_its_world_model_as_its_validation_prefers(benchmarked)
             assert saved["world_weighting"] == scores[best]["weighting"]
 
 
+def test_one_world_weighting_is_used_untried(tmp_path):
+    config = tmp_path / "every.toml"
+    config.write_text(TINY.replace('profiles = ["pair", "duo"]', 'profiles = ["pair"]\nmethods = ["polymimic"]\n'
+                                   'world_weightings = ["every"]'))
+    run = tmp_path / "every"
+    assert main(["benchmark", "--config", str(config), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0
+    assert not list(run.rglob("weighing_*.json"))
+    entry = _summary(run)["profiles"]["pair"]["methods"]["polymimic"]
+    assert entry["hyperparameters"]["world_weighting"] == "every" and entry["validation"] is None
+    saved = json.loads(BenchmarkDir(run).evaluation_path("pair", "polymimic", 0).read_text())
+    assert saved["world_weighting"] == "every"
+
+
 def test_members_rank_by_their_controllers_measured_skill(benchmarked):
     run = BenchmarkDir(benchmarked)
     skill = json.loads(run.controller_skill_path.read_text())

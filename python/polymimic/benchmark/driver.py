@@ -254,15 +254,15 @@ class Benchmark(Stepped):
 
     # 5. Evaluation.
 
-    def _evaluation_done(self, profile: str, method: str, seed: int) -> bool:
+    def _evaluation_done(self, profile: str, method: str, seed: int, world_weighting: str | None = None) -> bool:
+        """Whether the evaluation is on disk, whole, of these attempts and (where given) played
+        under ``world_weighting``: one played under another than validation now chooses is redone."""
         path = self.run.evaluation_path(profile, method, seed)
         saved = self.run.loaded(path, load_method_evaluation)
         done = saved is not None and (saved["attempts"] == 2 * self.config.benchmark.attempts_per_configuration
                                       and saved["seed"] == self.config.seeds.evaluation)
-        if done and method == WEIGHED and is_weighed(self.config):
-            # Played under another world weighting than its validation now chooses: play again.
-            chosen = chosen_world_weighting(self.run, self.config, profile)[0]
-            return bool(json.loads(path.read_text(encoding="utf-8")).get("world_weighting") == chosen)
+        if done and world_weighting is not None:
+            return bool(json.loads(path.read_text(encoding="utf-8")).get("world_weighting") == world_weighting)
         return done
 
     def evaluation_jobs(self) -> list[tuple[str, str, int, str | None, dict[str, Any] | None]]:
@@ -273,10 +273,12 @@ class Benchmark(Stepped):
             for method in (m for m in methods if m not in OPTIONAL_METHODS and m != PRACTISED):
                 tuned = None if method in POLYMIMIC_METHODS else load_tuning(
                     self.run.require(self.run.tuning_path(crowd.name, method), "benchmark"))["hyperparameters"]
+                weighting = None
                 if method == WEIGHED:
-                    tuned = {"world_weighting": chosen_world_weighting(self.run, self.config, crowd.name)[0]}
+                    weighting = chosen_world_weighting(self.run, self.config, crowd.name)[0]
+                    tuned = {"world_weighting": weighting}
                 for seed in self.config.evaluated_seeds(method):
-                    if self._evaluation_done(crowd.name, method, seed):
+                    if self._evaluation_done(crowd.name, method, seed, weighting):
                         continue
                     uniform = POLYMIMIC_METHODS.get(method, ("", False))[1]
                     needs_trial = method in POLYMIMIC_METHODS or method == "bco_lp"

@@ -61,7 +61,7 @@ def _gain_rows(summary: Mapping[str, Any]) -> list[str]:
             "| method | floor | " + " | ".join(profiles) + " |", "| --- | --- | " + " | ".join("---" for _ in profiles)
             + " |"]
     for method in methods:
-        floor = floors.get(method, {}).get("net_goals", {}).get("mean")
+        floor = floors[method]["net_goals"]["mean"] if method in floors else None
         cells = []
         for profile in profiles.values():
             s = profile["methods"].get(method)
@@ -187,10 +187,11 @@ def benchmark_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, floa
     lines += [f"| {t['statement']} | {t['measured']} | {_verdict(t['met'])} |" for t in check_targets(summary)]
     lines += ["", "## Net goals", "", f"![Net goals by method and profile](plots/{FIGURES['net_goals']})", "",
               "polymimic chooses, per profile, which parts of its world model its LP weighting reaches "
-              "(`world_weighting`: `intent`, the push region and the states' values, the ball's response learned "
-              "from every demonstration at full weight; `every`, all three; `outcome`, none), each candidate played "
-              "after the first trial on the baselines' validation attempts: its validation net goals are the "
-              "chosen weighting's and the best other one's. polymimic_practice keeps the config's weighting.", ""]
+              "(`world_weighting`: `outcome`, none, each sample counting by the outcome it led to; `intent`, the "
+              "push region and the states' values, the ball's response learned from every demonstration at full "
+              "weight; `every`, all three), each candidate played after the first trial on the baselines' "
+              "validation attempts: its validation net goals are the chosen weighting's and the best other one's. "
+              "polymimic_practice keeps the config's weighting.", ""]
     for name, profile in summary["profiles"].items():
         lines += [f"### {name}", "", *_methods_table(profile), ""]
     if FLOOR in summary["profiles"] and len(summary["profiles"]) > 1:

@@ -42,7 +42,7 @@ from polymimic.benchmark.files import (
 )
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.tasks import POLYMIMIC_METHODS, PRACTISED, WEIGHED, final_lps, ppo_hyperparameters
-from polymimic.benchmark.weighing import chosen_world_weighting, is_weighed
+from polymimic.benchmark.weighing import chosen_world_weighting
 from polymimic.crowds import FLOOR, Crowd
 from polymimic.datasets import load_demonstrations
 from polymimic.field import PRIMITIVES
@@ -217,10 +217,12 @@ def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, me
             chosen.update(practice_steps=config.benchmark.practice_steps, practice_trials=len(saved),
                           refines="the ball's response and the states' values, from its own attempts")
         chosen["tuned"] = "no: the thesis's constants"
-        if method == WEIGHED and is_weighed(config):
+        if method == WEIGHED:
             weighting, scores = chosen_world_weighting(run, config, profile)
-            chosen.update(world_weighting=weighting, tuned="the world weighting alone; else the thesis's constants")
-            scored = validation({"scores": scores, "validation_attempts": scores[0]["attempts"]})
+            chosen["world_weighting"] = weighting
+            if scores:
+                chosen["tuned"] = "the world weighting alone; else the thesis's constants"
+                scored = validation({"scores": scores, "validation_attempts": scores[0]["attempts"]})
     else:
         tuning = load_tuning(run.require(run.tuning_path(profile, method), "benchmark"))
         chosen, scored = tuning["chosen"], validation(tuning)

@@ -200,6 +200,8 @@ class Benchmark(Stepped):
     # 3b. polymimic's world weighting, on validation.
 
     def weigh(self, shared: Shared) -> int:
+        """Stage: polymimic's world weighting chosen per profile on the validation attempts (each
+        candidate played after the first trial); returns the weighings run."""
         first = self.config.seeds.first_trial
         jobs = [(crowd.name, weighting, self._trial_json(crowd.name, first)) for crowd in self.config.crowds()
                 for weighting in self.config.benchmark.world_weightings

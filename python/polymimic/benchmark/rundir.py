@@ -53,9 +53,11 @@ class BenchmarkDir(RunHouse[BenchmarkConfig]):
 
     @property
     def controller_skill_path(self) -> pathlib.Path:
+        """Each controller's net goals per attempt without lapses, measured in the record stage."""
         return self.datasets / "controller_skill.json"
 
     def weighing_path(self, profile: str, weighting: str) -> pathlib.Path:
+        """One world weighting's validation score on the profile."""
         return self.profile_dir(profile) / f"weighing_{weighting}.json"
 
     def profile_dir(self, profile: str) -> pathlib.Path:

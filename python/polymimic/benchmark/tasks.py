@@ -57,6 +57,8 @@ class Shared:
     """Each controller's net goals per attempt without lapses (who is best: :meth:`Crowd.best`)."""
 
     def learning(self, uniform_lp: bool, world_weighting: str | None = None) -> LearningConfig:
+        """The learning constants, ``world_weighting`` laid over them if given, with every LP held
+        (``hold_lp``) for the uniform-LP ablation."""
         config: LearningConfig = self.config.learning
         if world_weighting is not None:
             config = config.replace(world_weighting=world_weighting)

@@ -68,7 +68,9 @@ fn report(name: &str, lab: &Laboratory, trials: &[TrialResult], world: &WorldMod
             goals.push(score.goals as f64);
             own.push(score.own_goals as f64);
             for a in &score.attempts {
-                *outcomes.entry(format!("{}/{}", a.outcome.name(), a.configuration.number())).or_insert(0) += 1;
+                *outcomes
+                    .entry(format!("{}/{}", a.outcome.name(), a.configuration.map_or(0, |c| c.number())))
+                    .or_insert(0) += 1;
             }
         }
         println!(

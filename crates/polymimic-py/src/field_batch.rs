@@ -8,11 +8,11 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
 use crate::bodies::Body;
-use crate::starts::StartArg;
-use polymimic_learn::StartAt;
 use crate::convert::{matrix, non_negative};
 use crate::errors::field_error;
 use crate::field::{configuration, field_config};
+use crate::starts::StartArg;
+use polymimic_learn::StartAt;
 
 /// An outcome's index in `polymimic.field.OUTCOMES`.
 fn outcome_code(outcome: Outcome) -> i8 {
@@ -98,13 +98,15 @@ impl PyEpisodeBatch {
             .enumerate()
             .map(|(i, &a)| match a {
                 -1 => Ok(None),
-                _ => usize::try_from(a).ok().and_then(|a| set.primitives().get(a).copied()).map(Some).ok_or_else(|| {
-                    PyValueError::new_err(format!(
-                        "actions[{i}] = {a}: an action is an integer in 0..{} (the {} body's primitives; −1: none)",
-                        set.primitives().len() - 1,
-                        body.name()
-                    ))
-                }),
+                _ => {
+                    usize::try_from(a).ok().and_then(|a| set.primitives().get(a).copied()).map(Some).ok_or_else(|| {
+                        PyValueError::new_err(format!(
+                            "actions[{i}] = {a}: an action is an integer in 0..{} (the {} body's primitives; −1: none)",
+                            set.primitives().len() - 1,
+                            body.name()
+                        ))
+                    })
+                }
             })
             .collect::<PyResult<Vec<_>>>()?;
         py.detach(|| self.with(|b| b.step(&primitives))).map_err(field_error)?;

@@ -25,7 +25,6 @@ import numpy.typing as npt
 from polymimic import _native
 from polymimic._atomic import atomic_path
 from polymimic._native import ModelFileError
-from polymimic.baselines.evaluation import ball_as_read
 from polymimic.bodies import field_length_mm, resolve
 from polymimic.field import PRIMITIVE_SETS, primitive_command
 from polymimic.learning import ImitatorPolicy
@@ -217,6 +216,8 @@ class PractisedPlayer:
                 index = self._guide.decide(robot_x_mm, robot_y_mm, robot_theta_rad, ball_x_mm, ball_y_mm)
                 self.executed.append(self._primitives[index])
                 return index
+        from polymimic.baselines.evaluation import ball_as_read  # the actor's own reading of a lost ball
+
         ball = ball_as_read((ball_x_mm, ball_y_mm), self._last, robot_x_mm=robot_x_mm,
                             field_length_mm=self._length_mm)
         seen = np.array([robot_x_mm, robot_y_mm, robot_theta_rad, *ball])

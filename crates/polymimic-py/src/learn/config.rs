@@ -57,11 +57,8 @@ const WEIGHTS: [(&str, LpApproachWeight); 2] =
 const WEIGHTINGS: [(&str, ImitatorWeighting); 3] =
     [("even", ImitatorWeighting::Even), ("lp", ImitatorWeighting::Lp), ("lp_gain", ImitatorWeighting::LpGain)];
 
-const WORLD_WEIGHTINGS: [(&str, WorldWeighting); 3] = [
-    ("every", WorldWeighting::Every),
-    ("intent", WorldWeighting::Intent),
-    ("outcome", WorldWeighting::Outcome),
-];
+const WORLD_WEIGHTINGS: [(&str, WorldWeighting); 3] =
+    [("every", WorldWeighting::Every), ("intent", WorldWeighting::Intent), ("outcome", WorldWeighting::Outcome)];
 
 /// The Python name of an imitator weighting.
 pub(crate) fn weighting_name(weighting: ImitatorWeighting) -> &'static str {

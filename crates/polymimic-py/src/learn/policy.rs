@@ -128,7 +128,8 @@ impl PyImitatorPolicy {
                     refines: refined_parts(refines.as_deref())?,
                 };
                 Some(Arc::new(py.detach(|| {
-                    WorldModel::learn_practised(&demos, &weights, &practice, &pitch, &motion, &config).without(unlearned)
+                    WorldModel::learn_practised(&demos, &weights, &practice, &pitch, &motion, &config)
+                        .without(unlearned)
                 })))
             }
         };

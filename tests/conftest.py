@@ -32,3 +32,16 @@ def stochastic(rng):
 def left_right_mask():
     """``left_right_mask(n_states, links)``: where a left-right HMM may have transitions."""
     return _left_right_mask
+
+
+@pytest.fixture(scope="session")
+def expert_imitator():
+    """A small improved-control Lego imitator of three Expert demonstrations per configuration
+    (a recogniser of 20 seconds per primitive): what the stepping, live and practice tests drive."""
+    import polymimic
+    from polymimic import recognition
+
+    recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
+    demos = [d for c in (1, 2) for d in polymimic.record("expert", configuration=c, n=3, seed=0)]
+    trial = polymimic.run_trial(demos, recognizer=recognizer, ordering=["expert"])
+    return polymimic.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=demos)

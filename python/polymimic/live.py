@@ -94,7 +94,23 @@ def _numbers(value: Any, n: int) -> bool:
         isinstance(v, (int, float)) and not isinstance(v, bool) for v in value)
 
 
-class UdpSource:
+class _Socket:
+    """A UDP socket that closes on leaving a ``with`` block."""
+
+    _socket: socket.socket
+
+    def close(self) -> None:
+        """Let the socket go (also on leaving a ``with`` block)."""
+        self._socket.close()
+
+    def __enter__(self) -> Self:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+class UdpSource(_Socket):
     """Datagrams arriving at ``host:port`` (bound here; port 0 picks a free one: see
     :attr:`address`). :meth:`receive` waits at most ``timeout_s`` for one."""
 
@@ -117,18 +133,9 @@ class UdpSource:
             return None
         return data
 
-    def close(self) -> None:
-        """Let the socket go (also on leaving a ``with`` block)."""
-        self._socket.close()
-
-    def __enter__(self) -> Self:
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        self.close()
 
 
-class UdpSink:
+class UdpSink(_Socket):
     """Commands sent to ``host:port``."""
 
     def __init__(self, host: str, port: int) -> None:
@@ -143,15 +150,6 @@ class UdpSink:
         """Any datagram (a tracker's side sends its readings so)."""
         self._socket.sendto(data, self._to)
 
-    def close(self) -> None:
-        """Let the socket go (also on leaving a ``with`` block)."""
-        self._socket.close()
-
-    def __enter__(self) -> Self:
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        self.close()
 
 
 @dataclasses.dataclass

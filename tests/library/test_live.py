@@ -9,16 +9,12 @@ import threading
 import pytest
 
 import polymimic
-from polymimic import live, recognition
-from polymimic.learning import ImitatorPolicy, run_trial
+from polymimic import live
 
 
 @pytest.fixture(scope="module")
-def policy():
-    recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
-    demos = [d for c in (1, 2) for d in polymimic.record("expert", configuration=c, n=2, seed=0)]
-    trial = run_trial(demos, recognizer=recognizer, ordering=["expert"])
-    return ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=demos)
+def policy(expert_imitator):
+    return expert_imitator
 
 
 @pytest.mark.parametrize(("data", "kind"), [

@@ -3,17 +3,12 @@ never chooses, learned as physics."""
 
 import pytest
 
-import polymimic
-from polymimic import recognition
-from polymimic.learning import ImitatorPolicy, evaluate, run_trial
+from polymimic.learning import ImitatorPolicy, evaluate
 
 
 @pytest.fixture(scope="module")
-def teacher():
-    recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
-    demos = [d for c in (1, 2) for d in polymimic.record("expert", configuration=c, n=3, seed=0)]
-    trial = run_trial(demos, recognizer=recognizer, ordering=["expert"])
-    return ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=demos)
+def teacher(expert_imitator):
+    return expert_imitator
 
 
 def test_exploring_practice_explores_near_the_ball_and_refines_only_what_it_is_told(teacher, tmp_path):

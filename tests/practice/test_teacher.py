@@ -8,19 +8,15 @@ import gymnasium
 import pytest
 
 import polymimic
-from polymimic import recognition
-from polymimic.learning import ImitatorPolicy, evaluate, run_trial
+from polymimic.learning import evaluate
 
 pytestmark = pytest.mark.skipif(importlib.util.find_spec("stable_baselines3") is None,
                                 reason="stable-baselines3 is the optional `rl` extra")
 
 
 @pytest.fixture(scope="module")
-def teacher():
-    recognizer = recognition.train_recognizer(polymimic.self_observation(20, seed=1), codebook_size=32)
-    demos = [d for c in (1, 2) for d in polymimic.record("expert", configuration=c, n=3, seed=0)]
-    trial = run_trial(demos, recognizer=recognizer, ordering=["expert"])
-    return ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=demos)
+def teacher(expert_imitator):
+    return expert_imitator
 
 
 @pytest.fixture(scope="module")

@@ -9,6 +9,7 @@ The draws follow each attempt's episode seed, so the same attempts explore the s
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -16,6 +17,7 @@ from polymimic import _native
 from polymimic.bodies import reach_mm, resolve
 from polymimic.field import PRIMITIVE_SETS, Demonstration, as_frames, primitive_command
 from polymimic.learning import ImitatorPolicy
+from polymimic.practice.playing import play_episode
 
 __all__ = ["explored_attempts"]
 
@@ -37,18 +39,16 @@ def explored_attempts(policy: ImitatorPolicy, *, attempts_per_configuration: int
     out = []
     for configuration, episode_seed in _native.attempt_seeds(attempts_per_configuration, seed=seed):
         rng = np.random.default_rng([episode_seed, _EXPLORATION_STREAM])
-        player = policy.player()
-        player.reset(start=configuration, seed=episode_seed)
-        episode = _native.Episode(driven, configuration=configuration, seed=episode_seed, config=field_config)
-        while not episode.finished:
-            seen = episode.observation()
-            ball = seen["ball"] if seen["ball"] is not None else (math.nan, math.nan)
-            chosen = player.act((seen["t_s"], *seen["robot"], *ball))
-            near = seen["ball"] is not None and math.dist(seen["robot"][:2], ball) < near_mm
+
+        def instead(seen: dict[str, Any], chosen: str, episode: Any, rng: np.random.Generator = rng) -> str:
+            near = seen["ball"] is not None and math.dist(seen["robot"][:2], seen["ball"]) < near_mm
             if near and rng.random() < epsilon:
                 index = int(rng.integers(len(own)))
-                chosen = commands[index] if index < len(commands) else episode.command_for(own[index])
-            episode.run([chosen] * 30)
+                return commands[index] if index < len(commands) else str(episode.command_for(own[index]))
+            return chosen
+
+        episode = play_episode(policy.player(), driven, configuration=configuration, seed=episode_seed,
+                               field_config=field_config, instead=instead)
         out.append(Demonstration(frames=as_frames(episode.frames), outcome=str(episode.outcome),
                                  demonstrator="imitator", configuration=configuration, seed=episode_seed,
                                  body=body))

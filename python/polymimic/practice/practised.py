@@ -28,6 +28,7 @@ from polymimic._native import ModelFileError
 from polymimic.bodies import field_length_mm, resolve
 from polymimic.field import PRIMITIVE_SETS, primitive_command
 from polymimic.learning import ImitatorPolicy
+from polymimic.practice.playing import play_episode
 
 __all__ = ["PractisedPlayer", "PractisedPolicy"]
 
@@ -75,13 +76,8 @@ class PractisedPolicy:
         out = []
         for configuration, episode_seed in _native.attempt_seeds(attempts_per_configuration, seed=seed):
             player = self.player()
-            player.reset(start=configuration, seed=episode_seed)
-            episode = _native.Episode(driven, configuration=configuration, seed=episode_seed, config=field_config)
-            while not episode.finished:
-                seen = episode.observation()
-                ball = seen["ball"] if seen["ball"] is not None else (math.nan, math.nan)
-                command = player.act((seen["t_s"], *seen["robot"], *ball))
-                episode.run([command] * 30)
+            episode = play_episode(player, driven, configuration=configuration, seed=episode_seed,
+                                   field_config=field_config)
             out.append({"frames": episode.frames, "outcome": episode.outcome, "configuration": configuration,
                         "seed": episode_seed, "behaviours": player.executed,
                         "start": {"configuration": configuration}})

@@ -28,7 +28,8 @@ def test_config_to_dict_lists_every_constant_in_order_with_python_types():
     values = polymimic.LearningConfig().to_dict()
     assert list(values)[:3] == ["creation_threshold", "default_permanency", "permanency_threshold"]
     assert list(values)[-4:] == ["lp_bounds", "lp_scope", "lp_criteria", "lp_approach_weight"]
-    assert len(values) == 31
+    assert len(values) == 32
+    assert values["world_weighting"] == "outcome"
     assert type(values["prefer_sooner_goals"]) is bool and values["prefer_sooner_goals"] is False
     assert type(values["push_heading_tail"]) is float and values["push_heading_tail"] == 0.1
     assert type(values["deletion_threshold"]) is float and values["deletion_threshold"] == 0.0

@@ -15,22 +15,41 @@ stepping the imitator); it never differs systematically.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from typing import Any
+from collections.abc import Mapping, Sequence
+from typing import Any, Protocol, TypeVar
 
 import numpy as np
 import numpy.typing as npt
-
-from polymimic._native import ImitatorPlayer, ImitatorPolicy
 
 __all__ = ["predict"]
 
 _WIDTH = 5  # robot x, y, θ, ball x, y
 
 
-def predict(policy: ImitatorPolicy, players: list[ImitatorPlayer], observation: npt.ArrayLike,
-            state: Sequence[ImitatorPlayer] | None = None, episode_start: npt.ArrayLike | None = None,
-            ) -> tuple[np.ndarray, tuple[ImitatorPlayer, ...]]:
+class Deciding(Protocol):
+    """A player that starts an episode and decides once per call (an imitator's, a practised
+    policy's)."""
+
+    def reset(self, episode: Mapping[str, Any] | None = None, *, start: int | Mapping[str, Any] | None = None,
+              seed: int | None = None) -> None: ...
+
+    def decide(self, robot_x_mm: float, robot_y_mm: float, robot_theta_rad: float, ball_x_mm: float,
+               ball_y_mm: float) -> int: ...
+
+
+P = TypeVar("P", bound=Deciding)
+P_co = TypeVar("P_co", bound=Deciding, covariant=True)
+
+
+class MakesPlayers(Protocol[P_co]):
+    """A policy that makes players of itself."""
+
+    def player(self) -> P_co: ...
+
+
+def predict(policy: MakesPlayers[P], players: list[P], observation: npt.ArrayLike,
+            state: Sequence[P] | None = None, episode_start: npt.ArrayLike | None = None,
+            ) -> tuple[np.ndarray, tuple[P, ...]]:
     """The primitives ``policy`` runs next from ``observation`` (``(5,)`` or ``(n, 5)``: robot x,
     y mm, heading rad, ball x, y mm; NaN where the ball is not seen), one per sub-environment,
     and the players that decided them (stable-baselines3's ``state``: pass it back).

@@ -29,6 +29,7 @@ from polymimic.bodies import field_length_mm, resolve
 from polymimic.field import PRIMITIVE_SETS, primitive_command
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.playing import play_episode
+from polymimic.stepping import predict as predict_with
 
 __all__ = ["PractisedPlayer", "PractisedPolicy"]
 
@@ -87,25 +88,8 @@ class PractisedPolicy:
                 episode_start: npt.ArrayLike | None = None,
                 deterministic: bool = True) -> tuple[np.ndarray, tuple[PractisedPlayer, ...]]:
         """stable-baselines3's ``predict`` on ``PenaltyKick-v0``'s observations, as
-        :meth:`polymimic.ImitatorPolicy.predict`."""
-        array = np.asarray(observation, dtype=np.float64)
-        single = array.ndim == 1
-        batch = array.reshape(1, -1) if single else array
-        if batch.ndim != 2 or batch.shape[1] != 5:
-            raise ValueError(f"observation must be PenaltyKick-v0's: shape (5,) or (n, 5), got shape "
-                             f"{np.shape(observation)}")
-        players = list(state) if state is not None else self._players
-        fresh = [False] * len(players) + [True] * (len(batch) - len(players))
-        players.extend(self.player() for _ in range(len(batch) - len(players)))
-        del players[len(batch):]
-        starting = np.zeros(len(batch), bool) if episode_start is None else np.asarray(episode_start).reshape(-1)
-        actions = np.empty(len(batch), dtype=np.int64)
-        for i, (row, player) in enumerate(zip(batch, players)):
-            x, y, theta, bx, by = (float(v) for v in row)
-            if fresh[i] or bool(starting[i]):
-                player.reset(start={"robot": (x, y, theta), "ball": (bx, by)})
-            actions[i] = player.decide(x, y, theta, bx, by)
-        return (actions[0] if single else actions), tuple(players)
+        :meth:`polymimic.ImitatorPolicy.predict` (:func:`polymimic.stepping.predict`)."""
+        return predict_with(self, self._players, observation, state, episode_start)
 
     def save(self, path: str | os.PathLike[str]) -> None:
         """One zip file: the guide's policy file, the actor's network, and what joins them."""

@@ -23,12 +23,13 @@ def teacher(expert_imitator):
 def practised(teacher):
     from polymimic.practice.teacher import jsrl
 
-    return jsrl(teacher, steps=600, checkpoints=[0, 600], evaluation_attempts=2, handover_start=60,
-                curriculum=1.0, n_steps=64, batch_size=32)
+    # A gate always open (any return is within 2 of the teacher's): each stage is earned by one episode.
+    return jsrl(teacher, steps=600, checkpoints=[0, 600], evaluation_attempts=2, handover_start=60, stages=2,
+                tolerance=2.0, window=1, n_steps=64, batch_size=32)
 
 
 def test_at_the_start_the_practised_policy_is_its_teacher_bit_for_bit(teacher, practised):
-    # Handing over after 60 decisions (the whole minute) leaves every decision to the teacher.
+    # No stage is earned before the first practice episode: the teacher plays every decision.
     assert [p.checkpoint for p in practised.curve] == [0, 600]
     alone = evaluate(teacher, attempts_per_configuration=2)
     assert practised.curve[0].net_goals == alone.goals - alone.own_goals
@@ -42,7 +43,24 @@ def test_every_step_counts_the_teachers_roll_ins_too_and_the_budget_holds(practi
     # No checkpoint is scored with more steps played than it names, the teacher's included.
     assert all(p.steps <= p.checkpoint for p in practised.curve)
     assert 590 <= practised.steps <= 600
-    assert practised.policy.handover == 0  # the curriculum shrank to the learner alone
+    assert practised.policy.handover == 0  # both stages earned: the learner plays alone
+
+
+def test_a_stage_is_earned_only_when_the_learners_returns_reach_the_teachers():
+    from polymimic.practice.teacher import TEACHER_ALONE, Curriculum
+
+    curriculum = Curriculum.stepping_down(12, 3, reference=0.8, tolerance=0.1, window=3)
+    assert curriculum.stages == (8, 4, 0) and curriculum.handover == 8
+    for episode_return in (1.0, 0.0, 1.0, 1.0):  # windows of mean 0.67 then 0.67: below 0.7
+        curriculum.episode_ended(episode_return)
+        assert curriculum.earned == TEACHER_ALONE
+    curriculum.episode_ended(1.0)  # the last three return 1.0 on average
+    assert (curriculum.earned, curriculum.handover) == (8, 4)
+    for episode_return in (-1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0):  # 4 earned after the first full window at 1.0
+        curriculum.episode_ended(episode_return)
+    assert (curriculum.earned, curriculum.handover) == (0, 0)  # the last stage: the learner alone, kept
+    with pytest.raises(ValueError, match="stages must be decreasing handovers ≥ 0, got \\(2, 5\\)"):
+        Curriculum(stages=(2, 5), reference=0.5)
 
 
 def test_practise_names_its_methods_and_refuses_others(teacher):

@@ -29,7 +29,7 @@ from polymimic.env import PenaltyKickEnv
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import CurvePoint
 from polymimic.practice.practised import PractisedPolicy
-from polymimic.practice.teacher import Curriculum, TeacherPractice, _Counter, _RollIn
+from polymimic.practice.teacher import TEACHER_ALONE, TeacherPractice, _Counter, _RollIn
 
 __all__ = ["distil"]
 
@@ -52,7 +52,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
     counter = _Counter()
     ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,
-                          wrap=lambda env: _RollIn(env, teacher, Curriculum(0, 0), counter, np.random.default_rng(0)),
+                          wrap=lambda env: _RollIn(env, teacher, lambda: 0, counter),
                           **ppo_kwargs)
     cloning = Pretraining(learning_rate=3e-4, epochs=5, batch_size=64)
     features: list[np.ndarray] = []
@@ -66,7 +66,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
         actor = ppo.PPOPolicy(model, feature_set="goal_relative", frames_per_action=30,
                               total_timesteps=counter.steps, method="distil", body=teacher.body)
         # Until the actor first clones the teacher, the practised policy is the teacher.
-        return PractisedPolicy(teacher, actor, handover=0 if distilled[0] else 60, method="distil",
+        return PractisedPolicy(teacher, actor, handover=0 if distilled[0] else TEACHER_ALONE, method="distil",
                                steps=counter.steps)
 
     def score(mark: int) -> None:

@@ -1,12 +1,15 @@
 """Practice through the teacher: the trained imitator guides an RL learner (stable-baselines3's
 PPO) that reads only what the tracker shows and the outcome's reward.
 
-``jsrl`` (jump-start RL, Uchendu et al. 2022): each practice episode, the imitator plays the
-first ``h`` decisions and the learner the rest, so the learner starts where the imitator's play
-leads and learns to finish; ``h`` is drawn from ``0 … h_max``, and ``h_max`` shrinks from the
-imitator's typical attempt length to 0 over the first ``curriculum`` share of the budget, until
-the learner plays whole episodes. The policy scored at a checkpoint is the imitator for the
-current ``h_max`` decisions, then the learner (:class:`~polymimic.practice.practised.PractisedPolicy`).
+``jsrl`` (jump-start RL, Uchendu et al. 2022, its gated curriculum): each practice episode, the
+imitator plays the first ``h`` decisions and the learner the rest, so the learner starts where
+the imitator's play leads and learns to finish. ``h`` steps down through a few stages, from the
+imitator's typical attempt length to 0, and a stage is left only once the learner, finishing
+from it, returns on average what the imitator returns alone (over its last ``window`` practice
+episodes, within ``tolerance``): the learner earns each earlier handover. The policy scored at a
+checkpoint hands over at the last stage earned (before any, the imitator plays alone), so
+practice never scores a handover its own play has not shown to hold
+(:class:`~polymimic.practice.practised.PractisedPolicy`).
 
 Every environment step counts against the budget, the imitator's roll-in steps too; learning
 stops at each checkpoint with the steps to it spent (PPO updates every 512 steps, two
@@ -18,6 +21,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import statistics
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -32,29 +36,68 @@ try:
 except ImportError:  # the `gym` extra is absent: the module imports, practice through the teacher does not run
     gymnasium = None  # type: ignore[assignment]
 
-__all__ = ["Curriculum", "TeacherPractice", "jsrl"]
+__all__ = ["TEACHER_ALONE", "Curriculum", "TeacherPractice", "jsrl"]
 
 _Wrapper: Any = gymnasium.Wrapper if gymnasium is not None else object
+
+TEACHER_ALONE = 3600
+"""A handover later than any episode's last decision (an hour of one-second decisions): the
+teacher plays every decision."""
 
 
 @dataclasses.dataclass
 class Curriculum:
-    """How many decisions the teacher plays before the learner: at most ``start`` at step 0,
-    shrinking linearly to 0 at step ``until``; each episode draws its ``h`` uniformly from
-    ``0 … h_max``."""
+    """The gated curriculum: ``stages`` are the handovers ``h`` in the order they are trained
+    (decreasing, the last 0); a stage is *earned* once the last ``window`` episodes played at it
+    return on average at least ``reference - tolerance`` (``reference``: the teacher's mean
+    return alone), and training moves to the next. ``earned`` is the handover of the last
+    earned stage, :data:`TEACHER_ALONE` before any.
 
-    start: int
-    until: int
+    >>> curriculum = Curriculum(stages=(8, 0), reference=0.8, tolerance=0.05, window=4)
+    >>> for episode_return in (1.0, 0.0, 1.0, 1.0):   # mean 0.75, at the gate
+    ...     curriculum.episode_ended(episode_return)
+    >>> curriculum.earned, curriculum.handover
+    (8, 0)
+    """
 
-    def h_max(self, steps: int) -> int:
-        """The most decisions the teacher plays after ``steps`` environment steps.
+    stages: tuple[int, ...]
+    reference: float
+    tolerance: float = 0.05
+    window: int = 50
+    earned: int = TEACHER_ALONE
+    stage: int = 0
+    returns: list[float] = dataclasses.field(default_factory=list)
 
-        >>> Curriculum(start=20, until=1000).h_max(0), Curriculum(start=20, until=1000).h_max(500)
-        (20, 10)
+    def __post_init__(self) -> None:
+        if not self.stages or any(h < 0 for h in self.stages) or list(self.stages) != sorted(self.stages, reverse=True):
+            raise ValueError(f"stages must be decreasing handovers ≥ 0, got {self.stages}")
+        if self.window < 1:
+            raise ValueError(f"window must be at least one episode, got {self.window}")
+
+    @classmethod
+    def stepping_down(cls, start: int, count: int, **gate: Any) -> Curriculum:
+        """``count`` stages evenly from below ``start`` decisions down to 0.
+
+        >>> Curriculum.stepping_down(20, 4, reference=0.5).stages
+        (15, 10, 5, 0)
         """
-        if self.until <= 0:
-            return 0
-        return max(0, math.ceil(self.start * (1.0 - steps / self.until)))
+        if count < 1:
+            raise ValueError(f"a curriculum has at least one stage, got {count}")
+        return cls(stages=tuple(math.ceil(start * (count - k) / count) for k in range(1, count + 1)), **gate)
+
+    @property
+    def handover(self) -> int:
+        """The handover practice episodes are played at now."""
+        return self.stages[self.stage]
+
+    def episode_ended(self, episode_return: float) -> None:
+        """Counts one practice episode played at :attr:`handover`; earns the stage at the gate."""
+        self.returns.append(episode_return)
+        recent = self.returns[-self.window:]
+        if len(recent) == self.window and statistics.fmean(recent) >= self.reference - self.tolerance:
+            self.earned = self.stages[self.stage]
+            self.returns.clear()
+            self.stage = min(self.stage + 1, len(self.stages) - 1)
 
 
 @dataclasses.dataclass
@@ -66,30 +109,33 @@ class _Counter:
 
 
 class _RollIn(_Wrapper):  # type: ignore[misc]
-    """``PenaltyKick-v0`` whose episodes the teacher starts: on reset it plays ``h`` decisions
-    (an episode that ends in them is counted and replaced) and hands over."""
+    """``PenaltyKick-v0`` whose episodes the teacher starts: on reset it plays ``handover()``
+    decisions (an episode that ends in them is counted and replaced) and hands over. Each
+    episode played to its end reports its return to ``ended`` (one cut by the budget does not)."""
 
-    def __init__(self, env: Any, teacher: ImitatorPolicy, curriculum: Curriculum, counter: _Counter,
-                 rng: np.random.Generator) -> None:
+    def __init__(self, env: Any, teacher: ImitatorPolicy, handover: Callable[[], int], counter: _Counter,
+                 ended: Callable[[float], None] | None = None) -> None:
         super().__init__(env)
-        self._curriculum, self._counter, self._rng = curriculum, counter, rng
+        self._handover, self._counter, self._ended = handover, counter, ended
         self._player = teacher.player()
         self._last: Any = None
         self._info: dict[str, Any] = {}
+        self._return = 0.0
 
     def reset(self, **kwargs: Any) -> Any:
         while True:
             observation, info = self.env.reset(**kwargs)
             kwargs.pop("seed", None)  # seeded once; later episodes follow the env's generator
-            h = int(self._rng.integers(0, self._curriculum.h_max(self._counter.steps) + 1))
             self._player.reset(start=self.env.unwrapped.configuration, seed=info["episode_seed"])
-            ended = False
-            for _ in range(min(h, self._counter.limit - self._counter.steps)):
+            self._return, ended = 0.0, False
+            for _ in range(min(self._handover(), self._counter.limit - self._counter.steps)):
                 action = self._player.decide(*(float(v) for v in observation))
-                observation, _, terminated, truncated, info = self.env.step(action)
+                observation, reward, terminated, truncated, info = self.env.step(action)
                 self._counter.steps += 1
+                self._return += float(reward)
                 if terminated or truncated:
                     ended = True
+                    self._report()
                     break
             if not ended:
                 self._last, self._info = observation, info
@@ -101,7 +147,14 @@ class _RollIn(_Wrapper):  # type: ignore[misc]
             return self._last, 0.0, False, True, {**self._info, "budget_spent": True}
         self._counter.steps += 1
         self._last, reward, terminated, truncated, self._info = self.env.step(action)
+        self._return += float(reward)
+        if terminated or truncated:
+            self._report()
         return self._last, reward, terminated, truncated, self._info
+
+    def _report(self) -> None:
+        if self._ended is not None:
+            self._ended(self._return)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -115,37 +168,40 @@ class TeacherPractice:
 
 
 def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
-         evaluation_seed: int = 0, evaluation_attempts: int = 25, curriculum: float = 0.5,
-         handover_start: int | None = None, field_config: Any = None,
+         evaluation_seed: int = 0, evaluation_attempts: int = 25, stages: int = 8,
+         handover_start: int | None = None, tolerance: float = 0.05, window: int = 50, field_config: Any = None,
          on_checkpoint: Callable[[list[CurvePoint]], None] | None = None, **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by jump-start RL for ``steps`` environment steps under ``seed`` (the
-    learner's network, its environments' episodes and the roll-ins' draws), scored on the
+    learner's network, its environments' episodes and the practice attempts), scored on the
     evaluation attempts of ``evaluation_seed`` at each of ``checkpoints`` (default: every fifth
-    of the budget). ``handover_start`` is ``h_max`` at the start (default: the decisions of the
-    teacher's median scoring attempt), ``curriculum`` the share of the budget over which it
-    shrinks to 0. ``ppo_kwargs`` go to stable-baselines3's PPO.
+    of the budget). The curriculum (:class:`Curriculum`) has ``stages`` handovers from below
+    ``handover_start`` decisions (default: the teacher's median scoring attempt) down to 0, each
+    earned when the learner's last ``window`` practice episodes at it return on average within
+    ``tolerance`` of what the teacher returns alone on 50 practice attempts. ``ppo_kwargs`` go to
+    stable-baselines3's PPO.
     """
     from polymimic.baselines import ppo
 
     marks = sorted(set(checkpoints if checkpoints is not None else np.linspace(0, steps, 6).astype(int).tolist()))
     if not marks or marks[0] < 0 or marks[-1] > steps:
         raise ValueError(f"checkpoints must lie in 0..{steps}, got {marks}")
-    start = handover_start if handover_start is not None else _typical_length(teacher, seed, field_config)
-    schedule = Curriculum(start=start, until=int(curriculum * steps))
-    counter, rng = _Counter(), np.random.default_rng(seed)
+    typical, reference = _teacher_alone(teacher, seed, field_config)
+    schedule = Curriculum.stepping_down(handover_start if handover_start is not None else typical, stages,
+                                        reference=reference, tolerance=tolerance, window=window)
+    counter = _Counter()
     ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,
-                          wrap=lambda env: _RollIn(env, teacher, schedule, counter, rng), **ppo_kwargs)
+                          wrap=lambda env: _RollIn(env, teacher, lambda: schedule.handover, counter,
+                                                   schedule.episode_ended), **ppo_kwargs)
     curve: list[CurvePoint] = []
 
-    def practised(h: int) -> PractisedPolicy:
+    def practised() -> PractisedPolicy:
         actor = ppo.PPOPolicy(model, feature_set="goal_relative", frames_per_action=30,
                               total_timesteps=counter.steps, method="jsrl", body=teacher.body)
-        return PractisedPolicy(teacher, actor, handover=h, method="jsrl", steps=counter.steps)
+        return PractisedPolicy(teacher, actor, handover=schedule.earned, method="jsrl", steps=counter.steps)
 
     def score(mark: int) -> None:
-        h = schedule.h_max(mark)
-        result = evaluate(practised(h), attempts_per_configuration=evaluation_attempts, seed=evaluation_seed,
+        result = evaluate(practised(), attempts_per_configuration=evaluation_attempts, seed=evaluation_seed,
                           field_config=field_config)
         curve.append(CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals,
                                 result.own_goals, 0, 0))
@@ -166,15 +222,15 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
         if counter.steps < mark:
             model.learn(total_timesteps=10 * steps + 1, callback=Budget(), reset_num_timesteps=False)
         score(mark)
-    return TeacherPractice(policy=practised(schedule.h_max(counter.steps)), curve=curve, steps=counter.steps)
+    return TeacherPractice(policy=practised(), curve=curve, steps=counter.steps)
 
 
-def _typical_length(teacher: ImitatorPolicy, seed: int, field_config: Any) -> int:
-    """Decisions in the teacher's median scoring attempt over a few practice attempts (one
-    second each), or its median attempt when none scores."""
+def _teacher_alone(teacher: ImitatorPolicy, seed: int, field_config: Any) -> tuple[int, float]:
+    """On 50 practice attempts (one-second decisions): the decisions of the teacher's median
+    scoring attempt (of its median attempt when none scores), and its mean return."""
     from polymimic.practice.seeds import round_seed
 
-    attempts = evaluate(teacher, attempts_per_configuration=5, seed=round_seed(seed, 10_000),
-                        field_config=field_config).attempts
+    played = evaluate(teacher, attempts_per_configuration=25, seed=round_seed(seed, 10_000), field_config=field_config)
+    attempts = played.attempts
     scoring = [len(a.frames) for a in attempts if a.outcome == "goal"] or [len(a.frames) for a in attempts]
-    return max(1, math.ceil(float(np.median(scoring)) / 30))
+    return max(1, math.ceil(float(np.median(scoring)) / 30)), (played.goals - played.own_goals) / len(attempts)

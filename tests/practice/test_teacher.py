@@ -96,10 +96,23 @@ def test_the_practised_policy_saves_loads_and_plays_through_evaluate_predict_and
 def test_distilling_clones_the_teacher_then_fine_tunes_within_the_budget(teacher):
     from polymimic.practice.distil import distil
 
+    # A gate always open: the actor replaces the teacher after its first practice episode.
     taught = distil(teacher, steps=700, checkpoints=[0, 300, 700], evaluation_attempts=2, dagger_rounds=1,
-                    dagger_steps=300, warmup_steps=200, n_steps=64, batch_size=32)
+                    dagger_steps=300, warmup_steps=200, tolerance=2.0, window=1, n_steps=64, batch_size=32)
     alone = evaluate(teacher, attempts_per_configuration=2)
-    # Before the actor first clones it, the practised policy is the teacher itself.
+    # Before the actor has played an episode, the practised policy is the teacher itself.
     assert taught.curve[0].net_goals == alone.goals - alone.own_goals
     assert [(p.checkpoint, p.steps) for p in taught.curve] == [(0, 0), (300, 300), (700, 700)]
     assert taught.policy.handover == 0 and taught.policy.method == "distil"
+
+
+def test_an_actor_that_never_earns_it_never_replaces_the_teacher(teacher):
+    from polymimic.practice.distil import distil
+    from polymimic.practice.teacher import TEACHER_ALONE
+
+    # A gate never open (returns would have to beat the teacher's by 5 per episode).
+    taught = distil(teacher, steps=500, checkpoints=[0, 250, 500], evaluation_attempts=2, dagger_rounds=2,
+                    dagger_steps=150, warmup_steps=100, tolerance=-5.0, window=1, n_steps=64, batch_size=32)
+    alone = evaluate(teacher, attempts_per_configuration=2)
+    assert [p.net_goals for p in taught.curve] == [alone.goals - alone.own_goals] * 3
+    assert taught.policy.handover == TEACHER_ALONE

@@ -12,6 +12,11 @@ fine-tunes from the reward with the teacher's term annealed away.
    also takes cloning steps on the teacher's labels, weighted from ``teacher_weight`` down to 0
    at the end of the budget.
 
+The practised policy is the actor alone once it has earned it — its last ``window`` practice
+episodes (DAgger's rounds it plays and PPO's) return on average within ``tolerance`` of what
+the teacher returns alone (:class:`~polymimic.practice.teacher.Curriculum`, one stage) — and the
+teacher until then: practice never scores an actor its own play has not shown to hold.
+
 The learner reads only the env's observation and the outcome's reward; every environment step
 counts against the budget, DAgger's too. Needs the ``rl`` extra.
 """
@@ -29,7 +34,7 @@ from polymimic.env import PenaltyKickEnv
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import CurvePoint
 from polymimic.practice.practised import PractisedPolicy
-from polymimic.practice.teacher import TEACHER_ALONE, TeacherPractice, _Counter, _RollIn
+from polymimic.practice.teacher import Curriculum, TeacherPractice, _Counter, _RollIn, _teacher_alone
 
 __all__ = ["distil"]
 
@@ -37,10 +42,13 @@ __all__ = ["distil"]
 def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
            evaluation_seed: int = 0, evaluation_attempts: int = 25, dagger_rounds: int = 3,
            dagger_steps: int = 2000, warmup_steps: int = 4000, teacher_weight: float = 1.0,
-           field_config: Any = None, **ppo_kwargs: Any) -> TeacherPractice:
+           tolerance: float = 0.05, window: int = 50, field_config: Any = None,
+           **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by distilling it into a PPO actor and fine-tuning, for ``steps``
     environment steps under ``seed``, scored on the evaluation attempts of ``evaluation_seed``
-    at each of ``checkpoints`` (default: every fifth of the budget)."""
+    at each of ``checkpoints`` (default: every fifth of the budget); the actor replaces the
+    teacher once its last ``window`` practice episodes return within ``tolerance`` of the
+    teacher's mean return alone on 50 practice attempts."""
     from stable_baselines3.common.callbacks import BaseCallback  # type: ignore[import-not-found, unused-ignore]
 
     from polymimic.baselines import ppo
@@ -50,24 +58,23 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
     if not marks or marks[0] < 0 or marks[-1] > steps:
         raise ValueError(f"checkpoints must lie in 0..{steps}, got {marks}")
     counter = _Counter()
+    _, reference = _teacher_alone(teacher, seed, field_config)
+    gate = Curriculum(stages=(0,), reference=reference, tolerance=tolerance, window=window)
     ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,
-                          wrap=lambda env: _RollIn(env, teacher, lambda: 0, counter),
+                          wrap=lambda env: _RollIn(env, teacher, lambda: 0, counter, gate.episode_ended),
                           **ppo_kwargs)
     cloning = Pretraining(learning_rate=3e-4, epochs=5, batch_size=64)
     features: list[np.ndarray] = []
     labels: list[int] = []
     rng = np.random.default_rng(seed)
     curve: list[CurvePoint] = []
-    distilled = [False]
     phase_ends = [min(steps, dagger_rounds * dagger_steps), min(steps, dagger_rounds * dagger_steps + warmup_steps)]
 
     def practised() -> PractisedPolicy:
         actor = ppo.PPOPolicy(model, feature_set="goal_relative", frames_per_action=30,
                               total_timesteps=counter.steps, method="distil", body=teacher.body)
-        # Until the actor first clones the teacher, the practised policy is the teacher.
-        return PractisedPolicy(teacher, actor, handover=0 if distilled[0] else TEACHER_ALONE, method="distil",
-                               steps=counter.steps)
+        return PractisedPolicy(teacher, actor, handover=gate.earned, method="distil", steps=counter.steps)
 
     def score(mark: int) -> None:
         result = evaluate(practised(), attempts_per_configuration=evaluation_attempts, seed=evaluation_seed,
@@ -92,10 +99,9 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
                 round_index = counter.steps // dagger_steps
                 round_end = min((round_index + 1) * dagger_steps, dagger_end)
                 _dagger(teacher, model, counter, min(mark, round_end), round_index == 0, features, labels, rng,
-                        field_config)
+                        field_config, gate)
                 if counter.steps >= round_end:
                     clone_into(model, np.array(features), np.array(labels), cloning, seed=seed + round_index)
-                    distilled[0] = True
                 continue
             warming = counter.steps < warm_end
             counter.limit = min(mark, warm_end) if warming else mark
@@ -107,9 +113,11 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
 
 
 def _dagger(teacher: ImitatorPolicy, model: Any, counter: _Counter, until: int, teacher_acts: bool,
-            features: list[np.ndarray], labels: list[int], rng: np.random.Generator, field_config: Any) -> None:
+            features: list[np.ndarray], labels: list[int], rng: np.random.Generator, field_config: Any,
+            gate: Curriculum) -> None:
     """Play until ``until`` steps, the teacher (or the actor) acting, every visited state
-    labelled with the teacher's decision there."""
+    labelled with the teacher's decision there; each episode the actor plays to its end counts
+    towards its ``gate``."""
     from polymimic.baselines import ppo
 
     body = teacher.body
@@ -132,9 +140,11 @@ def _dagger(teacher: ImitatorPolicy, model: Any, counter: _Counter, until: int, 
             features.append(seen)
             labels.append(label)
             action = label if teacher_acts else int(model.predict(seen, deterministic=True)[0])
-            observation, _, terminated, truncated, info = env.step(action)
+            observation, reward, terminated, truncated, info = env.step(action)
             counter.steps += 1
             done = terminated or truncated
+            if done and not teacher_acts:
+                gate.episode_ended(float(reward))
 
 
 def _freeze_actor(model: Any, *, frozen: bool) -> None:

@@ -37,7 +37,7 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.crowds import member_seed
 from polymimic.datasets import load_demonstrations, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, record
-from polymimic.matrix.config import COLUMNS, DemonstratorSet, MatrixConfig, demonstrator_sets
+from polymimic.matrix.config import DemonstratorSet, MatrixConfig, demonstrator_sets, stored_column
 from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.report import matrix_html, matrix_markdown
 from polymimic.matrix.rundir import MatrixDir
@@ -46,6 +46,7 @@ from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, reco
 from polymimic.matrix.weighing import chosen_weighting, is_weighed
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
+from polymimic.runs.roster_config import demonstrations_expected, record_demonstrator
 from polymimic.runs.steps import Stepped, each_member_recorded
 
 __all__ = ["Matrix"]
@@ -79,12 +80,13 @@ class Matrix(Stepped):
 
     def sets(self) -> dict[str, dict[str, DemonstratorSet]]:
         """Each row's demonstrator set per column."""
-        return {row: demonstrator_sets(row) for row in self.rows()}
+        return {row: demonstrator_sets(row, self.config.run.demonstrators) for row in self.rows()}
 
     def cells(self) -> list[tuple[str, str]]:
         """The cells computed: each row's columns, a built-in body's own-body cell being another's."""
-        return [(row, column) for row, sets in self.sets().items() for column in COLUMNS
-                if column != "own_body" or sets["own_body"].name.startswith("own_")]
+        cells = [(row, stored_column(sets, column)) for row, sets in self.sets().items()
+                 for column in self.config.columns()]
+        return list(dict.fromkeys(cells))
 
     # 1. Each imitator's recogniser.
 
@@ -112,7 +114,9 @@ class Matrix(Stepped):
         with progress(total=len(unique), desc="record", quiet=self.quiet) as bar:
             for name, chosen in unique.items():
                 path = self.run.set_path(name)
-                if not self.run.finished(path, functools.partial(each_member_recorded, names=chosen.names, n=n)):
+                whole = (functools.partial(each_member_recorded, names=chosen.names, n=n) if chosen.spec is None
+                         or demonstrations_expected(chosen.spec, n) is not None else load_demonstrations)
+                if not self.run.finished(path, whole):
                     save_demonstrations(self._recorded(chosen, n), path)
                     made += 1
                 bar.update(1)
@@ -120,7 +124,13 @@ class Matrix(Stepped):
 
     def _recorded(self, chosen: DemonstratorSet, n: int) -> list[Demonstration]:
         """Every member's ``n`` demonstrations per configuration, member by member, each member
-        under its own seed (as :func:`polymimic.crowds.record_crowd` seeds a crowd's)."""
+        under its own seed (as :func:`polymimic.crowds.record_crowd` seeds a crowd's); a column of
+        yours as a reproduction records it (a log's every valid episode)."""
+        if chosen.spec is not None:
+            demos, said = record_demonstrator(chosen.spec, n=n, seed=member_seed(self.config.seeds.demonstrations, 0),
+                                              field_config=self.config.run.field, bodies=self.config.run.bodies)
+            self.say(f"record: {said}")
+            return demos
         out: list[Demonstration] = []
         for index, (name, controller, body, lapse) in enumerate(chosen.members):
             for configuration in (1, 2):

@@ -20,7 +20,7 @@ def matrix_targets(summary: Mapping[str, Any]) -> list[dict[str, Any]]:
     """The issue's targets, each with what was measured and whether it holds (None: no data)."""
     cells, targets = summary["cells"], []
     for row, column in TRANSFER_PAIRS:
-        if row in cells:
+        if row in cells and column in cells[row] and "own_body" in cells[row]:
             ratio = cells[row][column]["transfer"]["polymimic"]
             targets.append({"statement": f"{row} ← {column}: transfer ≥ 0.8 × the own-body cell",
                             "measured": "—" if ratio is None else f"{ratio:.2f}",
@@ -34,7 +34,7 @@ def matrix_targets(summary: Mapping[str, Any]) -> list[dict[str, Any]]:
     targets.append({"statement": "polymimic ≥ 1.5 × bco where bco's are positive, and above it everywhere",
                     "measured": "every cell" if not misses else "missed in " + ", ".join(misses),
                     "met": not misses})
-    if "humanoid" in cells:
+    if "humanoid" in cells and "expert" in cells["humanoid"]:
         # The target is per 50 attempts, the thesis's evaluation: a smaller run's figure is scaled to it.
         attempts = 2 * summary["sizes"]["attempts_per_configuration"]
         net = cells["humanoid"]["expert"]["polymimic"]["net_goals"]["mean"]

@@ -39,6 +39,10 @@ class Shared:
 
     def cell(self, row: str, column: str) -> tuple[DemonstratorSet, list[Demonstration]]:
         """A cell's demonstrator set and its demonstrations."""
+        # A worker unpickles the config's bodies without making them, so their names are unknown
+        # there until each is made once: the demonstrations of a body of the config's name it.
+        for body in self.config.run.bodies.values():
+            dataclasses.replace(body)
         chosen = self.sets[row][column]
         return chosen, self.demonstrations[chosen.name]
 

@@ -64,7 +64,7 @@ def test_the_demonstrators_are_columns_after_the_built_in_ones(finished):
     assert logged["transfer"] == {"polymimic": None, "bco": None}  # no own-body column to compare with
     recorded = polymimic.load_demonstrations(run.set_path("logged"))
     assert len(recorded) == 3 and {d.demonstrator for d in recorded} == {"logged"}  # the log's every episode
-    assert len(polymimic.load_demonstrations(run.set_path("pushing"))) == 4  # 2 per configuration
+    assert len(polymimic.load_demonstrations(run.set_path("pushing"))) == 8  # 2 per configuration for each trial
     assert "| lego |" in run.report_md_path.read_text()
 
 

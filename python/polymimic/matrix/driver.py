@@ -6,8 +6,9 @@ arrives, and a rerun redoes only what is missing or damaged):
 
 1. **recognise** — each row's self-observation on its own body and field, and its recogniser
    (the rows side by side);
-2. **record** — each set's demonstrations, 25 valid ones per member and configuration (the
-   ``mixed_bodies`` crowd as the benchmark records it);
+2. **record** — each set's pool of demonstrations: for every trial (and bco fit) 25 valid ones
+   per member and configuration of its own (the ``mixed_bodies`` crowd as the benchmark records
+   it), a log's every episode, each trial resampling them (:mod:`polymimic.matrix.draws`);
 3. **weigh** — polymimic's tuning, with bco's effort: in every cell of more than one
    demonstrator, each of its weightings of the members (``[matrix] weightings``) learns one trial
    under the first trial's seed and plays bco's validation attempts; the best by net goals, then
@@ -38,6 +39,7 @@ from polymimic.crowds import member_seed
 from polymimic.datasets import load_demonstrations, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, record
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig, demonstrator_sets, stored_column
+from polymimic.matrix.draws import pool_size
 from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.report import matrix_html, matrix_markdown
 from polymimic.matrix.rundir import MatrixDir
@@ -109,7 +111,8 @@ class Matrix(Stepped):
 
     def record(self) -> int:
         """Stage: every demonstrator set recorded; returns the sets recorded now."""
-        made, n = 0, self.config.matrix.demonstrations_per_configuration
+        settings = self.config.matrix
+        made, n = 0, pool_size(settings.demonstrations_per_configuration, max(settings.trials, settings.bco_fits))
         unique = self._unique_sets()
         with progress(total=len(unique), desc="record", quiet=self.quiet) as bar:
             for name, chosen in unique.items():

@@ -86,7 +86,10 @@ def matrix_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] 
              f"mean (sd) over {sizes['trials']} trials for polymimic (the improved control) and over "
              f"{sizes['bco_fits']} fits for bco (its labels from the row's own recogniser, its hyperparameters "
              f"chosen among {sizes['tuning_budget']} candidates on validation attempts of its own), and ×r its "
-             "transfer ratio: the cell over the row's own-body cell (none where that nets nothing). In a cell of "
+             "transfer ratio: the cell over the row's own-body cell (none where that nets nothing). Each trial "
+             "(and fit) learns from demonstrations of its own, every member recorded afresh under seeds of its "
+             "own (a log's episodes resampled with replacement), so a cell's sd says how much its answer depends "
+             "on what was demonstrated as well as on the learner's seed. In a cell of "
              "more than one demonstrator polymimic's weighting of the members is chosen with bco's effort: each "
              "candidate learns one trial and plays the same validation attempts.", ""]
     if seconds:

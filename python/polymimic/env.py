@@ -50,7 +50,7 @@ import numpy as np
 
 from polymimic._arguments import integer
 from polymimic._native import Episode, FieldRunError
-from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, body_name, field_of, resolve
+from polymimic.bodies import WheeledBody, body_name, resolve
 from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, _field_config, primitive_command
 from polymimic.plots import state_image
 
@@ -176,7 +176,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         if self.render_mode is None or self._episode is None:
             return None
         seen = self._episode.observation()
-        return state_image(_drawn_as(self.body), seen["robot"], seen["ball"], f"t = {seen['t_s']:.1f} s")
+        return state_image(self._body, seen["robot"], seen["ball"], f"t = {seen['t_s']:.1f} s")
 
     def _observation(self) -> np.ndarray:
         assert self._episode is not None
@@ -198,13 +198,6 @@ def observation_space(field_mm: tuple[float, float] = (1020.0, 810.0)) -> Any:
     half_x, half_y = 0.75 * length_mm, 0.75 * width_mm
     high = np.array([half_x, half_y, math.pi, half_x, half_y], dtype=np.float32)
     return spaces.Box(low=-high, high=high, dtype=np.float32)
-
-
-def _drawn_as(body: str) -> str:
-    """The thesis body whose picture stands for ``body``: itself, or the one of its field."""
-    if body in THESIS_BODY_FIELDS:
-        return body
-    return "tiny" if field_of(body) == "small" else "lego"
 
 
 def register() -> None:

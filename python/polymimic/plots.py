@@ -21,7 +21,6 @@ True
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import os
 from collections.abc import Mapping
@@ -30,7 +29,9 @@ from typing import TYPE_CHECKING, Any, TypedDict, cast
 import numpy as np
 
 from polymimic._atomic import atomic_path
-from polymimic.field import BODIES, Demonstration
+from polymimic._drawn_field import Scene, draw_field, scene_of
+from polymimic.bodies import WheeledBody
+from polymimic.field import Demonstration
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -46,42 +47,28 @@ class MeanSd(TypedDict):
     sd: float | None
 
 
-@dataclasses.dataclass(frozen=True)
-class _Scene:
-    """Sizes, mm: the field, the ball and the robot's footprint (length along its heading)."""
-
-    field_length_mm: float
-    field_width_mm: float
-    ball_diameter_mm: float
-    robot_length_mm: float
-    robot_width_mm: float
-
-
-_LARGE, _SMALL = (1020.0, 810.0, 100.0), (560.0, 345.0, 25.0)
-_SCENES = {
-    "lego": _Scene(*_LARGE, 140.0, 150.0),
-    "humanoid": _Scene(*_LARGE, 70.0, 110.0),
-    "tiny": _Scene(*_SMALL, 15.0, 15.0),
-}
-_TARGET_COLOUR, _OWN_COLOUR, _BALL_COLOUR = "tab:blue", "tab:red", "tab:orange"
+_BALL_COLOUR = "tab:orange"
 
 
 def plot_demonstration(demo: Demonstration, *, ax: Axes | None = None,
-                       path: str | os.PathLike[str] | None = None) -> Figure:
+                       path: str | os.PathLike[str] | None = None, body: WheeledBody | None = None) -> Figure:
     """Draw a demonstration on its field: the robot's path coloured by time, its heading every
     second, the ball's path, and where both started (hollow) and ended (filled).
 
     Parameters
     ----------
     demo : Demonstration
-        What to draw. The field and robot sizes follow the demonstrator's body (the tiny robot
-        plays on the small field; any other demonstrator is drawn as the Lego robot on the large
-        field unless it is the humanoid).
+        What to draw, on the field of its body (``demo.body``): the tiny's small field, the Lego's
+        and the humanoid's large one, a described body's own (a log of a 9 × 6 m field on that
+        field), with the robot's footprint and the ball to scale.
     ax : matplotlib.axes.Axes, optional
         Draw into these axes (a colour bar for time is added beside them); default: a new figure.
     path : str or path-like, optional
         Also save the figure there (format from the extension, e.g. ``.png``, ``.svg``),
         atomically.
+    body : polymimic.bodies.WheeledBody, optional
+        The demonstration's body, for one described in another process (a file's demonstrations);
+        its name must be ``demo.body``. Without it the body is looked up by that name.
 
     Returns
     -------
@@ -98,10 +85,10 @@ def plot_demonstration(demo: Demonstration, *, ax: Axes | None = None,
     """
     from matplotlib.collections import LineCollection
 
-    scene = _scene(demo)
+    scene = _scene(demo, body)
     frames = demo.frames
     figure, ax = _figure_and_axes(ax, (7.5, 5.6))
-    _draw_field(ax, scene)
+    draw_field(ax, scene)
 
     t_s, x, y, theta = frames["t_s"], frames["robot_x_mm"], frames["robot_y_mm"], frames["robot_theta_rad"]
     points = np.column_stack([x, y])
@@ -170,13 +157,13 @@ def animate_demonstration(demo: Demonstration, path: str | os.PathLike[str], *, 
     from matplotlib.figure import Figure
     from matplotlib.patches import Circle
 
-    scene = _scene(demo)
+    scene = _scene(demo, None)
     frames = demo.frames
     aspect = (1.1 * scene.field_width_mm) / (1.2 * scene.field_length_mm)
     figure = Figure(figsize=(6.0, 6.0 * aspect + 0.7), layout="constrained")
     FigureCanvasAgg(figure)
     ax = figure.add_subplot()
-    _draw_field(ax, scene)
+    draw_field(ax, scene)
     robot_trail, = ax.plot([], [], color="0.35", linewidth=1.0, zorder=3)
     ball_trail, = ax.plot([], [], color=_BALL_COLOUR, linewidth=1.0, linestyle="--", zorder=3)
     robot = _robot_patch(scene, frames["robot_x_mm"][0], frames["robot_y_mm"][0], frames["robot_theta_rad"][0],
@@ -202,19 +189,19 @@ def animate_demonstration(demo: Demonstration, path: str | os.PathLike[str], *, 
             writer.grab_frame()
 
 
-def state_image(body: str, robot: tuple[float, float, float], ball: tuple[float, float] | None,
+def state_image(body: str | WheeledBody, robot: tuple[float, float, float], ball: tuple[float, float] | None,
                  title: str) -> np.ndarray:
-    """An ``(H, W, 3)`` uint8 picture of the field with the robot at pose ``robot`` and the ball."""
+    """An ``(H, W, 3)`` uint8 picture of ``body``'s field with the robot at pose ``robot`` and the ball."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
     from matplotlib.patches import Circle
 
-    scene = _SCENES[body]
+    scene = scene_of(body)
     aspect = (1.1 * scene.field_width_mm) / (1.2 * scene.field_length_mm)
     figure = Figure(figsize=(6.0, 6.0 * aspect + 0.7), dpi=80, layout="constrained")
     canvas = FigureCanvasAgg(figure)
     ax = figure.add_subplot()
-    _draw_field(ax, scene)
+    draw_field(ax, scene)
     ax.add_patch(_robot_patch(scene, *robot, filled=True))
     if ball is not None:
         ax.add_patch(Circle(ball, scene.ball_diameter_mm / 2, facecolor=_BALL_COLOUR, edgecolor="black",
@@ -232,41 +219,19 @@ def _drawn_frames(n_frames: int, stride: int) -> list[int]:
     return drawn if drawn[-1] == n_frames - 1 else [*drawn, n_frames - 1]
 
 
-def _scene(demo: Demonstration) -> _Scene:
+def _scene(demo: Demonstration, body: WheeledBody | None) -> Scene:
     if not isinstance(demo, Demonstration):
         raise TypeError(f"expected a Demonstration, got {type(demo).__name__}")
     if len(demo.frames) == 0:
         raise ValueError("the demonstration has no frames to draw")
-    return _SCENES[BODIES.get(demo.demonstrator, "lego")]  # a demonstrator of its own is drawn as the imitator
+    if body is None:
+        return scene_of(demo.body)
+    if not isinstance(body, WheeledBody) or body.name != demo.body:
+        raise ValueError(f"body must be the demonstration's body, a WheeledBody named {demo.body!r}; got {body!r}")
+    return scene_of(body)
 
 
-def _draw_field(ax: Axes, scene: _Scene) -> None:
-    """The pitch, its centre line and circle, and both goals behind their lines."""
-    from matplotlib.patches import Circle, Rectangle
-
-    half_l, half_w = scene.field_length_mm / 2, scene.field_width_mm / 2
-    mouth, depth = scene.field_width_mm / 4, 0.06 * scene.field_length_mm
-    ax.add_patch(Rectangle((-half_l, -half_w), 2 * half_l, 2 * half_w, facecolor="#eef6ea", edgecolor="0.15",
-                           linewidth=1.5, zorder=0))
-    ax.plot([0, 0], [-half_w, half_w], color="0.55", linewidth=1.0, linestyle=":", zorder=1)
-    ax.add_patch(Circle((0, 0), 0.1 * scene.field_length_mm, fill=False, edgecolor="0.55", linewidth=1.0,
-                        linestyle=":", zorder=1))
-    for sign, colour, name in ((1, _TARGET_COLOUR, "target goal"), (-1, _OWN_COLOUR, "own goal")):
-        x0 = half_l if sign > 0 else -half_l - depth
-        ax.add_patch(Rectangle((x0, -mouth), depth, 2 * mouth, facecolor=colour, alpha=0.25, edgecolor=colour,
-                               linewidth=1.5, zorder=1))
-        ax.plot([sign * half_l] * 2, [-mouth, mouth], color=colour, linewidth=3.0, zorder=2)
-        ax.text(sign * half_l, mouth + 0.02 * scene.field_width_mm, name, color=colour, ha="center",
-                va="bottom", fontsize="small")
-    margin = 0.1 * scene.field_length_mm
-    ax.set_xlim(-half_l - margin, half_l + margin)
-    ax.set_ylim(-half_w - 0.05 * scene.field_width_mm, half_w + 0.05 * scene.field_width_mm)
-    ax.set_aspect("equal")
-    ax.set_xlabel("x (mm)")
-    ax.set_ylabel("y (mm)")
-
-
-def _robot_outline(scene: _Scene, x_mm: float, y_mm: float, theta_rad: float) -> np.ndarray:
+def _robot_outline(scene: Scene, x_mm: float, y_mm: float, theta_rad: float) -> np.ndarray:
     """The robot's box with a notch at its front (a pentagon), in field coordinates."""
     hl, hw = scene.robot_length_mm / 2, scene.robot_width_mm / 2
     robot_frame = np.array([[-hl, -hw], [hl * 0.6, -hw], [hl, 0.0], [hl * 0.6, hw], [-hl, hw]])
@@ -275,7 +240,7 @@ def _robot_outline(scene: _Scene, x_mm: float, y_mm: float, theta_rad: float) ->
     return outline
 
 
-def _robot_patch(scene: _Scene, x_mm: float, y_mm: float, theta_rad: float, *, filled: bool) -> Any:
+def _robot_patch(scene: Scene, x_mm: float, y_mm: float, theta_rad: float, *, filled: bool) -> Any:
     from matplotlib.patches import Polygon
 
     outline = _robot_outline(scene, x_mm, y_mm, theta_rad) if np.isfinite([x_mm, y_mm, theta_rad]).all() else \
@@ -284,7 +249,7 @@ def _robot_patch(scene: _Scene, x_mm: float, y_mm: float, theta_rad: float, *, f
                    linewidth=1.2, zorder=5)
 
 
-def _ball_markers(ax: Axes, scene: _Scene, bx: np.ndarray, by: np.ndarray) -> None:
+def _ball_markers(ax: Axes, scene: Scene, bx: np.ndarray, by: np.ndarray) -> None:
     from matplotlib.patches import Circle
 
     seen = np.flatnonzero(np.isfinite(bx) & np.isfinite(by))

@@ -115,7 +115,6 @@ def test_each_row_learns_from_the_columns_demonstrators():
     ('[matrix]\nimitators = ["lego", "tinny"]\n', r"\[matrix\] imitators: 'tinny' is not a body"),
     ('[matrix]\nimitators = []\n', r"\[matrix\] imitators must be a non-empty list"),
     ('[matrix]\ntrials = 0\n', r"\[matrix\] trials"),
-    ('[imitator]\nbody = "tiny"\n', r"\[imitator\] has no place in a matrix"),
     ('[matrix]\ntrails = 3\n', r"unknown key in \[matrix\]: trails"),
     ('[matrix]\nweightings = ["lp", "lpp"]\n', r"\[matrix\] weightings must be .* one of even, lp, lp_gain; got"),
     ('[matrix]\nweightings = []\n', r"\[matrix\] weightings must be a non-empty list"),

@@ -10,6 +10,7 @@ from typing import Any
 
 from polymimic.bodies import WheeledBody
 from polymimic.cli.common import existing
+from polymimic.cli.import_options import without_run
 from polymimic.datasets import save_demonstrations
 from polymimic.field import BODY_NAMES
 from polymimic.reproduce.rundir import RunDir
@@ -26,10 +27,16 @@ def add(commands: Any) -> None:
     text = ("a tracker log (CSV or Parquet) resampled to 30 frames a second and saved as a run's demonstrations, "
             "datasets/demonstrations_<NAME>.parquet: the run's [demonstrators.<NAME>] with imported = true")
     tracks = commands.add_parser("import-tracks", help=text, description=text)
-    tracks.add_argument("file", type=pathlib.Path, help="the log: .csv or .parquet, one row per reading")
+    tracks.add_argument("file", type=pathlib.Path, nargs="?",
+                        help="the log: .csv or .parquet, one row per reading (default: --config's "
+                             "[demonstrators.<NAME>] log)")
     tracks.add_argument("--as", dest="name", required=True, help="the demonstrator's name (letters, digits and _)")
-    tracks.add_argument("--body", help=f"the demonstrator's body: {', '.join(BODY_NAMES)} or one of the run's "
-                                       "[bodies] (default: the body the run's config gives it, else lego)")
+    tracks.add_argument("--body", help=f"the demonstrator's body: {', '.join(BODY_NAMES)}, one of the run's (or "
+                                       "--config's) [bodies], or a TOML file holding one [bodies.<name>] table "
+                                       "(default: the body the config gives it, else lego)")
+    tracks.add_argument("--config", type=pathlib.Path,
+                        help="with --out: a run config whose [bodies] --body may name and whose [demonstrators.<NAME>] "
+                             "log table gives the log and its options")
     for quantity, option in (("length", "--length-unit"), ("angle", "--angle-unit"), ("time", "--time-unit")):
         tracks.add_argument(option, dest=f"{quantity}_unit", choices=list(UNITS[quantity]),
                             help=f"the log's {quantity} unit (default {next(iter(UNITS[quantity]))})")
@@ -62,14 +69,22 @@ def _import_tracks(args: argparse.Namespace) -> int:
             raise RunError(f"--column {item!r}: expected polymimic_name=file_column, e.g. --column t=time")
         columns[name] = file_column
     units = {q: u for q in UNITS if (u := getattr(args, f"{q}_unit")) is not None}
-    body: str | WheeledBody = args.body or "lego"
+    given = {k: v for k, v in (("columns", columns), ("units", units), ("rate_hz", args.rate_hz),
+                               ("configuration", args.configuration), ("ignore", tuple(args.ignore)),
+                               ("max_gap_s", args.max_gap_s)) if v not in (None, {}, ())}
+    body: str | WheeledBody
     if args.out is not None:
-        if body not in BODY_NAMES:
-            raise RunError(f"--body {body!r}: without a run, one of {', '.join(BODY_NAMES)}")
         out = pathlib.Path(args.out)
         if not out.parent.is_dir():
             raise RunError(f"--out {out}: directory {out.parent} does not exist")
+        log, body, options = without_run(args, given)
     else:
+        if args.config is not None:
+            raise RunError("--config is for an import to a file (--out): a run's own config says what its "
+                           "demonstrators are")
+        if args.file is None:
+            raise RunError("no log to import: give its FILE")
+        log, options = args.file, given
         run = args.run_dir if args.run_dir is not None else latest_run_path()
         if run is None:
             raise MissingInputError("no run under runs/: name one with --run-dir, or write to a file with --out")
@@ -85,9 +100,7 @@ def _import_tracks(args: argparse.Namespace) -> int:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", LostTrackingWarning)  # the summary line says which were invalid
-            imported = import_tracks(args.file, demonstrator=args.name, columns=columns, units=units,
-                                     rate_hz=args.rate_hz, body=body, configuration=args.configuration,
-                                     ignore=args.ignore, max_gap_s=args.max_gap_s)
+            imported = import_tracks(log, demonstrator=args.name, body=body, **options)
     except (TrackLogError, OSError, ValueError, TypeError) as error:  # the log or the options: bad input, named
         raise RunError(str(error)) from error
     if not imported.demonstrations:
@@ -100,6 +113,8 @@ def _import_tracks(args: argparse.Namespace) -> int:
             _replace_downstream(target, config, args.name)
             save_demonstrations(imported.demonstrations, out)
     print(f"{imported.summary()}; written to {out}")
+    for line in imported.repaired():
+        print(f"  {line}")
     return 0
 
 

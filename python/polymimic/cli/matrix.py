@@ -23,6 +23,9 @@ def add(commands: Any) -> None:
     matrix.add_argument("--imitators", nargs="+", metavar="BODY",
                         help="only these rows (built in: lego tiny humanoid wagon; more in --config's "
                              "[bodies.<name>])")
+    matrix.add_argument("--columns", nargs="+", metavar="COLUMN",
+                        help="only these columns (built in: expert tiny humanoid own_body mixed_bodies; more in "
+                             "--config's [demonstrators.<name>])")
     matrix.set_defaults(handler=_matrix)
 
 
@@ -41,6 +44,8 @@ def _matrix(args: argparse.Namespace) -> int:
         requested = requested or MatrixConfig()
         requested = dataclasses.replace(requested, matrix=dataclasses.replace(requested.matrix,
                                                                               imitators=tuple(args.imitators)))
+    if args.columns is not None:
+        requested = _only_columns(requested or MatrixConfig(), args.columns)
     with TaskRunner(backend=args.backend, workers=args.workers, address=args.address) as runner:
         with run.lock("polymimic matrix"):
             config = run.open(requested)
@@ -49,3 +54,18 @@ def _matrix(args: argparse.Namespace) -> int:
             print(f"matrix in {seconds:.1f} s", file=sys.stderr)
     print(run.report_html_path)
     return 0
+
+
+def _only_columns(config: Any, columns: list[str]) -> Any:
+    """``config`` (a MatrixConfig) with only ``columns``: built-in ones and its demonstrators'."""
+    from polymimic.matrix.config import COLUMNS
+
+    own = config.run.demonstrators
+    unknown = [c for c in columns if c not in COLUMNS and c not in own]
+    if unknown or len(set(columns)) != len(columns):
+        raise ConfigError(f"--columns {' '.join(columns)}: each once, one of {', '.join(COLUMNS)}"
+                          + (f" or of --config's [demonstrators] ({', '.join(own)})" if own else
+                             " (a --config's [demonstrators.<name>] adds more)"))
+    return dataclasses.replace(config, matrix=dataclasses.replace(config.matrix, columns=tuple(
+        c for c in columns if c in COLUMNS)), run=dataclasses.replace(config.run, demonstrators={
+            c: own[c] for c in columns if c in own}))

@@ -2,11 +2,15 @@
 
 The sections a reproduction has (``[seeds]``, ``[field]``, ``[recognizer]``, ``[segmenter]``,
 ``[learning]``, ``[bodies.<name>]``, read by :class:`~polymimic.runs.config.RunConfig`), then
-``[matrix]``: the imitator bodies that make its rows, its sizes, ``bco``'s tuning effort and
-polymimic's (how it weighs a crowd's members). The
+``[matrix]``: the imitator bodies that make its rows, its built-in columns, its sizes, ``bco``'s
+tuning effort and polymimic's (how it weighs a crowd's members). The
 rows are the thesis's three bodies and ``wagon``, a wheeled body of its own field described in
 ``docs/configs/matrix_wagon.toml`` (the default config's own body, :data:`WAGON`); a
-``[bodies.<name>]`` table adds another that ``imitators`` may name.
+``[bodies.<name>]`` table adds another that ``imitators`` may name. Each ``[demonstrators.<name>]``
+table (a tracker log, a Python policy, a built-in controller on a body; see
+:mod:`polymimic.runs.roster_config`) adds a column after the built-in ones. A reproduction's
+config reads as a matrix's too: its ``[imitator]`` body is the first row unless ``[matrix]
+imitators`` names the rows, and its ``[experiments]`` are the reproduction's (checked, unused).
 
 >>> config = MatrixConfig()
 >>> config.matrix.imitators, config.matrix.trials
@@ -29,6 +33,8 @@ from polymimic.crowds import PROFILES
 from polymimic.runs.config import (
     IMITATOR_BODIES,
     ConfigError,
+    ExperimentSettings,
+    ImitatorSettings,
     RunConfig,
     as_table,
     checked_section,
@@ -36,8 +42,10 @@ from polymimic.runs.config import (
     read_config,
     toml_tables,
 )
+from polymimic.runs.roster_config import ControllerDemonstrator, DemonstratorSpec, ImportedDemonstrator, spec_table
 
-__all__ = ["COLUMNS", "WAGON", "WEIGHTINGS", "DemonstratorSet", "MatrixConfig", "MatrixSettings", "demonstrator_sets"]
+__all__ = ["COLUMNS", "WAGON", "WEIGHTINGS", "DemonstratorSet", "MatrixConfig", "MatrixSettings", "demonstrator_sets",
+           "stored_column"]
 
 COLUMNS = ("expert", "tiny", "humanoid", "own_body", "mixed_bodies")
 """The demonstrator sets, in the matrix's order: the Expert on the Lego, the Tiny controller on
@@ -67,6 +75,8 @@ class MatrixSettings:
 
     imitators: tuple[str, ...] = _doc("the imitator bodies, one row each: lego, tiny, humanoid, or a "
                                       "[bodies.<name>]", ("lego", "tiny", "humanoid", "wagon"))
+    columns: tuple[str, ...] = _doc("the built-in columns, of expert, tiny, humanoid, own_body, mixed_bodies; each "
+                                    "[demonstrators.<name>] adds a column after them", COLUMNS)
     trials: int = _doc("learning trials per cell (seeds first_trial, first_trial + 1, …)", 20)
     demonstrations_per_configuration: int = _doc("valid demonstrations per member and field configuration", 25)
     attempts_per_configuration: int = _doc("evaluation attempts per method, trial and field configuration", 25)
@@ -105,15 +115,25 @@ class MatrixSettings:
         if len(set(rows)) != len(rows):
             raise ConfigError(f"[matrix] imitators names {next(r for r in rows if rows.count(r) > 1)!r} twice")
         object.__setattr__(self, "imitators", tuple(rows))
+        columns = self.columns
+        if not isinstance(columns, (list, tuple)) or not all(isinstance(c, str) and c in COLUMNS for c in columns) \
+                or len(set(columns)) != len(columns):
+            raise ConfigError(f"[matrix] columns must be a list of distinct built-in columns, each one of "
+                              f"{', '.join(COLUMNS)} (a [demonstrators.<name>] table adds one of yours); got "
+                              f"{columns!r}")
+        object.__setattr__(self, "columns", tuple(columns))
 
 
 @dataclasses.dataclass(frozen=True)
 class DemonstratorSet:
-    """One column's demonstrators for one row: ``(name, controller, body, lapse)`` each."""
+    """One column's demonstrators for one row: ``(name, controller, body, lapse)`` each; a column
+    of the config's ``[demonstrators.<name>]`` has the one member it describes (``spec``; its
+    controller is ``"log"`` or ``"policy"`` where it is not a built-in one)."""
 
     column: str
     name: str
     members: tuple[tuple[str, str, str, float], ...]
+    spec: DemonstratorSpec | None = None
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -121,10 +141,11 @@ class DemonstratorSet:
         return tuple(m[0] for m in self.members)
 
 
-def demonstrator_sets(row: str) -> dict[str, DemonstratorSet]:
-    """Every column's demonstrators for the imitator ``row``. A built-in body's own-body column is
-    the column of its own controller (the same set: its cells are one); another body's is the Tiny
-    controller on that body, named ``own_<body>``."""
+def demonstrator_sets(row: str, demonstrators: dict[str, DemonstratorSpec] | None = None) -> dict[str, DemonstratorSet]:
+    """Every column's demonstrators for the imitator ``row``: the built-in columns, then one per
+    demonstrator of ``demonstrators`` (a config's ``[demonstrators]``). A built-in body's own-body
+    column is the column of its own controller (the same set: its cells are one); another body's is
+    the Tiny controller on that body, named ``own_<body>``."""
     sets = {"expert": DemonstratorSet("expert", "expert", (("expert", "expert", "lego", 0.0),)),
             "tiny": DemonstratorSet("tiny", "tiny", (("tiny", "tiny", "tiny", 0.0),)),
             "humanoid": DemonstratorSet("humanoid", "humanoid", (("humanoid", "humanoid", "humanoid", 0.0),)),
@@ -134,7 +155,22 @@ def demonstrator_sets(row: str) -> dict[str, DemonstratorSet]:
         sets["own_body"] = dataclasses.replace(sets[OWN_CONTROLLER[row]], column="own_body")
     else:
         sets["own_body"] = DemonstratorSet("own_body", f"own_{row}", ((f"tiny_{row}", "tiny", row, 0.0),))
-    return {column: sets[column] for column in COLUMNS}
+    yours = {name: DemonstratorSet(name, name, ((name, _kind(spec), spec.body,
+                                                 spec.lapse if isinstance(spec, ControllerDemonstrator) else 0.0),),
+                                   spec=spec) for name, spec in (demonstrators or {}).items()}
+    return {**{column: sets[column] for column in COLUMNS}, **yours}
+
+
+def stored_column(sets: dict[str, DemonstratorSet], column: str) -> str:
+    """The column whose cell ``column``'s is, in a row of ``sets``: itself, but for a built-in
+    body's own-body column, which is its own controller's."""
+    own = sets["own_body"].name
+    return own if column == "own_body" and not own.startswith("own_") else column
+
+
+def _kind(spec: DemonstratorSpec) -> str:
+    return spec.controller if isinstance(spec, ControllerDemonstrator) else type(spec).__name__.removesuffix(
+        "Demonstrator").lower()
 
 
 def _default_run() -> RunConfig:
@@ -157,7 +193,22 @@ class MatrixConfig:
             if row not in known:
                 raise ConfigError(f"[matrix] imitators: {row!r} is not a body: one of {', '.join(known)}")
         if not self.run.thesis_imitator:
-            raise ConfigError("[imitator] has no place in a matrix: its rows are [matrix] imitators")
+            raise ConfigError("[imitator] has no place in a matrix config made in Python: its rows are [matrix] "
+                              "imitators")
+        for name, spec in self.run.demonstrators.items():
+            if isinstance(spec, ImportedDemonstrator):
+                raise ConfigError(f"[demonstrators.{name}] is imported into a reproduction's run; a matrix reads a log "
+                                  f"itself: give its table log = \"FILE\" (and the import's options)")
+            if name in COLUMNS or name.startswith("own_"):
+                raise ConfigError(f"[demonstrators.{name}]: a matrix's column of yours needs a name apart from its "
+                                  f"built-in columns ({', '.join(COLUMNS)}) and own_<body> sets")
+        if not self.columns():
+            raise ConfigError("[matrix] columns is empty and there is no [demonstrators.<name>]: a matrix needs a "
+                              "column")
+
+    def columns(self) -> tuple[str, ...]:
+        """The columns: ``[matrix] columns``, then each ``[demonstrators.<name>]``."""
+        return (*self.matrix.columns, *self.run.demonstrators)
 
     @property
     def seeds(self) -> Any:
@@ -198,25 +249,30 @@ class MatrixConfig:
                                   for k, v in dataclasses.asdict(self.matrix).items()}}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any], *, base: MatrixConfig | None = None) -> MatrixConfig:
-        """A config from tables such as :meth:`to_dict` gives, laid over ``base`` (the defaults).
+    def from_dict(cls, data: dict[str, Any], *, base: MatrixConfig | None = None,
+                  base_dir: str | os.PathLike[str] = ".") -> MatrixConfig:
+        """A config from tables such as :meth:`to_dict` gives, laid over ``base`` (the defaults);
+        a demonstrator's files (a log, a policy's) are found relative to ``base_dir``.
 
         Raises
         ------
         ConfigError
-            For an unknown key, a value out of range, or a table a matrix has no place for.
+            For an unknown key, a value out of range, or a table a matrix cannot use.
         """
         base = base or cls()
-        for section in ("experiments", "imitator", "demonstrators"):
-            if section in data:
-                raise ConfigError(f"[{section}] has no place in a matrix: its rows are [matrix] imitators and its "
-                                  "columns are fixed")
-        run = RunConfig.from_dict({k: v for k, v in data.items() if k != "matrix"}, base=base.run)
+        run = RunConfig.from_dict({k: v for k, v in data.items() if k != "matrix"}, base=base.run, base_dir=base_dir)
+        # The reproduction's sections: its imitator is a row; its experiments are checked above and kept out.
+        imitator = run.imitator.body if "imitator" in data else None
+        run = dataclasses.replace(run, imitator=ImitatorSettings(), experiments=ExperimentSettings(),
+                                  own_experiments={})
         settings = base.matrix
         if "matrix" in data:
             defaults = {k: list(v) if isinstance(v, tuple) else v for k, v in dataclasses.asdict(base.matrix).items()}
             settings = dataclasses.replace(base.matrix, **checked_section("matrix", as_table("matrix", data["matrix"]),
                                                                           defaults))
+        if imitator is not None and "imitators" not in as_table("matrix", data.get("matrix", {})):
+            rows = (imitator, *(r for r in settings.imitators if r != imitator))
+            settings = dataclasses.replace(settings, imitators=rows)
         return cls(run=run, matrix=settings)
 
     def to_toml(self) -> str:
@@ -230,17 +286,21 @@ class MatrixConfig:
                                       for k, v in dataclasses.asdict(self.matrix).items()}, docs)
         for name, body in self.run.bodies.items():
             write_table(lines, f"bodies.{name}", body.to_table(), {})
+        for name, spec in self.run.demonstrators.items():
+            write_table(lines, f"demonstrators.{name}", spec_table(spec), {})
         return "\n".join(lines).rstrip() + "\n"
 
     @classmethod
-    def from_toml(cls, text: str, *, base: MatrixConfig | None = None) -> MatrixConfig:
-        """A config from TOML text, laid over ``base`` (the defaults)."""
-        return cls.from_dict(toml_tables(text), base=base)
+    def from_toml(cls, text: str, *, base: MatrixConfig | None = None,
+                  base_dir: str | os.PathLike[str] = ".") -> MatrixConfig:
+        """A config from TOML text, laid over ``base`` (the defaults); paths from ``base_dir``."""
+        return cls.from_dict(toml_tables(text), base=base, base_dir=base_dir)
 
     @classmethod
     def load(cls, path: str | os.PathLike[str], *, base: MatrixConfig | None = None) -> MatrixConfig:
-        """A config from a TOML file, laid over ``base`` (the defaults)."""
-        return read_config(path, lambda text: cls.from_toml(text, base=base))
+        """A config from a TOML file, laid over ``base`` (the defaults); paths from the file's folder."""
+        folder = os.path.dirname(os.path.abspath(path))
+        return read_config(path, lambda text: cls.from_toml(text, base=base, base_dir=folder))
 
 
 def _without_table(lines: list[str], name: str) -> list[str]:

@@ -6,8 +6,9 @@ arrives, and a rerun redoes only what is missing or damaged):
 
 1. **recognise** — each row's self-observation on its own body and field, and its recogniser
    (the rows side by side);
-2. **record** — each set's demonstrations, 25 valid ones per member and configuration (the
-   ``mixed_bodies`` crowd as the benchmark records it);
+2. **record** — each set's pool of demonstrations: for every trial (and bco fit) 25 valid ones
+   per member and configuration of its own (the ``mixed_bodies`` crowd as the benchmark records
+   it), a log's every episode, each trial resampling them (:mod:`polymimic.matrix.draws`);
 3. **weigh** — polymimic's tuning, with bco's effort: in every cell of more than one
    demonstrator, each of its weightings of the members (``[matrix] weightings``) learns one trial
    under the first trial's seed and plays bco's validation attempts; the best by net goals, then
@@ -37,7 +38,8 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.crowds import member_seed
 from polymimic.datasets import load_demonstrations, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, record
-from polymimic.matrix.config import COLUMNS, DemonstratorSet, MatrixConfig, demonstrator_sets
+from polymimic.matrix.config import DemonstratorSet, MatrixConfig, demonstrator_sets, stored_column
+from polymimic.matrix.draws import pool_size
 from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.report import matrix_html, matrix_markdown
 from polymimic.matrix.rundir import MatrixDir
@@ -46,6 +48,7 @@ from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, reco
 from polymimic.matrix.weighing import chosen_weighting, is_weighed
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
+from polymimic.runs.roster_config import demonstrations_expected, record_demonstrator
 from polymimic.runs.steps import Stepped, each_member_recorded
 
 __all__ = ["Matrix"]
@@ -79,12 +82,13 @@ class Matrix(Stepped):
 
     def sets(self) -> dict[str, dict[str, DemonstratorSet]]:
         """Each row's demonstrator set per column."""
-        return {row: demonstrator_sets(row) for row in self.rows()}
+        return {row: demonstrator_sets(row, self.config.run.demonstrators) for row in self.rows()}
 
     def cells(self) -> list[tuple[str, str]]:
         """The cells computed: each row's columns, a built-in body's own-body cell being another's."""
-        return [(row, column) for row, sets in self.sets().items() for column in COLUMNS
-                if column != "own_body" or sets["own_body"].name.startswith("own_")]
+        cells = [(row, stored_column(sets, column)) for row, sets in self.sets().items()
+                 for column in self.config.columns()]
+        return list(dict.fromkeys(cells))
 
     # 1. Each imitator's recogniser.
 
@@ -107,12 +111,15 @@ class Matrix(Stepped):
 
     def record(self) -> int:
         """Stage: every demonstrator set recorded; returns the sets recorded now."""
-        made, n = 0, self.config.matrix.demonstrations_per_configuration
+        settings = self.config.matrix
+        made, n = 0, pool_size(settings.demonstrations_per_configuration, max(settings.trials, settings.bco_fits))
         unique = self._unique_sets()
         with progress(total=len(unique), desc="record", quiet=self.quiet) as bar:
             for name, chosen in unique.items():
                 path = self.run.set_path(name)
-                if not self.run.finished(path, functools.partial(each_member_recorded, names=chosen.names, n=n)):
+                whole = (functools.partial(each_member_recorded, names=chosen.names, n=n) if chosen.spec is None
+                         or demonstrations_expected(chosen.spec, n) is not None else load_demonstrations)
+                if not self.run.finished(path, whole):
                     save_demonstrations(self._recorded(chosen, n), path)
                     made += 1
                 bar.update(1)
@@ -120,7 +127,13 @@ class Matrix(Stepped):
 
     def _recorded(self, chosen: DemonstratorSet, n: int) -> list[Demonstration]:
         """Every member's ``n`` demonstrations per configuration, member by member, each member
-        under its own seed (as :func:`polymimic.crowds.record_crowd` seeds a crowd's)."""
+        under its own seed (as :func:`polymimic.crowds.record_crowd` seeds a crowd's); a column of
+        yours as a reproduction records it (a log's every valid episode)."""
+        if chosen.spec is not None:
+            demos, said = record_demonstrator(chosen.spec, n=n, seed=member_seed(self.config.seeds.demonstrations, 0),
+                                              field_config=self.config.run.field, bodies=self.config.run.bodies)
+            self.say(f"record: {said}")
+            return demos
         out: list[Demonstration] = []
         for index, (name, controller, body, lapse) in enumerate(chosen.members):
             for configuration in (1, 2):

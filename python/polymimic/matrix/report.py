@@ -20,7 +20,7 @@ def matrix_targets(summary: Mapping[str, Any]) -> list[dict[str, Any]]:
     """The issue's targets, each with what was measured and whether it holds (None: no data)."""
     cells, targets = summary["cells"], []
     for row, column in TRANSFER_PAIRS:
-        if row in cells:
+        if row in cells and column in cells[row] and "own_body" in cells[row]:
             ratio = cells[row][column]["transfer"]["polymimic"]
             targets.append({"statement": f"{row} ← {column}: transfer ≥ 0.8 × the own-body cell",
                             "measured": "—" if ratio is None else f"{ratio:.2f}",
@@ -34,7 +34,7 @@ def matrix_targets(summary: Mapping[str, Any]) -> list[dict[str, Any]]:
     targets.append({"statement": "polymimic ≥ 1.5 × bco where bco's are positive, and above it everywhere",
                     "measured": "every cell" if not misses else "missed in " + ", ".join(misses),
                     "met": not misses})
-    if "humanoid" in cells:
+    if "humanoid" in cells and "expert" in cells["humanoid"]:
         # The target is per 50 attempts, the thesis's evaluation: a smaller run's figure is scaled to it.
         attempts = 2 * summary["sizes"]["attempts_per_configuration"]
         net = cells["humanoid"]["expert"]["polymimic"]["net_goals"]["mean"]
@@ -86,7 +86,10 @@ def matrix_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] 
              f"mean (sd) over {sizes['trials']} trials for polymimic (the improved control) and over "
              f"{sizes['bco_fits']} fits for bco (its labels from the row's own recogniser, its hyperparameters "
              f"chosen among {sizes['tuning_budget']} candidates on validation attempts of its own), and ×r its "
-             "transfer ratio: the cell over the row's own-body cell (none where that nets nothing). In a cell of "
+             "transfer ratio: the cell over the row's own-body cell (none where that nets nothing). Each trial "
+             "(and fit) learns from demonstrations of its own, every member recorded afresh under seeds of its "
+             "own (a log's episodes resampled with replacement), so a cell's sd says how much its answer depends "
+             "on what was demonstrated as well as on the learner's seed. In a cell of "
              "more than one demonstrator polymimic's weighting of the members is chosen with bco's effort: each "
              "candidate learns one trial and plays the same validation attempts.", ""]
     if seconds:

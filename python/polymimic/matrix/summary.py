@@ -14,7 +14,7 @@ from typing import Any
 
 from polymimic import __version__
 from polymimic.bodies import pitch_of, playing_field, reach_mm
-from polymimic.matrix.config import COLUMNS, MatrixConfig, demonstrator_sets
+from polymimic.matrix.config import MatrixConfig, demonstrator_sets, stored_column
 from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning
 from polymimic.matrix.rundir import MatrixDir
 from polymimic.matrix.weighing import chosen_weighting
@@ -42,9 +42,10 @@ def _scores(evaluations: Sequence[Mapping[str, Any]]) -> dict[str, Any]:
 
 
 def _cell(run: MatrixDir, config: MatrixConfig, row: str, column: str) -> dict[str, Any]:
-    chosen = demonstrator_sets(row)[column]
+    sets = demonstrator_sets(row, config.run.demonstrators)
+    chosen = sets[column]
     # A built-in body's own-body cell is its own controller's column: read there.
-    stored = column if column != "own_body" or chosen.name.startswith("own_") else chosen.name
+    stored = stored_column(sets, column)
     polymimic = [load_cell_evaluation(run.require(run.evaluation_path(row, stored, "polymimic", s), "matrix"))
                  for s in config.trial_seeds()]
     bco = [load_cell_evaluation(run.require(run.evaluation_path(row, stored, "bco", s), "matrix"))
@@ -74,14 +75,15 @@ def gather(run: MatrixDir, config: MatrixConfig) -> dict[str, Any]:
                                     "goal_mouth_mm": field.goal_mouth_mm, "ball_diameter_mm": field.ball_diameter_mm},
                           "pitch": pitch_of(body), "reach_mm": reach_mm(body, imitating=True),
                           "primitives": own_set if body == "humanoid" else "wheeled"}
-        cells[row] = {column: _cell(run, config, row, column) for column in COLUMNS}
-        own = {m: cells[row]["own_body"][m]["net_goals"]["mean"] for m in ("polymimic", "bco")}
+        cells[row] = {column: _cell(run, config, row, column) for column in config.columns()}
+        own_cell = cells[row].get("own_body")  # no transfer ratio where the own-body column is left out
+        own = {m: None if own_cell is None else own_cell[m]["net_goals"]["mean"] for m in ("polymimic", "bco")}
         for cell in cells[row].values():
             ours, theirs = cell["polymimic"]["net_goals"]["mean"], cell["bco"]["net_goals"]["mean"]
             cell["transfer"] = {m: transfer(cell[m]["net_goals"]["mean"], own[m]) for m in ("polymimic", "bco")}
             cell["polymimic_over_bco"] = None if theirs is None or theirs <= 0 else round(ours / theirs, 4)
     return {"format": FORMAT, "version": VERSION, "polymimic_version": __version__, "sizes": sizes,
-            "imitators": imitators, "columns": list(COLUMNS), "cells": cells}
+            "imitators": imitators, "columns": list(config.columns()), "cells": cells}
 
 
 def draw_heat_map(summary: Mapping[str, Any], folder: pathlib.Path) -> pathlib.Path:

@@ -23,24 +23,36 @@ from polymimic.baselines.tuning import validation_attempts_apart
 from polymimic.field import Demonstration, PrimitiveSequence, self_observation
 from polymimic.learning import Evaluation, ImitatorPolicy, evaluate, run_trial, segmented
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig
+from polymimic.matrix.draws import drawn
 
 __all__ = ["Shared", "bco_task", "dumps", "polymimic_task", "recognise_task", "tuning_task", "weighing_task"]
 
 
 @dataclasses.dataclass(frozen=True)
 class Shared:
-    """What every task of a matrix shares: the config, each row's recogniser, each set's
-    demonstrations and each (row, column)'s set."""
+    """What every task of a matrix shares: the config, each row's recogniser, each set's pool of
+    demonstrations (:mod:`polymimic.matrix.draws`) and each (row, column)'s set."""
 
     config: MatrixConfig
     recognizers: dict[str, PrimitiveRecognizer]
     demonstrations: dict[str, list[Demonstration]]
     sets: dict[str, dict[str, DemonstratorSet]]
 
-    def cell(self, row: str, column: str) -> tuple[DemonstratorSet, list[Demonstration]]:
-        """A cell's demonstrator set and its demonstrations."""
+    def cell(self, row: str, column: str, draw: int) -> tuple[DemonstratorSet, list[Demonstration]]:
+        """A cell's demonstrator set and the demonstrations of its draw ``draw`` (trial or fit
+        ``draw`` learns from them)."""
+        # A worker unpickles the config's bodies without making them, so their names are unknown
+        # there until each is made once: the demonstrations of a body of the config's name it.
+        for body in self.config.run.bodies.values():
+            dataclasses.replace(body)
         chosen = self.sets[row][column]
-        return chosen, self.demonstrations[chosen.name]
+        return chosen, drawn(self.demonstrations[chosen.name], names=chosen.names, spec=chosen.spec, draw=draw,
+                             per_configuration=self.config.matrix.demonstrations_per_configuration,
+                             seed=self.config.seeds.demonstrations)
+
+    def draw_of(self, seed: int) -> int:
+        """The draw a trial's or a fit's seed learns from: its index among the trials."""
+        return int(seed - self.config.seeds.first_trial)
 
 
 def recognise_task(config: MatrixConfig, row: str) -> tuple[list[PrimitiveSequence], PrimitiveRecognizer]:
@@ -54,15 +66,18 @@ def recognise_task(config: MatrixConfig, row: str) -> tuple[list[PrimitiveSequen
     return sequences, settings.train(sequences)
 
 
-_segmented: dict[tuple[int, str, str], SegmentedDemonstrations] = {}
-"""In each process, a cell's demonstrations segmented by its row's recogniser, once for all its
-trials."""
+_segmented: dict[tuple[int, str, str, int], SegmentedDemonstrations] = {}
+"""In each process, the latest draws of cells segmented by their row's recogniser (the first
+trial's draw serves the weighing as well as its trial)."""
+_SEGMENTED_KEPT = 8
 
 
-def _cell_segments(shared: Shared, row: str, column: str) -> SegmentedDemonstrations:
-    key = (id(shared), row, column)
+def _cell_segments(shared: Shared, row: str, column: str, draw: int) -> SegmentedDemonstrations:
+    key = (id(shared), row, column, draw)
     if key not in _segmented:
-        _, demos = shared.cell(row, column)
+        _, demos = shared.cell(row, column, draw)
+        while len(_segmented) >= _SEGMENTED_KEPT:
+            del _segmented[next(iter(_segmented))]
         _segmented[key] = segmented(demos, shared.recognizers[row], **dataclasses.asdict(shared.config.run.segmenter))
     return _segmented[key]
 
@@ -103,8 +118,8 @@ def _played(shared: Shared, row: str, column: str, seed: int, weighting: str, *,
     improved-control policy played on the attempts ``attempts_seed`` names."""
     config = shared.config
     learning = config.run.learning.replace(imitator_weighting=weighting)
-    chosen, _ = shared.cell(row, column)
-    batch, body = _cell_segments(shared, row, column), config.body(row)
+    chosen = shared.sets[row][column]
+    batch, body = _cell_segments(shared, row, column, shared.draw_of(seed)), config.body(row)
     trial = run_trial(batch, recognizer=shared.recognizers[row], ordering=list(chosen.names), config=learning,
                       phase_one="interleaved", seed=seed, body=body)
     policy = ImitatorPolicy(trial, recognizer=shared.recognizers[row], config=learning, control="improved",
@@ -134,7 +149,7 @@ def tuning_task(shared: Shared, job: tuple[str, str]) -> dict[str, Any]:
     the chosen fit's evaluation under the first fit seed: the fit the evaluation would make."""
     row, column = job
     config, settings = shared.config, shared.config.matrix
-    _, demos = shared.cell(row, column)
+    _, demos = shared.cell(row, column, 0)
     tuning = baselines.tune("bco", demos, candidates=bco_candidates(settings.tuning_budget),
                             validation_seed=settings.validation_seed,
                             attempts_per_configuration=settings.validation_attempts_per_configuration,
@@ -148,7 +163,7 @@ def tuning_task(shared: Shared, job: tuple[str, str]) -> dict[str, Any]:
 def bco_task(shared: Shared, job: tuple[str, str, int, dict[str, Any]]) -> dict[str, Any]:
     """``(row, column, fit seed, the tuned hyperparameters)`` → that bco fit's evaluation."""
     row, column, seed, hyperparameters = job
-    _, demos = shared.cell(row, column)
+    _, demos = shared.cell(row, column, shared.draw_of(seed))
     fitted = baselines.fit("bco", demos, hyperparameters=Hyperparameters.from_dict(hyperparameters),
                            seed=seed, **_bco_inputs(shared, row))
     return _bco_evaluation(shared, row, column, seed, fitted)

@@ -18,7 +18,8 @@ __all__ = ["chosen_weighting", "is_weighed"]
 
 def is_weighed(config: MatrixConfig, row: str, column: str) -> bool:
     """Does polymimic choose its weighting in the computed cell ``(row, column)``?"""
-    return len(config.matrix.weightings) > 1 and len(demonstrator_sets(row)[column].members) > 1
+    return len(config.matrix.weightings) > 1 and len(
+        demonstrator_sets(row, config.run.demonstrators)[column].members) > 1
 
 
 def chosen_weighting(run: MatrixDir, config: MatrixConfig, row: str, column: str) -> tuple[str, list[dict[str, Any]]]:

@@ -20,12 +20,14 @@ reported like the thesis's.
     body = "rover"
     decision_hz = 5
 
-    [demonstrators.logged]         # a tracker log (see polymimic.import_tracks)
+    [demonstrators.logged]         # a tracker log, with any option of polymimic.import_tracks
     log = "logs/overhead.csv"
     body = "lego"
     rate_hz = 15
     units = { length = "m", angle = "deg" }
     columns = { t = "time" }
+    max_gap_s = 0.35
+    ignore = ["camera"]
 
     [demonstrators.alice]          # what `polymimic import-tracks FILE --as alice` put in the run
     imported = true
@@ -57,8 +59,9 @@ from typing import Any, Union
 from polymimic import field, tracks
 from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, bodies_from_tables
 from polymimic.policies import DECISION_RATES_HZ
+from polymimic.runs.log_table import check_log_table
 from polymimic.runs.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
-from polymimic.tracks.units import UNITS
+from polymimic.tracks.outcomes import LINE_TOLERANCE_MM
 
 __all__ = ["ControllerDemonstrator", "DemonstratorSpec", "ImportedDemonstrator", "LogDemonstrator",
            "PolicyDemonstrator", "RosterError", "demonstrators_from_tables", "experiments_from_tables", "read_bodies",
@@ -91,7 +94,8 @@ class PolicyDemonstrator:
 
 @dataclasses.dataclass(frozen=True)
 class LogDemonstrator:
-    """A tracker log's valid episodes."""
+    """A tracker log's valid episodes, imported with :func:`polymimic.import_tracks`'s options
+    (``log`` is its ``path``; :data:`polymimic.runs.log_table.LOG_OPTIONS`)."""
 
     name: str
     log: str
@@ -99,6 +103,16 @@ class LogDemonstrator:
     rate_hz: float | None = None
     units: Mapping[str, str] = dataclasses.field(default_factory=dict)
     columns: Mapping[str, str] = dataclasses.field(default_factory=dict)
+    configuration: int | None = None
+    ignore: tuple[str, ...] = ()
+    line_tolerance_mm: float = LINE_TOLERANCE_MM
+    max_gap_s: float | None = None
+
+    def import_options(self) -> dict[str, Any]:
+        """The keywords of :func:`polymimic.import_tracks` this table gives (``body`` aside)."""
+        return {"rate_hz": self.rate_hz, "units": dict(self.units) or None, "columns": dict(self.columns) or None,
+                "configuration": self.configuration, "ignore": self.ignore,
+                "line_tolerance_mm": self.line_tolerance_mm, "max_gap_s": self.max_gap_s}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -193,18 +207,10 @@ def _check_kind(where: str, kind: str, values: dict[str, Any], bodies: Mapping[s
             raise RosterError(f"{where}: imported must be true (the demonstrations polymimic import-tracks put in "
                               f"the run), got {values['imported']!r}")
     else:
-        text("log")
-        for key in ("units", "columns"):
-            if not isinstance(values.get(key, {}), Mapping):
-                raise RosterError(f"{where}: {key} must be a table, got {values[key]!r}")
-        for quantity, unit in values.get("units", {}).items():
-            if quantity not in UNITS or unit not in UNITS[quantity]:
-                allowed = "; ".join(f"{q}: {', '.join(u)}" for q, u in UNITS.items())
-                raise RosterError(f"{where}: units.{quantity} = {unit!r} is not a unit polymimic reads ({allowed})")
-        rate_hz = values.get("rate_hz")
-        if rate_hz is not None and (isinstance(rate_hz, bool) or not isinstance(rate_hz, (int, float))
-                                    or not 0 < rate_hz < 1e6):
-            raise RosterError(f"{where}: rate_hz must be a positive number of readings a second, got {rate_hz!r}")
+        try:
+            check_log_table(where, values)
+        except ValueError as error:
+            raise RosterError(str(error)) from None
 
 
 def _can_drive(controller: str, body: str, bodies: Mapping[str, WheeledBody]) -> bool:
@@ -271,8 +277,8 @@ def read_bodies(tables: Any) -> dict[str, WheeledBody]:
 def spec_table(spec: DemonstratorSpec) -> dict[str, Any]:
     """A demonstrator's table as the config holds it (:func:`demonstrators_from_tables` reads it
     back)."""
-    return {k: (dict(v) if isinstance(v, Mapping) else v) for k, v in dataclasses.asdict(spec).items()
-            if k != "name" and v is not None}
+    return {k: (dict(v) if isinstance(v, Mapping) else list(v) if isinstance(v, tuple) else v)
+            for k, v in dataclasses.asdict(spec).items() if k != "name" and v is not None}
 
 
 def record_demonstrator(spec: DemonstratorSpec, *, n: int, seed: int, field_config: Mapping[str, Any],
@@ -284,8 +290,7 @@ def record_demonstrator(spec: DemonstratorSpec, *, n: int, seed: int, field_conf
                           f"FILE --as {spec.name} --run-dir <this run>` before recording")
     body: str | WheeledBody = bodies.get(spec.body, spec.body)
     if isinstance(spec, LogDemonstrator):
-        imported = tracks.import_tracks(spec.log, demonstrator=spec.name, body=body, rate_hz=spec.rate_hz,
-                                        units=dict(spec.units) or None, columns=dict(spec.columns) or None)
+        imported = tracks.import_tracks(spec.log, demonstrator=spec.name, body=body, **spec.import_options())
         return imported.demonstrations, imported.summary()
     who: Any = spec.controller if isinstance(spec, ControllerDemonstrator) else _policy(spec)
     extra: dict[str, Any] = ({"lapse": spec.lapse} if isinstance(spec, ControllerDemonstrator)

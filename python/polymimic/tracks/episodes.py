@@ -28,8 +28,8 @@ from polymimic.tracks.errors import TrackLogError
 from polymimic.tracks.reading import Log
 from polymimic.tracks.units import REQUIRED, UNITS, unit_hint
 
-__all__ = ["EPISODE_GAP_S", "LOST_PERIODS", "RESET_SHARE", "Stretch", "bridged_gaps", "lost_tracking",
-           "nominal_period_s", "split_episodes"]
+__all__ = ["DROPPED_PERIODS", "EPISODE_GAP_S", "LOST_PERIODS", "RESET_SHARE", "Stretch", "bridged_gaps",
+           "dropped_readings", "lost_tracking", "nominal_period_s", "split_episodes"]
 
 EPISODE_GAP_S = 0.5
 """Without an episode column, a longer pause between two readings starts a new episode."""
@@ -38,6 +38,10 @@ RESET_SHARE = 0.25
 length between two readings (put back by hand) starts a new episode."""
 LOST_PERIODS = 3.0
 """Inside an episode, no reading for more than this many nominal periods is lost tracking."""
+DROPPED_PERIODS = 1.5
+"""Two readings further apart than this many nominal periods (and no more than
+:data:`LOST_PERIODS`) have readings dropped between them: as many as the periods they span, less
+one (the tracker missed them; the resampling fills them in)."""
 RATE_TOLERANCE = 0.1
 """A declared ``rate_hz`` must match the median interval between readings to within 10 %."""
 PERIOD_RANGE_S = (1e-3, EPISODE_GAP_S)
@@ -122,6 +126,18 @@ def lost_tracking(log: Log, stretch: Stretch, period_s: float) -> str | None:
                 f"no {', '.join(columns)})")
     return (f"lost tracking at {t_s[first_gap] - t_s[0]:.2f} s (no reading for "
             f"{t_s[first_gap + 1] - t_s[first_gap]:.2f} s after data row {stretch.start + first_gap + 1})")
+
+
+def dropped_readings(log: Log, stretch: Stretch, period_s: float) -> int:
+    """How many readings the tracker dropped inside ``stretch`` where no gap is: pauses of more
+    than :data:`DROPPED_PERIODS` and at most :data:`LOST_PERIODS` periods between two readings
+    with every value, each counted as the periods it spans, rounded, less one. Gaps (NaN
+    readings, longer pauses) are counted apart, by :func:`bridged_gaps`."""
+    rows = slice(stretch.start, stretch.stop)
+    seen = ~_unseen(log, rows)
+    periods = np.diff(log.measured["t"][rows]) / period_s
+    dropped = seen[:-1] & seen[1:] & (periods > DROPPED_PERIODS) & (periods <= LOST_PERIODS)
+    return int((np.rint(periods[dropped]) - 1).sum())
 
 
 def bridged_gaps(log: Log, stretch: Stretch, period_s: float, max_gap_s: float, *,

@@ -15,7 +15,14 @@ import numpy as np
 
 from polymimic.bodies import WheeledBody, body_name, playing_field
 from polymimic.field import FRAME_DTYPE, OUTCOMES, UNKNOWN_COMMAND, Demonstration, command_table
-from polymimic.tracks.episodes import Stretch, bridged_gaps, lost_tracking, nominal_period_s, split_episodes
+from polymimic.tracks.episodes import (
+    Stretch,
+    bridged_gaps,
+    dropped_readings,
+    lost_tracking,
+    nominal_period_s,
+    split_episodes,
+)
 from polymimic.tracks.errors import LostTrackingWarning, TrackLogError
 from polymimic.tracks.headings import check_headings
 from polymimic.tracks.outcomes import LINE_TOLERANCE_MM, configuration_of, outcome_of
@@ -36,9 +43,11 @@ class ImportedTracks:
     ``demonstrations`` are the valid episodes in log order; ``invalid`` lists ``(episode,
     reason)`` for each episode left out (lost tracking); ``episodes`` counts them all. An
     episode is named by the log's episode id, or by its index in the log (from 0) when the log
-    has no episode column; a demonstration's ``seed`` is that index. ``gaps_bridged`` says, for
-    each demonstration in turn, how many gaps in its episode's readings the interpolation bridged
-    under ``max_gap_s`` (all 0 without it).
+    has no episode column; a demonstration's ``seed`` is that index. For each demonstration in
+    turn, ``episode_ids`` names its episode, ``dropped_readings`` counts the single readings the
+    tracker dropped (pauses of two or three periods, filled in by the resampling; see
+    :data:`polymimic.tracks.episodes.DROPPED_PERIODS`) and ``gaps_bridged`` the gaps the
+    interpolation bridged under ``max_gap_s`` (all 0 without it).
     """
 
     demonstrations: list[Demonstration]
@@ -46,13 +55,15 @@ class ImportedTracks:
     episodes: int
     path: str = ""
     gaps_bridged: list[int] = dataclasses.field(default_factory=list)
+    dropped_readings: list[int] = dataclasses.field(default_factory=list)
+    episode_ids: list[Any] = dataclasses.field(default_factory=list)
 
     def summary(self) -> str:
-        """One line: how many episodes, how many became demonstrations (and the gaps bridged in
-        them, if any), which were invalid and why."""
+        """One line: how many episodes, how many became demonstrations (and the readings filled
+        in and gaps bridged in them, if any), which were invalid and why."""
         source = f" from {os.path.basename(self.path)}" if self.path else ""
-        bridged = sum(self.gaps_bridged)
-        gaps = f" ({bridged} gap{'s' * (bridged != 1)} bridged)" if bridged else ""
+        repairs = _repairs(sum(self.dropped_readings), sum(self.gaps_bridged))
+        gaps = f" ({repairs})" if repairs else ""
         line = (f"{self.episodes} episode{'s' * (self.episodes != 1)}{source}: {len(self.demonstrations)} "
                 f"demonstration{'s' * (len(self.demonstrations) != 1)}{gaps}, {len(self.invalid)} invalid")
         if self.invalid:
@@ -61,8 +72,22 @@ class ImportedTracks:
             line += f" ({shown}{more})"
         return line
 
+    def repaired(self) -> list[str]:
+        """A line per demonstration whose readings were filled in or bridged: its episode and
+        how many of each (none for a log read whole)."""
+        return [f"episode {episode}: {_repairs(dropped, bridged)}"
+                for episode, dropped, bridged in zip(self.episode_ids, self.dropped_readings, self.gaps_bridged)
+                if dropped or bridged]
+
     def __repr__(self) -> str:
         return self.summary()
+
+
+def _repairs(dropped: int, bridged: int) -> str:
+    """``"2 dropped readings filled in, 1 gap bridged"``, each part only where it is not 0."""
+    parts = ([f"{dropped} dropped reading{'s' * (dropped != 1)} filled in"] if dropped else []) + (
+        [f"{bridged} gap{'s' * (bridged != 1)} bridged"] if bridged else [])
+    return ", ".join(parts)
 
 
 MIN_READINGS = 2
@@ -179,7 +204,7 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
     if configuration is not None and (isinstance(configuration, bool) or configuration not in (1, 2)):
         raise ValueError(f"configuration must be 1, 2 or None, got {configuration!r}")
     log = read_log(path, columns=columns, units=checked, ignore=ignore)
-    check_scale(log, field, checked)
+    check_scale(log, field, checked, body=body_name(body))
     stretches = split_episodes(log, field_length_mm=field.length_mm)
     check_headings(log, stretches, checked)
     period_s = nominal_period_s(log, stretches, rate_hz, checked["time"])
@@ -188,6 +213,8 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
     demos: list[Demonstration] = []
     invalid: list[tuple[Any, str]] = []
     gaps_bridged: list[int] = []
+    dropped: list[int] = []
+    episode_ids: list[Any] = []
     for index, stretch in enumerate(stretches):
         logged_outcome = _per_episode(log, stretch, "outcome")
         logged_configuration = _configuration(log, stretch, configuration)
@@ -210,8 +237,11 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
                                    configuration=logged_configuration or configuration_of(frames), seed=index,
                                    body=body_name(body)))
         gaps_bridged.append(bridged)
+        dropped.append(dropped_readings(log, stretch, period_s))
+        episode_ids.append(stretch.episode)
     result = ImportedTracks(demonstrations=demos, invalid=invalid, episodes=len(stretches), path=log.path,
-                            gaps_bridged=gaps_bridged)
+                            gaps_bridged=gaps_bridged, dropped_readings=dropped,
+                            episode_ids=episode_ids)
     if invalid:
         warnings.warn(result.summary(), LostTrackingWarning, stacklevel=2)
     return result

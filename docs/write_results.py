@@ -152,56 +152,68 @@ def matrix_table(method: str) -> str | None:
 # ---------------------------------------------------------------------------------------------
 # The benchmark (results/benchmark.md)
 
-PROFILES = ("one_good", "half", "equal", "linear", "mixed_bodies")
-METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
-           "bc", "bc_best", "random")
+README_PROFILES = ("one_good", "half", "equal", "linear", "mixed_bodies", "random")
+"""The README's columns: the five built-in crowds and the random crowd, every method's floor."""
+METHOD_ORDER = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "offline_rl",
+                "bco", "bco_lp", "bc", "bc_best", "ppo", "ppo_bc", "random")
+
+
+def methods_of(benchmark: dict[str, Any]) -> list[str]:
+    """The methods the run compared, in the pages' order."""
+    present = {m for p in benchmark["profiles"].values() for m in p["methods"]}
+    return [m for m in METHOD_ORDER if m in present] + sorted(present - set(METHOD_ORDER))
+
+
+def net_goals_table(benchmark: dict[str, Any], profiles: list[str], cell: Callable[[dict[str, Any]], str]) -> str:
+    lines = ["| method | " + " | ".join(profiles) + " |", "| --- " * (len(profiles) + 1) + "|"]
+    for method in methods_of(benchmark):
+        entries = [benchmark["profiles"][p]["methods"].get(method) for p in profiles]
+        lines.append(f"| `{method}` | " + " | ".join("—" if m is None else cell(m) for m in entries) + " |")
+    return "\n".join(lines)
 
 
 def benchmark_table() -> str | None:
+    """Net goals ± sd (goals / own goals) of every method in every profile, then each method's
+    gain over its own random-crowd floor."""
     benchmark = load("benchmark.json")
     if benchmark is None:
         return None
-    profiles = benchmark["profiles"]
-    lines = ["| method | " + " | ".join(PROFILES) + " |", "| --- " * (len(PROFILES) + 1) + "|"]
-    for method in METHODS:
-        cells = []
-        for profile in PROFILES:
-            m = profiles[profile]["methods"].get(method)
-            if m is None:
-                cells.append("—")
-                continue
-            cells.append(f"{m['net_goals']['mean']:.1f} ± {m['net_goals']['sd']:.1f} "
-                         f"({m['goals']['mean']:.1f} / {m['own_goals']['mean']:.1f})")
-        lines.append(f"| `{method}` | " + " | ".join(cells) + " |")
-    return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
+    profiles = list(benchmark["profiles"])
+    scores = net_goals_table(benchmark, profiles,
+                             lambda m: f"{m['net_goals']['mean']:.1f} ± {m['net_goals']['sd']:.1f} "
+                                       f"({m['goals']['mean']:.1f} / {m['own_goals']['mean']:.1f})")
+    crowds = [p for p in profiles if p != "random"]
+    gains = net_goals_table(benchmark, crowds, lambda m: "—" if m.get("gain_over_floor") is None
+                            else f"{m['gain_over_floor']:+.1f}".replace("-", "−"))
+    return (scores + "\n\nWhat the demonstrations add — each method's net goals less its own net goals from "
+            "the `random` crowd (ten members at ε = 1, no skill shown):\n\n" + gains + "\n\n"
+            + measured_by("benchmark.json"))
 
 
 def practice_table() -> str | None:
     benchmark = load("benchmark.json")
     if benchmark is None:
         return None
-    first = next(p["practice"] for p in benchmark["profiles"].values() if p.get("practice"))
+    practised = {name: p["practice"] for name, p in benchmark["profiles"].items() if p.get("practice")}
+    if not practised:
+        return None
+    first = next(iter(practised.values()))
     header = ["0 steps" if c == 0 else f"{c:,}".replace(",", " ") for c in first["checkpoints"]]
     lines = ["| profile | " + " | ".join(header) + " |", "| --- " * (len(header) + 1) + "|"]
-    for profile in PROFILES:
-        practice = benchmark["profiles"][profile]["practice"]
+    for profile, practice in practised.items():
         lines.append(f"| {profile} | " + " | ".join(f"{p['mean']:.1f} ({p['sd']:.1f})" for p in practice["net_goals"])
                      + " |")
     return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
 
 
 def benchmark_summary() -> str | None:
-    """The README's table: net goals alone, mean ± sd, every method and profile."""
+    """The README's table: net goals alone, mean ± sd, every method, the five crowds and the floor."""
     benchmark = load("benchmark.json")
     if benchmark is None:
         return None
-    profiles = benchmark["profiles"]
-    lines = ["| method | " + " | ".join(PROFILES) + " |", "| --- " * (len(PROFILES) + 1) + "|"]
-    for method in METHODS:
-        cells = [f"{m['net_goals']['mean']:.1f} ± {m['net_goals']['sd']:.1f}" if m else "—"
-                 for m in (profiles[p]["methods"].get(method) for p in PROFILES)]
-        lines.append(f"| `{method}` | " + " | ".join(cells) + " |")
-    return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
+    profiles = [p for p in README_PROFILES if p in benchmark["profiles"]]
+    return (net_goals_table(benchmark, profiles, lambda m: f"{m['net_goals']['mean']:.1f} ± {m['net_goals']['sd']:.1f}")
+            + "\n\n" + measured_by("benchmark.json"))
 
 
 WHEELED_FROM_OTHER = {"lego": "tiny", "tiny": "expert", "wagon": "expert"}

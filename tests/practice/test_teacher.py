@@ -21,15 +21,15 @@ def teacher(expert_imitator):
 
 @pytest.fixture(scope="module")
 def practised(teacher):
-    from polymimic.practice.teacher import jsrl
+    from polymimic.practice.teacher import Gate, jsrl
 
-    # A gate always open (any return is within 2 of the teacher's): each stage is earned by one episode.
-    return jsrl(teacher, steps=600, checkpoints=[0, 600], evaluation_attempts=2, handover_start=60, stages=2,
-                tolerance=2.0, window=1, n_steps=64, batch_size=32)
+    # A gate always open (any return is within 2 of the teacher's): each check earns a stage.
+    return jsrl(teacher, steps=600, checkpoints=[0, 600], evaluation_attempts=2, handover_start=4, stages=2,
+                tolerance=2.0, gate=Gate(every=100, attempts=1), n_steps=64, batch_size=32)
 
 
 def test_at_the_start_the_practised_policy_is_its_teacher_bit_for_bit(teacher, practised):
-    # No stage is earned before the first practice episode: the teacher plays every decision.
+    # No stage is earned before the first check: the teacher plays every decision.
     assert [p.checkpoint for p in practised.curve] == [0, 600]
     alone = evaluate(teacher, attempts_per_configuration=2)
     assert practised.curve[0].net_goals == alone.goals - alone.own_goals
@@ -46,21 +46,39 @@ def test_every_step_counts_the_teachers_roll_ins_too_and_the_budget_holds(practi
     assert practised.policy.handover == 0  # both stages earned: the learner plays alone
 
 
-def test_a_stage_is_earned_only_when_the_learners_returns_reach_the_teachers():
+def test_a_stage_is_earned_only_when_a_check_nets_what_the_teacher_nets():
     from polymimic.practice.teacher import TEACHER_ALONE, Curriculum
 
-    curriculum = Curriculum.stepping_down(12, 3, reference=0.8, tolerance=0.1, window=3)
+    curriculum = Curriculum.stepping_down(12, 3, reference=0.8, tolerance=0.1)
     assert curriculum.stages == (8, 4, 0) and curriculum.handover == 8
-    for episode_return in (1.0, 0.0, 1.0, 1.0):  # windows of mean 0.67 then 0.67: below 0.7
-        curriculum.episode_ended(episode_return)
-        assert curriculum.earned == TEACHER_ALONE
-    curriculum.episode_ended(1.0)  # the last three return 1.0 on average
-    assert (curriculum.earned, curriculum.handover) == (8, 4)
-    for episode_return in (-1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0):  # 4 earned after the first full window at 1.0
-        curriculum.episode_ended(episode_return)
+    assert not curriculum.checked(0.69) and curriculum.earned == TEACHER_ALONE  # below 0.8 - 0.1
+    assert curriculum.checked(0.71) and (curriculum.earned, curriculum.handover) == (8, 4)
+    assert curriculum.checked(0.9) and (curriculum.earned, curriculum.handover) == (4, 0) and not curriculum.finished
+    assert curriculum.checked(0.9) and curriculum.finished
     assert (curriculum.earned, curriculum.handover) == (0, 0)  # the last stage: the learner alone, kept
     with pytest.raises(ValueError, match="stages must be decreasing handovers ≥ 0, got \\(2, 5\\)"):
         Curriculum(stages=(2, 5), reference=0.5)
+
+
+def test_a_check_plays_practice_attempts_counts_their_steps_and_fits_before_the_checkpoint(teacher):
+    from polymimic.practice.teacher import Curriculum, Gate, _Counter
+
+    gate, counter = Gate(every=100, attempts=2), _Counter(steps=100, limit=339)
+    assert not gate.due(counter)  # 239 steps left; four attempts may take 240
+    counter.limit = 340
+    assert gate.due(counter)
+    curriculum = Curriculum(stages=(0,), reference=0.0, tolerance=0.0)
+    gate.check(teacher, curriculum, counter, seed=3, field_config=None)
+    played = evaluate(teacher, attempts_per_configuration=2, seed=_check_seed(3, 1))
+    steps = sum(-(-len(a.frames) // 30) for a in played.attempts)
+    assert counter.steps == 100 + steps and gate.last_step == counter.steps
+    assert curriculum.finished is ((played.goals - played.own_goals) / 4 >= 0.0)
+
+
+def _check_seed(seed, check):
+    from polymimic.practice.seeds import round_seed
+
+    return round_seed(seed, 10_000 + check)
 
 
 def test_practise_names_its_methods_and_refuses_others(teacher):
@@ -95,24 +113,27 @@ def test_the_practised_policy_saves_loads_and_plays_through_evaluate_predict_and
 
 def test_distilling_clones_the_teacher_then_fine_tunes_within_the_budget(teacher):
     from polymimic.practice.distil import distil
+    from polymimic.practice.teacher import Gate
 
-    # A gate always open: the actor replaces the teacher after its first practice episode.
-    taught = distil(teacher, steps=700, checkpoints=[0, 300, 700], evaluation_attempts=2, dagger_rounds=1,
-                    dagger_steps=300, warmup_steps=200, tolerance=2.0, window=1, n_steps=64, batch_size=32)
+    # A gate always open: the actor replaces the teacher at its first check.
+    taught = distil(teacher, steps=900, checkpoints=[0, 300, 900], evaluation_attempts=2, dagger_rounds=1,
+                    dagger_steps=300, warmup_steps=100, tolerance=2.0, gate=Gate(every=1, attempts=1),
+                    n_steps=64, batch_size=32)
     alone = evaluate(teacher, attempts_per_configuration=2)
-    # Before the actor has played an episode, the practised policy is the teacher itself.
+    # Before the actor's first check, the practised policy is the teacher itself.
     assert taught.curve[0].net_goals == alone.goals - alone.own_goals
-    assert [(p.checkpoint, p.steps) for p in taught.curve] == [(0, 0), (300, 300), (700, 700)]
+    assert [(p.checkpoint, p.steps) for p in taught.curve] == [(0, 0), (300, 300), (900, 900)]
     assert taught.policy.handover == 0 and taught.policy.method == "distil"
 
 
 def test_an_actor_that_never_earns_it_never_replaces_the_teacher(teacher):
     from polymimic.practice.distil import distil
-    from polymimic.practice.teacher import TEACHER_ALONE
+    from polymimic.practice.teacher import TEACHER_ALONE, Gate
 
-    # A gate never open (returns would have to beat the teacher's by 5 per episode).
+    # A gate never open (a check would have to beat the teacher by 5 per attempt).
     taught = distil(teacher, steps=500, checkpoints=[0, 250, 500], evaluation_attempts=2, dagger_rounds=2,
-                    dagger_steps=150, warmup_steps=100, tolerance=-5.0, window=1, n_steps=64, batch_size=32)
+                    dagger_steps=150, warmup_steps=100, tolerance=-5.0, gate=Gate(every=1, attempts=1),
+                    n_steps=64, batch_size=32)
     alone = evaluate(teacher, attempts_per_configuration=2)
     assert [p.net_goals for p in taught.curve] == [alone.goals - alone.own_goals] * 3
     assert taught.policy.handover == TEACHER_ALONE

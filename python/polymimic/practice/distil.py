@@ -12,10 +12,11 @@ fine-tunes from the reward with the teacher's term annealed away.
    also takes cloning steps on the teacher's labels, weighted from ``teacher_weight`` down to 0
    at the end of the budget.
 
-The practised policy is the actor alone once it has earned it — its last ``window`` practice
-episodes (DAgger's rounds it plays and PPO's) return on average within ``tolerance`` of what
-the teacher returns alone (:class:`~polymimic.practice.teacher.Curriculum`, one stage) — and the
-teacher until then: practice never scores an actor its own play has not shown to hold.
+The practised policy is the actor alone once it has earned it — a check on practice attempts
+(:class:`~polymimic.practice.teacher.Gate`, after DAgger, counted against the budget) nets
+within ``tolerance`` per attempt of what the teacher nets alone
+(:class:`~polymimic.practice.teacher.Curriculum`, one stage) — and the teacher until then:
+practice never scores an actor its own play has not shown to hold.
 
 The learner reads only the env's observation and the outcome's reward; every environment step
 counts against the budget, DAgger's too. Needs the ``rl`` extra.
@@ -34,7 +35,7 @@ from polymimic.env import PenaltyKickEnv
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import CurvePoint
 from polymimic.practice.practised import PractisedPolicy
-from polymimic.practice.teacher import Curriculum, TeacherPractice, _Counter, _RollIn, _teacher_alone
+from polymimic.practice.teacher import Curriculum, Gate, TeacherPractice, _Counter, _RollIn, _teacher_alone
 
 __all__ = ["distil"]
 
@@ -42,13 +43,13 @@ __all__ = ["distil"]
 def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
            evaluation_seed: int = 0, evaluation_attempts: int = 25, dagger_rounds: int = 3,
            dagger_steps: int = 2000, warmup_steps: int = 4000, teacher_weight: float = 1.0,
-           tolerance: float = 0.05, window: int = 50, field_config: Any = None,
+           tolerance: float = 0.05, gate: Gate | None = None, field_config: Any = None,
            **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by distilling it into a PPO actor and fine-tuning, for ``steps``
     environment steps under ``seed``, scored on the evaluation attempts of ``evaluation_seed``
     at each of ``checkpoints`` (default: every fifth of the budget); the actor replaces the
-    teacher once its last ``window`` practice episodes return within ``tolerance`` of the
-    teacher's mean return alone on 50 practice attempts."""
+    teacher once a check (``gate``: by default every 5 000 steps, on 50 practice attempts) nets
+    within ``tolerance`` per attempt of what the teacher nets alone on 50 practice attempts."""
     from stable_baselines3.common.callbacks import BaseCallback  # type: ignore[import-not-found, unused-ignore]
 
     from polymimic.baselines import ppo
@@ -59,11 +60,11 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
         raise ValueError(f"checkpoints must lie in 0..{steps}, got {marks}")
     counter = _Counter()
     _, reference = _teacher_alone(teacher, seed, field_config)
-    gate = Curriculum(stages=(0,), reference=reference, tolerance=tolerance, window=window)
+    earning = Curriculum(stages=(0,), reference=reference, tolerance=tolerance)
+    checks = gate if gate is not None else Gate()
     ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,
-                          wrap=lambda env: _RollIn(env, teacher, lambda: 0, counter, gate.episode_ended),
-                          **ppo_kwargs)
+                          wrap=lambda env: _RollIn(env, teacher, lambda: 0, counter), **ppo_kwargs)
     cloning = Pretraining(learning_rate=3e-4, epochs=5, batch_size=64)
     features: list[np.ndarray] = []
     labels: list[int] = []
@@ -71,14 +72,14 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
     curve: list[CurvePoint] = []
     phase_ends = [min(steps, dagger_rounds * dagger_steps), min(steps, dagger_rounds * dagger_steps + warmup_steps)]
 
-    def practised() -> PractisedPolicy:
+    def practised(handover: int) -> PractisedPolicy:
         actor = ppo.PPOPolicy(model, feature_set="goal_relative", frames_per_action=30,
                               total_timesteps=counter.steps, method="distil", body=teacher.body)
-        return PractisedPolicy(teacher, actor, handover=gate.earned, method="distil", steps=counter.steps)
+        return PractisedPolicy(teacher, actor, handover=handover, method="distil", steps=counter.steps)
 
     def score(mark: int) -> None:
-        result = evaluate(practised(), attempts_per_configuration=evaluation_attempts, seed=evaluation_seed,
-                          field_config=field_config)
+        result = evaluate(practised(earning.earned), attempts_per_configuration=evaluation_attempts,
+                          seed=evaluation_seed, field_config=field_config)
         curve.append(CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals,
                                 result.own_goals, 0, 0))
 
@@ -91,6 +92,8 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
             if labels and weight > 0 and counter.steps >= phase_ends[1]:
                 step = Pretraining(learning_rate=3e-4 * weight, epochs=1, batch_size=64)
                 clone_into(model, np.array(features), np.array(labels), step, seed=counter.steps)
+            if checks.due(counter) and not earning.finished:
+                checks.check(practised(0), earning, counter, seed, field_config)
 
     dagger_end, warm_end = phase_ends
     for mark in marks:
@@ -99,7 +102,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
                 round_index = counter.steps // dagger_steps
                 round_end = min((round_index + 1) * dagger_steps, dagger_end)
                 _dagger(teacher, model, counter, min(mark, round_end), round_index == 0, features, labels, rng,
-                        field_config, gate)
+                        field_config)
                 if counter.steps >= round_end:
                     clone_into(model, np.array(features), np.array(labels), cloning, seed=seed + round_index)
                 continue
@@ -109,15 +112,13 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
             model.learn(total_timesteps=10 * steps + 1, callback=Budget(), reset_num_timesteps=False)
             _freeze_actor(model, frozen=False)
         score(mark)
-    return TeacherPractice(policy=practised(), curve=curve, steps=counter.steps)
+    return TeacherPractice(policy=practised(earning.earned), curve=curve, steps=counter.steps)
 
 
 def _dagger(teacher: ImitatorPolicy, model: Any, counter: _Counter, until: int, teacher_acts: bool,
-            features: list[np.ndarray], labels: list[int], rng: np.random.Generator, field_config: Any,
-            gate: Curriculum) -> None:
+            features: list[np.ndarray], labels: list[int], rng: np.random.Generator, field_config: Any) -> None:
     """Play until ``until`` steps, the teacher (or the actor) acting, every visited state
-    labelled with the teacher's decision there; each episode the actor plays to its end counts
-    towards its ``gate``."""
+    labelled with the teacher's decision there."""
     from polymimic.baselines import ppo
 
     body = teacher.body
@@ -140,11 +141,9 @@ def _dagger(teacher: ImitatorPolicy, model: Any, counter: _Counter, until: int, 
             features.append(seen)
             labels.append(label)
             action = label if teacher_acts else int(model.predict(seen, deterministic=True)[0])
-            observation, reward, terminated, truncated, info = env.step(action)
+            observation, _, terminated, truncated, info = env.step(action)
             counter.steps += 1
             done = terminated or truncated
-            if done and not teacher_acts:
-                gate.episode_ended(float(reward))
 
 
 def _freeze_actor(model: Any, *, frozen: bool) -> None:

@@ -4,11 +4,16 @@ PPO) that reads only what the tracker shows and the outcome's reward.
 ``jsrl`` (jump-start RL, Uchendu et al. 2022, its gated curriculum): each practice episode, the
 imitator plays the first ``h`` decisions and the learner the rest, so the learner starts where
 the imitator's play leads and learns to finish. ``h`` steps down through a few stages, from the
-imitator's typical attempt length to 0, and a stage is left only once the learner, finishing
-from it, returns on average what the imitator returns alone (over its last ``window`` practice
-episodes, within ``tolerance``): the learner earns each earlier handover. The policy scored at a
-checkpoint hands over at the last stage earned (before any, the imitator plays alone), so
-practice never scores a handover its own play has not shown to hold
+imitator's typical attempt length to 0, and a stage is left only once the practised policy at
+it — the imitator for ``h`` decisions, then the learner deciding as it will be scored,
+deterministically — nets on practice attempts what the imitator nets alone (within
+``tolerance``): the learner earns each earlier handover. Its own training episodes cannot tell:
+PPO samples its actions while it learns, and from where the imitator leaves the ball a barely
+trained learner's random pushes score far more often than its first choices do (on one crowd,
+0.81 a training episode at a handover of 18 decisions, where the same policy deciding scored
+0.46 an attempt). The checks' attempts are practice attempts, counted against the budget. The
+policy scored at a checkpoint hands over at the last stage earned (before any, the imitator
+plays alone), so practice never scores a handover its own play has not shown to hold
 (:class:`~polymimic.practice.practised.PractisedPolicy`).
 
 Every environment step counts against the budget, the imitator's roll-in steps too; learning
@@ -21,7 +26,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import statistics
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -36,7 +40,7 @@ try:
 except ImportError:  # the `gym` extra is absent: the module imports, practice through the teacher does not run
     gymnasium = None  # type: ignore[assignment]
 
-__all__ = ["TEACHER_ALONE", "Curriculum", "TeacherPractice", "jsrl"]
+__all__ = ["TEACHER_ALONE", "Curriculum", "Gate", "TeacherPractice", "jsrl"]
 
 _Wrapper: Any = gymnasium.Wrapper if gymnasium is not None else object
 
@@ -48,31 +52,27 @@ teacher plays every decision."""
 @dataclasses.dataclass
 class Curriculum:
     """The gated curriculum: ``stages`` are the handovers ``h`` in the order they are trained
-    (decreasing, the last 0); a stage is *earned* once the last ``window`` episodes played at it
-    return on average at least ``reference - tolerance`` (``reference``: the teacher's mean
-    return alone), and training moves to the next. ``earned`` is the handover of the last
-    earned stage, :data:`TEACHER_ALONE` before any.
+    (decreasing, the last 0); a stage is *earned* by a check whose mean return per attempt is at
+    least ``reference - tolerance`` (``reference``: the teacher's mean return alone), and
+    training moves to the next. ``earned`` is the handover of the last earned stage,
+    :data:`TEACHER_ALONE` before any.
 
-    >>> curriculum = Curriculum(stages=(8, 0), reference=0.8, tolerance=0.05, window=4)
-    >>> for episode_return in (1.0, 0.0, 1.0, 1.0):   # mean 0.75, at the gate
-    ...     curriculum.episode_ended(episode_return)
-    >>> curriculum.earned, curriculum.handover
-    (8, 0)
+    >>> curriculum = Curriculum(stages=(8, 0), reference=0.8, tolerance=0.05)
+    >>> curriculum.checked(0.7), curriculum.earned
+    (False, 3600)
+    >>> curriculum.checked(0.76), curriculum.earned, curriculum.handover
+    (True, 8, 0)
     """
 
     stages: tuple[int, ...]
     reference: float
     tolerance: float = 0.05
-    window: int = 50
     earned: int = TEACHER_ALONE
     stage: int = 0
-    returns: list[float] = dataclasses.field(default_factory=list)
 
     def __post_init__(self) -> None:
         if not self.stages or any(h < 0 for h in self.stages) or list(self.stages) != sorted(self.stages, reverse=True):
             raise ValueError(f"stages must be decreasing handovers ≥ 0, got {self.stages}")
-        if self.window < 1:
-            raise ValueError(f"window must be at least one episode, got {self.window}")
 
     @classmethod
     def stepping_down(cls, start: int, count: int, **gate: Any) -> Curriculum:
@@ -87,17 +87,55 @@ class Curriculum:
 
     @property
     def handover(self) -> int:
-        """The handover practice episodes are played at now."""
+        """The handover practice episodes are played at now, and the next check checks."""
         return self.stages[self.stage]
 
-    def episode_ended(self, episode_return: float) -> None:
-        """Counts one practice episode played at :attr:`handover`; earns the stage at the gate."""
-        self.returns.append(episode_return)
-        recent = self.returns[-self.window:]
-        if len(recent) == self.window and statistics.fmean(recent) >= self.reference - self.tolerance:
-            self.earned = self.stages[self.stage]
-            self.returns.clear()
-            self.stage = min(self.stage + 1, len(self.stages) - 1)
+    @property
+    def finished(self) -> bool:
+        """Every stage earned: the learner plays alone."""
+        return self.earned == self.stages[-1]
+
+    def checked(self, mean_return: float) -> bool:
+        """One check of :attr:`handover`: earns the stage (and moves on) at the gate."""
+        if mean_return < self.reference - self.tolerance:
+            return False
+        self.earned = self.stages[self.stage]
+        self.stage = min(self.stage + 1, len(self.stages) - 1)
+        return True
+
+
+@dataclasses.dataclass
+class Gate:
+    """When and how the practised policy is checked: every ``every`` environment steps of
+    learning, on ``attempts`` practice attempts per configuration played as it will be scored."""
+
+    every: int = 5000
+    attempts: int = 25
+    checks: int = 0
+    last_step: int = 0
+
+    def due(self, counter: _Counter) -> bool:
+        """A check is due, and fits in the steps left to the checkpoint (a minute per attempt)."""
+        return (counter.steps - self.last_step >= self.every
+                and counter.limit - counter.steps >= 2 * self.attempts * _ATTEMPT_STEPS)
+
+    def check(self, policy: Any, curriculum: Curriculum, counter: _Counter, seed: int, field_config: Any) -> None:
+        """Plays ``policy`` on the next practice attempts, counts their steps and lets
+        ``curriculum`` judge their mean return."""
+        from polymimic.practice.seeds import round_seed
+
+        self.checks += 1
+        played = evaluate(policy, attempts_per_configuration=self.attempts,
+                          seed=round_seed(seed, 10_000 + self.checks), field_config=field_config)
+        counter.steps += sum(math.ceil(len(a.frames) / _FRAMES_PER_STEP) for a in played.attempts)
+        self.last_step = counter.steps
+        curriculum.checked((played.goals - played.own_goals) / len(played.attempts))
+
+
+_FRAMES_PER_STEP = 30
+"""Tracker frames per environment step (one decision a second)."""
+_ATTEMPT_STEPS = 60
+"""The most environment steps an attempt takes (the field's minute)."""
 
 
 @dataclasses.dataclass
@@ -110,32 +148,27 @@ class _Counter:
 
 class _RollIn(_Wrapper):  # type: ignore[misc]
     """``PenaltyKick-v0`` whose episodes the teacher starts: on reset it plays ``handover()``
-    decisions (an episode that ends in them is counted and replaced) and hands over. Each
-    episode played to its end reports its return to ``ended`` (one cut by the budget does not)."""
+    decisions (an episode that ends in them is counted and replaced) and hands over."""
 
-    def __init__(self, env: Any, teacher: ImitatorPolicy, handover: Callable[[], int], counter: _Counter,
-                 ended: Callable[[float], None] | None = None) -> None:
+    def __init__(self, env: Any, teacher: ImitatorPolicy, handover: Callable[[], int], counter: _Counter) -> None:
         super().__init__(env)
-        self._handover, self._counter, self._ended = handover, counter, ended
+        self._handover, self._counter = handover, counter
         self._player = teacher.player()
         self._last: Any = None
         self._info: dict[str, Any] = {}
-        self._return = 0.0
 
     def reset(self, **kwargs: Any) -> Any:
         while True:
             observation, info = self.env.reset(**kwargs)
             kwargs.pop("seed", None)  # seeded once; later episodes follow the env's generator
             self._player.reset(start=self.env.unwrapped.configuration, seed=info["episode_seed"])
-            self._return, ended = 0.0, False
+            ended = False
             for _ in range(min(self._handover(), self._counter.limit - self._counter.steps)):
                 action = self._player.decide(*(float(v) for v in observation))
-                observation, reward, terminated, truncated, info = self.env.step(action)
+                observation, _, terminated, truncated, info = self.env.step(action)
                 self._counter.steps += 1
-                self._return += float(reward)
                 if terminated or truncated:
                     ended = True
-                    self._report()
                     break
             if not ended:
                 self._last, self._info = observation, info
@@ -147,14 +180,7 @@ class _RollIn(_Wrapper):  # type: ignore[misc]
             return self._last, 0.0, False, True, {**self._info, "budget_spent": True}
         self._counter.steps += 1
         self._last, reward, terminated, truncated, self._info = self.env.step(action)
-        self._return += float(reward)
-        if terminated or truncated:
-            self._report()
         return self._last, reward, terminated, truncated, self._info
-
-    def _report(self) -> None:
-        if self._ended is not None:
-            self._ended(self._return)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -169,16 +195,17 @@ class TeacherPractice:
 
 def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
          evaluation_seed: int = 0, evaluation_attempts: int = 25, stages: int = 8,
-         handover_start: int | None = None, tolerance: float = 0.05, window: int = 50, field_config: Any = None,
+         handover_start: int | None = None, tolerance: float = 0.05, gate: Gate | None = None,
+         field_config: Any = None,
          on_checkpoint: Callable[[list[CurvePoint]], None] | None = None, **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by jump-start RL for ``steps`` environment steps under ``seed`` (the
     learner's network, its environments' episodes and the practice attempts), scored on the
     evaluation attempts of ``evaluation_seed`` at each of ``checkpoints`` (default: every fifth
     of the budget). The curriculum (:class:`Curriculum`) has ``stages`` handovers from below
     ``handover_start`` decisions (default: the teacher's median scoring attempt) down to 0, each
-    earned when the learner's last ``window`` practice episodes at it return on average within
-    ``tolerance`` of what the teacher returns alone on 50 practice attempts. ``ppo_kwargs`` go to
-    stable-baselines3's PPO.
+    earned when a check (:class:`Gate`: by default every 5 000 steps, on 50 practice attempts)
+    nets within ``tolerance`` per attempt of what the teacher nets alone on 50 practice
+    attempts. ``ppo_kwargs`` go to stable-baselines3's PPO.
     """
     from polymimic.baselines import ppo
 
@@ -187,21 +214,22 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
         raise ValueError(f"checkpoints must lie in 0..{steps}, got {marks}")
     typical, reference = _teacher_alone(teacher, seed, field_config)
     schedule = Curriculum.stepping_down(handover_start if handover_start is not None else typical, stages,
-                                        reference=reference, tolerance=tolerance, window=window)
+                                        reference=reference, tolerance=tolerance)
+    checks = gate if gate is not None else Gate()
     counter = _Counter()
     ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,
-                          wrap=lambda env: _RollIn(env, teacher, lambda: schedule.handover, counter,
-                                                   schedule.episode_ended), **ppo_kwargs)
+                          wrap=lambda env: _RollIn(env, teacher, lambda: schedule.handover, counter), **ppo_kwargs)
     curve: list[CurvePoint] = []
 
-    def practised() -> PractisedPolicy:
+    def practised(handover: int) -> PractisedPolicy:
         actor = ppo.PPOPolicy(model, feature_set="goal_relative", frames_per_action=30,
                               total_timesteps=counter.steps, method="jsrl", body=teacher.body)
-        return PractisedPolicy(teacher, actor, handover=schedule.earned, method="jsrl", steps=counter.steps)
+        return PractisedPolicy(teacher, actor, handover=handover, method="jsrl", steps=counter.steps)
 
     def score(mark: int) -> None:
-        result = evaluate(practised(), attempts_per_configuration=evaluation_attempts, seed=evaluation_seed,
+        result = evaluate(practised(schedule.earned), attempts_per_configuration=evaluation_attempts,
+                          seed=evaluation_seed,
                           field_config=field_config)
         curve.append(CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals,
                                 result.own_goals, 0, 0))
@@ -217,12 +245,16 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
         def _on_step(self) -> bool:
             return counter.steps < counter.limit
 
+        def _on_rollout_end(self) -> None:
+            if checks.due(counter) and not schedule.finished:
+                checks.check(practised(schedule.handover), schedule, counter, seed, field_config)
+
     for mark in marks:
         counter.limit = mark
         if counter.steps < mark:
             model.learn(total_timesteps=10 * steps + 1, callback=Budget(), reset_num_timesteps=False)
         score(mark)
-    return TeacherPractice(policy=practised(), curve=curve, steps=counter.steps)
+    return TeacherPractice(policy=practised(schedule.earned), curve=curve, steps=counter.steps)
 
 
 def _teacher_alone(teacher: ImitatorPolicy, seed: int, field_config: Any) -> tuple[int, float]:

@@ -17,8 +17,10 @@ timeout), so no value is learned for its last state.
 
 >>> import polymimic
 >>> frames = polymimic.record("poor", configuration=1, n=1, seed=0)[0].frames.copy()
->>> frames["ball_x_mm"][-1], frames["ball_y_mm"][-1] = -510.4, 30.0   # the ball last seen in the own goal
->>> outcome_read(frames, body="lego"), REWARDS[outcome_read(frames, body="lego")]
+>>> last = frames[len(frames) - 1:]
+>>> last["ball_x_mm"], last["ball_y_mm"] = -510.4, 30.0   # the ball last seen in the own goal
+>>> outcome = outcome_read(frames, body="lego")
+>>> outcome, REWARDS[outcome]
 ('own_goal', -1.0)
 """
 

@@ -7,9 +7,12 @@ structure: two fixed first ones (:data:`DEFAULT_CQL`, :data:`DEFAULT_BCQ`), then
 with the algorithms taken in turn, and the first half of them each with both of ``bco``'s
 labellings (:data:`~polymimic.baselines.hyperparameters.TUNED_LABELS`).
 
->>> [(h.algorithm, h.labels) for h in candidates(4, seed=0)]
-[('discrete_cql', 'steps'), ('discrete_cql', 'inverse_dynamics'), ('discrete_bcq', 'steps'), \
-('discrete_bcq', 'inverse_dynamics')]
+>>> for h in candidates(4, seed=0):
+...     print(h.algorithm, h.labels)
+discrete_cql steps
+discrete_cql inverse_dynamics
+discrete_bcq steps
+discrete_bcq inverse_dynamics
 >>> OfflineHyperparameters.from_dict(DEFAULT_CQL.to_dict()) == DEFAULT_CQL
 True
 """

@@ -1,15 +1,16 @@
 """The baselines polymimic is compared with (docs/results/benchmark.md), each usable on its own.
 
-=========== ===================================== =================================================
-method      learns from                           module
-=========== ===================================== =================================================
-``bc``      frames + the commands sent            :mod:`polymimic.baselines.bc`
-``bco``     tracker frames only                   :mod:`polymimic.baselines.bco`
-``bco_lp``  tracker frames + a weight per member  :mod:`polymimic.baselines.bco_lp`
-``bc_best`` frames + commands of one member       :mod:`polymimic.baselines.bc_best`
-``random``  nothing                               :mod:`polymimic.baselines.random_primitive`
-``ppo``     the environment's reward (optional)   :mod:`polymimic.baselines.ppo`
-=========== ===================================== =================================================
+============== ==================================== ===========================================
+method         learns from                          module
+============== ==================================== ===========================================
+``bc``         frames + the commands sent           :mod:`polymimic.baselines.bc`
+``bco``        tracker frames only                  :mod:`polymimic.baselines.bco`
+``bco_lp``     tracker frames + a weight per member :mod:`polymimic.baselines.bco_lp`
+``bc_best``    frames + commands of one member      :mod:`polymimic.baselines.bc_best`
+``random``     nothing                              :mod:`polymimic.baselines.random_primitive`
+``ppo``        the environment's reward (optional)  :mod:`polymimic.baselines.ppo`
+``offline_rl`` tracker frames + outcomes (optional) :mod:`polymimic.baselines.offline_rl`
+============== ==================================== ===========================================
 
 Every policy maps a batch of ``PenaltyKick-v0`` observations to primitives
 (:mod:`~polymimic.baselines.policy`), holds each for its ``frames_per_action``, saves to a file

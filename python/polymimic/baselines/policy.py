@@ -181,4 +181,4 @@ def load_policy(path: str | os.PathLike[str]) -> Policy:
     return policy
 
 
-_KINDS = ("cloned", "random", "ppo")
+_KINDS = ("cloned", "random", "ppo", "offline_rl")

@@ -33,20 +33,27 @@ from polymimic.crowds import PROFILES, Crowd
 from polymimic.practice.methods import METHODS as PRACTICE_METHODS
 from polymimic.runs.config import ConfigError, RunConfig, as_table, checked_section, in_range, read_config, toml_tables
 
-__all__ = ["METHODS", "OPTIONAL_METHODS", "WORLD_WEIGHTINGS", "BenchmarkConfig", "BenchmarkSettings"]
+__all__ = ["FROM_THE_REWARD", "METHODS", "OPTIONAL_METHODS", "WORLD_WEIGHTINGS", "BenchmarkConfig", "BenchmarkSettings"]
 
 METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
            "bc", "bc_best", "random")
 """The methods a benchmark compares by default (docs/results/benchmark.md, docs/guides/practice.md)."""
 
-OPTIONAL_METHODS = ("ppo", "ppo_bc")
+OPTIONAL_METHODS = ("ppo", "ppo_bc", "offline_rl")
 """Methods run only when named: ``ppo`` learns from the reward rather than from demonstrations,
 needs stable-baselines3 (``pip install "polymimic[rl]"``) and took 13 minutes of one core per
 million environment steps in the run docs/results/benchmark.md quotes (:mod:`polymimic.baselines.ppo`); ``ppo_bc``
 clones each crowd's commands first, then learns from the reward as ``ppo`` does, so it runs
-once per profile (:mod:`polymimic.baselines.ppo_bc`)."""
+once per profile (:mod:`polymimic.baselines.ppo_bc`); ``offline_rl`` learns from the crowd's
+frames and the outcomes read off them, needs d3rlpy (``pip install "polymimic[offline]"``), and
+fits eight times per profile (six candidates, two more fits), each fit four minutes of one core
+on a full-size crowd (:mod:`polymimic.baselines.offline_rl`)."""
 
-TRIAL_INDEPENDENT = ("bc", "bco", "bc_best", "random")
+FROM_THE_REWARD = ("ppo", "ppo_bc")
+"""Methods that learn from the environment's reward, in stages of their own (no tuning or
+evaluation stage of the baselines')."""
+
+TRIAL_INDEPENDENT = ("bc", "bco", "bc_best", "random", "offline_rl")
 """Baselines that learn the same thing in every trial: the crowd's demonstrations, unweighted.
 They are fitted ``baseline_fits`` times, each fit under its own seed."""
 
@@ -54,7 +61,8 @@ WORLD_WEIGHTINGS = ("every", "intent", "outcome")
 """The parts of polymimic's world model its LP weighting may reach (``LearningConfig``'s
 ``world_weighting``)."""
 
-RENAMED = {"refit_baselines": "baseline_fits (how many fits of bc, bco, bc_best and random, each under its own seed; "
+RENAMED = {"refit_baselines": "baseline_fits (how many fits of bc, bco, bc_best, random and offline_rl, each under its "
+                              "own seed; "
                               "refit_baselines = true was baseline_fits = trials)"}
 """Keys an older config may hold, and what took their place."""
 
@@ -81,6 +89,8 @@ class BenchmarkSettings:
     # polymimic.baselines.training.MAX_DECISION_SAMPLES, not imported: that would import scikit-learn.
     max_decision_samples: int = _doc("the most decision samples a baseline's fit takes (its sample stride widens "
                                      "evenly to stay under it)", 20_000)
+    offline_gradient_steps: int = _doc("gradient steps of each offline_rl fit (when methods name offline_rl)",
+                                       10_000)
     ppo_timesteps: int = _doc("environment steps each ppo run learns from (when methods name ppo)", 1_000_000)
     ppo_eval_every: int = _doc("environment steps between ppo's checkpoints on the evaluation attempts", 50_000)
     ppo_runs: int = _doc("ppo training runs, seeds 0, 1, … (ppo learns no crowd's data: its runs serve every "
@@ -98,15 +108,15 @@ class BenchmarkSettings:
                                              "validation attempts, one trial each under the first trial's seed, "
                                              "as the baselines are tuned (the first of equals; one candidate: used "
                                              "untried)", ("outcome", "intent", "every"))
-    baseline_fits: int = _doc("fits of bc, bco, bc_best and random, each evaluated, under seeds first_trial, "
-                              "first_trial + 1, …: a seed draws the fit's decision samples and seeds its "
+    baseline_fits: int = _doc("fits of bc, bco, bc_best, random and offline_rl, each evaluated, under seeds "
+                              "first_trial, first_trial + 1, …: a seed draws the fit's decision samples and seeds its "
                               "classifier (bco_lp is fitted after each of the first lp_plugin_trials trials)", 3)
 
     def __post_init__(self) -> None:
         for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
                      "validation_attempts_per_configuration", "tuning_budget", "lp_plugin_trials",
-                     "baseline_fits", "max_decision_samples", "ppo_timesteps", "ppo_eval_every", "ppo_runs",
-                     "practice_steps", "practice_trials"):
+                     "baseline_fits", "max_decision_samples", "offline_gradient_steps", "ppo_timesteps",
+                     "ppo_eval_every", "ppo_runs", "practice_steps", "practice_trials"):
             in_range("benchmark", name, getattr(self, name), 1)
         in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
         if self.practice_method not in PRACTICE_METHODS:
@@ -198,14 +208,16 @@ class BenchmarkConfig:
     def quick(cls) -> BenchmarkConfig:
         """A small benchmark: 2 trials per profile, 5 demonstrations per member and configuration,
         5 attempts per configuration, 3 tuning candidates on 3 attempts each, fits of at most
-        1000 decision samples, ppo (where named) for 8192 steps, the first trial's imitator
-        practising for 1000 steps, and the quick reproduction's recogniser."""
+        1000 decision samples (offline_rl's, where named, of 300 gradient steps), ppo (where named)
+        for 8192 steps, the first trial's imitator practising for 1000 steps, and the quick
+        reproduction's recogniser."""
         full = cls()
         return dataclasses.replace(
             full, run=_with_lp_weighting(dataclasses.replace(RunConfig.quick(), experiments=full.run.experiments)),
             benchmark=dataclasses.replace(full.benchmark, trials=2, demonstrations_per_configuration=5,
                                           attempts_per_configuration=5, validation_attempts_per_configuration=3,
-                                          tuning_budget=3, max_decision_samples=1000, ppo_timesteps=8192,
+                                          tuning_budget=3, max_decision_samples=1000, offline_gradient_steps=300,
+                                          ppo_timesteps=8192,
                                           ppo_eval_every=4096, practice_steps=1000, practice_trials=1))
 
     def to_dict(self) -> dict[str, Any]:

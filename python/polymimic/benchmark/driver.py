@@ -36,7 +36,7 @@ from typing import Any
 
 from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
-from polymimic.benchmark.config import OPTIONAL_METHODS, BenchmarkConfig
+from polymimic.benchmark.config import FROM_THE_REWARD, BenchmarkConfig
 from polymimic.benchmark.figures import draw_figures
 from polymimic.benchmark.files import (
     load_controller_skill,
@@ -80,10 +80,10 @@ from polymimic.runs.steps import Stepped, counted, each_member_recorded
 
 __all__ = ["Benchmark"]
 
-_LONGEST_FIRST = {"bco_lp": 0, "bco": 0, "bc": 0, "bc_best": 1, "random": 2}
-"""The order the tasks of a stage start in, by method: those that fit on a whole crowd first,
-then bc_best (one member's data), then random (no fit), so that no worker is left idle while
-the other finishes a long fit begun last."""
+_LONGEST_FIRST = {"offline_rl": -1, "bco_lp": 0, "bco": 0, "bc": 0, "bc_best": 1, "random": 2}
+"""The order the tasks of a stage start in, by method: offline_rl's (thousands of gradient
+steps a fit), then those that fit on a whole crowd, then bc_best (one member's data), then
+random (no fit), so that no worker is left idle while the other finishes a long fit begun last."""
 
 
 @dataclasses.dataclass
@@ -104,6 +104,12 @@ class Benchmark(Stepped):
             if not ppo.available():
                 raise ConfigError("[benchmark] methods: ppo and ppo_bc need stable-baselines3 and torch: "
                                   "pip install \"polymimic[rl]\"")
+        if "offline_rl" in config.benchmark.methods:
+            from polymimic.baselines import offline_rl
+
+            if not offline_rl.available():
+                raise ConfigError("[benchmark] methods: offline_rl needs d3rlpy and torch: "
+                                  "pip install \"polymimic[offline]\"")
 
     def run_all(self) -> float:
         """Every step, in order; the seconds they took."""
@@ -215,7 +221,7 @@ class Benchmark(Stepped):
     # 4. Tuning.
 
     def _baselines(self) -> list[str]:
-        return [m for m in self.config.benchmark.methods if m not in POLYMIMIC_METHODS and m not in OPTIONAL_METHODS]
+        return [m for m in self.config.benchmark.methods if m not in POLYMIMIC_METHODS and m not in FROM_THE_REWARD]
 
     def _bc_best_is_bc(self, crowd: Crowd, skill: dict[str, float] | None) -> bool:
         """Whether ``bc_best`` learns just what ``bc`` does in ``crowd`` (every member shares the
@@ -272,7 +278,7 @@ class Benchmark(Stepped):
         jobs: list[tuple[str, str, int, str | None, dict[str, Any] | None]] = []
         methods = self.config.benchmark.methods
         for crowd in self.config.crowds():
-            for method in (m for m in methods if m not in OPTIONAL_METHODS and m != PRACTISED):
+            for method in (m for m in methods if m not in FROM_THE_REWARD and m != PRACTISED):
                 tuned = None if method in POLYMIMIC_METHODS else load_tuning(
                     self.run.require(self.run.tuning_path(crowd.name, method), "benchmark"))["hyperparameters"]
                 weighting = None

@@ -7,7 +7,7 @@ import os
 from typing import Any, TypedDict
 
 from polymimic._native import ModelFileError
-from polymimic.benchmark.config import METHODS, WORLD_WEIGHTINGS
+from polymimic.benchmark.config import METHODS, TRIAL_INDEPENDENT, WORLD_WEIGHTINGS
 from polymimic.runs.files import checked_outcomes, checked_tuning, integer_key, json_object, name_key
 
 __all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_controller_skill", "load_method_evaluation",
@@ -49,13 +49,18 @@ class SavedPPOCurve(TypedDict):
     checkpoints: list[dict[str, Any]]
 
 
+EVALUATED = tuple(dict.fromkeys(METHODS + TRIAL_INDEPENDENT))
+"""The methods whose evaluations and tunings the run directory keeps in files of their own (the
+defaults, and offline_rl where named)."""
+
+
 def load_method_evaluation(path: str | os.PathLike[str]) -> SavedMethodEvaluation:
     """An evaluation file, checked: every key of its type and range, goals and own goals as its
     outcomes count them."""
     where, data = os.fspath(path), json_object(path, "evaluation")
     attempts, outcomes, goals, own_goals = checked_outcomes(data, where)
     saved = SavedMethodEvaluation(profile=name_key(data, "profile", where),
-                                  method=name_key(data, "method", where, METHODS),
+                                  method=name_key(data, "method", where, EVALUATED),
                                   trial_seed=integer_key(data, "trial_seed", where, 0),
                                   seed=integer_key(data, "seed", where, 0), goals=goals, own_goals=own_goals,
                                   attempts=attempts, outcomes=outcomes)
@@ -69,7 +74,7 @@ def load_tuning(path: str | os.PathLike[str]) -> SavedTuning:
         if not isinstance(data.get(key), dict):
             raise ModelFileError(f"{where}: key {key!r} must be an object, got {data.get(key)!r}")
     hyperparameters, scores = checked_tuning(data, where)
-    return SavedTuning(profile=name_key(data, "profile", where), method=name_key(data, "method", where, METHODS),
+    return SavedTuning(profile=name_key(data, "profile", where), method=name_key(data, "method", where, EVALUATED),
                        chosen=data["chosen"], hyperparameters=hyperparameters, scores=scores,
                        validation_attempts=integer_key(data, "validation_attempts", where, 1))
 

@@ -102,6 +102,8 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
     evaluated here rather than fitted twice; the choice was made before, on validation alone."""
     profile, method, trial_json = job
     settings, seeds = shared.config.benchmark, shared.config.seeds
+    if method == "offline_rl":
+        return _offline_tuning(shared, profile)
     tuning = baselines.tune(method, shared.profiles[profile].demonstrations, budget=settings.tuning_budget,
                             validation_seed=settings.validation_seed,
                             attempts_per_configuration=settings.validation_attempts_per_configuration,
@@ -114,6 +116,32 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
             "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
             "validation_attempts": len(tuning.validation_attempts),
             "evaluation": _evaluated(shared, profile, method, seeds.first_trial, tuning.policy)}
+
+
+def _offline_tuning(shared: Shared, profile: str) -> dict[str, Any]:
+    """offline_rl's tuning, as :func:`tuning_task` returns a cloner's. Torch runs on one thread,
+    so the fits are the same on any machine's number of cores."""
+    import torch  # type: ignore[import-not-found, unused-ignore]
+
+    from polymimic.baselines import offline_rl
+    from polymimic.baselines.offline_hyperparameters import candidates
+
+    torch.set_num_threads(1)
+    settings, seeds = shared.config.benchmark, shared.config.seeds
+    tried = [dataclasses.replace(h, gradient_steps=settings.offline_gradient_steps)
+             for h in candidates(settings.tuning_budget)]
+    tuning = offline_rl.tune(shared.profiles[profile].demonstrations, candidates=tried,
+                             validation_seed=settings.validation_seed,
+                             attempts_per_configuration=settings.validation_attempts_per_configuration,
+                             evaluation_seed=seeds.evaluation,
+                             evaluation_attempts_per_configuration=settings.attempts_per_configuration,
+                             seed=seeds.first_trial, field_config=shared.config.field,
+                             max_samples=settings.max_decision_samples,
+                             **_baseline_inputs(shared, profile, "offline_rl", None))
+    return {"profile": profile, "method": "offline_rl", "chosen": tuning.chosen,
+            "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
+            "validation_attempts": len(tuning.validation_attempts),
+            "evaluation": _evaluated(shared, profile, "offline_rl", seeds.first_trial, tuning.policy)}
 
 
 def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:
@@ -180,6 +208,8 @@ def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[s
         return {**_evaluation(shared, profile, method, trial_seed, outcomes),
                 **({} if weighting is None else {"world_weighting": weighting})}
     assert hyperparameters is not None
+    if method == "offline_rl":
+        return _offline_evaluation(shared, profile, trial_seed, hyperparameters)
     chosen = baselines.Hyperparameters.from_dict(hyperparameters)
     demos = inputs.demonstrations if method != "random" else []
     fitted = baselines.fit(method, demos, hyperparameters=chosen, seed=trial_seed,
@@ -189,8 +219,22 @@ def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[s
     return _evaluated(shared, profile, method, trial_seed, fitted)
 
 
-def _evaluated(shared: Shared, profile: str, method: str, trial_seed: int,
-               policy: baselines.ClonedPolicy | baselines.RandomPolicy) -> dict[str, Any]:
+def _offline_evaluation(shared: Shared, profile: str, fit_seed: int, hyperparameters: dict[str, Any]) -> dict[str, Any]:
+    """offline_rl fitted with the tuned ``hyperparameters`` under ``fit_seed``, evaluated."""
+    import torch  # type: ignore[import-not-found, unused-ignore]
+
+    from polymimic.baselines import offline_rl
+    from polymimic.baselines.offline_hyperparameters import OfflineHyperparameters
+
+    torch.set_num_threads(1)
+    fitted = offline_rl.fit(shared.profiles[profile].demonstrations,
+                            hyperparameters=OfflineHyperparameters.from_dict(hyperparameters), seed=fit_seed,
+                            max_samples=shared.config.benchmark.max_decision_samples,
+                            **_baseline_inputs(shared, profile, "offline_rl", None))
+    return _evaluated(shared, profile, "offline_rl", fit_seed, fitted)
+
+
+def _evaluated(shared: Shared, profile: str, method: str, trial_seed: int, policy: baselines.Policy) -> dict[str, Any]:
     """A fitted baseline's evaluation after trial ``trial_seed``."""
     settings, seeds = shared.config.benchmark, shared.config.seeds
     result = baselines.evaluate_policy(policy, attempts_per_configuration=settings.attempts_per_configuration,

@@ -8,7 +8,7 @@ import importlib.util
 import pathlib
 from typing import Any
 
-from polymimic.benchmark.config import METHODS, BenchmarkConfig
+from polymimic.benchmark.config import METHODS, OPTIONAL_METHODS, BenchmarkConfig
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.cli.common import benchmark_config, run_options
 from polymimic.crowds import PROFILES
@@ -26,7 +26,7 @@ def add(commands: Any) -> None:
                            help=f"only these crowds (built in: {' '.join(PROFILES)}; more in --config's "
                                 "[profiles.<name>])")
     benchmark.add_argument("--methods", nargs="+", metavar="METHOD",
-                           help=f"only these methods (of {' '.join(METHODS)})")
+                           help=f"only these methods (of {' '.join(METHODS)}; or named, {' '.join(OPTIONAL_METHODS)})")
     benchmark.add_argument("--imitator", metavar="BODY",
                            help="the imitator's body: lego (the default), tiny, humanoid, or a [bodies.<name>] of "
                                 "--config")

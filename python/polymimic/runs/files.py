@@ -69,13 +69,17 @@ def checked_outcomes(data: dict[str, Any], where: str) -> tuple[int, list[str], 
 
 
 def checked_tuning(data: dict[str, Any], where: str) -> tuple[dict[str, Any], list[dict[str, Any]]]:
-    """A baseline's tuning: the hyperparameters chosen (a whole choice) and every candidate's
-    score (its goals and own goals on validation)."""
+    """A baseline's tuning: the hyperparameters chosen (a whole choice: ``offline_rl``'s of its
+    own kind) and every candidate's score (its goals and own goals on validation)."""
     from polymimic.baselines.hyperparameters import Hyperparameters
+    from polymimic.baselines.offline_hyperparameters import OfflineHyperparameters
 
     chosen = data.get("hyperparameters")
     try:
-        Hyperparameters.from_dict(chosen)  # type: ignore[arg-type]
+        if data.get("method") == "offline_rl":
+            OfflineHyperparameters.from_dict(chosen)  # type: ignore[arg-type]
+        else:
+            Hyperparameters.from_dict(chosen)  # type: ignore[arg-type]
     except (KeyError, TypeError, ValueError, AttributeError) as error:
         raise ModelFileError(f"{where}: key 'hyperparameters' is not a choice of hyperparameters "
                              f"({error!r})") from error

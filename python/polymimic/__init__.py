@@ -12,6 +12,7 @@ The core (discrete HMMs, LBG codebooks) is written in Rust and exposed here.
 import importlib.util
 
 from polymimic._native import (
+    Body,
     Codebook,
     DiscreteHMM,
     Episode,
@@ -46,6 +47,7 @@ if importlib.util.find_spec("gymnasium") is not None:
     from polymimic import env as _env  # noqa: F401  (registers PenaltyKick-v0 with Gymnasium)
 
 __all__ = [
+    "Body",
     "Codebook",
     "Demonstration",
     "DiscreteHMM",

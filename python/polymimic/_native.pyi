@@ -8,6 +8,8 @@ import numpy as np
 import numpy.typing as npt
 from typing_extensions import disjoint_base
 
+from polymimic.bodies import Field, WheeledBody
+
 __version__: str
 
 class PolymimicError(Exception):
@@ -35,7 +37,73 @@ _Path = str | os.PathLike[str]
 class _NativeBody(Protocol):
     def _native_body(self) -> tuple[str, str]: ...
 
-_Body = str | _NativeBody
+_Body = str | _NativeBody | "Body"
+
+@final
+class Body:
+    """A body: one of the built-in ones by name (``"lego"``, ``"tiny"``, ``"humanoid"``), or a
+    :class:`polymimic.bodies.WheeledBody` of your own (a wheeled body equal to the Lego or the tiny robot
+    is that body, bit for bit). Everything that asks which body also learns from it which field
+    it plays on, which primitives it has and how far it reaches for the ball.
+
+    >>> lego = Body("lego")
+    >>> lego.kind, lego.field.length_mm, lego.reach_mm, Body("tiny").primitive_set
+    ('lego', 1020.0, 120.0, 'wheeled')
+    >>> Body("robot")
+    Traceback (most recent call last):
+    ...
+    ValueError: unknown body "robot": the built-in bodies are lego, tiny, humanoid; describe a body
+    of your own with polymimic.bodies.WheeledBody(name, length_mm=…, width_mm=…, wheel_base_mm=…,
+    top_wheel_speed_mm_s=…) (or a [bodies.robot] table) and make it a polymimic.Body
+    """
+    def __new__(cls, body: str | _NativeBody | Body) -> Self: ...
+    @classmethod
+    def from_table(cls, name: str, table: Mapping[str, Any], *, where: str = "") -> Self:
+        """A body from its TOML table (``[bodies.<name>]``; see
+        :meth:`polymimic.bodies.WheeledBody.from_table`), a ``ValueError`` naming ``where`` and the key
+        for anything unknown or out of range.
+
+        >>> Body.from_table("cart", {"length_mm": 90, "width_mm": 80, "wheel_base_mm": 70,
+        ...                          "top_wheel_speed_mm_s": 60}).field.length_mm
+        1020.0
+        """
+    @property
+    def name(self) -> str:
+        """The body's name: a built-in body's, or the one its description gives."""
+    @property
+    def kind(self) -> Literal["lego", "tiny", "humanoid", "wheeled"]:
+        """What kind of body: ``"lego"``, ``"tiny"``, ``"humanoid"`` (the built-in ones) or
+        ``"wheeled"`` (a two-wheeled robot of your own).
+        """
+    @property
+    def primitive_set(self) -> Literal["wheeled", "humanoid"]:
+        """Which primitive set it moves with: ``"wheeled"`` (forward, backward, left, right, stop) or
+        ``"humanoid"`` (those, its side-steps and its kick).
+        """
+    @property
+    def primitives(self) -> list[str]:
+        """Its own primitives' names, in the set's order."""
+    @property
+    def field(self) -> Field:
+        """The field it plays on, as a :class:`polymimic.bodies.Field`."""
+    @property
+    def reach_mm(self) -> float:
+        """How far from its centre it moves the ball as a demonstrator, mm: the ball's radius beyond
+        a wheeled body's front (half its length), or beyond the humanoid's kicking foot at full
+        reach. The learner's correspondence between bodies keeps a touch a touch.
+        """
+    @property
+    def imitating_reach_mm(self) -> float:
+        """How far from its centre it moves the ball as an imitator, mm: the ball's radius beyond its
+        front (the humanoid walks into the ball, even over its own set with a kick).
+        """
+    @property
+    def description(self) -> WheeledBody | None:
+        """The :class:`polymimic.bodies.WheeledBody` describing it: a body of your own's, the Lego's and the
+        tiny robot's constants (:data:`polymimic.bodies.THESIS_BODIES`); ``None`` for the humanoid.
+        """
+    def __eq__(self, other: object, /) -> bool: ...
+    def __hash__(self) -> int: ...
 
 @final
 class DiscreteHMM:
@@ -1014,10 +1082,7 @@ def average_demonstrator(
     body: _Body = "lego",
 ) -> tuple[TrialResult, list[dict[str, Any]]]: ...
 def net_goals(outcomes: Sequence[str]) -> int: ...
-def observations_onto(
-    observations: npt.ArrayLike, recorded_on: str, recorded_reach_mm: float, onto: str, imitator_reach_mm: float
-) -> npt.NDArray[np.float64]: ...
-def body_reach_mm(body: _Body, *, imitating: bool = False) -> float: ...
+def observations_onto(observations: npt.ArrayLike, recorded_by: _Body, imitator: _Body) -> npt.NDArray[np.float64]: ...
 def lp_order_hits(trials: Sequence[TrialResult], order: Sequence[str]) -> int: ...
 def spare_attempts(per_configuration: int) -> int: ...
 

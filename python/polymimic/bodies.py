@@ -44,8 +44,11 @@ import numpy.typing as npt
 
 from polymimic import _native
 
-__all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Field", "Slip", "WheeledBody", "bodies_from_tables",
-           "field_length_mm", "field_of", "onto_field", "pitch_of", "playing_field", "reach_mm", "thesis_field"]
+__all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Body", "Field", "Slip", "WheeledBody", "as_body",
+           "bodies_from_tables", "field_length_mm", "field_of", "onto_field", "pitch_of", "playing_field", "reach_mm",
+           "thesis_field"]
+
+Body = _native.Body
 
 PRIMITIVE_NAMES = ("forward", "backward", "left", "right", "stop")
 FIELDS = ("large", "small")
@@ -344,6 +347,21 @@ class WheeledBody:
             raise ValueError(f"{where}: {error}") from None
 
 
+    @classmethod
+    def _from_native(cls, constants: str, field_sizes: str) -> WheeledBody:
+        """The description of a body the native side hands back: its constants and its field's
+        sizes as JSON (a thesis field's by its name)."""
+        c, sizes = json.loads(constants), Field(**json.loads(field_sizes))
+        field: FieldSpec = next((name for name in FIELDS if thesis_field(name) == sizes), sizes)
+        return cls(c["name"], length_mm=c["length_mm"], width_mm=c["width_mm"], wheel_base_mm=c["wheel_base_mm"],
+                   top_wheel_speed_mm_s=c["top_wheel_speed_mm_s"], motor_lag_s=c["tau_linear_s"],
+                   turn_lag_s=c["tau_angular_s"],
+                   slip={p: Slip(**t) for p, t in zip(PRIMITIVE_NAMES, c["traction"])},
+                   primitives_mm_s={p: tuple(w) for p, w in zip(PRIMITIVE_NAMES, c["primitive_wheels_mm_s"])},
+                   field=field, expert_commands=c["accepts_expert_commands"],
+                   fresh_slip_frames=c["traction_refresh_frames"])
+
+
 @functools.cache
 def thesis_field(name: str) -> Field:
     """A thesis field's sizes (``"large"`` or ``"small"``), as the simulated field has them (its
@@ -495,7 +513,8 @@ def reach_mm(body: str | WheeledBody, *, imitating: bool = False) -> float:
     >>> reach_mm("lego"), reach_mm("tiny"), reach_mm("humanoid"), reach_mm("humanoid", imitating=True)
     (120.0, 20.0, 160.0, 85.0)
     """
-    return _native.body_reach_mm(resolve(body), imitating=imitating)
+    made = as_body(body)
+    return float(made.imitating_reach_mm if imitating else made.reach_mm)
 
 
 def onto_field(observations: npt.ArrayLike, *, recorded_by: str | WheeledBody,
@@ -520,10 +539,35 @@ def onto_field(observations: npt.ArrayLike, *, recorded_by: str | WheeledBody,
     >>> onto_field(seen, recorded_by="tiny").tolist()           # the Lego's touch, on the large field's post
     [[390.0, -202.5, 0.3, 510.0, -202.5]]
     """
-    return _native.observations_onto(observations, pitch_of(recorded_by), reach_mm(recorded_by), pitch_of(imitator),
-                                     reach_mm(imitator, imitating=True))
+    return _native.observations_onto(observations, as_body(recorded_by, what="recorded_by"),
+                                     as_body(imitator, what="imitator"))
 
-def resolve(body: str | WheeledBody) -> str | WheeledBody:
+
+def as_body(body: str | WheeledBody | Body, *, what: str = "body") -> Body:
+    """``body`` as a :class:`polymimic.Body`: itself, a built-in body by its name, a
+    :class:`WheeledBody` (or the name of one made in this process) made one. A ``ValueError``
+    names ``what`` for a name no body has, listing the built-in ones and how to describe a body
+    of one's own.
+
+    >>> as_body("tiny").field.length_mm
+    560.0
+    >>> as_body("rover_17", what="imitator")
+    Traceback (most recent call last):
+    ...
+    ValueError: imitator: unknown body "rover_17": the built-in bodies are lego, tiny, humanoid; describe a body of ...
+    """
+    if isinstance(body, Body):
+        return body
+    if isinstance(body, str) and body not in THESIS_BODY_FIELDS:
+        with _lock:
+            known = _described.get(body)
+        body = body if known is None else known
+    try:
+        return Body(body)
+    except (TypeError, ValueError) as error:
+        raise type(error)(f"{what}: {error}") from None
+
+def resolve(body: str | WheeledBody | Body) -> str | WheeledBody | Body:
     """``body`` as the field takes it: a thesis body's name as it is, a :class:`WheeledBody`
     made in this process by its name, or the body itself; a ``ValueError`` for a name no body
     has.
@@ -533,7 +577,7 @@ def resolve(body: str | WheeledBody) -> str | WheeledBody:
     """
     if isinstance(body, WheeledBody):
         return native_body(body)
-    if body in THESIS_BODY_FIELDS:
+    if isinstance(body, Body) or body in THESIS_BODY_FIELDS:
         return body
     with _lock:
         known = _described.get(body) if isinstance(body, str) else None

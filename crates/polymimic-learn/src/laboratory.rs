@@ -19,7 +19,6 @@ use crate::prediction::MotionTable;
 use crate::record::TrialRecord;
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::running::Running;
-use crate::state::Pitch;
 use crate::trial::{PhaseOne, TrialResult, run_trial};
 use crate::world::WorldModel;
 
@@ -36,12 +35,6 @@ pub enum LaboratoryError {
         "no imitator of {tried} trials, with tracking held in enough attempts, scored net goals (goals less own goals) between the Poor's {poor} and the Expert's {expert}"
     )]
     NoAverage { tried: usize, poor: i64, expert: i64 },
-}
-
-/// The pitch a demonstrator plays on.
-#[must_use]
-pub fn pitch_of(demonstrator: Demonstrator) -> Pitch {
-    if demonstrator == Demonstrator::Tiny { Pitch::SMALL } else { Pitch::LARGE }
 }
 
 /// A trained imitator's score on the field.

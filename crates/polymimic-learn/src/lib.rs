@@ -35,7 +35,7 @@ pub use config::{ImitatorWeighting, LearningConfig, LpApproachWeight, LpBounds, 
 pub use control::{Attempt, ControlMode, ImitatorPolicy, StartAt, attempt_seeds, start_attempt_seeds};
 pub use correspondence::{Setting, imitator_reach_mm, onto_setting, reach_mm};
 pub use error::{LearnError, LearnParamsError};
-pub use laboratory::{FinalLps, Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, pitch_of, summarise};
+pub use laboratory::{FinalLps, Laboratory, LaboratoryError, ModelSummary, Score, lp_order_hits, summarise};
 pub use model::{Event, ForwardModel, ModelMetrics};
 pub use player::{PRIMITIVE_S, PlayingImitator, Stepping};
 pub use prediction::{MotionTable, Prediction, matches, predict};

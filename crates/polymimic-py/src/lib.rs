@@ -23,7 +23,7 @@ mod _native {
     use pyo3::{Bound, PyTypeInfo};
 
     #[pymodule_export]
-    use super::bodies::thesis_wheeled_bodies;
+    use super::bodies::{PyBody, thesis_wheeled_bodies};
     #[pymodule_export]
     use super::field::{
         PyEpisode, check_field_config, commands, default_field_config, primitive_command, record_demonstrations,
@@ -36,8 +36,8 @@ mod _native {
     #[pymodule_export]
     use super::learn::{
         PyImitatorPlayer, PyImitatorPolicy, PyLearningConfig, PyModelResult, PySegmentedDemonstrations, PyTrialResult,
-        attempt_seeds, average_demonstrator, body_reach_mm, learning_trial, lp_order_hits, net_goals,
-        observations_onto, spare_attempts,
+        attempt_seeds, average_demonstrator, learning_trial, lp_order_hits, net_goals, observations_onto,
+        spare_attempts,
     };
     #[pymodule_export]
     use super::perceive::PyPrimitiveRecognizer;

@@ -10,8 +10,8 @@ mod trial;
 
 use polymimic_field::{BodyKind, Outcome};
 use polymimic_learn::{
-    AverageSearch, Ending, LaboratoryError, MotionTable, PhaseOne, Setting, TrialRecord, imitator_reach_mm,
-    lp_order_hits as count_lp_order_hits, net_goals as count_net_goals, onto_setting, reach_mm, run_trial,
+    AverageSearch, Ending, LaboratoryError, MotionTable, PhaseOne, Setting, TrialRecord,
+    lp_order_hits as count_lp_order_hits, net_goals as count_net_goals, onto_setting, run_trial,
     spare_attempts as spares,
 };
 use polymimic_types::{Pose, TrackedFrame};
@@ -165,35 +165,18 @@ pub fn attempt_seeds(attempts_per_configuration: i64, seed: u64) -> PyResult<Vec
         .collect())
 }
 
-/// How far from its centre `body` moves the ball, mm, as a demonstrator (a wheeled body's front,
-/// the humanoid's kicking foot) or as an imitator (its front), with the ball's radius.
+/// Observations `(n, 5)` (robot x, y (mm), heading (rad), ball x, y (mm)) recorded by the body
+/// `recorded_by` on its field, brought onto the field of an imitator of body `imitator` by the
+/// learner's one correspondence.
 #[pyfunction]
-#[pyo3(signature = (body, *, imitating=false))]
-#[allow(clippy::needless_pass_by_value)] // pyo3 extracts the body by value
-pub fn body_reach_mm(body: Body, imitating: bool) -> f64 {
-    if imitating { imitator_reach_mm(body.0) } else { reach_mm(body.0) }
-}
-
-/// Observations `(n, 5)` (robot x, y (mm), heading (rad), ball x, y (mm)) recorded on the pitch
-/// named `recorded_on` by a body of reach `recorded_reach_mm`, brought onto the pitch `onto` of a
-/// body of reach `imitator_reach_mm` by the learner's one correspondence.
-#[pyfunction]
+#[allow(clippy::needless_pass_by_value)] // pyo3 extracts the bodies by value
 pub fn observations_onto<'py>(
     py: Python<'py>,
     observations: &Bound<'py, PyAny>,
-    recorded_on: &str,
-    recorded_reach_mm: f64,
-    onto: &str,
-    imitator_reach_mm: f64,
+    recorded_by: Body,
+    imitator: Body,
 ) -> PyResult<Bound<'py, numpy::PyArray2<f64>>> {
-    let setting = |pitch: &str, what: &str, reach: f64| -> PyResult<Setting> {
-        if !(reach.is_finite() && reach > 0.0) {
-            return Err(PyValueError::new_err(format!("{what}: reach must be a positive number of mm, got {reach}")));
-        }
-        Ok(Setting { pitch: segments::pitch_from(pitch, what)?, reach_mm: Some(reach) })
-    };
-    let from = setting(recorded_on, "recorded_on", recorded_reach_mm)?;
-    let to = setting(onto, "onto", imitator_reach_mm)?;
+    let (from, to) = (Setting::of_body(recorded_by.0), Setting::of_imitator(imitator.0));
     let (values, shape) = crate::convert::floats(observations, "observations", 2)?;
     if shape[1] != 5 {
         return Err(PyValueError::new_err(format!(

@@ -6,12 +6,13 @@
 use std::sync::Arc;
 
 use polymimic_field::Outcome;
-use polymimic_learn::{Ending, Pitch, SegmentedDemonstration};
+use polymimic_learn::{Ending, Pitch, SegmentedDemonstration, Setting};
 use polymimic_perceive::{Label, NO_SCORES, Pose, Primitive, PrimitiveSet, Segment, TrackedFrame};
 use pyo3::exceptions::{PyIndexError, PyKeyError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{IntoPyDict, PyDict, PyIterator, PyList, PyString, PyTuple};
 
+use crate::bodies::Body;
 use crate::convert::{floats, integers};
 use crate::perceive::segment_columns;
 
@@ -116,10 +117,29 @@ fn demonstration(
             quoted(OUTCOMES.map(Outcome::name))
         ))
     })?;
-    let pitch = pitch_from(&text("pitch")?, what)?;
-    let reach_mm = reach(item, what)?;
+    let (pitch, reach_mm) = match item.get_item("body") {
+        Ok(body) if !body.is_none() => setting_of(item, &body, what)?,
+        _ => (pitch_from(&text("pitch")?, what)?, reach(item, what)?),
+    };
     let segments = segments(&get("segments")?, what, frame_count)?;
     Ok((SegmentedDemonstration { demonstrator, pitch, reach_mm, ending: Ending::from(outcome), segments }, outcome))
+}
+
+/// The field and reach of an item given by its `body` (a `polymimic.Body`), demonstrating or,
+/// with `"imitating": True`, imitating.
+fn setting_of(item: &Bound<'_, PyAny>, body: &Bound<'_, PyAny>, what: &str) -> PyResult<(Pitch, Option<f64>)> {
+    let body: Body = body.extract().map_err(|e| PyTypeError::new_err(format!("{what}: body: {e}")))?;
+    let imitating = match item.get_item("imitating") {
+        Ok(value) => value.extract::<bool>().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "{what}: imitating must be True or False, got {}",
+                value.repr().map_or_else(|_| "?".into(), |r| r.to_string())
+            ))
+        })?,
+        Err(_) => false,
+    };
+    let setting = if imitating { Setting::of_imitator(body.0) } else { Setting::of_body(body.0) };
+    Ok((setting.pitch, setting.reach_mm))
 }
 
 /// The optional `reach_mm` of an item: how far from its centre its demonstrator's body moves

@@ -567,17 +567,19 @@ def as_body(body: str | WheeledBody | Body, *, what: str = "body") -> Body:
     except (TypeError, ValueError) as error:
         raise type(error)(f"{what}: {error}") from None
 
-def resolve(body: str | WheeledBody | Body) -> str | WheeledBody | Body:
+def resolve(body: str | WheeledBody | Body) -> str | WheeledBody:
     """``body`` as the field takes it: a thesis body's name as it is, a :class:`WheeledBody`
-    made in this process by its name, or the body itself; a ``ValueError`` for a name no body
-    has.
+    made in this process by its name, a :class:`polymimic.Body` by its name or description; a
+    ``ValueError`` for a name no body has.
 
-    >>> resolve("tiny")
-    'tiny'
+    >>> resolve("tiny"), resolve(Body("humanoid"))
+    ('tiny', 'humanoid')
     """
+    if isinstance(body, Body):
+        return body.name if body.description is None else native_body(body.description)
     if isinstance(body, WheeledBody):
         return native_body(body)
-    if isinstance(body, Body) or body in THESIS_BODY_FIELDS:
+    if body in THESIS_BODY_FIELDS:
         return body
     with _lock:
         known = _described.get(body) if isinstance(body, str) else None

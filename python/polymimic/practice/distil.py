@@ -13,8 +13,8 @@ fine-tunes from the reward with the teacher's term annealed away.
    at the end of the budget.
 
 The practised policy is the actor alone once it has earned it — a check on practice attempts
-(:class:`~polymimic.practice.teacher.Gate`, after DAgger, counted against the budget) nets
-within ``tolerance`` per attempt of what the teacher nets alone
+(:class:`~polymimic.practice.teacher.Gate`, after DAgger, counted against the budget) nets at
+least what the teacher nets alone on the same attempts
 (:class:`~polymimic.practice.teacher.Curriculum`, one stage) — and the teacher until then:
 practice never scores an actor its own play has not shown to hold.
 
@@ -43,13 +43,13 @@ __all__ = ["distil"]
 def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
            evaluation_seed: int = 0, evaluation_attempts: int = 25, dagger_rounds: int = 3,
            dagger_steps: int = 2000, warmup_steps: int = 4000, teacher_weight: float = 1.0,
-           tolerance: float = 0.05, gate: Gate | None = None, field_config: Any = None,
+           tolerance: float = 0.0, gate: Gate | None = None, field_config: Any = None,
            **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by distilling it into a PPO actor and fine-tuning, for ``steps``
     environment steps under ``seed``, scored on the evaluation attempts of ``evaluation_seed``
     at each of ``checkpoints`` (default: every fifth of the budget); the actor replaces the
     teacher once a check (``gate``: by default every 5 000 steps, on 50 practice attempts) nets
-    within ``tolerance`` per attempt of what the teacher nets alone on 50 practice attempts."""
+    at least what the teacher nets alone on the same attempts, less ``tolerance`` per attempt."""
     from stable_baselines3.common.callbacks import BaseCallback  # type: ignore[import-not-found, unused-ignore]
 
     from polymimic.baselines import ppo
@@ -59,9 +59,9 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
     if not marks or marks[0] < 0 or marks[-1] > steps:
         raise ValueError(f"checkpoints must lie in 0..{steps}, got {marks}")
     counter = _Counter()
-    _, reference = _teacher_alone(teacher, seed, field_config)
-    earning = Curriculum(stages=(0,), reference=reference, tolerance=tolerance)
     checks = gate if gate is not None else Gate()
+    _, reference = _teacher_alone(teacher, seed, field_config, checks)
+    earning = Curriculum(stages=(0,), reference=reference, tolerance=tolerance)
     ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,
                           wrap=lambda env: _RollIn(env, teacher, lambda: 0, counter), **ppo_kwargs)

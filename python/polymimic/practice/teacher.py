@@ -6,8 +6,8 @@ imitator plays the first ``h`` decisions and the learner the rest, so the learne
 the imitator's play leads and learns to finish. ``h`` steps down through a few stages, from the
 imitator's typical attempt length to 0, and a stage is left only once the practised policy at
 it — the imitator for ``h`` decisions, then the learner deciding as it will be scored,
-deterministically — nets on practice attempts what the imitator nets alone (within
-``tolerance``): the learner earns each earlier handover. Its own training episodes cannot tell:
+deterministically — nets on practice attempts at least what the imitator nets alone on the
+same attempts: the learner earns each earlier handover. Its own training episodes cannot tell:
 PPO samples its actions while it learns, and from where the imitator leaves the ball a barely
 trained learner's random pushes score far more often than its first choices do (on one crowd,
 0.81 a training episode at a handover of 18 decisions, where the same policy deciding scored
@@ -107,7 +107,9 @@ class Curriculum:
 @dataclasses.dataclass
 class Gate:
     """When and how the practised policy is checked: every ``every`` environment steps of
-    learning, on ``attempts`` practice attempts per configuration played as it will be scored."""
+    learning, on ``attempts`` practice attempts per configuration played as it will be scored —
+    always the same ones, those the teacher's reference was measured on, so that a check
+    compares the two on equal attempts rather than on attempts of other difficulty."""
 
     every: int = 5000
     attempts: int = 25
@@ -119,17 +121,24 @@ class Gate:
         return (counter.steps - self.last_step >= self.every
                 and counter.limit - counter.steps >= 2 * self.attempts * _ATTEMPT_STEPS)
 
-    def check(self, policy: Any, curriculum: Curriculum, counter: _Counter, seed: int, field_config: Any) -> None:
-        """Plays ``policy`` on the next practice attempts, counts their steps and lets
-        ``curriculum`` judge their mean return."""
+    def play(self, policy: Any, seed: int, field_config: Any) -> tuple[int, float]:
+        """``policy`` on the gate's practice attempts under ``seed``: the environment steps it
+        took and its mean return (net goals per attempt)."""
         from polymimic.practice.seeds import round_seed
 
+        played = evaluate(policy, attempts_per_configuration=self.attempts, seed=round_seed(seed, 10_000),
+                          field_config=field_config)
+        steps = sum(math.ceil(len(a.frames) / _FRAMES_PER_STEP) for a in played.attempts)
+        return steps, (played.goals - played.own_goals) / len(played.attempts)
+
+    def check(self, policy: Any, curriculum: Curriculum, counter: _Counter, seed: int, field_config: Any) -> None:
+        """Plays ``policy`` on the gate's practice attempts, counts their steps and lets
+        ``curriculum`` judge their mean return."""
         self.checks += 1
-        played = evaluate(policy, attempts_per_configuration=self.attempts,
-                          seed=round_seed(seed, 10_000 + self.checks), field_config=field_config)
-        counter.steps += sum(math.ceil(len(a.frames) / _FRAMES_PER_STEP) for a in played.attempts)
+        steps, mean_return = self.play(policy, seed, field_config)
+        counter.steps += steps
         self.last_step = counter.steps
-        curriculum.checked((played.goals - played.own_goals) / len(played.attempts))
+        curriculum.checked(mean_return)
 
 
 _FRAMES_PER_STEP = 30
@@ -195,7 +204,7 @@ class TeacherPractice:
 
 def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
          evaluation_seed: int = 0, evaluation_attempts: int = 25, stages: int = 8,
-         handover_start: int | None = None, tolerance: float = 0.05, gate: Gate | None = None,
+         handover_start: int | None = None, tolerance: float = 0.0, gate: Gate | None = None,
          field_config: Any = None,
          on_checkpoint: Callable[[list[CurvePoint]], None] | None = None, **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by jump-start RL for ``steps`` environment steps under ``seed`` (the
@@ -204,18 +213,18 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     of the budget). The curriculum (:class:`Curriculum`) has ``stages`` handovers from below
     ``handover_start`` decisions (default: the teacher's median scoring attempt) down to 0, each
     earned when a check (:class:`Gate`: by default every 5 000 steps, on 50 practice attempts)
-    nets within ``tolerance`` per attempt of what the teacher nets alone on 50 practice
-    attempts. ``ppo_kwargs`` go to stable-baselines3's PPO.
+    nets at least what the teacher nets alone on the same attempts, less ``tolerance`` per
+    attempt. ``ppo_kwargs`` go to stable-baselines3's PPO.
     """
     from polymimic.baselines import ppo
 
     marks = sorted(set(checkpoints if checkpoints is not None else np.linspace(0, steps, 6).astype(int).tolist()))
     if not marks or marks[0] < 0 or marks[-1] > steps:
         raise ValueError(f"checkpoints must lie in 0..{steps}, got {marks}")
-    typical, reference = _teacher_alone(teacher, seed, field_config)
+    checks = gate if gate is not None else Gate()
+    typical, reference = _teacher_alone(teacher, seed, field_config, checks)
     schedule = Curriculum.stepping_down(handover_start if handover_start is not None else typical, stages,
                                         reference=reference, tolerance=tolerance)
-    checks = gate if gate is not None else Gate()
     counter = _Counter()
     ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,
@@ -257,12 +266,13 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     return TeacherPractice(policy=practised(schedule.earned), curve=curve, steps=counter.steps)
 
 
-def _teacher_alone(teacher: ImitatorPolicy, seed: int, field_config: Any) -> tuple[int, float]:
-    """On 50 practice attempts (one-second decisions): the decisions of the teacher's median
-    scoring attempt (of its median attempt when none scores), and its mean return."""
+def _teacher_alone(teacher: ImitatorPolicy, seed: int, field_config: Any, gate: Gate) -> tuple[int, float]:
+    """On the gate's practice attempts (one-second decisions): the decisions of the teacher's
+    median scoring attempt (of its median attempt when none scores), and its mean return."""
     from polymimic.practice.seeds import round_seed
 
-    played = evaluate(teacher, attempts_per_configuration=25, seed=round_seed(seed, 10_000), field_config=field_config)
+    played = evaluate(teacher, attempts_per_configuration=gate.attempts, seed=round_seed(seed, 10_000),
+                      field_config=field_config)
     attempts = played.attempts
     scoring = [len(a.frames) for a in attempts if a.outcome == "goal"] or [len(a.frames) for a in attempts]
     return max(1, math.ceil(float(np.median(scoring)) / 30)), (played.goals - played.own_goals) / len(attempts)

@@ -19,6 +19,7 @@ import argparse
 import json
 import pathlib
 import re
+import statistics
 import sys
 from collections.abc import Callable
 from typing import Any
@@ -190,20 +191,53 @@ def benchmark_table() -> str | None:
             + measured_by("benchmark.json"))
 
 
+def practice_curves() -> dict[str, list[list[list[float]]]] | None:
+    """practice.json's curves by profile (each ``[checkpoint, steps played, net goals]``)."""
+    practice = load("practice.json")
+    if practice is None:
+        return None
+    curves: dict[str, list[list[list[float]]]] = {}
+    for key, entry in practice.items():
+        curves.setdefault(key.split("/")[1], []).append(entry["curve"])
+    return curves
+
+
+def practice_method() -> str:
+    practice = load("practice.json") or {}
+    return next(iter(practice)).split("/")[0] if practice else "?"
+
+
 def practice_table() -> str | None:
-    benchmark = load("benchmark.json")
-    if benchmark is None:
+    """Mean (sd) net goals over the practised trials at every checkpoint, per profile."""
+    curves = practice_curves()
+    if curves is None:
         return None
-    practised = {name: p["practice"] for name, p in benchmark["profiles"].items() if p.get("practice")}
-    if not practised:
+    first = next(iter(curves.values()))[0]
+    header = ["0 steps" if c[0] == 0 else f"{int(c[0]):,}".replace(",", " ") for c in first]
+    lines = ["| profile | trials | " + " | ".join(header) + " |", "| --- " * (len(header) + 2) + "|"]
+    for profile, runs in curves.items():
+        cells = []
+        for i in range(len(first)):
+            values = [run[i][2] for run in runs]
+            sd = statistics.stdev(values) if len(values) > 1 else 0.0
+            cells.append(f"{statistics.fmean(values):.1f} ({sd:.1f})")
+        lines.append(f"| {profile} | {len(runs)} | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n\n" + measured_by("practice.json")
+
+
+def practice_summary() -> str | None:
+    """The README's line on practice."""
+    curves = practice_curves()
+    if curves is None:
         return None
-    first = next(iter(practised.values()))
-    header = ["0 steps" if c == 0 else f"{c:,}".replace(",", " ") for c in first["checkpoints"]]
-    lines = ["| profile | " + " | ".join(header) + " |", "| --- " * (len(header) + 1) + "|"]
-    for profile, practice in practised.items():
-        lines.append(f"| {profile} | " + " | ".join(f"{p['mean']:.1f} ({p['sd']:.1f})" for p in practice["net_goals"])
-                     + " |")
-    return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
+    made = provenance("practice.json")
+    moves = "; ".join(
+        f"`{profile}` {statistics.fmean(r[0][2] for r in runs):.1f} → "
+        f"{statistics.fmean(r[-1][2] for r in runs):.1f}" for profile, runs in curves.items())
+    steps = int(next(iter(curves.values()))[0][-1][0])
+    return (f"**Practice** (`{made['command']}`, {made['world']}): practising by `{practice_method()}` for "
+            f"{steps:,}".replace(",", " ") + f" environment steps, the imitator's net goals per 50 moved: {moves} "
+            "([practice](docs/results/practice.md)).")
 
 
 def benchmark_summary() -> str | None:
@@ -260,6 +294,7 @@ TABLES: dict[str, tuple[str, Callable[[], str | None]]] = {
     "readme_benchmark": ("../README.md", benchmark_summary),
     "readme_matrix": ("../README.md", matrix_summary),
     "readme_thesis": ("../README.md", thesis_summary),
+    "readme_practice": ("../README.md", practice_summary),
     "reproduction": ("results/thesis.md", reproduction_table),
     "matrix_polymimic": ("results/matrix.md", lambda: matrix_table("polymimic")),
     "matrix_bco": ("results/matrix.md", lambda: matrix_table("bco")),

@@ -9,6 +9,11 @@ table is not what this script writes. Run::
 
     python docs/write_results.py            # rewrite the tables
     python docs/write_results.py --check    # exit 1 if a page is stale
+    python docs/write_results.py --take RUN_DIR/benchmark.json   # commit a run's file, then rewrite
+
+``--take`` copies a run's result file under ``docs/results/``; a benchmark's LP histories are
+kept at every tenth point there (the report's plots are drawn from the run's own file), which
+keeps the file under 300 kB.
 
 A table whose result file is not committed yet is left as it is (and said so by ``--check``).
 """
@@ -322,11 +327,29 @@ def page_with_table(name: str) -> tuple[pathlib.Path, str, str | None]:
     return path, text, pattern.sub(lambda m: m.group(1) + table + m.group(3), text)
 
 
+LP_HISTORY_STRIDE = 10
+"""Every how many points a taken benchmark file keeps of each member's LP history."""
+
+
+def take(path: pathlib.Path) -> None:
+    """Copies a run's result file under docs/results/, a benchmark's LP histories thinned."""
+    data = json.loads(path.read_text())
+    if path.name == "benchmark.json":
+        for profile in data["profiles"].values():
+            histories = profile.get("lp_over_training") or {}
+            for member, history in histories.items():
+                histories[member] = history[::LP_HISTORY_STRIDE]
+    (RESULTS / path.name).write_text(json.dumps(data, indent=1) + "\n")
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--check", action="store_true", help="exit 1 if a page is not what the files give")
     parser.add_argument("--tables", nargs="+", choices=sorted(TABLES), default=list(TABLES), help="only these")
+    parser.add_argument("--take", type=pathlib.Path, nargs="+", default=[], help="run result files to commit first")
     args = parser.parse_args(argv)
+    for path in args.take:
+        take(path)
     stale = []
     for name in args.tables:
         path, text, new = page_with_table(name)

@@ -35,7 +35,6 @@ import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.bco import labelled as bco_labelled
-from polymimic.baselines.evaluation import play
 from polymimic.baselines.features import check_observations
 from polymimic.baselines.files import write_policy_file
 from polymimic.baselines.labels import IMITATOR_BODY, Labelled, check_demonstrations
@@ -51,7 +50,7 @@ from polymimic.baselines.offline_hyperparameters import (
 from polymimic.baselines.offline_hyperparameters import candidates as draw_candidates
 from polymimic.baselines.ppo import scaled
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_fit_seed, check_max_samples
-from polymimic.baselines.tuning import validation_attempts_apart, validation_rank
+from polymimic.baselines.tuning import best_on_validation, validation_attempts_apart
 from polymimic.bodies import WheeledBody, body_name, resolve
 from polymimic.field import PRIMITIVES, Demonstration
 
@@ -287,17 +286,7 @@ def tune(demonstrations: Sequence[Demonstration], *, candidates: Sequence[Offlin
         raise ValueError("candidates is empty: tuning needs at least one candidate")
     prepared = prepare(demonstrations, recognizer=recognizer, segmenter=segmenter,
                        labels=[h.labels for h in tried], max_samples=max_samples, seed=seed, imitator=imitator)
-    scores: list[dict[str, Any]] = []
-    best: tuple[tuple[int, int], int, OfflineRLPolicy] | None = None
-    for index, hyperparameters in enumerate(tried):
-        policy = fit_prepared(prepared, hyperparameters=hyperparameters)
-        result = play(policy, attempts, field_config=field_config)
-        scores.append({"hyperparameters": hyperparameters.to_dict(), "goals": result.goals,
-                       "own_goals": result.own_goals})
-        key = validation_rank(scores[-1])
-        if best is None or key > best[0]:
-            best = (key, index, policy)
-    assert best is not None
-    _, index, policy = best
+    index, policy, scores = best_on_validation(tried, lambda h: fit_prepared(prepared, hyperparameters=h), attempts,
+                                               field_config, lambda h: h.to_dict())
     return OfflineTuning(method="offline_rl", hyperparameters=tried[index], chosen=tried[index].to_dict(),
                          policy=policy, scores=scores, validation_attempts=attempts)

@@ -29,8 +29,8 @@ its choice names the labelling (``labels``).
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping, Sequence
-from typing import Any
+from collections.abc import Callable, Mapping, Sequence
+from typing import Any, TypeVar
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.evaluation import VALIDATION_SEED_BASE, _check_seed, attempts_of, play
@@ -38,7 +38,7 @@ from polymimic.baselines.hyperparameters import Hyperparameters, with_labellings
 from polymimic.baselines.hyperparameters import candidates as draw_candidates
 from polymimic.baselines.labels import IMITATOR_BODY
 from polymimic.baselines.methods import check_method, fit_prepared, prepare
-from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
+from polymimic.baselines.policy import ClonedPolicy, Policy, RandomPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples
 from polymimic.bodies import WheeledBody
 from polymimic.field import Demonstration
@@ -108,6 +108,30 @@ def validation_rank(score: Mapping[str, Any]) -> tuple[int, int]:
     return int(score["goals"]) - int(score["own_goals"]), int(score["goals"])
 
 
+PolicyT = TypeVar("PolicyT", bound=Policy)
+CandidateT = TypeVar("CandidateT")
+
+
+def best_on_validation(tried: Sequence[CandidateT], fit: Callable[[CandidateT], PolicyT],
+                       attempts: list[tuple[int, int]], field_config: Any,
+                       chosen: Callable[[CandidateT], dict[str, Any]]) -> tuple[int, PolicyT, list[dict[str, Any]]]:
+    """Each candidate fitted and played on the validation ``attempts``: the index of the best
+    by :func:`validation_rank` (the first of equals), its policy, and every candidate's score
+    (``chosen(candidate)`` names its hyperparameters)."""
+    scores: list[dict[str, Any]] = []
+    best: tuple[tuple[int, int], int, PolicyT] | None = None
+    for index, candidate in enumerate(tried):
+        policy = fit(candidate)
+        result = play(policy, attempts, field_config=field_config)
+        scores.append({"hyperparameters": chosen(candidate), "goals": result.goals, "own_goals": result.own_goals})
+        key = validation_rank(scores[-1])
+        if best is None or key > best[0]:
+            best = (key, index, policy)
+    if best is None:
+        raise ValueError("candidates is empty: tuning needs at least one candidate")
+    return best[1], best[2], scores
+
+
 def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Sequence[Hyperparameters] | None = None,
          budget: int = 12, candidate_seed: int = 0, validation_seed: int = 0, attempts_per_configuration: int = 50,
          evaluation_seed: int = 0, evaluation_attempts_per_configuration: int = 25, seed: int = 0,
@@ -168,18 +192,8 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
     prepared = prepare(method, list(demonstrations) if method != "random" else [], recognizer=recognizer,
                        weights=weights, member=member, segmenter=segmenter, max_samples=max_samples, seed=seed,
                        imitator=imitator, labels=list(dict.fromkeys(h.labels for h in tried)))
-    scores: list[dict[str, Any]] = []
-    best: tuple[tuple[int, int], int, ClonedPolicy | RandomPolicy] | None = None
-    for index, hyperparameters in enumerate(tried):
-        policy = fit_prepared(prepared, hyperparameters=hyperparameters)
-        result = play(policy, attempts, field_config=field_config)
-        scores.append({"hyperparameters": _chosen(method, hyperparameters), "goals": result.goals,
-                       "own_goals": result.own_goals})
-        key = validation_rank(scores[-1])
-        if best is None or key > best[0]:
-            best = (key, index, policy)
-    assert best is not None
-    _, index, policy = best
+    index, policy, scores = best_on_validation(tried, lambda h: fit_prepared(prepared, hyperparameters=h), attempts,
+                                               field_config, lambda h: _chosen(method, h))
     return Tuning(method=method, hyperparameters=tried[index], chosen=_chosen(method, tried[index]), policy=policy,
                   scores=scores, validation_attempts=attempts)
 

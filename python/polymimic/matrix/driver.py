@@ -166,7 +166,7 @@ class Matrix(Stepped):
                           for name in self._unique_sets()}
         return Shared(self.config, recognizers, demonstrations, self.sets())
 
-    # 3-6. polymimic and bco in every cell.
+    # 3-7. polymimic and bco in every cell, and the pictured attempts.
 
     def _weighed_cells(self) -> list[tuple[str, str]]:
         """The cells where polymimic chooses how to weigh the members: those of a crowd."""
@@ -249,7 +249,7 @@ class Matrix(Stepped):
                 bar.update(1)
         return len(jobs)
 
-    # 7. The summary and the report.
+    # 8. The summary, the pictures and the report.
 
     def report(self) -> int:
         """Stage: ``matrix.json``, the heat map, the pictures and the report; returns the files

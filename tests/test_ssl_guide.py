@@ -50,3 +50,8 @@ def test_one_config_and_three_commands(tmp_path, capsys, monkeypatch):
     for row in ("ssl_bot", "lego"):
         cell = matrix["cells"][row]["ssl_log"]
         assert cell["demonstrators"] == ["ssl_log"] and cell["polymimic"]["evaluated"] == 2
+    # The pictures on the right fields: the log's and the team's robot's on 9 × 6 m, the Lego's on its own.
+    report = (tmp_path / "runs" / "ssl-matrix" / "matrix.md").read_text()
+    for field, picture in (("ssl_bot's 9000 × 6000", "set_ssl_log"), ("ssl_bot's 9000 × 6000", "attempt_ssl_bot"),
+                           ("lego's 1020 × 810", "attempt_lego"), ("tiny's 560 × 345", "set_tiny")):
+        assert f"on the {field} mm field](plots/matrix_{picture}.png)" in report

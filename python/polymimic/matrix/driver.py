@@ -15,10 +15,14 @@ arrives, and a rerun redoes only what is missing or damaged):
    goals (the first of equals) is the cell's;
 4. **polymimic** — every cell's trials, each imitator learning on its own setting and played by
    the improved control on the evaluation attempts of its own field;
-5. **tune** — bco's hyperparameters in every cell, on validation attempts; the chosen fit is
+5. **attempts** — each row's first trial in the pictured column (the Expert's, else the first)
+   played again, checked against its saved evaluation, and its first attempt saved to be drawn
+   (:mod:`polymimic.matrix.pictures`);
+6. **tune** — bco's hyperparameters in every cell, on validation attempts; the chosen fit is
    evaluated there and then;
-6. **bco** — the other bco fits of every cell, evaluated;
-7. **report** — ``matrix.json``, ``matrix.md``, ``matrix.html`` and the heat map.
+7. **bco** — the other bco fits of every cell, evaluated;
+8. **report** — ``matrix.json``, ``matrix.md``, ``matrix.html``, the heat map, and the pictures
+   of every set's demonstration and every row's attempt, each on its own field.
 
 A built-in body's own-body cell is the cell of its own controller's column (the same
 demonstrations and imitator): it is computed once.
@@ -41,10 +45,20 @@ from polymimic.field import Demonstration, record
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig, demonstrator_sets, stored_column
 from polymimic.matrix.draws import pool_size
 from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
+from polymimic.matrix.pictures import draw_pictures, one_attempt, pictured_attempt_path, pictured_trial
 from polymimic.matrix.report import matrix_html, matrix_markdown
 from polymimic.matrix.rundir import MatrixDir
 from polymimic.matrix.summary import draw_heat_map, gather
-from polymimic.matrix.tasks import Shared, bco_task, dumps, polymimic_task, recognise_task, tuning_task, weighing_task
+from polymimic.matrix.tasks import (
+    Shared,
+    attempt_task,
+    bco_task,
+    dumps,
+    polymimic_task,
+    recognise_task,
+    tuning_task,
+    weighing_task,
+)
 from polymimic.matrix.weighing import chosen_weighting, is_weighed
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
@@ -71,6 +85,7 @@ class Matrix(Stepped):
         shared = self.shared()
         self._step("weigh", lambda: self.weigh(shared))
         self._step("polymimic", lambda: self.polymimic(shared))
+        self._step("attempts", lambda: self.attempts(shared))
         self._step("tune", lambda: self.tune(shared))
         self._step("bco", lambda: self.bco(shared))
         self._step("report", self.report)
@@ -151,7 +166,7 @@ class Matrix(Stepped):
                           for name in self._unique_sets()}
         return Shared(self.config, recognizers, demonstrations, self.sets())
 
-    # 3-6. polymimic and bco in every cell.
+    # 3-7. polymimic and bco in every cell, and the pictured attempts.
 
     def _weighed_cells(self) -> list[tuple[str, str]]:
         """The cells where polymimic chooses how to weigh the members: those of a crowd."""
@@ -192,6 +207,21 @@ class Matrix(Stepped):
                 bar.update(1)
         return len(jobs)
 
+    def attempts(self, shared: Shared) -> int:
+        """Stage: each row's pictured attempt, played again and saved; returns those played now."""
+        jobs = [(row, *pictured_trial(self.run, self.config, row)) for row in self.rows()
+                if not self.run.finished(pictured_attempt_path(self.run, self.config, row), one_attempt)]
+        with progress(total=len(jobs), desc="attempts", quiet=self.quiet) as bar:
+            for _, result in self.runner.map(attempt_task, shared, jobs):
+                row, column, seed = result["row"], result["column"], result["seed"]
+                saved = load_cell_evaluation(self.run.require(self.run.evaluation_path(row, column, "polymimic", seed),
+                                                              "matrix"))
+                if (saved["weighting"], saved["outcomes"]) != (result["weighting"], result["outcomes"]):
+                    raise RuntimeError(f"{row} ← {column}: trial {seed} played again is not its saved evaluation")
+                save_demonstrations([result["attempt"]], pictured_attempt_path(self.run, self.config, row))
+                bar.update(1)
+        return len(jobs)
+
     def tune(self, shared: Shared) -> int:
         """Stage: ``bco`` tuned in every cell; returns the tunings run."""
         jobs = [(row, column) for row, column in self.cells()
@@ -219,21 +249,23 @@ class Matrix(Stepped):
                 bar.update(1)
         return len(jobs)
 
-    # 7. The summary and the report.
+    # 8. The summary, the pictures and the report.
 
     def report(self) -> int:
-        """Stage: ``matrix.json``, the heat map and the report; returns the files written (3)."""
+        """Stage: ``matrix.json``, the heat map, the pictures and the report; returns the files
+        written."""
         summary = gather(self.run, self.config)
         atomic_write_text(self.run.results_path, json.dumps(summary, indent=1) + "\n")
         draw_heat_map(summary, self.run.plots)
+        pictures = draw_pictures(self.run, self.config)
         stages = self.run.manifest()["stages"]
         seconds = {name: float(stages[name]["seconds"])
-                   for name in ("recognise", "record", "weigh", "polymimic", "tune", "bco")
+                   for name in ("recognise", "record", "weigh", "polymimic", "attempts", "tune", "bco")
                    if isinstance(stages.get(name, {}).get("seconds"), (int, float))}
-        markdown = matrix_markdown(summary, seconds=seconds)
+        markdown = matrix_markdown(summary, seconds=seconds, pictures=pictures)
         atomic_write_text(self.run.report_md_path, markdown + "\n")
         atomic_write_text(self.run.report_html_path, matrix_html(markdown, images_from=str(self.run.path)))
-        return 3
+        return 4 + len(pictures)
 
 
 def _write_in_cell(path: pathlib.Path, result: dict[str, Any]) -> None:

@@ -1,11 +1,13 @@
-"""``matrix.md`` and ``matrix.html``: the matrix's tables, its targets and its heat map, in words a
-reader can check against ``matrix.json``."""
+"""``matrix.md`` and ``matrix.html``: the matrix's tables, its targets, its heat map, and its
+pictures of each set's demonstration and each row's attempt on their own fields, in words a reader
+can check against ``matrix.json``."""
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from typing import Any
 
+from polymimic.matrix.pictures import Picture
 from polymimic.matrix.summary import HEAT_MAP
 from polymimic.runs.markdown import to_html
 from polymimic.runs.stats import msd
@@ -74,8 +76,26 @@ def _weighing(summary: Mapping[str, Any]) -> list[str]:
     return [*lines, ""]
 
 
-def matrix_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] | None = None) -> str:
-    """The report of a ``matrix.json``; ``seconds`` are the steps' times, from the manifest."""
+def _pictures(pictures: Sequence[Picture]) -> list[str]:
+    """The pictures' two sections: each set's demonstration, each row's attempt."""
+    intros = {"demonstrators": ("The demonstrators, each on its own field", "Each set of demonstrators' first "
+                                "demonstration (its first member's first in configuration 1; a log's first episode), "
+                                "drawn on its demonstrator's body's own field, to scale."),
+              "attempts": ("The imitators, each on its own field", "Each row's imitator after its first trial in the "
+                           "pictured column: the first of its evaluation attempts, drawn on the row's own field.")}
+    lines: list[str] = []
+    for section, (heading, intro) in intros.items():
+        shown = [p for p in pictures if p.section == section]
+        if shown:
+            lines += [f"## {heading}", "", intro, ""]
+            lines += [line for p in shown for line in (f"![{p.caption}]({p.file})", "")]
+    return lines
+
+
+def matrix_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] | None = None,
+                    pictures: Sequence[Picture] = ()) -> str:
+    """The report of a ``matrix.json``; ``seconds`` are the steps' times, from the manifest;
+    ``pictures`` the demonstrations and attempts drawn (:func:`polymimic.matrix.pictures.draw_pictures`)."""
     sizes, attempts = summary["sizes"], 2 * summary["sizes"]["attempts_per_configuration"]
     verdict = {True: "met", False: "**missed**", None: "n/a"}
     lines = ["# Who learns what from whom", "",
@@ -105,7 +125,9 @@ def matrix_markdown(summary: Mapping[str, Any], *, seconds: Mapping[str, float] 
         field = imitator["field"]
         lines.append(f"| {row} | {field['length_mm']:g} × {field['width_mm']:g} | {field['goal_mouth_mm']:g} | "
                      f"{imitator['reach_mm']:g} |")
-    return "\n".join(lines)
+    if pictures:
+        lines += ["", *_pictures(pictures)]
+    return "\n".join(lines).rstrip("\n")
 
 
 def matrix_html(markdown: str, *, images_from: str) -> str:

@@ -6,10 +6,12 @@
     datasets/self_observation_<row>.parquet, models/recognizer_<row>.json   each imitator's own
     datasets/demonstrations_<set>.parquet          a set's demonstrations (load_demonstrations reads it)
     models/matrix/<row>/<column>/polymimic_<seed>.json   polymimic's evaluation after one trial
+    models/matrix/<row>/<column>/polymimic_<seed>_<weighting>_attempt.parquet   its first attempt, pictured
     models/matrix/<row>/<column>/weighing_<weighting>.json   one of polymimic's weightings on validation
     models/matrix/<row>/<column>/bco_tuning.json   bco's candidates on validation, the choice
     models/matrix/<row>/<column>/bco_<seed>.json   one bco fit's evaluation
     matrix.json, matrix.md, matrix.html, plots/matrix_heat_map.png
+    plots/matrix_set_<set>.png, plots/matrix_attempt_<row>.png   a set's demonstration, a row's attempt
 
 >>> import tempfile
 >>> run = MatrixDir(tempfile.mkdtemp())
@@ -59,6 +61,11 @@ class MatrixDir(RunHouse[MatrixConfig]):
     def evaluation_path(self, row: str, column: str, method: str, seed: int) -> pathlib.Path:
         """One evaluation of a method in a cell (a trial's or a fit's seed)."""
         return self.cell_dir(row, column) / f"{method}_{seed}.json"
+
+    def attempt_path(self, row: str, column: str, seed: int, weighting: str) -> pathlib.Path:
+        """The first evaluation attempt of polymimic's trial ``seed`` in a cell, learned with
+        ``weighting`` (Parquet, one demonstration)."""
+        return self.cell_dir(row, column) / f"polymimic_{seed}_{weighting}_attempt.parquet"
 
     def weighing_path(self, row: str, column: str, weighting: str) -> pathlib.Path:
         """One weighting's validation in a cell."""

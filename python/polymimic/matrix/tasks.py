@@ -1,7 +1,8 @@
 """The work of a matrix, as tasks a process pool or Ray can run: one cell's trial and its
-evaluation (polymimic), one of polymimic's weightings of a cell's members on validation
-attempts, one cell's bco tuning, one bco fit and its evaluation. Each depends on
-its arguments alone, so the same seeds give the same bits on any worker."""
+evaluation (polymimic), or that evaluation played again for its first attempt to be pictured,
+one of polymimic's weightings of a cell's members on validation attempts, one cell's bco tuning,
+one bco fit and its evaluation. Each depends on its arguments alone, so the same seeds give the
+same bits on any worker."""
 
 from __future__ import annotations
 
@@ -25,7 +26,8 @@ from polymimic.learning import Evaluation, ImitatorPolicy, evaluate, run_trial, 
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig
 from polymimic.matrix.draws import drawn
 
-__all__ = ["Shared", "bco_task", "dumps", "polymimic_task", "recognise_task", "tuning_task", "weighing_task"]
+__all__ = ["Shared", "attempt_task", "bco_task", "dumps", "polymimic_task", "recognise_task", "tuning_task",
+           "weighing_task"]
 
 
 @dataclasses.dataclass(frozen=True)
@@ -90,6 +92,17 @@ def polymimic_task(shared: Shared, job: tuple[str, str, int, str]) -> dict[str, 
     played = _played(shared, row, column, seed, weighting, attempts_per_configuration=(
         shared.config.matrix.attempts_per_configuration), attempts_seed=shared.config.seeds.evaluation)
     return {**_evaluation(shared, row, column, "polymimic", seed, played), "weighting": weighting}
+
+
+def attempt_task(shared: Shared, job: tuple[str, str, int, str]) -> dict[str, Any]:
+    """``(row, column, trial seed, weighting)`` → that trial's evaluation played again, as
+    :func:`polymimic_task` plays it: its first attempt (``"attempt"``, frames and all) and every
+    attempt's outcome, for the caller to check against the saved evaluation."""
+    row, column, seed, weighting = job
+    played = _played(shared, row, column, seed, weighting, attempts_per_configuration=(
+        shared.config.matrix.attempts_per_configuration), attempts_seed=shared.config.seeds.evaluation)
+    return {"row": row, "column": column, "seed": seed, "weighting": weighting, "attempt": played.attempts[0],
+            "outcomes": [a.outcome for a in played.attempts]}
 
 
 def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:

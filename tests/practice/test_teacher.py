@@ -61,20 +61,24 @@ def test_a_stage_is_earned_only_when_a_check_nets_what_the_teacher_nets():
 
 
 def test_a_check_plays_practice_attempts_counts_their_steps_and_fits_before_the_checkpoint(teacher):
+    from polymimic.practice.practised import PractisedPolicy
     from polymimic.practice.seeds import round_seed
-    from polymimic.practice.teacher import Curriculum, Gate, _Counter, _teacher_alone
+    from polymimic.practice.teacher import TEACHER_ALONE, Curriculum, Gate, _Counter, _teacher_alone
 
     gate, counter = Gate(every=100, attempts=2), _Counter(steps=100, limit=339)
     assert not gate.due(counter)  # 239 steps left; four attempts may take 240
     counter.limit = 340
     assert gate.due(counter)
     curriculum = Curriculum(stages=(0,), reference=0.0, tolerance=0.0)
-    gate.check(teacher, curriculum, counter, seed=3, field_config=None)
+    alone = PractisedPolicy(teacher, None, handover=TEACHER_ALONE)  # the teacher plays every decision
+    gate.check(alone, curriculum, counter, seed=3, field_config=None)
     # The check replays the attempts the teacher's reference is measured on.
     played = evaluate(teacher, attempts_per_configuration=2, seed=round_seed(3, 10_000))
     steps = sum(-(-len(a.frames) // 30) for a in played.attempts)
     assert counter.steps == 100 + steps and gate.last_step == counter.steps
-    assert curriculum.finished is ((played.goals - played.own_goals) / 4 >= 0.0)
+    passes = (played.goals - played.own_goals) / 4 >= 0.0
+    assert curriculum.finished is passes
+    assert (gate.scored(alone) is not alone) is passes  # a policy that passes is kept, as a copy
     assert _teacher_alone(teacher, 3, None, gate)[1] == (played.goals - played.own_goals) / 4
 
 

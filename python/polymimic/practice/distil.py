@@ -35,7 +35,15 @@ from polymimic.env import PenaltyKickEnv
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import CurvePoint
 from polymimic.practice.practised import PractisedPolicy
-from polymimic.practice.teacher import Curriculum, Gate, TeacherPractice, _Counter, _RollIn, _teacher_alone
+from polymimic.practice.teacher import (
+    TEACHER_ALONE,
+    Curriculum,
+    Gate,
+    TeacherPractice,
+    _Counter,
+    _RollIn,
+    _teacher_alone,
+)
 
 __all__ = ["distil"]
 
@@ -78,7 +86,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
         return PractisedPolicy(teacher, actor, handover=handover, method="distil", steps=counter.steps)
 
     def score(mark: int) -> None:
-        result = evaluate(practised(earning.earned), attempts_per_configuration=evaluation_attempts,
+        result = evaluate(checks.scored(practised(TEACHER_ALONE)), attempts_per_configuration=evaluation_attempts,
                           seed=evaluation_seed, field_config=field_config)
         curve.append(CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals,
                                 result.own_goals, 0, 0))
@@ -112,7 +120,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
             model.learn(total_timesteps=10 * steps + 1, callback=Budget(), reset_num_timesteps=False)
             _freeze_actor(model, frozen=False)
         score(mark)
-    return TeacherPractice(policy=practised(earning.earned), curve=curve, steps=counter.steps)
+    return TeacherPractice(policy=checks.scored(practised(TEACHER_ALONE)), curve=curve, steps=counter.steps)
 
 
 def _dagger(teacher: ImitatorPolicy, model: Any, counter: _Counter, until: int, teacher_acts: bool,

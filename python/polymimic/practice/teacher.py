@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import pickle
 from collections.abc import Callable, Sequence
 from typing import Any
 
@@ -115,6 +116,9 @@ class Gate:
     attempts: int = 25
     checks: int = 0
     last_step: int = 0
+    passed: PractisedPolicy | None = None
+    """A copy of the last policy a check passed (None before any): what practice scores, so that
+    learning on after a check cannot move the policy scored."""
 
     def due(self, counter: _Counter) -> bool:
         """A check is due, and fits in the steps left to the checkpoint (a minute per attempt)."""
@@ -131,14 +135,21 @@ class Gate:
         steps = sum(math.ceil(len(a.frames) / _FRAMES_PER_STEP) for a in played.attempts)
         return steps, (played.goals - played.own_goals) / len(played.attempts)
 
-    def check(self, policy: Any, curriculum: Curriculum, counter: _Counter, seed: int, field_config: Any) -> None:
+    def check(self, policy: PractisedPolicy, curriculum: Curriculum, counter: _Counter, seed: int,
+              field_config: Any) -> None:
         """Plays ``policy`` on the gate's practice attempts, counts their steps and lets
-        ``curriculum`` judge their mean return."""
+        ``curriculum`` judge their mean return; a policy that passes is kept, copied."""
         self.checks += 1
         steps, mean_return = self.play(policy, seed, field_config)
         counter.steps += steps
         self.last_step = counter.steps
-        curriculum.checked(mean_return)
+        if curriculum.checked(mean_return):  # the actor copied (its network learns on), the teacher shared
+            self.passed = PractisedPolicy(policy.guide, pickle.loads(pickle.dumps(policy.actor)),
+                                          handover=policy.handover, method=policy.method, steps=policy.steps)
+
+    def scored(self, teacher_alone: PractisedPolicy) -> PractisedPolicy:
+        """The policy a checkpoint scores: the last one passed, else ``teacher_alone``."""
+        return teacher_alone if self.passed is None else self.passed
 
 
 _FRAMES_PER_STEP = 30
@@ -237,7 +248,7 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
         return PractisedPolicy(teacher, actor, handover=handover, method="jsrl", steps=counter.steps)
 
     def score(mark: int) -> None:
-        result = evaluate(practised(schedule.earned), attempts_per_configuration=evaluation_attempts,
+        result = evaluate(checks.scored(practised(TEACHER_ALONE)), attempts_per_configuration=evaluation_attempts,
                           seed=evaluation_seed,
                           field_config=field_config)
         curve.append(CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals,
@@ -263,7 +274,7 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
         if counter.steps < mark:
             model.learn(total_timesteps=10 * steps + 1, callback=Budget(), reset_num_timesteps=False)
         score(mark)
-    return TeacherPractice(policy=practised(schedule.earned), curve=curve, steps=counter.steps)
+    return TeacherPractice(policy=checks.scored(practised(TEACHER_ALONE)), curve=curve, steps=counter.steps)
 
 
 def _teacher_alone(teacher: ImitatorPolicy, seed: int, field_config: Any, gate: Gate) -> tuple[int, float]:

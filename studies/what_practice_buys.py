@@ -23,11 +23,9 @@ import statistics
 import time
 from typing import Any
 
+from _benchmark_run import imitators
 from polymimic._atomic import atomic_write_text
-from polymimic._native import PrimitiveRecognizer, TrialResult
 from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.datasets import load_demonstrations
-from polymimic.learning import ImitatorPolicy, segmented
 from polymimic.practice.methods import METHODS, practise
 
 
@@ -43,20 +41,15 @@ def main() -> None:
     os.environ.setdefault("OMP_NUM_THREADS", "1")  # torch on a small machine: one thread learns fastest
     run = BenchmarkDir(options.run_dir)
     config = run.open(None)
-    recognizer = PrimitiveRecognizer.load(run.recognizer_path)
     segmenter = dataclasses.asdict(config.segmenter)
     per_configuration = config.benchmark.attempts_per_configuration
     done: dict[str, Any] = json.loads(options.out.read_text()) if options.out.exists() else {}
     profiles = options.profiles or list(config.benchmark.profiles)
     for profile in profiles:
-        batch = segmented(load_demonstrations(run.crowd_path(profile)), recognizer, **segmenter)
-        for trial_seed in range(options.trials):
+        for trial_seed, policy in imitators(run, config, profile, options.trials):
             key = f"{options.method}/{profile}/{trial_seed}/{options.steps}"
             if key in done:
                 continue
-            trial = TrialResult.from_json(run.trial_path(profile, trial_seed).read_text())
-            policy = ImitatorPolicy(trial, recognizer=recognizer, config=config.learning, control="improved",
-                                    demonstrations=batch, body=config.imitator_body())
             started = time.perf_counter()
             result = practise(policy, method=options.method, steps=options.steps, seed=trial_seed,
                               evaluation_seed=config.seeds.evaluation, evaluation_attempts=per_configuration,

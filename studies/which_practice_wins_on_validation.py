@@ -24,11 +24,9 @@ import statistics
 import time
 from typing import Any
 
+from _benchmark_run import imitators
 from polymimic._atomic import atomic_write_text
-from polymimic._native import PrimitiveRecognizer, TrialResult
 from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.datasets import load_demonstrations
-from polymimic.learning import ImitatorPolicy, segmented
 from polymimic.practice.methods import METHODS, practise
 
 
@@ -44,20 +42,15 @@ def main() -> None:
     os.environ.setdefault("OMP_NUM_THREADS", "1")  # torch on a small machine: one thread learns fastest
     run = BenchmarkDir(options.run_dir)
     config = run.open(None)
-    recognizer = PrimitiveRecognizer.load(run.recognizer_path)
     segmenter = dataclasses.asdict(config.segmenter)
     settings = config.benchmark
     done: dict[str, Any] = json.loads(options.out.read_text()) if options.out.exists() else {}
     for profile in options.profiles:
-        batch = segmented(load_demonstrations(run.crowd_path(profile)), recognizer, **segmenter)
-        for trial_seed in range(options.trials):
+        for trial_seed, policy in imitators(run, config, profile, options.trials):
             for method in options.methods:
                 key = f"{method}/{profile}/{trial_seed}/{options.steps}"
                 if key in done:
                     continue
-                trial = TrialResult.from_json(run.trial_path(profile, trial_seed).read_text())
-                policy = ImitatorPolicy(trial, recognizer=recognizer, config=config.learning, control="improved",
-                                        demonstrations=batch, body=config.imitator_body())
                 started = time.perf_counter()
                 result = practise(policy, method=method, steps=options.steps, seed=trial_seed,
                                   evaluation_seed=settings.validation_seed,
@@ -66,8 +59,9 @@ def main() -> None:
                 curve = [[p.checkpoint, p.steps, p.net_goals] for p in result.curve]
                 done[key] = {"curve": curve, "seconds": round(time.perf_counter() - started, 1)}
                 atomic_write_text(options.out, json.dumps(done, indent=1) + "\n")
-                print(f"{key}: {curve[0][2]:+.0f} -> {curve[-1][2]:+.0f} of "
-                      f"{2 * settings.validation_attempts_per_configuration} ({done[key]['seconds']:.0f} s)", flush=True)
+                scored = 2 * settings.validation_attempts_per_configuration
+                print(f"{key}: {curve[0][2]:+.0f} -> {curve[-1][2]:+.0f} of {scored} ({done[key]['seconds']:.0f} s)",
+                      flush=True)
     summarise(done, options)
 
 

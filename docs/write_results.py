@@ -196,6 +196,19 @@ def benchmark_table() -> str | None:
             + measured_by("benchmark.json"))
 
 
+def benchmark_targets() -> str | None:
+    """The benchmark's targets, checked on the committed file as the run's report checks them."""
+    benchmark = load("benchmark.json")
+    if benchmark is None:
+        return None
+    from polymimic.benchmark.targets import check_targets
+
+    verdict = {True: "met", False: "**missed**", None: "n/a"}
+    lines = ["| target | measured | verdict |", "| --- | --- | --- |"]
+    lines += [f"| {t['statement']} | {t['measured']} | {verdict[t['met']]} |" for t in check_targets(benchmark)]
+    return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
+
+
 def practice_curves() -> dict[str, list[list[list[float]]]] | None:
     """practice.json's curves by profile (each ``[checkpoint, steps played, net goals]``)."""
     practice = load("practice.json")
@@ -304,6 +317,7 @@ TABLES: dict[str, tuple[str, Callable[[], str | None]]] = {
     "matrix_polymimic": ("results/matrix.md", lambda: matrix_table("polymimic")),
     "matrix_bco": ("results/matrix.md", lambda: matrix_table("bco")),
     "benchmark": ("results/benchmark.md", benchmark_table),
+    "benchmark_targets": ("results/benchmark.md", benchmark_targets),
     "practice": ("results/practice.md", practice_table),
 }
 """Each table's name, the page it sits in, and what writes it."""

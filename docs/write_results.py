@@ -252,10 +252,12 @@ def practice_summary() -> str | None:
     moves = "; ".join(
         f"`{profile}` {statistics.fmean(r[0][2] for r in runs):.1f} → "
         f"{statistics.fmean(r[-1][2] for r in runs):.1f}" for profile, runs in curves.items())
-    steps = int(next(iter(curves.values()))[0][-1][0])
+    steps = f"{int(next(iter(curves.values()))[0][-1][0]):,}".replace(",", " ")
+    gains = [statistics.fmean(r[-1][2] - r[0][2] for r in runs) for runs in curves.values()]
+    verdict = "; it does not yet make the imitator better" if max(gains) < 1 else ""
     return (f"**Practice** (`{made['command']}`, {made['world']}): practising by `{practice_method()}` for "
-            f"{steps:,}".replace(",", " ") + f" environment steps, the imitator's net goals per 50 moved: {moves} "
-            "([practice](docs/results/practice.md)).")
+            f"{steps} environment steps, the imitator's net goals per 50 moved: {moves}{verdict} "
+"([practice](docs/results/practice.md)).")
 
 
 def benchmark_summary() -> str | None:

@@ -196,6 +196,26 @@ def benchmark_table() -> str | None:
             + measured_by("benchmark.json"))
 
 
+def skill_table() -> str | None:
+    """How the LP ranks each crowd's members against their true skill, per profile."""
+    benchmark = load("benchmark.json")
+    if benchmark is None:
+        return None
+
+    def mean(value: dict[str, float | None], digits: int = 2) -> str:
+        return "–" if value["mean"] is None else f"{value['mean']:.{digits}f}"
+
+    lines = ["| profile | ρ(LP, true skill) | τ(LP, true skill) | ρ(own net goals, true skill) | "
+             "a member of the highest true skill on top (LP) |", "| --- | --- | --- | --- | --- |"]
+    for name, profile in benchmark["profiles"].items():
+        recovery, trials = profile["skill_recovery"], profile["trials"]
+        top = recovery["top_among_best"]
+        lines.append(f"| {name} | {mean(recovery['spearman'])} | {mean(recovery['kendall'])} | "
+                     f"{mean(profile['skill_by_outcomes']['spearman'])} | "
+                     f"{'–' if top is None else f'{top} of {trials}'} |")
+    return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
+
+
 def benchmark_targets() -> str | None:
     """The benchmark's targets, checked on the committed file as the run's report checks them."""
     benchmark = load("benchmark.json")
@@ -320,6 +340,7 @@ TABLES: dict[str, tuple[str, Callable[[], str | None]]] = {
     "matrix_bco": ("results/matrix.md", lambda: matrix_table("bco")),
     "benchmark": ("results/benchmark.md", benchmark_table),
     "benchmark_targets": ("results/benchmark.md", benchmark_targets),
+    "benchmark_skill": ("results/benchmark.md", skill_table),
     "practice": ("results/practice.md", practice_table),
 }
 """Each table's name, the page it sits in, and what writes it."""

@@ -101,21 +101,33 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
     again (the same demonstrations, hyperparameters and the first trial's seed), so it is
     evaluated here rather than fitted twice; the choice was made before, on validation alone."""
     profile, method, trial_json = job
-    settings, seeds = shared.config.benchmark, shared.config.seeds
+    settings = shared.config.benchmark
     if method == "offline_rl":
         return _offline_tuning(shared, profile)
     tuning = baselines.tune(method, shared.profiles[profile].demonstrations, budget=settings.tuning_budget,
-                            validation_seed=settings.validation_seed,
-                            attempts_per_configuration=settings.validation_attempts_per_configuration,
-                            evaluation_seed=seeds.evaluation,
-                            evaluation_attempts_per_configuration=settings.attempts_per_configuration,
-                            seed=seeds.first_trial, field_config=shared.config.field,
-                            max_samples=settings.max_decision_samples,
-                            **_baseline_inputs(shared, profile, method, trial_json))
+                            **_tuning_inputs(shared), **_baseline_inputs(shared, profile, method, trial_json))
+    return _tuned(shared, profile, method, tuning)
+
+
+def _tuning_inputs(shared: Shared) -> dict[str, Any]:
+    """What every baseline's tuning takes from the config: the validation and evaluation
+    attempts, the first trial's seed, the field and the sample cap."""
+    settings, seeds = shared.config.benchmark, shared.config.seeds
+    return {"validation_seed": settings.validation_seed,
+            "attempts_per_configuration": settings.validation_attempts_per_configuration,
+            "evaluation_seed": seeds.evaluation,
+            "evaluation_attempts_per_configuration": settings.attempts_per_configuration,
+            "seed": seeds.first_trial, "field_config": shared.config.field,
+            "max_samples": settings.max_decision_samples}
+
+
+def _tuned(shared: Shared, profile: str, method: str, tuning: Any) -> dict[str, Any]:
+    """A tuning task's answer: the choice, every candidate's validation score, and the chosen
+    policy's evaluation after the first trial."""
     return {"profile": profile, "method": method, "chosen": tuning.chosen,
             "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
             "validation_attempts": len(tuning.validation_attempts),
-            "evaluation": _evaluated(shared, profile, method, seeds.first_trial, tuning.policy)}
+            "evaluation": _evaluated(shared, profile, method, shared.config.seeds.first_trial, tuning.policy)}
 
 
 def _offline_tuning(shared: Shared, profile: str) -> dict[str, Any]:
@@ -127,21 +139,12 @@ def _offline_tuning(shared: Shared, profile: str) -> dict[str, Any]:
     from polymimic.baselines.offline_hyperparameters import candidates
 
     torch.set_num_threads(1)
-    settings, seeds = shared.config.benchmark, shared.config.seeds
+    settings = shared.config.benchmark
     tried = [dataclasses.replace(h, gradient_steps=settings.offline_gradient_steps)
              for h in candidates(settings.tuning_budget)]
-    tuning = offline_rl.tune(shared.profiles[profile].demonstrations, candidates=tried,
-                             validation_seed=settings.validation_seed,
-                             attempts_per_configuration=settings.validation_attempts_per_configuration,
-                             evaluation_seed=seeds.evaluation,
-                             evaluation_attempts_per_configuration=settings.attempts_per_configuration,
-                             seed=seeds.first_trial, field_config=shared.config.field,
-                             max_samples=settings.max_decision_samples,
+    tuning = offline_rl.tune(shared.profiles[profile].demonstrations, candidates=tried, **_tuning_inputs(shared),
                              **_baseline_inputs(shared, profile, "offline_rl", None))
-    return {"profile": profile, "method": "offline_rl", "chosen": tuning.chosen,
-            "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
-            "validation_attempts": len(tuning.validation_attempts),
-            "evaluation": _evaluated(shared, profile, "offline_rl", seeds.first_trial, tuning.policy)}
+    return _tuned(shared, profile, "offline_rl", tuning)
 
 
 def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:

@@ -214,7 +214,9 @@ def test_field_configs_are_checked_whole_by_name():
 def test_bad_episode_arguments_are_named():
     with pytest.raises(ValueError, match="configuration must be 1 or 2, got 3"):
         polymimic.Episode(configuration=3)
-    with pytest.raises(ValueError, match='body must be "lego", "tiny", "humanoid" or a polymimic.bodies.WheeledBody'):
+    # The body is a polymimic.Body: an unknown name is named, with the built-in ones and how to describe one's own.
+    with pytest.raises(ValueError, match='unknown body "wheelbarrow": the built-in bodies are lego, tiny, humanoid; '
+                                         'describe a body of your own with polymimic.bodies.WheeledBody'):
         polymimic.Episode("wheelbarrow")
     with pytest.raises(ValueError, match="field config"):
         polymimic.Episode(config='{"time_limit_s": 1.0}')

@@ -32,7 +32,7 @@ import numpy as np
 from polymimic.baselines.evaluation import ball_as_read
 from polymimic.bodies import field_length_mm
 from polymimic.env import PenaltyKickEnv
-from polymimic.learning import ImitatorPolicy, evaluate
+from polymimic.learning import ImitatorPolicy
 from polymimic.practice.curve import CurvePoint
 from polymimic.practice.practised import PractisedPolicy
 from polymimic.practice.teacher import (
@@ -40,8 +40,11 @@ from polymimic.practice.teacher import (
     Curriculum,
     Gate,
     TeacherPractice,
+    _checkpoints,
     _Counter,
+    _practised,
     _RollIn,
+    _scored,
     _teacher_alone,
 )
 
@@ -63,9 +66,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
     from polymimic.baselines import ppo
     from polymimic.baselines.ppo_bc import Pretraining, clone_into
 
-    marks = sorted(set(checkpoints if checkpoints is not None else np.linspace(0, steps, 6).astype(int).tolist()))
-    if not marks or marks[0] < 0 or marks[-1] > steps:
-        raise ValueError(f"checkpoints must lie in 0..{steps}, got {marks}")
+    marks = _checkpoints(checkpoints, steps)
     counter = _Counter()
     checks = gate if gate is not None else Gate()
     _, reference = _teacher_alone(teacher, seed, field_config, checks)
@@ -81,15 +82,11 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
     phase_ends = [min(steps, dagger_rounds * dagger_steps), min(steps, dagger_rounds * dagger_steps + warmup_steps)]
 
     def practised(handover: int) -> PractisedPolicy:
-        actor = ppo.PPOPolicy(model, feature_set="goal_relative", frames_per_action=30,
-                              total_timesteps=counter.steps, method="distil", body=teacher.body)
-        return PractisedPolicy(teacher, actor, handover=handover, method="distil", steps=counter.steps)
+        return _practised(teacher, model, counter, "distil", handover)
 
     def score(mark: int) -> None:
-        result = evaluate(checks.scored(practised(TEACHER_ALONE)), attempts_per_configuration=evaluation_attempts,
-                          seed=evaluation_seed, field_config=field_config)
-        curve.append(CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals,
-                                result.own_goals, 0, 0))
+        curve.append(_scored(checks.scored(practised(TEACHER_ALONE)), mark, counter, evaluation_attempts,
+                             evaluation_seed, field_config))
 
     class Budget(BaseCallback):  # type: ignore[misc, unused-ignore]
         def _on_step(self) -> bool:

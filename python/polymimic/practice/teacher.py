@@ -229,9 +229,7 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     """
     from polymimic.baselines import ppo
 
-    marks = sorted(set(checkpoints if checkpoints is not None else np.linspace(0, steps, 6).astype(int).tolist()))
-    if not marks or marks[0] < 0 or marks[-1] > steps:
-        raise ValueError(f"checkpoints must lie in 0..{steps}, got {marks}")
+    marks = _checkpoints(checkpoints, steps)
     checks = gate if gate is not None else Gate()
     typical, reference = _teacher_alone(teacher, seed, field_config, checks)
     schedule = Curriculum.stepping_down(handover_start if handover_start is not None else typical, stages,
@@ -243,16 +241,11 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     curve: list[CurvePoint] = []
 
     def practised(handover: int) -> PractisedPolicy:
-        actor = ppo.PPOPolicy(model, feature_set="goal_relative", frames_per_action=30,
-                              total_timesteps=counter.steps, method="jsrl", body=teacher.body)
-        return PractisedPolicy(teacher, actor, handover=handover, method="jsrl", steps=counter.steps)
+        return _practised(teacher, model, counter, "jsrl", handover)
 
     def score(mark: int) -> None:
-        result = evaluate(checks.scored(practised(TEACHER_ALONE)), attempts_per_configuration=evaluation_attempts,
-                          seed=evaluation_seed,
-                          field_config=field_config)
-        curve.append(CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals,
-                                result.own_goals, 0, 0))
+        curve.append(_scored(checks.scored(practised(TEACHER_ALONE)), mark, counter, evaluation_attempts,
+                             evaluation_seed, field_config))
         if on_checkpoint is not None:
             on_checkpoint(curve)
 
@@ -275,6 +268,32 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
             model.learn(total_timesteps=10 * steps + 1, callback=Budget(), reset_num_timesteps=False)
         score(mark)
     return TeacherPractice(policy=checks.scored(practised(TEACHER_ALONE)), curve=curve, steps=counter.steps)
+
+
+def _checkpoints(checkpoints: Sequence[int] | None, steps: int) -> list[int]:
+    """The checkpoints a practice of ``steps`` is scored at (default: every fifth of the budget);
+    a ``ValueError`` for one outside ``0..steps``."""
+    marks = sorted(set(checkpoints if checkpoints is not None else np.linspace(0, steps, 6).astype(int).tolist()))
+    if not marks or marks[0] < 0 or marks[-1] > steps:
+        raise ValueError(f"checkpoints must lie in 0..{steps}, got {marks}")
+    return marks
+
+
+def _practised(teacher: ImitatorPolicy, model: Any, counter: _Counter, method: str, handover: int) -> PractisedPolicy:
+    """The teacher for ``handover`` decisions, then the PPO ``model`` deciding from the tracker's view."""
+    from polymimic.baselines import ppo
+
+    actor = ppo.PPOPolicy(model, feature_set="goal_relative", frames_per_action=30,
+                          total_timesteps=counter.steps, method=method, body=teacher.body)
+    return PractisedPolicy(teacher, actor, handover=handover, method=method, steps=counter.steps)
+
+
+def _scored(policy: PractisedPolicy, mark: int, counter: _Counter, evaluation_attempts: int, evaluation_seed: int,
+            field_config: Any) -> CurvePoint:
+    """``policy`` scored at checkpoint ``mark`` on the evaluation attempts."""
+    result = evaluate(policy, attempts_per_configuration=evaluation_attempts, seed=evaluation_seed,
+                      field_config=field_config)
+    return CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals, result.own_goals, 0, 0)
 
 
 def _teacher_alone(teacher: ImitatorPolicy, seed: int, field_config: Any, gate: Gate) -> tuple[int, float]:

@@ -23,9 +23,9 @@ def teacher(expert_imitator):
 def practised(teacher):
     from polymimic.practice.teacher import Gate, jsrl
 
-    # A gate always open (any return is within 2 of the teacher's): each check earns a stage.
+    # A gate always open (no pair of returns is 10 apart): each check earns a stage.
     return jsrl(teacher, steps=600, checkpoints=[0, 600], evaluation_attempts=2, handover_start=4, stages=2,
-                tolerance=2.0, gate=Gate(every=100, attempts=1), n_steps=64, batch_size=32)
+                tolerance=10.0, gate=Gate(every=100, attempts=1), n_steps=64, batch_size=32)
 
 
 def test_at_the_start_the_practised_policy_is_its_teacher_bit_for_bit(teacher, practised):
@@ -46,18 +46,28 @@ def test_every_step_counts_the_teachers_roll_ins_too_and_the_budget_holds(practi
     assert practised.policy.handover == 0  # both stages earned: the learner plays alone
 
 
-def test_a_stage_is_earned_only_when_a_check_nets_what_the_teacher_nets():
+def test_a_stage_is_earned_only_when_a_check_shows_the_policy_no_worse_than_the_teacher_with_confidence():
     from polymimic.practice.teacher import TEACHER_ALONE, Curriculum
 
-    curriculum = Curriculum.stepping_down(12, 3, reference=0.8, tolerance=0.1)
+    teacher = (1, 0, 1, 0, 1, 0, 1, 0)
+    curriculum = Curriculum.stepping_down(12, 3, reference=teacher, tolerance=0.1, confidence_z=2.0)
     assert curriculum.stages == (8, 4, 0) and curriculum.handover == 8
-    assert not curriculum.checked(0.69) and curriculum.earned == TEACHER_ALONE  # below 0.8 - 0.1
-    assert curriculum.checked(0.71) and (curriculum.earned, curriculum.handover) == (8, 4)
-    assert curriculum.checked(0.9) and (curriculum.earned, curriculum.handover) == (4, 0) and not curriculum.finished
-    assert curriculum.checked(0.9) and curriculum.finished
-    assert (curriculum.earned, curriculum.handover) == (0, 0)  # the last stage: the learner alone, kept
+    # Differences (0, 0, -1, 0, 0, 0, 0, 0): mean -1/8, sd sqrt(1/8), lower bound -1/8 - 2 / 8 < -0.1.
+    assert curriculum.lower_bound((1, 0, 0, 0, 1, 0, 1, 0)) == pytest.approx(-0.125 - 2 * (1 / 8) ** 0.5 / 8 ** 0.5)
+    assert not curriculum.checked((1, 0, 0, 0, 1, 0, 1, 0)) and curriculum.earned == TEACHER_ALONE
+    # The same mean as the teacher's, but by luck on two attempts: -0 - 2 * sd / sqrt(8) = -0.378.
+    assert not curriculum.checked((0, 1, 1, 0, 1, 0, 1, 0)) and curriculum.earned == TEACHER_ALONE
+    assert curriculum.checked(teacher) and (curriculum.earned, curriculum.handover) == (8, 4)
+    assert curriculum.checked((1, 1, 1, 1, 1, 1, 1, 1)) and (curriculum.earned, curriculum.handover) == (4, 0)
+    assert not curriculum.finished and curriculum.checked(teacher) and curriculum.finished
+    assert (curriculum.earned, curriculum.handover, curriculum.best) == (0, 0, 0.5)
+    # The learner alone, kept: a later policy must also net more on the check's attempts.
+    assert not curriculum.checked(teacher) and curriculum.best == 0.5
+    assert curriculum.checked((1, 1, 1, 1, 1, 1, 1, 1)) and curriculum.best == 1.0
     with pytest.raises(ValueError, match="stages must be decreasing handovers ≥ 0, got \\(2, 5\\)"):
-        Curriculum(stages=(2, 5), reference=0.5)
+        Curriculum(stages=(2, 5), reference=(0.5,))
+    with pytest.raises(ValueError, match="a check plays the reference's 8 attempts, got 2 returns"):
+        curriculum.checked((1, 1))
 
 
 def test_a_check_plays_practice_attempts_counts_their_steps_and_fits_before_the_checkpoint(teacher):
@@ -69,17 +79,17 @@ def test_a_check_plays_practice_attempts_counts_their_steps_and_fits_before_the_
     assert not gate.due(counter)  # 239 steps left; four attempts may take 240
     counter.limit = 340
     assert gate.due(counter)
-    curriculum = Curriculum(stages=(0,), reference=0.0, tolerance=0.0)
+    played = evaluate(teacher, attempts_per_configuration=2, seed=round_seed(3, 10_000))
+    returns = [{"goal": 1.0, "own_goal": -1.0}.get(a.outcome, 0.0) for a in played.attempts]
+    curriculum = Curriculum(stages=(0,), reference=returns, tolerance=0.0)
     alone = PractisedPolicy(teacher, None, handover=TEACHER_ALONE)  # the teacher plays every decision
     gate.check(alone, curriculum, counter, seed=3, field_config=None)
-    # The check replays the attempts the teacher's reference is measured on.
-    played = evaluate(teacher, attempts_per_configuration=2, seed=round_seed(3, 10_000))
+    # The check replays the attempts the teacher's reference is measured on: the teacher passes.
     steps = sum(-(-len(a.frames) // 30) for a in played.attempts)
     assert counter.steps == 100 + steps and gate.last_step == counter.steps
-    passes = (played.goals - played.own_goals) / 4 >= 0.0
-    assert curriculum.finished is passes
-    assert (gate.scored(alone) is not alone) is passes  # a policy that passes is kept, as a copy
-    assert _teacher_alone(teacher, 3, None, gate)[1] == (played.goals - played.own_goals) / 4
+    assert curriculum.finished and curriculum.best == sum(returns) / 4
+    assert gate.scored(alone) is not alone  # a policy that passes is kept, as a copy
+    assert _teacher_alone(teacher, 3, None, gate)[1] == returns
 
 
 def test_practise_names_its_methods_and_refuses_others(teacher):
@@ -118,7 +128,7 @@ def test_distilling_clones_the_teacher_then_fine_tunes_within_the_budget(teacher
 
     # A gate always open: the actor replaces the teacher at its first check.
     taught = distil(teacher, steps=900, checkpoints=[0, 300, 900], evaluation_attempts=2, dagger_rounds=1,
-                    dagger_steps=300, warmup_steps=100, tolerance=2.0, gate=Gate(every=1, attempts=1),
+                    dagger_steps=300, warmup_steps=100, tolerance=10.0, gate=Gate(every=1, attempts=1),
                     n_steps=64, batch_size=32)
     alone = evaluate(teacher, attempts_per_configuration=2)
     # Before the actor's first check, the practised policy is the teacher itself.

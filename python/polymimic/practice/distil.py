@@ -13,8 +13,8 @@ fine-tunes from the reward with the teacher's term annealed away.
    at the end of the budget.
 
 The practised policy is the actor alone once it has earned it — a check on practice attempts
-(:class:`~polymimic.practice.teacher.Gate`, after DAgger, counted against the budget) nets at
-least what the teacher nets alone on the same attempts
+(:class:`~polymimic.practice.teacher.Gate`, counted against the budget) shows it no worse than
+the teacher alone on the same attempts, with confidence
 (:class:`~polymimic.practice.teacher.Curriculum`, one stage) — and the teacher until then:
 practice never scores an actor its own play has not shown to hold.
 
@@ -54,13 +54,15 @@ __all__ = ["distil"]
 def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
            evaluation_seed: int = 0, evaluation_attempts: int = 25, dagger_rounds: int = 3,
            dagger_steps: int = 2000, warmup_steps: int = 4000, teacher_weight: float = 1.0,
-           tolerance: float = 0.0, gate: Gate | None = None, field_config: Any = None,
+           tolerance: float = 0.02, gate: Gate | None = None, field_config: Any = None,
            **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by distilling it into a PPO actor and fine-tuning, for ``steps``
     environment steps under ``seed``, scored on the evaluation attempts of ``evaluation_seed``
     at each of ``checkpoints`` (default: every fifth of the budget); the actor replaces the
-    teacher once a check (``gate``: by default every 5 000 steps, on 50 practice attempts) nets
-    at least what the teacher nets alone on the same attempts, less ``tolerance`` per attempt."""
+    teacher once a check (``gate``: by default every 10 000 steps, on 100 practice attempts)
+    shows it no worse than the teacher alone on the same attempts, to within ``tolerance`` net
+    goals per attempt with confidence, and a later actor replaces it when a check shows the same
+    and nets more on the check's attempts."""
     from stable_baselines3.common.callbacks import BaseCallback  # type: ignore[import-not-found, unused-ignore]
 
     from polymimic.baselines import ppo
@@ -97,7 +99,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
             if labels and weight > 0 and counter.steps >= phase_ends[1]:
                 step = Pretraining(learning_rate=3e-4 * weight, epochs=1, batch_size=64)
                 clone_into(model, np.array(features), np.array(labels), step, seed=counter.steps)
-            if checks.due(counter) and not earning.finished:
+            if checks.due(counter):
                 checks.check(practised(0), earning, counter, seed, field_config)
 
     dagger_end, warm_end = phase_ends

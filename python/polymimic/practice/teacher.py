@@ -53,33 +53,46 @@ teacher plays every decision."""
 @dataclasses.dataclass
 class Curriculum:
     """The gated curriculum: ``stages`` are the handovers ``h`` in the order they are trained
-    (decreasing, the last 0); a stage is *earned* by a check whose mean return per attempt is at
-    least ``reference - tolerance`` (``reference``: the teacher's mean return alone), and
-    training moves to the next. ``earned`` is the handover of the last earned stage,
-    :data:`TEACHER_ALONE` before any.
+    (decreasing, the last 0). A check plays the practised policy on the attempts the teacher
+    alone netted ``reference`` on (its return on each, in order) and *passes* when, attempt by
+    attempt, the policy is no worse than the teacher with confidence: the mean paired difference
+    less ``confidence_z`` standard errors is at least ``-tolerance`` per attempt. A pass earns
+    the stage (training moves to the next); ``earned`` is the handover of the last earned stage,
+    :data:`TEACHER_ALONE` before any. Once the last stage is earned, checks go on, and a later
+    policy passes only if it also nets more on the check's attempts than the one passed before.
 
-    >>> curriculum = Curriculum(stages=(8, 0), reference=0.8, tolerance=0.05)
-    >>> curriculum.checked(0.7), curriculum.earned
+    Why a confidence bound: a check repeated every few thousand steps on the same attempts
+    passes by luck now and then if it only asks for the teacher's mean; an actor that passed so
+    could then net several goals less than the teacher on other attempts.
+
+    >>> curriculum = Curriculum(stages=(8, 0), reference=(1, 0, 1, 0), tolerance=0.0)
+    >>> curriculum.checked([1, 0, 0, 0]), curriculum.earned
     (False, 3600)
-    >>> curriculum.checked(0.76), curriculum.earned, curriculum.handover
+    >>> curriculum.checked([1, 0, 1, 0]), curriculum.earned, curriculum.handover
     (True, 8, 0)
     """
 
     stages: tuple[int, ...]
-    reference: float
-    tolerance: float = 0.05
+    reference: tuple[float, ...]
+    tolerance: float = 0.02
+    confidence_z: float = 2.0
     earned: int = TEACHER_ALONE
     stage: int = 0
+    best: float = -math.inf
+    """The mean return of the policy last passed at the last stage (-inf before)."""
 
     def __post_init__(self) -> None:
         if not self.stages or any(h < 0 for h in self.stages) or list(self.stages) != sorted(self.stages, reverse=True):
             raise ValueError(f"stages must be decreasing handovers ≥ 0, got {self.stages}")
+        if not self.reference:
+            raise ValueError("reference must hold the teacher's return on at least one attempt")
+        self.reference = tuple(float(r) for r in self.reference)
 
     @classmethod
     def stepping_down(cls, start: int, count: int, **gate: Any) -> Curriculum:
         """``count`` stages evenly from below ``start`` decisions down to 0.
 
-        >>> Curriculum.stepping_down(20, 4, reference=0.5).stages
+        >>> Curriculum.stepping_down(20, 4, reference=(0.5,)).stages
         (15, 10, 5, 0)
         """
         if count < 1:
@@ -96,10 +109,30 @@ class Curriculum:
         """Every stage earned: the learner plays alone."""
         return self.earned == self.stages[-1]
 
-    def checked(self, mean_return: float) -> bool:
-        """One check of :attr:`handover`: earns the stage (and moves on) at the gate."""
-        if mean_return < self.reference - self.tolerance:
+    def lower_bound(self, returns: Sequence[float]) -> float:
+        """The mean of ``returns`` less the teacher's, attempt by attempt, less ``confidence_z``
+        standard errors of that mean (none for a single attempt).
+
+        >>> round(Curriculum(stages=(0,), reference=(0, 0)).lower_bound([1, 0]), 6)  # 0.5 - 2 * 0.7071 / 1.4142
+        -0.5
+        """
+        if len(returns) != len(self.reference):
+            raise ValueError(f"a check plays the reference's {len(self.reference)} attempts, got {len(returns)} returns")
+        differences = np.asarray(returns, dtype=np.float64) - np.asarray(self.reference)
+        spread = float(differences.std(ddof=1)) if len(differences) > 1 else 0.0
+        return float(differences.mean()) - self.confidence_z * spread / math.sqrt(len(differences))
+
+    def checked(self, returns: Sequence[float]) -> bool:
+        """One check of :attr:`handover` from the returns of its attempts: passes at the gate
+        (earning the stage and moving on)."""
+        if self.lower_bound(returns) < -self.tolerance:
             return False
+        mean = float(np.mean(returns))
+        last = self.stage == len(self.stages) - 1
+        if last and self.finished and mean <= self.best:
+            return False
+        if last:
+            self.best = mean
         self.earned = self.stages[self.stage]
         self.stage = min(self.stage + 1, len(self.stages) - 1)
         return True
@@ -110,10 +143,10 @@ class Gate:
     """When and how the practised policy is checked: every ``every`` environment steps of
     learning, on ``attempts`` practice attempts per configuration played as it will be scored —
     always the same ones, those the teacher's reference was measured on, so that a check
-    compares the two on equal attempts rather than on attempts of other difficulty."""
+    compares the two attempt by attempt rather than on attempts of other difficulty."""
 
-    every: int = 5000
-    attempts: int = 25
+    every: int = 10_000
+    attempts: int = 50
     checks: int = 0
     last_step: int = 0
     passed: PractisedPolicy | None = None
@@ -125,25 +158,25 @@ class Gate:
         return (counter.steps - self.last_step >= self.every
                 and counter.limit - counter.steps >= 2 * self.attempts * _ATTEMPT_STEPS)
 
-    def play(self, policy: Any, seed: int, field_config: Any) -> tuple[int, float]:
+    def play(self, policy: Any, seed: int, field_config: Any) -> tuple[int, list[float]]:
         """``policy`` on the gate's practice attempts under ``seed``: the environment steps it
-        took and its mean return (net goals per attempt)."""
+        took and its return on each attempt (1 a goal, -1 an own goal, else 0)."""
         from polymimic.practice.seeds import round_seed
 
         played = evaluate(policy, attempts_per_configuration=self.attempts, seed=round_seed(seed, 10_000),
                           field_config=field_config)
         steps = sum(math.ceil(len(a.frames) / _FRAMES_PER_STEP) for a in played.attempts)
-        return steps, (played.goals - played.own_goals) / len(played.attempts)
+        return steps, [_RETURNS.get(a.outcome, 0.0) for a in played.attempts]
 
     def check(self, policy: PractisedPolicy, curriculum: Curriculum, counter: _Counter, seed: int,
               field_config: Any) -> None:
         """Plays ``policy`` on the gate's practice attempts, counts their steps and lets
-        ``curriculum`` judge their mean return; a policy that passes is kept, copied."""
+        ``curriculum`` judge their returns; a policy that passes is kept, copied."""
         self.checks += 1
-        steps, mean_return = self.play(policy, seed, field_config)
+        steps, returns = self.play(policy, seed, field_config)
         counter.steps += steps
         self.last_step = counter.steps
-        if curriculum.checked(mean_return):  # the actor copied (its network learns on), the teacher shared
+        if curriculum.checked(returns):  # the actor copied (its network learns on), the teacher shared
             self.passed = PractisedPolicy(policy.guide, pickle.loads(pickle.dumps(policy.actor)),
                                           handover=policy.handover, method=policy.method, steps=policy.steps)
 
@@ -152,6 +185,8 @@ class Gate:
         return teacher_alone if self.passed is None else self.passed
 
 
+_RETURNS = {"goal": 1.0, "own_goal": -1.0}
+"""An attempt's return by its outcome (every other outcome 0)."""
 _FRAMES_PER_STEP = 30
 """Tracker frames per environment step (one decision a second)."""
 _ATTEMPT_STEPS = 60
@@ -215,7 +250,7 @@ class TeacherPractice:
 
 def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
          evaluation_seed: int = 0, evaluation_attempts: int = 25, stages: int = 8,
-         handover_start: int | None = None, tolerance: float = 0.0, gate: Gate | None = None,
+         handover_start: int | None = None, tolerance: float = 0.02, gate: Gate | None = None,
          field_config: Any = None,
          on_checkpoint: Callable[[list[CurvePoint]], None] | None = None, **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by jump-start RL for ``steps`` environment steps under ``seed`` (the
@@ -223,9 +258,10 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     evaluation attempts of ``evaluation_seed`` at each of ``checkpoints`` (default: every fifth
     of the budget). The curriculum (:class:`Curriculum`) has ``stages`` handovers from below
     ``handover_start`` decisions (default: the teacher's median scoring attempt) down to 0, each
-    earned when a check (:class:`Gate`: by default every 5 000 steps, on 50 practice attempts)
-    nets at least what the teacher nets alone on the same attempts, less ``tolerance`` per
-    attempt. ``ppo_kwargs`` go to stable-baselines3's PPO.
+    earned when a check (:class:`Gate`: by default every 10 000 steps, on 100 practice attempts)
+    shows the practised policy no worse than the teacher alone on the same attempts, to within
+    ``tolerance`` net goals per attempt with confidence (:meth:`Curriculum.lower_bound`).
+    ``ppo_kwargs`` go to stable-baselines3's PPO.
     """
     from polymimic.baselines import ppo
 
@@ -259,7 +295,7 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
             return counter.steps < counter.limit
 
         def _on_rollout_end(self) -> None:
-            if checks.due(counter) and not schedule.finished:
+            if checks.due(counter):
                 checks.check(practised(schedule.handover), schedule, counter, seed, field_config)
 
     for mark in marks:
@@ -296,13 +332,13 @@ def _scored(policy: PractisedPolicy, mark: int, counter: _Counter, evaluation_at
     return CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals, result.own_goals, 0, 0)
 
 
-def _teacher_alone(teacher: ImitatorPolicy, seed: int, field_config: Any, gate: Gate) -> tuple[int, float]:
+def _teacher_alone(teacher: ImitatorPolicy, seed: int, field_config: Any, gate: Gate) -> tuple[int, list[float]]:
     """On the gate's practice attempts (one-second decisions): the decisions of the teacher's
-    median scoring attempt (of its median attempt when none scores), and its mean return."""
+    median scoring attempt (of its median attempt when none scores), and its return on each."""
     from polymimic.practice.seeds import round_seed
 
     played = evaluate(teacher, attempts_per_configuration=gate.attempts, seed=round_seed(seed, 10_000),
                       field_config=field_config)
     attempts = played.attempts
     scoring = [len(a.frames) for a in attempts if a.outcome == "goal"] or [len(a.frames) for a in attempts]
-    return max(1, math.ceil(float(np.median(scoring)) / 30)), (played.goals - played.own_goals) / len(attempts)
+    return max(1, math.ceil(float(np.median(scoring)) / 30)), [_RETURNS.get(a.outcome, 0.0) for a in attempts]

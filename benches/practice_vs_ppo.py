@@ -1,16 +1,18 @@
 """Practice through the teacher beside ``ppo`` and ``ppo_bc``, at equal environment steps.
 
 On a finished benchmark run, for each of ``--profiles`` (default ``one_good`` and ``half``) and
-each of ``--seeds`` RL seeds: trial 0's ``polymimic`` imitator practises by jump-start RL
-(:func:`polymimic.practice.teacher.jsrl`, the seed its RL seed and its roll-ins' draws), PPO
-learns from scratch and ``ppo_bc`` from the crowd's demonstrations cloned (its tuned
-pretraining, the benchmark's choice), each for ``--steps`` environment steps, all scored on the
-run's evaluation attempts at the same checkpoints. Each finished (method, profile, seed) curve is
-written at once to ``--out`` (JSON): a rerun skips what is there and goes on with the rest.
-``--plot`` draws the curves (mean over seeds) as one picture.
+each of ``--seeds`` RL seeds: trial 0's ``polymimic`` imitator practises (``--practice``, by
+default ``distil``; the seed its RL seed and its practice attempts), PPO learns from scratch and
+``ppo_bc`` from the crowd's demonstrations cloned (its tuned pretraining, the benchmark's
+choice), each for ``--steps`` environment steps, all scored on the run's evaluation attempts at
+the same checkpoints. Each finished (method, profile, seed) curve is written at once to its own
+file in ``--out`` (a directory), so that a rerun skips what is there and goes on with the rest,
+and two processes (one per profile) can share the directory. ``--summary FILE`` gathers every
+curve into one JSON file and ``--plot PNG`` draws them (mean over seeds) as one picture.
 
-Run: ``python studies/how_practice_through_the_teacher_compares_with_rl.py RUN_DIR [--steps 500000]
-[--seeds 0 1 2] [--out FILE] [--plot PNG]`` (needs ``polymimic[rl]``; hours at full size).
+Run: ``python benches/practice_vs_ppo.py RUN_DIR [--steps 500000] [--seeds 0 1 2] [--out DIR]
+[--summary JSON] [--plot PNG]`` (needs ``polymimic[rl]``; about 35 minutes of one core per
+profile and seed at full size).
 """
 
 from __future__ import annotations
@@ -37,7 +39,8 @@ def curve_of(method: str, run: BenchmarkDir, config: Any, profile: str, seed: in
     marks = [c for c in CHECKPOINTS if c <= steps] + ([steps] if steps not in CHECKPOINTS else [])
     per_configuration = config.benchmark.attempts_per_configuration
     demos = load_demonstrations(run.crowd_path(profile))
-    if method == "jsrl":
+    if method in ("jsrl", "distil"):
+        from polymimic.practice.distil import distil
         from polymimic.practice.teacher import jsrl
 
         recognizer = PrimitiveRecognizer.load(run.recognizer_path)
@@ -45,7 +48,7 @@ def curve_of(method: str, run: BenchmarkDir, config: Any, profile: str, seed: in
         trial = TrialResult.from_json(run.trial_path(profile, 0).read_text())
         teacher = ImitatorPolicy(trial, recognizer=recognizer, config=config.learning, control="improved",
                                  demonstrations=batch, body=config.imitator_body())
-        result = jsrl(teacher, steps=steps, seed=seed, checkpoints=marks, evaluation_seed=config.seeds.evaluation,
+        result = (jsrl if method == "jsrl" else distil)(teacher, steps=steps, seed=seed, checkpoints=marks, evaluation_seed=config.seeds.evaluation,
                       evaluation_attempts=per_configuration, field_config=config.field)
         return [[p.checkpoint, p.steps, p.net_goals] for p in result.curve]
     from polymimic.baselines import ppo, ppo_bc
@@ -71,27 +74,35 @@ def main() -> None:
     parser.add_argument("run_dir", help="a finished `polymimic benchmark` run directory")
     parser.add_argument("--profiles", nargs="+", default=["one_good", "half"])
     parser.add_argument("--seeds", nargs="+", type=int, default=[0, 1, 2])
-    parser.add_argument("--methods", nargs="+", default=["jsrl", "ppo_bc", "ppo"])
+    parser.add_argument("--methods", nargs="+", default=["distil", "ppo_bc", "ppo"],
+                        choices=["distil", "jsrl", "ppo_bc", "ppo"])
     parser.add_argument("--steps", type=int, default=500_000)
-    parser.add_argument("--out", type=pathlib.Path, default=pathlib.Path("practice_vs_rl.json"))
+    parser.add_argument("--out", type=pathlib.Path, default=pathlib.Path("practice_vs_ppo"))
+    parser.add_argument("--summary", type=pathlib.Path, help="every curve in --out, gathered into one JSON file")
     parser.add_argument("--plot", type=pathlib.Path)
     options = parser.parse_args()
     os.environ.setdefault("OMP_NUM_THREADS", "1")  # torch on a small machine: one thread learns fastest
     run = BenchmarkDir(options.run_dir)
     config = run.open(None)
-    done: dict[str, Any] = json.loads(options.out.read_text()) if options.out.exists() else {}
+    options.out.mkdir(parents=True, exist_ok=True)
     for profile in options.profiles:
         for seed in options.seeds:
             for method in options.methods:
                 key = f"{method}/{profile}/{seed}/{options.steps}"
-                if key in done:
+                path = options.out / (key.replace("/", "_") + ".json")
+                if path.exists():
+                    json.loads(path.read_text())  # a damaged file is an error, not a result
                     continue
                 started = time.perf_counter()
                 curve = curve_of(method, run, config, profile, seed, options.steps)
-                done[key] = {"curve": curve, "seconds": round(time.perf_counter() - started, 1)}
-                atomic_write_text(options.out, json.dumps(done, indent=1) + "\n")
+                finished = {"key": key, "curve": curve, "seconds": round(time.perf_counter() - started, 1)}
+                atomic_write_text(path, json.dumps(finished) + "\n")
                 print(f"{key}: {curve[-1][2]:+.0f} net goals at {curve[-1][1]} steps "
-                      f"({done[key]['seconds']:.0f} s)", flush=True)
+                      f"({finished['seconds']:.0f} s)", flush=True)
+    done = {v["key"]: {"curve": v["curve"], "seconds": v["seconds"]}
+            for v in (json.loads(p.read_text()) for p in sorted(options.out.glob("*.json")))}
+    if options.summary is not None:
+        atomic_write_text(options.summary, json.dumps(done, indent=1) + "\n")
     if options.plot is not None:
         plot(done, options)
 

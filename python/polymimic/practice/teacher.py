@@ -73,7 +73,7 @@ class Curriculum:
     """
 
     stages: tuple[int, ...]
-    reference: tuple[float, ...]
+    reference: Sequence[float]
     tolerance: float = 0.02
     confidence_z: float = 2.0
     earned: int = TEACHER_ALONE
@@ -117,7 +117,8 @@ class Curriculum:
         -0.5
         """
         if len(returns) != len(self.reference):
-            raise ValueError(f"a check plays the reference's {len(self.reference)} attempts, got {len(returns)} returns")
+            raise ValueError(f"a check plays the reference's {len(self.reference)} attempts, "
+                             f"got {len(returns)} returns")
         differences = np.asarray(returns, dtype=np.float64) - np.asarray(self.reference)
         spread = float(differences.std(ddof=1)) if len(differences) > 1 else 0.0
         return float(differences.mean()) - self.confidence_z * spread / math.sqrt(len(differences))

@@ -35,7 +35,7 @@ from polymimic.baselines.evaluation import play  # noqa: E402
 from polymimic.baselines.hyperparameters import Hyperparameters  # noqa: E402
 from polymimic.baselines.labels import Labelled, command_labels  # noqa: E402
 from polymimic.baselines.training import train  # noqa: E402
-from polymimic.bodies import field_of, onto_field  # noqa: E402
+from polymimic.bodies import as_body, onto_field  # noqa: E402
 from polymimic.datasets import load_demonstrations  # noqa: E402
 from polymimic.field import PRIMITIVES, command_table  # noqa: E402
 from polymimic.step_names import repeat_last_good  # noqa: E402
@@ -48,7 +48,7 @@ KICKS = [row["id"] for row in command_table() if row["name"] in ("Kick Left", "K
 
 def observations(demo, way: str) -> np.ndarray:
     seen = repeat_last_good(np.column_stack([demo.frames[c] for c in OBSERVATION]).astype(np.float64))
-    if field_of(demo.body) != "small" or way == "recorded":
+    if as_body(demo.body).field != as_body("tiny").field or way == "recorded":
         return seen
     if way == "correspondence":
         return onto_field(seen, recorded_by=demo.body)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import dataclasses
 from typing import TYPE_CHECKING
 
-from polymimic.bodies import THESIS_BODIES, WheeledBody, playing_field, resolve
+from polymimic.bodies import THESIS_BODIES, WheeledBody, as_body, resolve
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -44,7 +44,7 @@ def scene_of(body: str | WheeledBody) -> Scene:
     except ValueError:
         raise ValueError(f"body {body!r} is not known in this process: give it as body= (its WheeledBody, whose "
                          f"field the picture draws)") from None
-    field = playing_field(body)
+    field = as_body(body).field
     wheeled = known if isinstance(known, WheeledBody) else THESIS_BODIES.get(known)
     length_mm, width_mm = (wheeled.length_mm, wheeled.width_mm) if wheeled is not None else HUMANOID_FOOTPRINT_MM
     return Scene(field.length_mm, field.width_mm, float(field.goal_mouth_mm or 0.0), field.ball_diameter_mm,

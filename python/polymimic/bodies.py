@@ -31,7 +31,6 @@ In a TOML file, each body is a table (see :func:`bodies_from_tables`)::
 from __future__ import annotations
 
 import dataclasses
-import functools
 import json
 import math
 import numbers
@@ -45,8 +44,7 @@ import numpy.typing as npt
 from polymimic import _native
 
 __all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Body", "Field", "Slip", "WheeledBody", "as_body",
-           "bodies_from_tables", "field_length_mm", "field_of", "onto_field", "pitch_of", "playing_field", "reach_mm",
-           "thesis_field"]
+           "bodies_from_tables", "onto_field"]
 
 Body = _native.Body
 
@@ -352,7 +350,7 @@ class WheeledBody:
         """The description of a body the native side hands back: its constants and its field's
         sizes as JSON (a thesis field's by its name)."""
         c, sizes = json.loads(constants), Field(**json.loads(field_sizes))
-        field: FieldSpec = next((name for name in FIELDS if thesis_field(name) == sizes), sizes)
+        field: FieldSpec = next((name for name in FIELDS if _thesis_field(name) == sizes), sizes)
         return cls(c["name"], length_mm=c["length_mm"], width_mm=c["width_mm"], wheel_base_mm=c["wheel_base_mm"],
                    top_wheel_speed_mm_s=c["top_wheel_speed_mm_s"], motor_lag_s=c["tau_linear_s"],
                    turn_lag_s=c["tau_angular_s"],
@@ -362,23 +360,14 @@ class WheeledBody:
                    fresh_slip_frames=c["traction_refresh_frames"])
 
 
-@functools.cache
-def thesis_field(name: str) -> Field:
-    """A thesis field's sizes (``"large"`` or ``"small"``), as the simulated field has them (its
-    bodies play on it).
-
-    >>> thesis_field("small").length_mm, thesis_field("large").length_mm
-    (560.0, 1020.0)
-    """
-    seen = _native.Episode("lego" if name == "large" else "tiny").observation()
-    length_mm, width_mm = seen["field"]
-    return Field(length_mm, width_mm, seen["goal_mouth_mm"], seen["ball_diameter_mm"])
+def _thesis_field(name: str) -> Field:
+    """A thesis field's sizes (``"large"`` or ``"small"``): the field its body plays on."""
+    return Body("lego" if name == "large" else "tiny").field
 
 
-def _field_of(body: str | WheeledBody) -> Field:
-    """The sizes of the field ``body`` (or the body so named) plays on."""
-    field = body.field if isinstance(body, WheeledBody) else field_of(body)
-    return field if isinstance(field, Field) else thesis_field(field)
+def _field_of(body: WheeledBody) -> Field:
+    """The sizes of the field ``body`` plays on."""
+    return body.field if isinstance(body.field, Field) else _thesis_field(body.field)
 
 
 def _slip_from(value: Any, where: str) -> SlipSpec:
@@ -450,73 +439,6 @@ THESIS_BODIES: dict[str, WheeledBody] = _thesis_bodies()
 _building_thesis_bodies = False
 
 
-def field_of(body: str) -> FieldSpec:
-    """The field a body plays on (``"large"``, ``"small"`` or a :class:`Field`): a thesis
-    body's, or a :class:`WheeledBody`'s made in this process.
-
-    >>> field_of("tiny"), field_of("humanoid")
-    ('small', 'large')
-    """
-    if body in THESIS_BODY_FIELDS:
-        return THESIS_BODY_FIELDS[body]
-    with _lock:
-        known = _described.get(body)
-    if known is None:
-        raise ValueError(f"unknown body {body!r}: describe it (polymimic.bodies.WheeledBody, or its [bodies.{body}] "
-                         f"table) before learning from its demonstrations")
-    return known.field
-
-
-def playing_field(body: str | WheeledBody) -> Field:
-    """The size of the field ``body`` plays on (``lego`` and ``humanoid``: 1020 × 810 mm;
-    ``tiny``: 560 × 345 mm; a :class:`WheeledBody`, its own field's).
-
-    >>> playing_field("tiny")
-    Field(length_mm=560.0, width_mm=345.0, goal_mouth_mm=172.5, ball_diameter_mm=25.0)
-    """
-    if not isinstance(body, WheeledBody):
-        resolve(body)  # a name no body has is refused as the simulated field refuses it
-    return _field_of(body)
-
-
-def field_length_mm(body: str | WheeledBody) -> float:
-    """The length (goal to goal, mm) of the field ``body`` plays on: a built-in body's name, a
-    :class:`WheeledBody` or the name of one made in this process.
-
-    >>> field_length_mm("humanoid"), field_length_mm("tiny")
-    (1020.0, 560.0)
-    """
-    return _field_of(body).length_mm
-
-
-def pitch_of(body: str | WheeledBody) -> str:
-    """The field a body plays on as the learner reads it: ``"large"``, ``"small"``, or the
-    sizes of a :class:`Field` as JSON.
-
-    >>> pitch_of("tiny")
-    'small'
-    """
-    field = body.field if isinstance(body, WheeledBody) else field_of(body)
-    if isinstance(field, str):
-        return field
-    sizes = field.sizes()
-    return json.dumps({k: sizes[k] for k in ("length_mm", "width_mm", "goal_mouth_mm")})
-
-
-
-def reach_mm(body: str | WheeledBody, *, imitating: bool = False) -> float:
-    """How far from its centre ``body`` moves the ball, mm: the ball's radius beyond a wheeled
-    body's front (half its length), or, demonstrating, beyond the humanoid's kicking foot at full
-    reach (``imitating``, the humanoid walks into the ball, even over its own set with a kick). The
-    learner's correspondence between bodies keeps a touch a touch (:func:`onto_field`).
-
-    >>> reach_mm("lego"), reach_mm("tiny"), reach_mm("humanoid"), reach_mm("humanoid", imitating=True)
-    (120.0, 20.0, 160.0, 85.0)
-    """
-    made = as_body(body)
-    return float(made.imitating_reach_mm if imitating else made.reach_mm)
-
-
 def onto_field(observations: npt.ArrayLike, *, recorded_by: str | WheeledBody,
                imitator: str | WheeledBody = "lego") -> npt.NDArray[np.float64]:
     """Observations ``(n, 5)`` (robot x, y (mm), heading (rad), ball x, y (mm)) of a demonstration
@@ -528,7 +450,7 @@ def onto_field(observations: npt.ArrayLike, *, recorded_by: str | WheeledBody,
     line onto goal line); across it, the goal mouth maps onto the goal mouth and the rest of each
     half onto the rest, so a goal stays a goal, an own goal an own goal and a ball in play in
     play, whatever the mouths' share of the widths. The robot keeps its heading and its bearing
-    from the ball; its distance from the ball maps by the bodies' :func:`reach_mm` (the
+    from the ball; its distance from the ball maps by the bodies' reach (``Body.reach_mm``, the
     demonstrator's as it played, the imitator's as it imitates) up to the demonstrator's reach,
     so a touch stays a touch, and beyond it at the fields' scale. Without the ball (NaN) the
     robot maps as a point of the field. Mapped back, a frame is itself (to rounding); in its own

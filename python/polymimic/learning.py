@@ -27,7 +27,7 @@ from polymimic._arguments import integer
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelFileError, ModelResult, SegmentedDemonstrations, TrialResult
 from polymimic._toml import dumps, loads
-from polymimic.bodies import WheeledBody, body_name, pitch_of, reach_mm, resolve
+from polymimic.bodies import WheeledBody, as_body, body_name, resolve
 from polymimic.field import Demonstration, _field_config, as_frames, record
 from polymimic.imitator_file import PolicyInputs, read_policy_file, write_policy_file
 from polymimic.stepping import predict as predict_with
@@ -168,7 +168,7 @@ def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.Primi
     segments = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
     return SegmentedDemonstrations(
         [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
-          "pitch": pitch_of(d.body), "reach_mm": reach_mm(d.body)}
+          "body": as_body(d.body)}
          for d, s in zip(demonstrations, segments)],
         frame_counts=[len(d.frames) for d in demonstrations])
 

@@ -28,7 +28,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from polymimic._native import EpisodeBatch
-from polymimic.bodies import WheeledBody, body_name, playing_field, resolve
+from polymimic.bodies import WheeledBody, as_body, body_name, resolve
 from polymimic.env import _check_configuration, observation_space
 from polymimic.field import OUTCOMES, PRIMITIVE_SETS, _field_config
 
@@ -74,7 +74,7 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
                                    body=resolve(body))
         self.body = body_name(body)
         self.frames_per_action = int(frames_per_action)
-        field = playing_field(body)
+        field = as_body(body).field
         self.single_observation_space = observation_space((field.length_mm, field.width_mm))
         self.primitives = PRIMITIVE_SETS["humanoid" if self.body == "humanoid" else "wheeled"]
         self.single_action_space = gymnasium.spaces.Discrete(len(self.primitives))

@@ -12,7 +12,7 @@ import pytest
 import polymimic
 from polymimic import record
 from polymimic._toml import loads
-from polymimic.bodies import THESIS_BODIES, Slip, WheeledBody, bodies_from_tables, field_of
+from polymimic.bodies import THESIS_BODIES, Slip, WheeledBody, as_body, bodies_from_tables
 from polymimic.datasets import load_demonstrations, save_demonstrations
 from polymimic.field import check_config
 
@@ -36,7 +36,7 @@ def test_the_thesis_bodies_hold_the_calibrated_constants():
     assert (lego.length_mm, lego.width_mm, lego.wheel_base_mm, lego.top_wheel_speed_mm_s) == (140, 150, 175, 130)
     assert lego.primitives_mm_s["forward"] == (51.55, 47.86) and lego.slip_of("backward") == Slip(0.248, 0.343)
     assert (tiny.field, tiny.wheel_base_mm, tiny.expert_commands) == ("small", 12, False)
-    assert field_of("lego") == "large" and field_of("tiny") == "small"
+    assert (as_body("lego").field.length_mm, as_body("tiny").field.length_mm) == (1020.0, 560.0)
 
 
 def test_a_new_body_drives_as_its_constants_say():
@@ -76,7 +76,7 @@ def test_python_policies_and_built_in_controllers_drive_a_new_body(tmp_path):
     assert {(d.demonstrator, d.body) for d in mine + poor} == {("straight", "rover_test"), ("poor_rover", "rover_test")}
     save_demonstrations(mine + poor, tmp_path / "rover.parquet")
     assert [d.body for d in load_demonstrations(tmp_path / "rover.parquet")] == ["rover_test"] * 4
-    assert field_of("rover_test") == "large"
+    assert as_body("rover_test").field == as_body("lego").field
     with pytest.raises(ValueError, match="the expert controller cannot drive the rover_test body"):
         record("expert", body=rover, configuration=1, n=1)
 
@@ -161,7 +161,7 @@ def test_names_are_one_body_each_and_the_thesis_names_are_the_thesis_bodies():
     WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)  # the same: fine
     with pytest.raises(ValueError, match="body 'twin' is already described with other constants"):
         WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50, field="small")
-    assert field_of("twin") == "large", "the first description stands"
+    assert as_body("twin").field == as_body("lego").field, "the first description stands"
     assert dataclasses.replace(THESIS_BODIES["lego"]) == THESIS_BODIES["lego"]
     with pytest.raises(ValueError, match="body 'lego' is already described with other constants"):
         dataclasses.replace(THESIS_BODIES["lego"], wheel_base_mm=100)
@@ -169,8 +169,9 @@ def test_names_are_one_body_each_and_the_thesis_names_are_the_thesis_bodies():
         WheeledBody("humanoid", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
     with pytest.raises(ValueError, match="a body's name must be a word"):
         WheeledBody("my bot", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
-    with pytest.raises(ValueError, match=r"unknown body 'never_made': describe it"):
-        field_of("never_made")
+    with pytest.raises(ValueError, match='unknown body "never_made": the built-in bodies are lego, tiny, humanoid; '
+                                         'describe a body of your own'):
+        as_body("never_made")
 
 
 def test_a_field_of_ones_own_sets_where_the_goals_are():
@@ -190,8 +191,7 @@ def test_a_field_of_ones_own_sets_where_the_goals_are():
         last = d.frames[-1]
         if d.outcome == "goal":
             assert last["ball_x_mm"] > 750 - 5 and abs(last["ball_y_mm"]) <= 150 + 5
-    assert polymimic.bodies.pitch_of("wide_field_rover") == \
-        '{"length_mm": 1500.0, "width_mm": 1000.0, "goal_mouth_mm": 300.0}'
+    assert as_body("wide_field_rover").field == pitch
     assert WheeledBody.from_table("wide_field_rover", wide.to_table()) == wide
 
 

@@ -7,7 +7,7 @@ import pytest
 
 import polymimic
 from polymimic import learning, recognition
-from polymimic.bodies import THESIS_BODIES, thesis_field
+from polymimic.bodies import THESIS_BODIES, as_body
 
 
 def _learned(body: str, demonstrator: str):
@@ -32,7 +32,7 @@ def test_a_tiny_imitator_plays_on_the_small_field_and_scores(tiny_learned):
     assert policy.body == "tiny"
     result = learning.evaluate(policy, attempts_per_configuration=10, seed=1000)
     assert {a.body for a in result.attempts} == {"tiny"}
-    small = thesis_field("small")
+    small = as_body("tiny").field
     robot_x = np.concatenate([a.frames["robot_x_mm"] for a in result.attempts])
     # Every attempt starts on the small field, 280 mm from its centre to either goal line.
     assert np.abs([a.frames["robot_x_mm"][0] for a in result.attempts]).max() < small.length_mm / 2
@@ -62,7 +62,7 @@ def test_a_described_wheeled_body_is_driven_on_its_own_field(tiny_learned):
     assert policy.body == "tiny_twin"
     result = learning.evaluate(policy, attempts_per_configuration=2, seed=3)
     assert {a.body for a in result.attempts} == {"tiny_twin"}
-    assert np.abs([a.frames["robot_x_mm"][0] for a in result.attempts]).max() < thesis_field("small").length_mm / 2
+    assert np.abs([a.frames["robot_x_mm"][0] for a in result.attempts]).max() < as_body("tiny").field.length_mm / 2
 
 
 def test_a_tiny_imitators_recogniser_reads_its_own_held_out_primitives(tiny_learned):
@@ -124,7 +124,7 @@ def test_a_cloned_policy_drives_the_imitators_body_and_keeps_it_in_its_file(tiny
     assert policy.body == "tiny"
     played = baselines.evaluate_policy(policy, attempts_per_configuration=10, seed=1000)
     assert {a.body for a in played.attempts} == {"tiny"}
-    assert np.abs([a.frames["robot_x_mm"][0] for a in played.attempts]).max() < thesis_field("small").length_mm / 2
+    assert np.abs([a.frames["robot_x_mm"][0] for a in played.attempts]).max() < as_body("tiny").field.length_mm / 2
     assert played.goals >= 5 and played.own_goals <= 1, (played.goals, played.own_goals)
     policy.save(tmp_path / "tiny.pmp")
     again = load_policy(tmp_path / "tiny.pmp")

@@ -59,11 +59,11 @@ def test_practice_stays_within_its_checkpoints_and_learns_its_own_attempts(pract
 
 
 def test_own_attempts_outcomes_are_read_off_the_frames(practised):
-    from polymimic.bodies import playing_field
+    from polymimic.bodies import as_body
     from polymimic.tracks.outcomes import outcome_of
 
     for attempt in practised.attempts:
-        assert outcome_of(attempt.frames, playing_field("lego")) == (attempt.outcome, len(attempt.frames))
+        assert outcome_of(attempt.frames, as_body("lego").field) == (attempt.outcome, len(attempt.frames))
 
 
 def test_practice_seeds_never_meet_the_evaluations(practised):

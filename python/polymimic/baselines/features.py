@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from polymimic.bodies import WheeledBody, field_length_mm
+from polymimic.bodies import WheeledBody, as_body
 
 __all__ = ["FEATURE_NAMES", "FEATURE_SETS", "OBSERVATION_SIZE", "TARGET_GOAL_MM", "check_observations", "features",
            "target_goal_of"]
@@ -62,7 +62,7 @@ def target_goal_of(body: str | WheeledBody) -> tuple[float, float]:
     >>> target_goal_of("lego"), target_goal_of("tiny")
     ((510.0, 0.0), (280.0, 0.0))
     """
-    return (field_length_mm(body) / 2, 0.0)
+    return (as_body(body).field.length_mm / 2, 0.0)
 
 
 def features(observations: np.ndarray, *, feature_set: str,

@@ -55,7 +55,7 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.bodies import WheeledBody, body_name, field_length_mm, onto_field
+from polymimic.bodies import WheeledBody, as_body, body_name, onto_field
 from polymimic.field import (
     PRIMITIVES,
     WHEELED_EQUIVALENT,
@@ -160,7 +160,7 @@ def observations_of(demo: Demonstration, imitator: str | WheeledBody = IMITATOR_
     frames = demo.frames
     obs = repeat_last_good(np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
                                                                  "ball_x_mm", "ball_y_mm")]).astype(np.float64))
-    if field_length_mm(demo.body) <= field_length_mm(imitator):
+    if as_body(demo.body).field.length_mm <= as_body(imitator).field.length_mm:
         return obs
     mapped = onto_field(obs, recorded_by=demo.body, imitator=imitator)
     mapped[:, [0, 1]] = mapped[:, [3, 4]] + (obs[:, [0, 1]] - obs[:, [3, 4]])

@@ -32,7 +32,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from polymimic.baselines.labels import NO_LABEL, Labelled
-from polymimic.bodies import WheeledBody, playing_field
+from polymimic.bodies import WheeledBody, as_body
 from polymimic.field import Demonstration
 from polymimic.step_names import repeat_last_good
 
@@ -65,7 +65,7 @@ def outcome_read(frames: np.ndarray, *, body: str | WheeledBody) -> str:
     ball = repeat_last_good(np.column_stack([frames["ball_x_mm"], frames["ball_y_mm"]]).astype(np.float64))[-1]
     if not np.isfinite(ball).all():
         raise ValueError("frames never read the ball: no outcome can be read off them")
-    field = playing_field(body)
+    field = as_body(body).field
     x_mm, y_mm = float(ball[0]), float(ball[1])
     if abs(x_mm) >= field.half_length_mm - LINE_TOLERANCE_MM:
         if abs(y_mm) <= field.goal_half_mouth_mm:

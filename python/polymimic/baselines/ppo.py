@@ -33,7 +33,7 @@ import numpy as np
 
 from polymimic.baselines.features import FEATURE_NAMES, check_observations, features, target_goal_of
 from polymimic.baselines.files import write_policy_file
-from polymimic.bodies import WheeledBody, body_name, field_length_mm
+from polymimic.bodies import WheeledBody, as_body, body_name
 
 __all__ = ["FEATURE_SCALE", "Checkpoint", "PPOPolicy", "available", "fit", "learning_curve", "new_model", "scaled",
            "steps_to_reach"]
@@ -105,7 +105,7 @@ def scaled(observations: np.ndarray, feature_set: str, imitator: str | WheeledBo
     """
     values = features(observations, feature_set=feature_set, target_goal_mm=target_goal_of(imitator))
     millimetres = np.array([name.endswith("_mm") for name in FEATURE_NAMES[feature_set]])
-    scale = FEATURE_SCALE * (field_length_mm(imitator) / field_length_mm(IMITATOR_BODY))
+    scale = FEATURE_SCALE * (as_body(imitator).field.length_mm / as_body(IMITATOR_BODY).field.length_mm)
     values[:, millimetres] = values[:, millimetres] / scale
     return values.astype(np.float32)
 
@@ -220,7 +220,7 @@ def new_model(*, frames_per_action: int = 30, feature_set: str = "goal_relative"
     from polymimic.baselines.evaluation import ball_as_read
     from polymimic.env import PenaltyKickEnv
 
-    length_mm = field_length_mm(imitator)
+    length_mm = as_body(imitator).field.length_mm
 
     class Scaled(gymnasium.ObservationWrapper):  # type: ignore[misc, unused-ignore]
         """The scaled features of what the robot sees, the ball out of sight read as it is in

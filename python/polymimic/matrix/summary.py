@@ -8,12 +8,13 @@ transfer ratio (the cell over its row's own-body cell, docs/results/matrix.md), 
 
 from __future__ import annotations
 
+import json
 import pathlib
 from collections.abc import Mapping, Sequence
 from typing import Any
 
 from polymimic import __version__
-from polymimic.bodies import pitch_of, playing_field, reach_mm
+from polymimic.bodies import Field, as_body
 from polymimic.matrix.config import MatrixConfig, demonstrator_sets, stored_column
 from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning
 from polymimic.matrix.rundir import MatrixDir
@@ -24,6 +25,16 @@ __all__ = ["FORMAT", "HEAT_MAP", "VERSION", "draw_heat_map", "gather", "transfer
 
 FORMAT, VERSION = "polymimic.matrix", 1
 HEAT_MAP = "matrix_heat_map.png"
+
+
+def _pitch(field: Field) -> str:
+    """The field as ``matrix.json`` names it: ``"large"`` (the Lego's and the humanoid's),
+    ``"small"`` (the tiny's) or its sizes as JSON."""
+    for name, body in (("large", "lego"), ("small", "tiny")):
+        if field == as_body(body).field:
+            return name
+    sizes = field.sizes()
+    return json.dumps({k: sizes[k] for k in ("length_mm", "width_mm", "goal_mouth_mm")})
 
 
 def transfer(cell: float | None, own: float | None) -> float | None:
@@ -70,10 +81,10 @@ def gather(run: MatrixDir, config: MatrixConfig) -> dict[str, Any]:
     cells: dict[str, dict[str, Any]] = {}
     for row in settings.imitators:
         body = config.body(row)
-        field = playing_field(body)
+        field = as_body(body).field
         imitators[row] = {"field": {"length_mm": field.length_mm, "width_mm": field.width_mm,
                                     "goal_mouth_mm": field.goal_mouth_mm, "ball_diameter_mm": field.ball_diameter_mm},
-                          "pitch": pitch_of(body), "reach_mm": reach_mm(body, imitating=True),
+                          "pitch": _pitch(field), "reach_mm": as_body(body).imitating_reach_mm,
                           "primitives": own_set if body == "humanoid" else "wheeled"}
         cells[row] = {column: _cell(run, config, row, column) for column in config.columns()}
         own_cell = cells[row].get("own_body")  # no transfer ratio where the own-body column is left out

@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from polymimic import _native
-from polymimic.bodies import reach_mm, resolve
+from polymimic.bodies import as_body, resolve
 from polymimic.field import PRIMITIVE_SETS, Demonstration, as_frames, primitive_command
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.playing import play_episode
@@ -33,7 +33,7 @@ def explored_attempts(policy: ImitatorPolicy, *, attempts_per_configuration: int
         raise ValueError(f"epsilon must be a probability in [0, 1], got {epsilon!r}")
     body = policy.body
     driven = resolve(body)
-    near_mm = 4.0 * reach_mm(body, imitating=True) if near_ball_mm is None else float(near_ball_mm)
+    near_mm = 4.0 * as_body(body).imitating_reach_mm if near_ball_mm is None else float(near_ball_mm)
     own = PRIMITIVE_SETS["humanoid" if body == "humanoid" else "wheeled"]
     commands = [primitive_command(p, driven) for p in own[:5]]
     out = []

@@ -30,7 +30,7 @@ from typing import Any
 
 from polymimic import _native
 from polymimic._native import SegmentedDemonstrations
-from polymimic.bodies import pitch_of, playing_field, reach_mm
+from polymimic.bodies import as_body
 from polymimic.field import Demonstration, _field_config
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import DEFAULT_CHECKPOINTS, CurvePoint
@@ -106,7 +106,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     per_round = _whole("attempts_per_round", attempts_per_round, 1)
     marks = _checkpoints(checkpoints, budget)
     made_from = _trained(policy)
-    field = playing_field(made_from.body)
+    field = as_body(made_from.body).field
     body_name = policy.body
     learned: list[Demonstration] = []
     own: SegmentedDemonstrations | None = None
@@ -178,9 +178,9 @@ def _segmented(attempts: list[Demonstration], recognizer: Any, body: str,
     """Its own attempts as the world model learns them: segmented by its own recogniser, played on
     its own field with its own reach as an imitator."""
     found = recognizer.segment_many([a.frames for a in attempts], **(segmenter or {}))
-    reach = reach_mm(body, imitating=True)
-    return [{"demonstrator": "imitator", "outcome": a.outcome, "segments": s, "pitch": pitch_of(body),
-             "reach_mm": reach} for a, s in zip(attempts, found)]
+    imitator = as_body(body)
+    return [{"demonstrator": "imitator", "outcome": a.outcome, "segments": s, "body": imitator, "imitating": True}
+            for a, s in zip(attempts, found)]
 
 
 def _trained(policy: Any) -> Any:

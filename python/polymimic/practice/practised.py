@@ -25,7 +25,7 @@ import numpy.typing as npt
 from polymimic import _native
 from polymimic._atomic import atomic_path
 from polymimic._native import ModelFileError
-from polymimic.bodies import field_length_mm, resolve
+from polymimic.bodies import as_body, resolve
 from polymimic.field import PRIMITIVE_SETS, primitive_command
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.playing import play_episode
@@ -145,7 +145,7 @@ class PractisedPlayer:
         self._primitives = PRIMITIVE_SETS["humanoid" if policy.body == "humanoid" else "wheeled"]
         driven = resolve(policy.body)
         self._commands = [primitive_command(p, driven) for p in self._primitives[:5]]
-        self._length_mm = field_length_mm(policy.body)
+        self._length_mm = as_body(policy.body).field.length_mm
         self._reset_state()
 
     def _reset_state(self) -> None:

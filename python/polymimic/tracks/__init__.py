@@ -19,7 +19,7 @@ Examples
 """
 
 from polymimic.tracks.errors import LostTrackingWarning, TrackLogError
-from polymimic.tracks.importing import ImportedTracks, import_tracks, playing_field
+from polymimic.tracks.importing import ImportedTracks, import_tracks
 from polymimic.tracks.writing import write_tracks
 
-__all__ = ["ImportedTracks", "LostTrackingWarning", "TrackLogError", "import_tracks", "playing_field", "write_tracks"]
+__all__ = ["ImportedTracks", "LostTrackingWarning", "TrackLogError", "import_tracks", "write_tracks"]

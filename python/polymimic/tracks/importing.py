@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from polymimic.bodies import WheeledBody, body_name, playing_field
+from polymimic.bodies import WheeledBody, as_body, body_name
 from polymimic.field import FRAME_DTYPE, OUTCOMES, UNKNOWN_COMMAND, Demonstration, command_table
 from polymimic.tracks.episodes import (
     Stretch,
@@ -31,7 +31,7 @@ from polymimic.tracks.resampling import grid, heading, held, linear
 from polymimic.tracks.scale import check_scale
 from polymimic.tracks.units import checked_units
 
-__all__ = ["ImportedTracks", "import_tracks", "playing_field"]
+__all__ = ["ImportedTracks", "import_tracks"]
 
 _SHOWN_INVALID = 3
 
@@ -194,7 +194,7 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
     """
     max_gap_s = _max_gap_s(max_gap_s)
     checked = checked_units(units)
-    field = playing_field(body)
+    field = as_body(body).field
     if not isinstance(demonstrator, str) or not demonstrator:
         raise ValueError(f"demonstrator must be a non-empty name, got {demonstrator!r}")
     rate_hz = _rate(rate_hz)

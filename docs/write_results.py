@@ -229,55 +229,138 @@ def benchmark_targets() -> str | None:
     return "\n".join(lines) + "\n\n" + measured_by("benchmark.json")
 
 
-def practice_curves() -> dict[str, list[list[list[float]]]] | None:
-    """practice.json's curves by profile (each ``[checkpoint, steps played, net goals]``)."""
-    practice = load("practice.json")
-    if practice is None:
+COMPARED_AT = (0, 10_000, 25_000, 50_000, 100_000, 250_000, 500_000)
+"""The checkpoints the practice-against-RL table shows (environment steps)."""
+
+
+def _at(curve: list[list[float]], steps: int) -> float | None:
+    """A curve's net goals at ``steps``: its last point played within them (None before its first)."""
+    points = [p[2] for p in curve if p[1] <= steps]
+    return points[-1] if points else None
+
+
+def _mean_curves(compared: dict[str, Any]) -> dict[tuple[str, str], list[list[list[float]]]]:
+    """Per (method, profile): the seeds' curves, each ``[checkpoint, steps played, net goals]``."""
+    out: dict[tuple[str, str], list[list[list[float]]]] = {}
+    for key, entry in compared.items():
+        method, profile = key.split("/")[:2]
+        out.setdefault((method, profile), []).append(entry["curve"])
+    return out
+
+
+def first_reaching(curves: list[list[list[float]]], score: float) -> int | None:
+    """The fewest environment steps at which the seeds' mean (each seed's latest point) reaches
+    ``score`` (None: never within the curves).
+
+    >>> first_reaching([[[0, 0, 30], [10, 10, 40]], [[0, 0, 36], [10, 10, 46]]], 43)
+    10
+    """
+    marks = sorted({int(p[1]) for c in curves for p in c})
+    for mark in marks:
+        values = [_at(c, mark) for c in curves]
+        if all(v is not None for v in values) and statistics.fmean(v for v in values if v is not None) >= score:
+            return mark
+    return None
+
+
+def practice_vs_ppo_table() -> str | None:
+    """Mean net goals over seeds at the compared checkpoints, a row per method and profile, and
+    the comparison's targets."""
+    compared = load("practice_vs_ppo.json")
+    if compared is None:
         return None
-    curves: dict[str, list[list[list[float]]]] = {}
-    for key, entry in practice.items():
-        curves.setdefault(key.split("/")[1], []).append(entry["curve"])
-    return curves
-
-
-def practice_method() -> str:
-    practice = load("practice.json") or {}
-    return next(iter(practice)).split("/")[0] if practice else "?"
-
-
-def practice_table() -> str | None:
-    """Mean (sd) net goals over the practised trials at every checkpoint, per profile."""
-    curves = practice_curves()
-    if curves is None:
-        return None
-    first = next(iter(curves.values()))[0]
-    header = ["0 steps" if c[0] == 0 else f"{int(c[0]):,}".replace(",", " ") for c in first]
-    lines = ["| profile | trials | " + " | ".join(header) + " |", "| --- " * (len(header) + 2) + "|"]
-    for profile, runs in curves.items():
+    curves = _mean_curves(compared)
+    header = ["0 steps" if c == 0 else f"{c:,}".replace(",", " ") for c in COMPARED_AT]
+    lines = ["| profile | method | seeds | " + " | ".join(header) + " |", "| --- " * (len(header) + 3) + "|"]
+    for (method, profile), runs in sorted(curves.items(), key=lambda kv: (kv[0][1], kv[0][0])):
         cells = []
-        for i in range(len(first)):
-            values = [run[i][2] for run in runs]
-            sd = statistics.stdev(values) if len(values) > 1 else 0.0
-            cells.append(f"{statistics.fmean(values):.1f} ({sd:.1f})")
-        lines.append(f"| {profile} | {len(runs)} | " + " | ".join(cells) + " |")
-    return "\n".join(lines) + "\n\n" + measured_by("practice.json")
+        for mark in COMPARED_AT:
+            values = [_at(run, mark) for run in runs]
+            cells.append("—" if any(v is None for v in values)
+                         else f"{statistics.fmean(v for v in values if v is not None):.1f}")
+        lines.append(f"| {profile} | `{method}` | {len(runs)} | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n\n" + measured_by("practice_vs_ppo.json")
+
+
+def practice_targets() -> str | None:
+    """The comparison's targets, each with its measured figure and verdict (mean of the seeds)."""
+    compared = load("practice_vs_ppo.json")
+    if compared is None:
+        return None
+    curves = _mean_curves(compared)
+    methods = sorted({m for m, _ in curves} - {"ppo", "ppo_bc"})
+    verdict = {True: "met", False: "**missed**", None: "n/a"}
+    lines = ["| profile | target | measured | verdict |", "| --- | --- | --- | --- |"]
+    for method in methods:
+        for profile in sorted({p for m, p in curves if m == method}):
+            ours, theirs = curves[(method, profile)], curves.get(("ppo_bc", profile))
+            at_50k = [_at(c, 50_000) for c in ours]
+            reached = statistics.fmean(v for v in at_50k if v is not None) if None not in at_50k else None
+            dip = min(min(p[2] for p in c) - c[0][2] for c in ours)
+            rows = [(f"`{method}` nets ≥ 47 within 50 000 steps",
+                     "—" if reached is None else f"{reached:.1f}", None if reached is None else reached >= 47),
+                    (f"`{method}` never more than 1 below its start (any seed, any checkpoint)", signed(dip, 0),
+                     dip >= -1)]
+            if theirs is not None:
+                rows += _against_ppo_bc(ours, theirs)
+            lines += [f"| {profile} | {t} | {m} | {verdict[v]} |" for t, m, v in rows]
+    return "\n".join(lines) + "\n\n" + measured_by("practice_vs_ppo.json")
+
+
+def _thousands(steps: int | None) -> str:
+    return "never" if steps is None else f"{steps:,}".replace(",", " ")
+
+
+def _against_ppo_bc(ours: list[list[list[float]]],
+                    theirs: list[list[list[float]]]) -> list[tuple[str, str, bool | None]]:
+    """The targets that set practice beside ``ppo_bc``: sooner to every score it reaches, five
+    times sooner to 47 (or its best), and at 250 000 steps at least its last figure."""
+    marks = sorted({int(p[1]) for c in theirs for p in c})
+    means = [statistics.fmean(v for v in (_at(c, mark) for c in theirs) if v is not None) for mark in marks]
+    last, best = marks[-1], max(means)
+    scores = sorted(set(means))
+    # Sooner, or both from the start: a score ppo_bc's cloning already reaches at 0 steps is no race.
+    sooner = [s for s in scores if (steps := first_reaching(ours, s)) is not None
+              and (steps < (first_reaching(theirs, s) or 0) or steps == first_reaching(theirs, s) == 0)]
+    goal = min(47.0, best)
+    ours_to, theirs_to = first_reaching(ours, goal), first_reaching(theirs, goal)
+    ratio = None if ours_to is None or theirs_to is None else (theirs_to / ours_to if ours_to else float("inf"))
+    at_250k = [_at(c, 250_000) for c in ours]
+    mine = statistics.fmean(v for v in at_250k if v is not None) if None not in at_250k else None
+    return [
+        ("fewer steps than `ppo_bc` to every score `ppo_bc` reaches", f"{len(sooner)} of its {len(scores)} scores",
+         len(sooner) == len(scores)),
+        (f"≥ 5× fewer steps than `ppo_bc` to {goal:.1f} (47, or `ppo_bc`'s best mean)",
+         f"{_thousands(ours_to)} against {_thousands(theirs_to)}"
+         + ("" if ratio is None else " (from the start)" if ratio == float("inf") else f" ({ratio:.1f}×)"),
+         None if theirs_to is None else ratio is not None and ratio >= 5),
+        (f"at 250 000 steps at least `ppo_bc`'s {means[-1]:.1f} at {_thousands(last)}",
+         "—" if mine is None else f"{mine:.1f}", None if mine is None else mine >= means[-1]),
+    ]
 
 
 def practice_summary() -> str | None:
     """The README's line on practice."""
-    curves = practice_curves()
-    if curves is None:
+    compared = load("practice_vs_ppo.json")
+    if compared is None:
         return None
-    made = provenance("practice.json")
-    moves = "; ".join(
-        f"`{profile}` {statistics.fmean(r[0][2] for r in runs):.1f} → "
-        f"{statistics.fmean(r[-1][2] for r in runs):.1f}" for profile, runs in curves.items())
-    steps = f"{int(next(iter(curves.values()))[0][-1][0]):,}".replace(",", " ")
-    gains = [statistics.fmean(r[-1][2] - r[0][2] for r in runs) for runs in curves.values()]
-    verdict = "; it does not yet make the imitator better" if max(gains) < 1 else ""
-    return (f"**Practice** (`{made['command']}`, {made['world']}): practising by `{practice_method()}` for "
-            f"{steps} environment steps, the imitator's net goals per 50 moved: {moves}{verdict} "
-"([practice](docs/results/practice.md)).")
+    curves = _mean_curves(compared)
+    made = provenance("practice_vs_ppo.json")
+    method = next(m for m, _ in curves if m not in ("ppo", "ppo_bc"))
+    parts = []
+    for profile in sorted({p for m, p in curves if m == method}):
+        ours = curves[(method, profile)]
+        start, end = statistics.fmean(c[0][2] for c in ours), max(int(p[1]) for c in ours for p in c)
+        at = {mark: [_at(c, mark) for c in ours] for mark in (50_000, end)}
+        shown = "; ".join(f"{statistics.fmean(v for v in values if v is not None):.1f} at {mark:,}".replace(",", " ")
+                          for mark, values in at.items() if None not in values)
+        theirs = curves.get(("ppo_bc", profile))
+        beside = "" if theirs is None else (
+            f" (`ppo_bc` {statistics.fmean(v for v in (_at(c, end) for c in theirs) if v is not None):.1f})")
+        parts.append(f"`{profile}` {start:.1f} → {shown}{beside}")
+    return (f"**Practice** (`{made['command']}`, {made['world']}): practising by `{method}`, the imitator's "
+            f"net goals per 50, mean of {len(next(iter(curves.values())))} seeds: " + "; ".join(parts)
+            + " ([practice](docs/results/practice.md)).")
 
 
 def benchmark_summary() -> str | None:
@@ -341,7 +424,8 @@ TABLES: dict[str, tuple[str, Callable[[], str | None]]] = {
     "benchmark": ("results/benchmark.md", benchmark_table),
     "benchmark_targets": ("results/benchmark.md", benchmark_targets),
     "benchmark_skill": ("results/benchmark.md", skill_table),
-    "practice": ("results/practice.md", practice_table),
+    "practice_vs_ppo": ("results/practice.md", practice_vs_ppo_table),
+    "practice_targets": ("results/practice.md", practice_targets),
 }
 """Each table's name, the page it sits in, and what writes it."""
 

@@ -4,8 +4,7 @@ trials of each profile practise by ``--method`` for ``--steps`` environment step
 
 Each finished curve is written at once to ``--out`` (JSON, under 300 kB at the default size), so
 a rerun goes on where it stopped; the summary prints one JSON line per profile: the mean net
-goals at each checkpoint over the trials, and the deepest dip below the start. ``--out`` is the
-file docs/results/practice.json is made from.
+goals at each checkpoint over the trials, and the deepest dip below the start.
 
 Run: ``python studies/what_practice_buys.py RUN_DIR [--method distil] [--trials 3]
 [--steps 50000] [--profiles one_good half] [--out FILE]`` (``jsrl`` and ``distil`` need

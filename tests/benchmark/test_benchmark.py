@@ -24,8 +24,11 @@ demonstrations_per_configuration = 2
 attempts_per_configuration = 2
 validation_attempts_per_configuration = 1
 tuning_budget = 1
+methods = ["polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
+           "bc", "bc_best", "random"]
 practice_steps = 300
 practice_trials = 1
+practice_method = "refine"
 [profiles.pair]
 members = [{ controller = "expert", lapse = 0.0, name = "good" }, { controller = "expert", lapse = 1.0, name = "bad" }]
 [profiles.duo]
@@ -461,6 +464,7 @@ def test_export_reads_the_config_asked_for_as_the_benchmark_does(benchmarked, ti
 PPO_BC = """
 [benchmark]
 methods = ["polymimic", "polymimic_practice", "ppo_bc"]
+practice_method = "refine"
 ppo_timesteps = 4096
 ppo_eval_every = 4096
 ppo_runs = 1

@@ -55,7 +55,7 @@ def benchmarked(tmp_path_factory):
 
 def _practise(run, *extra, workers="1"):
     return cli.main(["practice", "--run-dir", str(run), "--steps", "150", "--trials", "1", "--quiet",
-                     "--workers", workers, *extra])
+                     "--workers", workers, *(extra or ("--method", "refine"))])
 
 
 def test_a_reproductions_improved_imitators_practise_beside_its_results(reproduced, capsys):
@@ -86,7 +86,7 @@ def test_a_rerun_redoes_only_what_is_missing_or_damaged(reproduced, capsys):
     first[1].write_text(first[1].read_text()[:-20])
     capsys.readouterr()
     assert cli.main(["practice", "--run-dir", str(reproduced), "--steps", "150", "--trials", "1",
-                     "--workers", "1"]) == 0
+                     "--workers", "1", "--method", "refine"]) == 0
     err = capsys.readouterr().err
     assert "practised 2 imitators" in err and "is damaged" in err and "making it again" in err
     assert (folder / "practice.json").read_bytes() == before
@@ -108,9 +108,22 @@ def test_a_benchmarks_imitators_practise_and_two_workers_give_the_same_bits(benc
     (["--trials", "3"], "--trials 3: the run has 2 trials per profile"),
 ])
 def test_bad_input_is_one_line(benchmarked, capsys, extra, message):
-    assert cli.main(["practice", "--run-dir", str(benchmarked), "--quiet", *extra]) == 2
+    assert cli.main(["practice", "--run-dir", str(benchmarked), "--quiet", "--method", "refine", *extra]) == 2
     err = capsys.readouterr().err.strip()
     assert message in err and len(err.splitlines()) == 1
+
+
+def test_the_default_method_without_the_rl_extra_says_how_to_install_it(benchmarked, capsys, monkeypatch):
+    import importlib.util
+
+    real = importlib.util.find_spec
+    monkeypatch.setattr(importlib.util, "find_spec",
+                        lambda name, *a: None if name == "stable_baselines3" else real(name, *a))
+    assert cli.main(["practice", "--run-dir", str(benchmarked), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.endswith('--method distil: practice by distil needs stable-baselines3 and torch: pip install '
+                        '"polymimic[rl]" (refine and explore need neither)') and len(err.splitlines()) == 1
+    assert not (benchmarked / "practice" / "25000_steps_distil").exists()  # refused before anything is made
 
 
 def test_a_directory_that_is_no_run_is_refused(tmp_path, capsys):

@@ -30,17 +30,20 @@ from typing import Any
 
 from polymimic._toml import write_table, write_value
 from polymimic.crowds import PROFILES, Crowd
+from polymimic.practice.methods import DEFAULT_METHOD as DEFAULT_PRACTICE
 from polymimic.practice.methods import METHODS as PRACTICE_METHODS
 from polymimic.runs.config import ConfigError, RunConfig, as_table, checked_section, in_range, read_config, toml_tables
 
 __all__ = ["FROM_THE_REWARD", "METHODS", "OPTIONAL_METHODS", "WORLD_WEIGHTINGS", "BenchmarkConfig", "BenchmarkSettings"]
 
-METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
-           "bc", "bc_best", "random")
+METHODS = ("polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "bco", "bco_lp", "bc", "bc_best",
+           "random")
 """The methods a benchmark compares by default (docs/results/benchmark.md, docs/guides/practice.md)."""
 
-OPTIONAL_METHODS = ("ppo", "ppo_bc", "offline_rl")
-"""Methods run only when named: ``ppo`` learns from the reward rather than from demonstrations,
+OPTIONAL_METHODS = ("polymimic_practice", "ppo", "ppo_bc", "offline_rl")
+"""Methods run only when named: ``polymimic_practice`` is polymimic's imitator after practice
+(``practice_method``, by default ``distil``, which needs stable-baselines3: ``pip install
+"polymimic[rl]"``; docs/guides/practice.md); ``ppo`` learns from the reward rather than from demonstrations,
 needs stable-baselines3 (``pip install "polymimic[rl]"``) and took 13 minutes of one core per
 million environment steps in the run docs/results/benchmark.md quotes (:mod:`polymimic.baselines.ppo`); ``ppo_bc``
 clones each crowd's commands first, then learns from the reward as ``ppo`` does, so it runs
@@ -98,8 +101,8 @@ class BenchmarkSettings:
     practice_steps: int = _doc("environment steps polymimic_practice's imitators practise for, after learning "
                                "(polymimic.practice; scored at 0, 1000, 2500, 5000, 10000, 25000 and 50000 steps "
                                "within it)", 25_000)
-    practice_method: str = _doc("how polymimic_practice's imitators practise: refine, explore or jsrl "
-                                "(polymimic.practice.methods; jsrl needs polymimic[rl])", "refine")
+    practice_method: str = _doc("how polymimic_practice's imitators practise: distil, jsrl, refine or explore "
+                                "(polymimic.practice.methods; distil and jsrl need polymimic[rl])", DEFAULT_PRACTICE)
     practice_trials: int = _doc("trials whose polymimic imitator practises, the first ones (every trial where "
                                 "there are fewer; each practice costs practice_steps)", 5)
     world_weightings: tuple[str, ...] = _doc("the parts of polymimic's world model its LP weighting may reach "

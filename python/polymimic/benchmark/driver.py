@@ -104,6 +104,14 @@ class Benchmark(Stepped):
             if not ppo.available():
                 raise ConfigError("[benchmark] methods: ppo and ppo_bc need stable-baselines3 and torch: "
                                   "pip install \"polymimic[rl]\"")
+        if "polymimic_practice" in config.benchmark.methods:
+            from polymimic.practice.methods import needs_rl_extra
+
+            try:
+                needs_rl_extra(config.benchmark.practice_method)
+            except ModuleNotFoundError as error:
+                raise ConfigError(f"[benchmark] methods: polymimic_practice practises by "
+                                  f"{config.benchmark.practice_method}: {error}") from None
         if "offline_rl" in config.benchmark.methods:
             from polymimic.baselines import offline_rl
 

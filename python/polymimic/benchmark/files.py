@@ -49,9 +49,9 @@ class SavedPPOCurve(TypedDict):
     checkpoints: list[dict[str, Any]]
 
 
-EVALUATED = tuple(dict.fromkeys(METHODS + TRIAL_INDEPENDENT))
+EVALUATED = tuple(dict.fromkeys(METHODS + ("polymimic_practice",) + TRIAL_INDEPENDENT))
 """The methods whose evaluations and tunings the run directory keeps in files of their own (the
-defaults, and offline_rl where named)."""
+defaults, and polymimic_practice and offline_rl where named)."""
 
 
 def load_method_evaluation(path: str | os.PathLike[str]) -> SavedMethodEvaluation:

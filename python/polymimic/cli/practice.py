@@ -3,7 +3,8 @@
 On a benchmark run, polymimic's imitator of each profile; on a reproduction, the improved
 imitator of each experiment: those of the first ``--trials`` trials practise for ``--steps``
 environment steps each and are scored on the run's evaluation attempts at every checkpoint. The
-curves are written beside the run's results, under ``practice/<steps>_steps/``.
+curves are written beside the run's results, under ``practice/<steps>_steps_<method>/``
+(``practice/<steps>_steps/`` for ``refine``).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.cli.common import positive
 from polymimic.learning import segmented
-from polymimic.practice.methods import METHODS
+from polymimic.practice.methods import DEFAULT_METHOD, METHODS, needs_rl_extra
 from polymimic.reproduce.rundir import RunDir
 from polymimic.runs.backends import BACKENDS, TaskRunner
 from polymimic.runs.config import ConfigError
@@ -35,10 +36,11 @@ def add(commands: Any) -> None:
                           help="a finished `polymimic reproduce` or `polymimic benchmark` run directory")
     practice.add_argument("--steps", type=positive, default=25_000,
                           help="environment steps (seconds of play) each imitator practises for (default 25000)")
-    practice.add_argument("--method", choices=METHODS, default="refine",
-                          help="refine: replay its own play, refine its world model (default); explore: play "
-                               "exploring around the ball, learn its physics; jsrl: guide an RL learner (needs "
-                               "polymimic[rl])")
+    practice.add_argument("--method", choices=METHODS, default=DEFAULT_METHOD,
+                          help="distil: distil the imitator into an RL actor and fine-tune it, the actor replacing "
+                               "it only once a check shows it no worse (default; needs polymimic[rl]); jsrl: guide "
+                               "an RL learner (needs polymimic[rl]); refine: replay its own play, refine its world "
+                               "model; explore: play exploring around the ball, learn its physics")
     practice.add_argument("--trials", type=positive, default=5,
                           help="how many trials' imitators practise, the first ones (default 5)")
     practice.add_argument("--only", nargs="+", metavar="NAME",
@@ -113,6 +115,10 @@ def _reproduction_inputs(path: pathlib.Path,
 
 
 def _practice(args: argparse.Namespace) -> int:
+    try:
+        needs_rl_extra(args.method)
+    except ModuleNotFoundError as error:
+        raise ConfigError(f"--method {args.method}: {error}") from None
     kind = _kind(args.run_dir)
     make = _benchmark_inputs if kind == "benchmark" else _reproduction_inputs
     run, inputs, groups, seeds = make(args.run_dir, args)

@@ -1,5 +1,8 @@
 """The ways an imitator practises, by name, behind one call.
 
+- ``distil`` (the default, chosen on validation attempts: docs/guides/practice.md): it is
+  distilled into an RL actor by DAgger, whose critic warms up before PPO fine-tunes it with the
+  teacher's term annealed (:func:`polymimic.practice.distil.distil`; needs the ``rl`` extra).
 - ``refine``: it replays its own policy and refines its world model's ball response and state
   values from its attempts (:func:`polymimic.practice.practice`).
 - ``explore``: it plays exploring around the ball (a random primitive at rate 0.3 when the ball
@@ -7,36 +10,40 @@
   (:mod:`polymimic.practice.exploring`).
 - ``jsrl``: it guides an RL learner by jump-start RL (:func:`polymimic.practice.teacher.jsrl`;
   needs the ``rl`` extra).
-- ``distil``: it is distilled into an RL actor by DAgger, whose critic warms up before PPO
-  fine-tunes it with the teacher's term annealed (:func:`polymimic.practice.distil.distil`;
-  needs the ``rl`` extra).
 """
 
 from __future__ import annotations
 
+import importlib.util
 from typing import Any
 
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.loop import Practice, practice
 
-__all__ = ["EXPLORE_RATE", "METHODS", "practise"]
+__all__ = ["DEFAULT_METHOD", "EXPLORE_RATE", "METHODS", "THROUGH_THE_TEACHER", "needs_rl_extra", "practise"]
 
 METHODS = ("refine", "explore", "jsrl", "distil")
+DEFAULT_METHOD = "distil"
+"""The method that won on validation attempts: never below its teacher there (docs/guides/practice.md)."""
+THROUGH_THE_TEACHER = ("jsrl", "distil")
+"""The methods that train an RL learner (stable-baselines3: the ``rl`` extra)."""
 EXPLORE_RATE = 0.3
 """``explore``'s rate of random primitives with the ball near."""
 
 
-def practise(policy: ImitatorPolicy, *, method: str = "refine", steps: int, seed: int = 0,
+def practise(policy: ImitatorPolicy, *, method: str = DEFAULT_METHOD, steps: int, seed: int = 0,
              evaluation_seed: int = 0, evaluation_attempts: int = 25, field_config: Any = None,
              segmenter: dict[str, Any] | None = None) -> Practice:
     """``policy`` practised by ``method`` (one of :data:`METHODS`) for ``steps`` environment
     steps under ``seed``, scored at the default checkpoints on the evaluation attempts of
     ``evaluation_seed``. A jump-start practice's ``policy`` is a
     :class:`~polymimic.practice.practised.PractisedPolicy` and learns from no attempts of its
-    own (``attempts`` empty)."""
+    own (``attempts`` empty). A ``ModuleNotFoundError`` says how to install the ``rl`` extra a
+    method through the teacher needs where stable-baselines3 is missing."""
     if method not in METHODS:
         raise ValueError(f"unknown practice method {method!r}; expected one of {', '.join(METHODS)}")
-    if method in ("jsrl", "distil"):
+    needs_rl_extra(method)
+    if method in THROUGH_THE_TEACHER:
         from polymimic.practice.curve import DEFAULT_CHECKPOINTS
         from polymimic.practice.distil import distil
         from polymimic.practice.teacher import jsrl
@@ -50,3 +57,10 @@ def practise(policy: ImitatorPolicy, *, method: str = "refine", steps: int, seed
     return practice(policy, steps=steps, seed=seed, evaluation_seed=evaluation_seed,
                     evaluation_attempts=evaluation_attempts, field_config=field_config, segmenter=segmenter,
                     explore=explore, refines=["ball_response"] if method == "explore" else None)
+
+
+def needs_rl_extra(method: str) -> None:
+    """A ``ModuleNotFoundError`` if ``method`` trains an RL learner and stable-baselines3 is missing."""
+    if method in THROUGH_THE_TEACHER and importlib.util.find_spec("stable_baselines3") is None:
+        raise ModuleNotFoundError(f"practice by {method} needs stable-baselines3 and torch: pip install "
+                                  f"\"polymimic[rl]\" (refine and explore need neither)")

@@ -38,7 +38,10 @@ from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
 from polymimic.benchmark.config import FROM_THE_REWARD, BenchmarkConfig
 from polymimic.benchmark.figures import draw_figures
-from polymimic.benchmark.files import (
+from polymimic.benchmark.report import benchmark_html, benchmark_markdown
+from polymimic.benchmark.rundir import BenchmarkDir
+from polymimic.benchmark.summary import gather
+from polymimic.benchmark.task_files import (
     load_controller_skill,
     load_method_evaluation,
     load_ppo_bc_curve,
@@ -47,9 +50,6 @@ from polymimic.benchmark.files import (
     load_tuning,
     load_weighing,
 )
-from polymimic.benchmark.report import benchmark_html, benchmark_markdown
-from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.benchmark.summary import gather
 from polymimic.benchmark.tasks import (
     POLYMIMIC_METHODS,
     PRACTISED,

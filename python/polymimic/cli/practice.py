@@ -17,7 +17,7 @@ from typing import Any
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.cli.common import positive
+from polymimic.cli.run_options import positive
 from polymimic.learning import segmented
 from polymimic.practice.methods import METHODS
 from polymimic.reproduce.rundir import RunDir

@@ -42,9 +42,9 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.crowds import member_seed
 from polymimic.datasets import load_demonstrations, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, record
+from polymimic.matrix.cell_files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig, demonstrator_sets, stored_column
 from polymimic.matrix.draws import pool_size
-from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.pictures import draw_pictures, one_attempt, pictured_attempt_path, pictured_trial
 from polymimic.matrix.report import matrix_html, matrix_markdown
 from polymimic.matrix.rundir import MatrixDir

@@ -24,7 +24,7 @@ from polymimic.plots import MeanSd
 from polymimic.practice.curve import plot_curves
 from polymimic.practice.methods import METHODS, practise
 from polymimic.runs.backends import TaskRunner
-from polymimic.runs.files import integer_key, json_object, name_key
+from polymimic.runs.checked_json import integer_key, json_object, name_key
 from polymimic.runs.progress import progress
 from polymimic.runs.rundir import RunHouse
 from polymimic.runs.stats import mean_sd

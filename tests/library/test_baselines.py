@@ -160,7 +160,7 @@ def held_primitives(plan, *, seed, hold_frames=30):
                     max_frames=hold_frames * len(plan), place=(-300.0, 0.0, 0.0))
 
 
-def test_step_labels_name_each_held_primitive_as_it_was_sent(recognizer):
+def test_window_labels_name_each_held_primitive_as_it_was_sent(recognizer):
     """Primitives held for a second each, in a known order: the second read from a sixth of a
     second into each one (past the body's lag) is named as the primitive sent, nearly every
     move (the test's recogniser learned from 40 sequences only); a stop is named stop where
@@ -169,7 +169,7 @@ def test_step_labels_name_each_held_primitive_as_it_was_sent(recognizer):
     plan = ["forward", "left", "left", "stop", "right", "forward", "backward", "stop", "right", "forward"] * 2
     demos = [held_primitives(plan, seed=s) for s in (5, 6)]
     named = []
-    for labelled in labels.step_labels(demos, recognizer, stride_frames=1):
+    for labelled in labels.window_labels(demos, recognizer, stride_frames=1):
         named.extend(PRIMITIVES[label] if label != NO_LABEL else "gap" for label in labelled.labels[5:-30:30])
     sent = plan[:-1] * 2
     assert len(named) == len(sent)
@@ -179,7 +179,7 @@ def test_step_labels_name_each_held_primitive_as_it_was_sent(recognizer):
     assert stops == ["stop"] * len(stops) and len(stops) == 4
 
 
-def test_step_labels_follow_the_commands_far_better_than_segment_labels(recognizer):
+def test_window_labels_follow_the_commands_far_better_than_segment_labels(recognizer):
     """The Expert turns in about a third of its frames; its segments, grown to the most one
     primitive can move, are nearly all forward. Step labels agree with the commands sent in
     most frames, and in more than segment labels do by a wide margin."""
@@ -191,28 +191,28 @@ def test_step_labels_follow_the_commands_far_better_than_segment_labels(recogniz
         both = (sent != NO_LABEL) & (named != NO_LABEL)
         return (sent[both] == named[both]).mean()
 
-    steps, segments = agreement(labels.step_labels(demos, recognizer)), agreement(bco.labelled(
+    steps, segments = agreement(labels.window_labels(demos, recognizer)), agreement(bco.labelled(
         demos, recognizer=recognizer, labels="segments"))
     assert steps >= 0.8 and steps >= segments + 0.1, (steps, segments)
 
 
-def test_step_labels_at_a_stride_are_the_labels_of_the_frames_named(recognizer):
+def test_window_labels_at_a_stride_are_the_labels_of_the_frames_named(recognizer):
     demos = polymimic.record("expert", configuration=2, n=1, seed=4)
-    every = labels.step_labels(demos, recognizer, stride_frames=1)[0].labels
-    strided = labels.step_labels(demos, recognizer, stride_frames=7)[0].labels
+    every = labels.window_labels(demos, recognizer, stride_frames=1)[0].labels
+    strided = labels.window_labels(demos, recognizer, stride_frames=7)[0].labels
     assert (strided[::7] == every[::7]).all()
     assert (strided == np.repeat(every[::7], 7)[:len(every)]).all()
 
 
-def test_step_labels_at_given_frames_are_the_labels_of_those_frames_alone(recognizer):
+def test_window_labels_at_given_frames_are_the_labels_of_those_frames_alone(recognizer):
     demos = polymimic.record("expert", configuration=2, n=1, seed=4)
-    every = labels.step_labels(demos, recognizer, stride_frames=1)[0].labels
+    every = labels.window_labels(demos, recognizer, stride_frames=1)[0].labels
     frames = np.array([0, 4, 5, 31, len(every) - 1])
-    chosen = labels.step_labels(demos, recognizer, frames=[frames])[0].labels
+    chosen = labels.window_labels(demos, recognizer, frames=[frames])[0].labels
     assert (chosen[frames] == every[frames]).all()
     assert (np.delete(chosen, frames) == NO_LABEL).all()
     with pytest.raises(ValueError, match="frames must list the frames to name for each of the 1 demonstrations, got 2"):
-        labels.step_labels(demos, recognizer, frames=[frames, frames])
+        labels.window_labels(demos, recognizer, frames=[frames, frames])
 
 
 def test_a_fit_seed_draws_which_frames_give_samples():
@@ -247,13 +247,13 @@ def test_fits_under_other_seeds_differ_even_for_a_deterministic_classifier(mixed
 
 def test_bad_step_label_settings_are_refused_by_name(forward_demos, recognizer):
     with pytest.raises(ValueError, match="window_frames must be an integer ≥ 2, got 1"):
-        labels.step_labels(forward_demos, recognizer, window_frames=1)
+        labels.window_labels(forward_demos, recognizer, window_frames=1)
     with pytest.raises(ValueError, match="stride_frames must be an integer ≥ 1, got 0"):
-        labels.step_labels(forward_demos, recognizer, stride_frames=0)
+        labels.window_labels(forward_demos, recognizer, stride_frames=0)
     with pytest.raises(ValueError, match="unknown labels 'frames'; expected one of 'steps', 'segments'"):
         bco.labelled(forward_demos, recognizer=recognizer, labels="frames")
     with pytest.raises(ValueError, match="gap_margin must be a finite number ≥ 0, got nan"):
-        labels.step_labels(forward_demos, recognizer, gap_margin=math.nan)
+        labels.window_labels(forward_demos, recognizer, gap_margin=math.nan)
     for labelling in ("steps", "segments"):
         with pytest.raises(ValueError, match="segmenter has no setting 'stop_rotation'; its settings are "):
             bco.labelled(forward_demos, recognizer=recognizer, labels=labelling, segmenter={"stop_rotation": 10.0})

@@ -63,13 +63,13 @@ from polymimic.matrix.weighing import chosen_weighting, is_weighed
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
 from polymimic.runs.roster_config import demonstrations_expected, record_demonstrator
-from polymimic.runs.steps import Stepped, each_member_recorded
+from polymimic.runs.stages import Staged, each_member_recorded
 
 __all__ = ["Matrix"]
 
 
 @dataclasses.dataclass
-class Matrix(Stepped):
+class Matrix(Staged):
     """One matrix run: its directory, config, where tasks run, and whether to keep quiet."""
 
     run: MatrixDir
@@ -80,15 +80,15 @@ class Matrix(Stepped):
     def run_all(self) -> float:
         """Every step, in order; the seconds they took."""
         started = time.perf_counter()
-        self._step("recognise", self.recognise)
-        self._step("record", self.record)
+        self._stage("recognise", self.recognise)
+        self._stage("record", self.record)
         shared = self.shared()
-        self._step("weigh", lambda: self.weigh(shared))
-        self._step("polymimic", lambda: self.polymimic(shared))
-        self._step("attempts", lambda: self.attempts(shared))
-        self._step("tune", lambda: self.tune(shared))
-        self._step("bco", lambda: self.bco(shared))
-        self._step("report", self.report)
+        self._stage("weigh", lambda: self.weigh(shared))
+        self._stage("polymimic", lambda: self.polymimic(shared))
+        self._stage("attempts", lambda: self.attempts(shared))
+        self._stage("tune", lambda: self.tune(shared))
+        self._stage("bco", lambda: self.bco(shared))
+        self._stage("report", self.report)
         return time.perf_counter() - started
 
     def rows(self) -> tuple[str, ...]:

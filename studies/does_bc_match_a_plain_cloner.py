@@ -32,7 +32,7 @@ from polymimic.baselines.training import SAMPLE_STRIDE_FRAMES  # noqa: E402
 from polymimic.baselines.tuning import validation_attempts  # noqa: E402
 from polymimic.datasets import load_demonstrations  # noqa: E402
 from polymimic.field import PRIMITIVES, command_primitives, primitives_sent  # noqa: E402
-from polymimic.step_names import repeat_last_good  # noqa: E402
+from polymimic.window_names import repeat_last_good  # noqa: E402
 
 OBSERVATION = ("robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm")
 FEATURES = "ball_relative"

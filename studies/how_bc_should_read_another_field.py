@@ -38,7 +38,7 @@ from polymimic.baselines.training import train  # noqa: E402
 from polymimic.bodies import as_body, onto_field  # noqa: E402
 from polymimic.datasets import load_demonstrations  # noqa: E402
 from polymimic.field import PRIMITIVES, command_table  # noqa: E402
-from polymimic.step_names import repeat_last_good  # noqa: E402
+from polymimic.window_names import repeat_last_good  # noqa: E402
 
 OBSERVATION = ("robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm")
 CHOSEN = Hyperparameters("hist_gradient_boosting", (("learning_rate", 0.1), ("max_iter", 100), ("max_leaf_nodes", 31)),

@@ -33,7 +33,7 @@ from polymimic.baselines import inverse_dynamics  # noqa: E402
 from polymimic.baselines.agreement import command_agreement  # noqa: E402
 from polymimic.baselines.evaluation import attempts_of, play  # noqa: E402
 from polymimic.baselines.hyperparameters import TUNED_LABELS, candidates  # noqa: E402
-from polymimic.baselines.labels import step_labels  # noqa: E402
+from polymimic.baselines.labels import window_labels  # noqa: E402
 from polymimic.benchmark.config import BenchmarkConfig  # noqa: E402
 from polymimic.crowds import PROFILES, record_crowd  # noqa: E402
 from polymimic.field import DEMONSTRATORS  # noqa: E402
@@ -55,7 +55,7 @@ def recognizer_and_segmenter():
 def agreements(demos, recognizer, segmenter, model) -> dict:
     """Each labelling's agreement with the commands sent, every frame named."""
     stop_and_gap = {k: segmenter[k] for k in ("stop_distance_mm", "stop_rotation_deg", "gap_margin")}
-    steps = command_agreement(step_labels(demos, recognizer, stride_frames=1, **stop_and_gap), demos)
+    steps = command_agreement(window_labels(demos, recognizer, stride_frames=1, **stop_and_gap), demos)
     inverse = command_agreement(inverse_dynamics.inverse_dynamics_labels(demos, model, stride_frames=1), demos)
     return {"steps": round(steps.agreement, 3), "steps_coverage": round(steps.coverage, 3),
             "inverse_dynamics": round(inverse.agreement, 3), "inverse_dynamics_coverage": round(inverse.coverage, 3)}

@@ -83,3 +83,9 @@ def test_the_graph_is_read():
     assert "polymimic.field" in GRAPH["polymimic.learning"]
     assert "polymimic.runs.config" in GRAPH["polymimic.reproduce.stages"]
     assert _is_application("polymimic.reproduce.stages") and not _is_application("polymimic.recognition")
+
+
+def test_the_practice_command_knows_runs_only_through_their_practice_source():
+    # Each kind of run says what its practice needs (polymimic.runs.practising.PracticeSource).
+    assert not [m for m in GRAPH["polymimic.cli.practice"] if _within(m, APPLICATIONS)]
+    assert "polymimic.runs.practising" in GRAPH["polymimic.cli.practice"]

@@ -54,9 +54,9 @@ def primitive_frames(primitive: str, n: int, rng: np.random.Generator) -> list[n
         speed_mm_s = rng.normal(speed_mean, speed_sd)
         turn_rad_s = np.deg2rad(rng.normal(turn_mean, turn_sd))
         theta_rad = turn_rad_s * t_s
-        step_mm = speed_mm_s / FRAMES_PER_SECOND
-        x_mm = np.concatenate([[0.0], np.cumsum(step_mm * np.cos(theta_rad[:-1]))])
-        y_mm = np.concatenate([[0.0], np.cumsum(step_mm * np.sin(theta_rad[:-1]))])
+        advance_mm = speed_mm_s / FRAMES_PER_SECOND
+        x_mm = np.concatenate([[0.0], np.cumsum(advance_mm * np.cos(theta_rad[:-1]))])
+        y_mm = np.concatenate([[0.0], np.cumsum(advance_mm * np.sin(theta_rad[:-1]))])
         noise = rng.normal(scale=[0.3, 0.3, np.deg2rad(3.0)], size=(FRAMES_PER_SECOND, 3))
         frames = np.stack([x_mm, y_mm, theta_rad], axis=1) + noise
         frames[:, 2] *= THETA_SCALE

@@ -51,7 +51,8 @@ import numpy as np
 from polymimic._arguments import integer
 from polymimic._native import Episode, FieldRunError
 from polymimic.bodies import WheeledBody, body_name, resolve
-from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, _field_config, primitive_command
+from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, primitive_command
+from polymimic.field_config import native_field_config
 from polymimic.plots import state_image
 
 try:
@@ -116,7 +117,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         self.configuration = configuration
         self.frames_per_action = int(frames_per_action)
         self.render_mode = render_mode
-        self._config = _field_config(config)
+        self._config = native_field_config(config)
         self.body, self._body = body_name(body), resolve(body)
         self.primitives = PRIMITIVE_SETS["humanoid" if self.body == "humanoid" else "wheeled"]
         self._commands = [primitive_command(p, self._body) for p in PRIMITIVES]

@@ -14,16 +14,16 @@ Actions, one of the five primitives a step, come from one of two places:
 - ``actions="recognizer"`` (the default): the imitator's own reading of the demonstration —
   learning from observation, as the imitator itself learns (the dataset says so in its
   metadata). Each step takes the primitive the recogniser names for the second of motion from
-  the step's first frame (:func:`polymimic.step_names.name_windows`), as BCO's inverse model
+  the step's first frame (:func:`polymimic.window_names.name_windows`), as BCO's inverse model
   names a transition; a recogniser of the humanoid's own primitives names its side-steps and
-  kick by their wheeled equivalents (``polymimic.field.WHEELED_EQUIVALENT``), in steps and
+  kick by their wheeled equivalents (``polymimic.field.WHEELED_EQUIVALENT``), in windows and
   segments alike. A second too close to call (a gap: no primitive fits, as for a humanoid
   side-step read by a wheeled recogniser) names nothing; its step takes the nearest named step's
   primitive (the earlier on a tie), flagged ``infos["gap"]``. ``labels="segments"`` gives each
   step the primitive most of its frames' segments are named instead (thesis §3.2.2). A segment grows
   until its motion exceeds any one primitive's, so the Expert's are 98 % forward while it turns
   in 31 % of its frames: over ten Expert demonstrations read by the full reproduction's
-  recogniser, the step names agree with the commands sent in 87.1 % of frames, the segments' in
+  recogniser, the window names agree with the commands sent in 87.1 % of frames, the segments' in
   79.3 %, and the commands' own most frequent primitive in 90.7 % (the Expert changes command
   within a second).
 - ``actions="commands"``: the primitive equivalent of the commands the demonstrator sent
@@ -46,7 +46,7 @@ import numpy as np
 from polymimic._native import PrimitiveRecognizer
 from polymimic.env import ENV_ID
 from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, WHEELED_EQUIVALENT, Demonstration, primitives_sent
-from polymimic.step_names import LABELS, NO_NAME, name_windows, repeat_last_good, segmenter_settings, step_settings
+from polymimic.window_names import LABELS, NO_NAME, name_windows, repeat_last_good, segmenter_settings, window_settings
 
 __all__ = ["ACTIONS", "LABELS", "OBSERVED", "SIMULATED_BODIES", "from_minari", "steps_of", "to_minari"]
 
@@ -112,7 +112,7 @@ def steps_of(demonstration: Demonstration, *, step_frames: int = 30, actions: st
         named = _recognised(recognizer.segment(frames, **segmenter_settings(segmenter)), len(frames))
         chosen, gap = _majorities(named, starts, ends)
     else:
-        chosen, gap = _nearest_named(name_windows(frames, recognizer, starts, **step_settings(segmenter)))
+        chosen, gap = _nearest_named(name_windows(frames, recognizer, starts, **window_settings(segmenter)))
     rewards = np.zeros(n_steps)
     rewards[-1] = _REWARDS.get(demonstration.outcome, 0.0)
     terminations, truncations = np.zeros(n_steps, dtype=bool), np.zeros(n_steps, dtype=bool)

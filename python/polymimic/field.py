@@ -2,7 +2,8 @@
 
 Frames are numpy structured arrays with one named column per tracker value
 (:data:`FRAME_DTYPE`), so ``frames["ball_x_mm"]`` reads a column and
-``pandas.DataFrame(frames)`` makes a table.
+``pandas.DataFrame(frames)`` makes a table. The field's configuration (:func:`check_config`,
+:func:`default_config`) is :mod:`polymimic.field_config`'s, re-exported here.
 
 >>> demos = record("expert", configuration=1, n=2, seed=7)
 >>> demos[0].frames.dtype.names[:3]
@@ -17,18 +18,18 @@ True
 from __future__ import annotations
 
 import dataclasses
-import json
-import math
 import numbers
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from typing import Any, Literal
 
 import numpy as np
 
 from polymimic import _native
 from polymimic._arguments import integer, probability
-from polymimic._tables import Path, merged
 from polymimic.bodies import WheeledBody, body_name, native_body
+from polymimic.field_config import check_config as check_config
+from polymimic.field_config import default_config as default_config
+from polymimic.field_config import native_field_config
 from polymimic.policies import policy_parts
 
 FRAME_DTYPE = np.dtype([
@@ -164,63 +165,6 @@ def body_of(demonstrator: str) -> str:
                          f"{', '.join(BODIES)}") from None
 
 
-def check_config(config: Mapping[str, Any] | str) -> dict[str, Any]:
-    """A field configuration checked whole, with every key it leaves out filled in from
-    :func:`default_config`: every key known (nested tables by their dotted name), every value of
-    its default's type and in range.
-
-    >>> check_config({"time_limit_s": 30.0})["time_limit_s"]
-    30.0
-    >>> check_config({"time_limt_s": 30.0})
-    Traceback (most recent call last):
-    ...
-    ValueError: unknown key 'time_limt_s' in the field config; known keys: tracker, substeps_per_frame, ...
-    """
-    if isinstance(config, str):
-        try:
-            config = json.loads(config)
-        except ValueError as error:
-            raise ValueError(f"the field config is not valid JSON: {error}") from error
-    if not isinstance(config, Mapping):
-        raise TypeError(f"the field config must be a mapping, got {type(config).__name__}")
-    full = merged(default_config(), config, unknown=_unknown_key, not_table=_not_a_table, leaf=_number)
-    checked: dict[str, Any] = json.loads(_native.check_field_config(json.dumps(full)))
-    return checked
-
-
-def _unknown_key(path: Path, known: Sequence[str]) -> Exception:
-    prefix = "".join(f"{k}." for k in path[:-1])
-    return ValueError(f"unknown key {'.'.join(path)!r} in the field config; known keys: "
-                      f"{', '.join(prefix + k for k in known)}")
-
-
-def _not_a_table(path: Path, value: Any) -> Exception:
-    return TypeError(f"field config {'.'.join(path)!r} must be a table, got {value!r}")
-
-
-def _number(path: Path, value: Any, default: Any) -> Any:
-    """A finite number, an integer where the default is one; as many numbers where the default
-    is a list (the humanoid's windows and sizes)."""
-    name = ".".join(path)
-    if isinstance(default, list):
-        if not isinstance(value, (list, tuple)) or len(value) != len(default):
-            raise TypeError(f"field config {name!r} must be {len(default)} numbers, like the default {default!r}; "
-                            f"got {value!r}")
-        return [_number((*path[:-1], f"{path[-1]}[{i}]"), v, d) for i, (v, d) in enumerate(zip(value, default))]
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or (
-            isinstance(default, int) and not isinstance(value, int)):
-        kind = "an integer" if isinstance(default, int) else "a number"
-        raise TypeError(f"field config {name!r} must be {kind}, like the default {default!r}; got {value!r}")
-    if not math.isfinite(value):
-        raise ValueError(f"field config {name!r} must be a finite number, got {value!r}")
-    return value
-
-
-def _field_config(config: Mapping[str, Any] | str | None) -> str | None:
-    """The JSON the native field takes, checked; ``None`` for the default field."""
-    return None if config is None else json.dumps(check_config(config))
-
-
 def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0, lapse: float = 0.0,
            config: dict[str, Any] | str | None = None, body: str | WheeledBody | None = None, name: str | None = None,
            decision_hz: float | None = None, timeout_s: float | None = 10.0) -> list[Demonstration]:
@@ -323,7 +267,7 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     if body is not None:
         _check_body(body)
     raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse,
-                                        config=_field_config(config),
+                                        config=native_field_config(config),
                                         body=None if body is None else native_body(body))
     who = demonstrator if name is None else _own_name(name, demonstrator)
     return _demonstrations(raw, who, "" if body is None else body_name(body))
@@ -362,7 +306,7 @@ def _record_imitator(policy: _native.ImitatorPolicy, *, configuration: int, n: i
     if body is not None and body_name(body) != policy.body:
         raise ValueError(f"body={body_name(body)!r}, but the imitator drives the {policy.body!r} body; leave body= out")
     who = "imitator" if name is None else _own_name(name, "imitator")
-    raw = policy.record(configuration=configuration, n=n, seed=seed, field_config=_field_config(config))
+    raw = policy.record(configuration=configuration, n=n, seed=seed, field_config=native_field_config(config))
     return _demonstrations(raw, who, policy.body)
 
 
@@ -382,7 +326,7 @@ def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse:
                                        configuration=configuration,
                                        n=n, seed=seed, decision_hz=parts.decision_hz,
                                        timeout_s=None if timeout_s is None else float(timeout_s),
-                                       config=_field_config(config))
+                                       config=native_field_config(config))
     return _demonstrations(raw, parts.name, body_name(body))
 
 
@@ -434,7 +378,7 @@ def self_observation(n_per_primitive: int, *, seed: int = 0, config: dict[str, A
         raise ValueError(f"primitives must be 'wheeled' or 'own', got {primitives!r}")
     frames, primitives_run = _native.record_self_observation(integer("n_per_primitive", n_per_primitive, 1),
                                                              seed=integer("seed", seed, 0, 2**64 - 1),
-                                                             config=_field_config(config), body=native_body(body),
+                                                             config=native_field_config(config), body=native_body(body),
                                                              primitives=primitives)
     return [PrimitiveSequence(primitive=p, frames=as_frames(f), body=body_name(body))
             for f, p in zip(frames, primitives_run)]
@@ -485,12 +429,6 @@ def command_primitives() -> np.ndarray:
     for row in table:
         lookup[row["id"]] = row["primitive"]
     return lookup
-
-
-def default_config() -> dict[str, Any]:
-    """The field's configuration (tracker noise, physics substeps, time limit, ball)."""
-    config: dict[str, Any] = json.loads(_native.default_field_config())
-    return config
 
 
 def commands_recorded(demonstration: Demonstration) -> bool:

@@ -30,7 +30,8 @@ import numpy as np
 from polymimic._native import EpisodeBatch
 from polymimic.bodies import WheeledBody, as_body, body_name, resolve
 from polymimic.env import _check_configuration, observation_space
-from polymimic.field import OUTCOMES, PRIMITIVE_SETS, _field_config
+from polymimic.field import OUTCOMES, PRIMITIVE_SETS
+from polymimic.field_config import native_field_config
 
 try:
     import gymnasium
@@ -70,8 +71,8 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
         _check_configuration(configuration)
         self.num_envs = int(num_envs)
         self.configuration = configuration
-        self._batch = EpisodeBatch(self.num_envs, frames_per_action=frames_per_action, config=_field_config(config),
-                                   body=resolve(body))
+        self._batch = EpisodeBatch(self.num_envs, frames_per_action=frames_per_action,
+                                   config=native_field_config(config), body=resolve(body))
         self.body = body_name(body)
         self.frames_per_action = int(frames_per_action)
         field = as_body(body).field

@@ -12,7 +12,7 @@ from polymimic.baselines import offline_rl
 from polymimic.baselines.offline_hyperparameters import DEFAULT_BCQ
 from polymimic.benchmark.config import METHODS, OPTIONAL_METHODS, BenchmarkConfig
 from polymimic.benchmark.driver import Benchmark
-from polymimic.benchmark.files import load_tuning
+from polymimic.benchmark.task_files import load_tuning
 from polymimic.runs.config import ConfigError
 
 

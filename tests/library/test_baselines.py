@@ -1,7 +1,6 @@
 """The benchmark's baselines (docs/results/benchmark.md), on scripted demonstrators whose right answers are known."""
 
 import math
-import pickle
 import re
 
 import numpy as np
@@ -9,9 +8,8 @@ import pytest
 from threadpoolctl import threadpool_limits
 
 import polymimic
-from polymimic import _native, baselines, recognition
+from polymimic import baselines, recognition
 from polymimic.baselines import bc, bc_best, bco, bco_lp, labels, random_primitive
-from polymimic.baselines.evaluation import attempts_of
 from polymimic.baselines.features import features
 from polymimic.baselines.labels import NO_LABEL
 from polymimic.field import PRIMITIVES, as_frames
@@ -160,7 +158,7 @@ def held_primitives(plan, *, seed, hold_frames=30):
                     max_frames=hold_frames * len(plan), place=(-300.0, 0.0, 0.0))
 
 
-def test_step_labels_name_each_held_primitive_as_it_was_sent(recognizer):
+def test_window_labels_name_each_held_primitive_as_it_was_sent(recognizer):
     """Primitives held for a second each, in a known order: the second read from a sixth of a
     second into each one (past the body's lag) is named as the primitive sent, nearly every
     move (the test's recogniser learned from 40 sequences only); a stop is named stop where
@@ -169,7 +167,7 @@ def test_step_labels_name_each_held_primitive_as_it_was_sent(recognizer):
     plan = ["forward", "left", "left", "stop", "right", "forward", "backward", "stop", "right", "forward"] * 2
     demos = [held_primitives(plan, seed=s) for s in (5, 6)]
     named = []
-    for labelled in labels.step_labels(demos, recognizer, stride_frames=1):
+    for labelled in labels.window_labels(demos, recognizer, stride_frames=1):
         named.extend(PRIMITIVES[label] if label != NO_LABEL else "gap" for label in labelled.labels[5:-30:30])
     sent = plan[:-1] * 2
     assert len(named) == len(sent)
@@ -179,7 +177,7 @@ def test_step_labels_name_each_held_primitive_as_it_was_sent(recognizer):
     assert stops == ["stop"] * len(stops) and len(stops) == 4
 
 
-def test_step_labels_follow_the_commands_far_better_than_segment_labels(recognizer):
+def test_window_labels_follow_the_commands_far_better_than_segment_labels(recognizer):
     """The Expert turns in about a third of its frames; its segments, grown to the most one
     primitive can move, are nearly all forward. Step labels agree with the commands sent in
     most frames, and in more than segment labels do by a wide margin."""
@@ -191,28 +189,28 @@ def test_step_labels_follow_the_commands_far_better_than_segment_labels(recogniz
         both = (sent != NO_LABEL) & (named != NO_LABEL)
         return (sent[both] == named[both]).mean()
 
-    steps, segments = agreement(labels.step_labels(demos, recognizer)), agreement(bco.labelled(
+    steps, segments = agreement(labels.window_labels(demos, recognizer)), agreement(bco.labelled(
         demos, recognizer=recognizer, labels="segments"))
     assert steps >= 0.8 and steps >= segments + 0.1, (steps, segments)
 
 
-def test_step_labels_at_a_stride_are_the_labels_of_the_frames_named(recognizer):
+def test_window_labels_at_a_stride_are_the_labels_of_the_frames_named(recognizer):
     demos = polymimic.record("expert", configuration=2, n=1, seed=4)
-    every = labels.step_labels(demos, recognizer, stride_frames=1)[0].labels
-    strided = labels.step_labels(demos, recognizer, stride_frames=7)[0].labels
+    every = labels.window_labels(demos, recognizer, stride_frames=1)[0].labels
+    strided = labels.window_labels(demos, recognizer, stride_frames=7)[0].labels
     assert (strided[::7] == every[::7]).all()
     assert (strided == np.repeat(every[::7], 7)[:len(every)]).all()
 
 
-def test_step_labels_at_given_frames_are_the_labels_of_those_frames_alone(recognizer):
+def test_window_labels_at_given_frames_are_the_labels_of_those_frames_alone(recognizer):
     demos = polymimic.record("expert", configuration=2, n=1, seed=4)
-    every = labels.step_labels(demos, recognizer, stride_frames=1)[0].labels
+    every = labels.window_labels(demos, recognizer, stride_frames=1)[0].labels
     frames = np.array([0, 4, 5, 31, len(every) - 1])
-    chosen = labels.step_labels(demos, recognizer, frames=[frames])[0].labels
+    chosen = labels.window_labels(demos, recognizer, frames=[frames])[0].labels
     assert (chosen[frames] == every[frames]).all()
     assert (np.delete(chosen, frames) == NO_LABEL).all()
     with pytest.raises(ValueError, match="frames must list the frames to name for each of the 1 demonstrations, got 2"):
-        labels.step_labels(demos, recognizer, frames=[frames, frames])
+        labels.window_labels(demos, recognizer, frames=[frames, frames])
 
 
 def test_a_fit_seed_draws_which_frames_give_samples():
@@ -245,15 +243,15 @@ def test_fits_under_other_seeds_differ_even_for_a_deterministic_classifier(mixed
                               other.classifier.predict_proba(features(probe, feature_set="ball_relative")))
 
 
-def test_bad_step_label_settings_are_refused_by_name(forward_demos, recognizer):
+def test_bad_window_label_settings_are_refused_by_name(forward_demos, recognizer):
     with pytest.raises(ValueError, match="window_frames must be an integer ≥ 2, got 1"):
-        labels.step_labels(forward_demos, recognizer, window_frames=1)
+        labels.window_labels(forward_demos, recognizer, window_frames=1)
     with pytest.raises(ValueError, match="stride_frames must be an integer ≥ 1, got 0"):
-        labels.step_labels(forward_demos, recognizer, stride_frames=0)
+        labels.window_labels(forward_demos, recognizer, stride_frames=0)
     with pytest.raises(ValueError, match="unknown labels 'frames'; expected one of 'steps', 'segments'"):
         bco.labelled(forward_demos, recognizer=recognizer, labels="frames")
     with pytest.raises(ValueError, match="gap_margin must be a finite number ≥ 0, got nan"):
-        labels.step_labels(forward_demos, recognizer, gap_margin=math.nan)
+        labels.window_labels(forward_demos, recognizer, gap_margin=math.nan)
     for labelling in ("steps", "segments"):
         with pytest.raises(ValueError, match="segmenter has no setting 'stop_rotation'; its settings are "):
             bco.labelled(forward_demos, recognizer=recognizer, labels=labelling, segmenter={"stop_rotation": 10.0})
@@ -333,46 +331,6 @@ def test_a_policy_returning_the_wrong_number_of_actions_is_refused():
 
     with pytest.raises(ValueError, match="returned shape"):
         baselines.evaluate_policy(Short(), attempts_per_configuration=1, seed=0)
-
-
-def test_tuning_never_sees_the_evaluation_and_repeats_its_choice():
-    demos = polymimic.record("poor", configuration=1, n=1, seed=0)
-    one, two = (baselines.tune("bc", demos, budget=2, attempts_per_configuration=2, evaluation_seed=3)
-                for _ in range(2))
-    validation = {s for _, s in one.validation_attempts}
-    assert validation.isdisjoint(s for _, s in attempts_of(25, seed=3))
-    assert validation.isdisjoint(s for _, s in attempts_of(25, seed=0))
-    assert one.chosen == two.chosen and one.scores == two.scores
-    assert len(one.scores) == 2 and one.hyperparameters == baselines.Hyperparameters.from_dict(one.chosen)
-
-
-def test_validation_attempts_sharing_an_evaluation_seed_are_refused(monkeypatch):
-    from polymimic.baselines import tuning
-    validation = tuning.validation_attempts(2, validation_seed=0)
-    assert tuning.validation_attempts_apart(2, validation_seed=0, evaluation_seed=0,
-                                            evaluation_attempts_per_configuration=25) == validation
-    # A 64-bit collision, forced: the evaluation's attempts are made to hold a validation seed.
-    clash = validation[1][1]
-    monkeypatch.setattr(tuning, "attempts_of",
-                        lambda n, *, seed: [(1, clash)] if seed < 2**62 else attempts_of(n, seed=seed))
-    with pytest.raises(ValueError, match=rf"validation attempts share episode seeds \[{clash}\] with the evaluation"):
-        tuning.validation_attempts_apart(2, validation_seed=0, evaluation_seed=0,
-                                         evaluation_attempts_per_configuration=25)
-    demos = polymimic.record("poor", configuration=1, n=1, seed=0)
-    with pytest.raises(ValueError, match="share episode seeds"):
-        baselines.tune("bc", demos, budget=1, attempts_per_configuration=2)
-
-
-def test_every_method_gets_the_same_candidates():
-    assert baselines.candidates(6, seed=1) == baselines.candidates(6, seed=1)
-    assert len(set(baselines.candidates(12))) == 12
-    assert baselines.candidates(12)[0] == baselines.DEFAULT
-
-
-def test_evaluation_seeds_stay_below_the_validation_seeds():
-    with pytest.raises(ValueError, match="seed must be an integer in"):
-        baselines.evaluate_policy(random_primitive.fit(), attempts_per_configuration=1,
-                                  seed=baselines.VALIDATION_SEED_BASE)
 
 
 # Files ---------------------------------------------------------------------------------------
@@ -527,104 +485,6 @@ def test_ppo_trains_evaluates_and_saves_and_leaves_no_log_folder_behind(tmp_path
     policy.save(tmp_path / "ppo.pmp")
     observations = grid_observations(20)
     assert (baselines.load_policy(tmp_path / "ppo.pmp").predict(observations) == policy.predict(observations)).all()
-
-
-def test_attempt_seeds_are_the_natives():
-    assert attempts_of(2, seed=1) == [(int(c), int(s)) for c, s in _native.attempt_seeds(2, seed=1)]
-
-
-# The classifier families ----------------------------------------------------------------------
-
-def test_the_small_batch_forest_predicts_as_scikit_learns_forest_to_the_bit():
-    from sklearn.ensemble import RandomForestClassifier
-
-    from polymimic.baselines.classifiers import SmallBatchForest
-
-    rng = np.random.default_rng(0)
-    X = rng.normal(size=(2000, 6))
-    y = (X[:, 0] + rng.normal(size=2000) > 0).astype(int) + 2 * (X[:, 1] > 1)
-    for params in ({"max_features": "sqrt", "min_samples_leaf": 1}, {"max_features": None, "min_samples_leaf": 10}):
-        theirs = RandomForestClassifier(n_estimators=50, random_state=4, n_jobs=1, **params).fit(X, y)
-        ours = SmallBatchForest(n_estimators=50, random_state=4, n_jobs=1, **params).fit(X, y)
-        for rows in (1, 5, 500):
-            query = rng.normal(size=(rows, 6))
-            assert np.array_equal(ours.predict_proba(query), theirs.predict_proba(query))
-            assert np.array_equal(ours.predict(query), theirs.predict(query))
-
-
-def test_the_small_batch_boosting_predicts_as_scikit_learns_boosting_to_the_bit():
-    from sklearn.ensemble import HistGradientBoostingClassifier
-
-    from polymimic.baselines.classifiers import SmallBatchBoosting
-
-    rng = np.random.default_rng(1)
-    X = rng.normal(size=(1500, 5))
-    X[rng.random(X.shape) < 0.05] = np.nan  # missing values take the side each split learned for them
-    multiclass = (X[:, 0] > 0).astype(int) + 2 * (X[:, 1] > 0.5) + (np.nan_to_num(X[:, 2]) > 1)
-    for y in (multiclass, (X[:, 3] > 0).astype(int)):
-        params = {"max_iter": 40, "max_leaf_nodes": 15, "learning_rate": 0.1, "early_stopping": False}
-        theirs = HistGradientBoostingClassifier(random_state=2, **params).fit(X, y)
-        ours = SmallBatchBoosting(random_state=2, **params).fit(X, y)
-        # Rows right on the thresholds, too, where ≤ and < part ways.
-        splits = [node for iteration in theirs._predictors for tree in iteration for node in tree.nodes
-                  if not node["is_leaf"]]
-        on_thresholds = np.full((len(splits), 5), 0.0)
-        on_thresholds[np.arange(len(splits)), [s["feature_idx"] for s in splits]] = [s["num_threshold"] for s in splits]
-        for rows in (1, 7, 400):
-            query = rng.normal(size=(rows, 5))
-            query[rng.random(query.shape) < 0.1] = np.nan
-            query = np.vstack([query, on_thresholds[rng.integers(len(splits), size=rows)]])
-            assert np.array_equal(ours.predict_proba(query), theirs.predict_proba(query))
-            assert np.array_equal(ours.predict(query), theirs.predict(query))
-    # A saved model leaves its flat trees out and builds them again on loading.
-    saved = pickle.dumps(ours)
-    loaded = pickle.loads(saved)
-    assert len(saved) < len(pickle.dumps(theirs)) + 1000
-    assert "_flat_trees_" in vars(loaded) and "_flat_trees_" in vars(ours)
-    assert np.array_equal(loaded.predict_proba(query), theirs.predict_proba(query))
-
-
-def _same_fit(ours, theirs):
-    """Whether two fitted MLPs hold the same weights, loss curve, stopping state and optimizer."""
-    arrays = list(zip(ours.coefs_ + ours.intercepts_, theirs.coefs_ + theirs.intercepts_, strict=True))
-    moments = list(zip(ours._optimizer.ms + ours._optimizer.vs, theirs._optimizer.ms + theirs._optimizer.vs,
-                       strict=True))
-    return (all(np.array_equal(a, b) for a, b in arrays + moments) and ours.loss_curve_ == theirs.loss_curve_
-            and (ours.n_iter_, ours.t_, ours.best_loss_, ours._no_improvement_count, ours._optimizer.t)
-            == (theirs.n_iter_, theirs.t_, theirs.best_loss_, theirs._no_improvement_count, theirs._optimizer.t))
-
-
-def test_the_quick_fit_mlp_trains_as_scikit_learns_mlp_to_the_bit():
-    import warnings
-
-    from sklearn.exceptions import ConvergenceWarning
-    from sklearn.neural_network import MLPClassifier
-
-    from polymimic.baselines.mlp import QuickFitMLP
-
-    rng = np.random.default_rng(5)
-    X = rng.normal(size=(530, 4))  # 530: the last batch of each epoch is a short one
-    multiclass = (X[:, 0] > 0).astype(int) + 2 * (X[:, 1] > 0.5) + (X[:, 2] > 1)
-    binary = (X[:, 3] + 0.3 * X[:, 0] > 0).astype(int)  # a logistic output and its own loss
-    weights = rng.uniform(0.1, 3.0, size=len(X))
-    cases = [({"hidden_layer_sizes": (16, 16), "max_iter": 12}, multiclass, weights),
-             ({"hidden_layer_sizes": (8,), "max_iter": 12, "alpha": 1e-2}, multiclass, None),
-             ({"hidden_layer_sizes": (8,), "max_iter": 12, "batch_size": 64}, binary, weights),
-             ({"hidden_layer_sizes": (8,), "max_iter": 12, "activation": "tanh"}, multiclass, weights),
-             # A loose tolerance: the loss stalls, and the fit stops before its last epoch.
-             ({"hidden_layer_sizes": (8,), "max_iter": 200, "tol": 0.05, "n_iter_no_change": 2}, multiclass, weights)]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ConvergenceWarning)
-        # float32 samples, which this loop would round differently, are left to scikit-learn.
-        for params, y, w, samples in [(*case, X) for case in cases] + [(*cases[0], X.astype(np.float32))]:
-            theirs = MLPClassifier(random_state=3, **params).fit(samples, y, sample_weight=w)
-            ours = QuickFitMLP(random_state=3, **params).fit(samples, y, sample_weight=w)
-            assert _same_fit(ours, theirs), params
-            assert np.array_equal(ours.predict_proba(samples), theirs.predict_proba(samples))
-            # Carrying on from there, scikit-learn's partial_fit takes up the same optimizer state.
-            assert _same_fit(ours.partial_fit(samples, y, sample_weight=w),
-                             theirs.partial_fit(samples, y, sample_weight=w))
-        assert cases[-1][0]["max_iter"] > QuickFitMLP(random_state=3, **cases[-1][0]).fit(X, multiclass).n_iter_
 
 
 def test_a_ball_out_of_sight_is_read_where_it_was_last_seen_or_where_the_configuration_puts_it():

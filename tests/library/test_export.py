@@ -202,7 +202,7 @@ class _Impossible:
 
 
 def test_a_window_no_hmm_can_have_made_is_a_gap():
-    from polymimic.step_names import NO_NAME, name_windows
+    from polymimic.window_names import NO_NAME, name_windows
 
     demo = _scripted("forward", 70)
     assert name_windows(demo.frames, _Impossible(), [0, 30]).tolist() == [NO_NAME, NO_NAME]

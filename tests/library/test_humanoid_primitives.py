@@ -11,7 +11,7 @@ import pytest
 import polymimic
 from polymimic import recognition
 from polymimic.field import PRIMITIVE_SETS, PRIMITIVES
-from polymimic.step_names import name_windows
+from polymimic.window_names import name_windows
 
 
 @pytest.fixture(scope="module")
@@ -134,7 +134,7 @@ SIDE_STEP_IDS = [209, 210]
 """The humanoid's Shuffle Left and Shuffle Right command ids."""
 
 
-def test_a_step_names_the_humanoids_own_classes_by_their_wheeled_equivalents(
+def test_a_window_names_the_humanoids_own_classes_by_their_wheeled_equivalents(
         humanoid_recognizer: polymimic.PrimitiveRecognizer) -> None:
     own = polymimic.self_observation(2, seed=4, body="humanoid", primitives="own")
     by_class = {s.primitive: s for s in own}

@@ -13,7 +13,7 @@ from polymimic import baselines, recognition
 from polymimic.baselines import bco, inverse_dynamics
 from polymimic.baselines.agreement import command_agreement
 from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters, with_labellings
-from polymimic.baselines.labels import NO_LABEL, command_labels, step_labels
+from polymimic.baselines.labels import NO_LABEL, command_labels, window_labels
 from polymimic.field import PRIMITIVES, as_frames
 
 FORWARD = PRIMITIVES.index("forward")
@@ -93,7 +93,7 @@ def test_the_experts_commands_are_followed_by_both_labellings_far_above_chance(m
     demos = polymimic.record("expert", configuration=1, n=2, seed=2) + polymimic.record("expert", configuration=2, n=2)
     recognizer = recognition.train_recognizer(polymimic.self_observation(40, seed=1), codebook_size=32)
     inverse = command_agreement(inverse_dynamics.inverse_dynamics_labels(demos, model, stride_frames=1), demos)
-    steps = command_agreement(step_labels(demos, recognizer, stride_frames=1), demos)
+    steps = command_agreement(window_labels(demos, recognizer, stride_frames=1), demos)
     assert inverse.coverage == 1.0 and inverse.agreement >= 0.75 and steps.agreement >= 0.85
     assert command_agreement(command_labels(demos), demos).agreement == 1.0
 

@@ -10,9 +10,9 @@ import shutil
 import pytest
 from matplotlib.patches import Rectangle
 
+from polymimic.matrix.cell_files import load_cell_evaluation
 from polymimic.matrix.config import MatrixConfig
 from polymimic.matrix.driver import run_matrix
-from polymimic.matrix.files import load_cell_evaluation
 from polymimic.matrix.pictures import (
     attempt_figure,
     attempt_picture,

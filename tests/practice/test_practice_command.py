@@ -131,3 +131,10 @@ def test_a_directory_that_is_no_run_is_refused(tmp_path, capsys):
     assert "holds no manifest.json: not a run directory" in capsys.readouterr().err
     with pytest.raises(SystemExit):
         cli.main(["practice", "--run-dir", str(tmp_path), "--steps", "-5"])
+
+
+def test_a_run_of_another_kind_is_refused_naming_the_kinds_that_practise(tmp_path, capsys):
+    (tmp_path / "manifest.json").write_text('{"format": "polymimic.matrix_run"}')
+    assert cli.main(["practice", "--run-dir", str(tmp_path)]) == 2
+    assert capsys.readouterr().err.strip().endswith(
+        "is a polymimic.matrix_run; practice needs a reproduce or benchmark run")

@@ -1,10 +1,10 @@
 """``bco``: behavioural cloning from observation (Torabi et al. 2018), from tracker frames only.
 
-BCO learns an inverse model from the imitator's own experience and labels each step of the
+BCO learns an inverse model from the imitator's own experience and labels each transition of the
 demonstrations with it; here the inverse model is by default the imitator's primitive
 recogniser, learned from self-observation (thesis §3.1). Each decision sample is labelled with the primitive the
 recogniser names for the second of motion that starts at its frame
-(:func:`polymimic.baselines.labels.step_labels`: a stop by the segmenter's stop rule, else the
+(:func:`polymimic.baselines.labels.window_labels`: a stop by the segmenter's stop rule, else the
 best-scoring HMM). **A second too close to call (a gap) is no primitive and gives no sample.**
 
 ``labels="inverse_dynamics"`` labels each sample with the primitive an inverse dynamics model
@@ -14,18 +14,18 @@ learned from the imitator's exploration of its field (with the ball) rather than
 as the recogniser is learned once). It names every frame: no gaps. Tuning chooses between the
 two on validation attempts (:func:`polymimic.baselines.hyperparameters.with_labellings`). Its
 labels agree with the commands sent in 92 % of ten Expert demonstrations' frames and 93 % of a
-small ``linear`` crowd's, where the benchmark's recogniser's step labels agree in 84 % and 76 %
+small ``linear`` crowd's, where the benchmark's recogniser's window labels agree in 84 % and 76 %
 (:mod:`polymimic.baselines.agreement`).
 On small crowds (five demonstrations per member and configuration; each labelling tuned among
 the benchmark's six candidates on 40 validation attempts, then five fits, each playing the same
 50 attempts: ``python studies/which_labels_bco_should_learn_from.py --profiles linear one_good half equal
 mixed_bodies --n 5 --fits 5 --budget 6 --max-samples 10000``) ``bco`` netted, per 50, on
 ``linear``, ``one_good``, ``half``, ``equal`` and ``mixed_bodies``, 15.6, 18.4, 14.6, 21.6 and
-17.2 with the inverse model's labels against 9.6, 8.2, 18.2, 9.2 and 13.6 with the steps
+17.2 with the inverse model's labels against 9.6, 8.2, 18.2, 9.2 and 13.6 with the window labels
 (``bc``, from the commands sent: 15.4, 16.0, 12.2, 18.4 and 14.8).
 
 ``labels="segments"`` labels each frame with its segment's primitive instead (thesis §3.2.2). On ten
-Expert demonstrations, read by the full reproduction's recogniser, the step labels agree with
+Expert demonstrations, read by the full reproduction's recogniser, the window labels agree with
 the commands sent in 87 % of frames and the segment labels in 70 %: a segment grows until its
 motion exceeds any one primitive's, so the Expert's segments are 98 % forward while it turns in
 31 % of its frames.
@@ -53,13 +53,13 @@ from polymimic.baselines.labels import (
     check_demonstrations,
     segment_labels,
     starts_as_imitator,
-    step_labels,
+    window_labels,
 )
 from polymimic.baselines.policy import ClonedPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, sample_rows, train
 from polymimic.bodies import WheeledBody, body_name
 from polymimic.field import Demonstration
-from polymimic.step_names import segmenter_settings, step_settings
+from polymimic.window_names import segmenter_settings, window_settings
 
 __all__ = ["INVERSE_DYNAMICS_SEED", "LABELS", "check_recognizer", "fit", "labelled"]
 
@@ -81,8 +81,8 @@ def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRe
              segmenter: Mapping[str, Any] | None = None, labels: str = "steps",
              max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0,
              imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
-    """The demonstrations labelled by the recogniser (``recognizer``): by the step from each
-    frame (``labels="steps"``; only the frames a fit of at most ``max_samples`` decision samples
+    """The demonstrations labelled by the recogniser (``recognizer``): by the window (the second of motion)
+    from each frame (``labels="steps"``; only the frames a fit of at most ``max_samples`` decision samples
     under ``seed`` takes are named, :func:`~polymimic.baselines.training.sample_rows`) or every
     frame by its segment (``"segments"``), gaps giving no label; or those same frames by the
     inverse dynamics model of body ``imitator`` (``"inverse_dynamics"``, which needs no
@@ -98,8 +98,8 @@ def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRe
                        first_frames=[starts_as_imitator(d.body, body_name(imitator)) for d in demos])
     if labels == "inverse_dynamics":
         return inverse_dynamics_labels(demos, learn(imitator, seed=INVERSE_DYNAMICS_SEED), frames=rows)
-    return step_labels(demos, check_recognizer(recognizer), frames=rows, imitator=imitator,
-                       **step_settings(settings))
+    return window_labels(demos, check_recognizer(recognizer), frames=rows, imitator=imitator,
+                       **window_settings(settings))
 
 
 def fit(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecognizer | None = None,

@@ -28,7 +28,8 @@ from threadpoolctl import threadpool_limits  # type: ignore[import-untyped, unus
 from polymimic import _native
 from polymimic.baselines.policy import Policy
 from polymimic.bodies import resolve
-from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, Demonstration, _field_config, as_frames, primitive_command
+from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, Demonstration, as_frames, primitive_command
+from polymimic.field_config import native_field_config
 from polymimic.learning import Evaluation
 
 __all__ = ["VALIDATION_SEED_BASE", "attempts_of", "evaluate_policy", "play"]
@@ -67,7 +68,7 @@ def play(policy: Policy, attempts: list[tuple[int, int]], *,
     with the body the policy drives (its ``body``: the Lego robot if it names none)."""
     if not isinstance(policy, Policy):
         raise ValueError(f"policy must have frames_per_action, predict, reset and save; got {type(policy).__name__}")
-    config = _field_config(field_config)
+    config = native_field_config(field_config)
     body = str(getattr(policy, "body", "lego"))
     driven = resolve(body)
     episodes = [_native.Episode(driven, configuration=c, seed=s, config=config) for c, s in attempts]

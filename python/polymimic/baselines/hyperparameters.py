@@ -37,7 +37,7 @@ environment's default one-second primitive."""
 
 LABELS = ("steps", "segments", "inverse_dynamics")
 """How ``bco`` and ``bco_lp`` may label the demonstrations' frames: by the recogniser's name for
-the second of motion from each (:func:`polymimic.baselines.labels.step_labels`), by the
+the second of motion from each (:func:`polymimic.baselines.labels.window_labels`), by the
 segment each lies in (:func:`~polymimic.baselines.labels.segment_labels`), or by the inverse
 dynamics model learned from the imitator's exploration
 (:func:`polymimic.baselines.inverse_dynamics.inverse_dynamics_labels`)."""

@@ -50,15 +50,15 @@ from polymimic.baselines.classifiers import make_classifier
 from polymimic.baselines.labels import (
     IMITATOR_BODY,
     NO_LABEL,
-    STEP_STRIDE_FRAMES,
-    STEP_WINDOW_FRAMES,
+    WINDOW_FRAMES,
+    WINDOW_STRIDE_FRAMES,
     Labelled,
     check_demonstrations,
     observations_of,
 )
 from polymimic.bodies import WheeledBody, body_name, native_body, resolve
 from polymimic.field import PRIMITIVES, Demonstration, as_frames, primitive_command
-from polymimic.step_names import repeat_last_good
+from polymimic.window_names import repeat_last_good
 
 __all__ = ["BEFORE_FRAMES", "EXPLORATION_EPISODES", "EXPLORATION_FRAMES", "HORIZONS", "MAX_WINDOW_FRAMES",
            "InverseDynamics", "explore", "horizon_frames", "inverse_dynamics_labels", "learn", "transition_features"]
@@ -177,7 +177,7 @@ def horizon_frames(window_frames: int) -> np.ndarray:
     return np.unique(np.clip(np.rint(np.array(HORIZONS) * window_frames), 1, window_frames - 1)).astype(np.int64)
 
 
-def transition_features(poses: np.ndarray, starts: np.ndarray, *, window_frames: int = STEP_WINDOW_FRAMES
+def transition_features(poses: np.ndarray, starts: np.ndarray, *, window_frames: int = WINDOW_FRAMES
                         ) -> np.ndarray:
     """The ``(len(starts), 3 × (horizons + 1))`` features of the windows of ``window_frames``
     frames from ``starts`` over the robot's ``(n, 3)`` poses: at each of :func:`horizon_frames`,
@@ -229,7 +229,7 @@ def explore(imitator: str | WheeledBody = IMITATOR_BODY, *, episodes: int = EXPL
 
 
 def learn(imitator: str | WheeledBody = IMITATOR_BODY, *, seed: int = 0, episodes: int = EXPLORATION_EPISODES,
-          window_frames: int = STEP_WINDOW_FRAMES) -> InverseDynamics:
+          window_frames: int = WINDOW_FRAMES) -> InverseDynamics:
     """The inverse dynamics model of body ``imitator`` (the Lego robot by default) reading
     windows of ``window_frames`` frames, learned from ``episodes`` exploration episodes drawn
     with ``seed``. The same arguments give the same model (kept for the process's life: the
@@ -251,7 +251,7 @@ def _learned(imitator: str | WheeledBody, seed: int, episodes: int, window_frame
     for frames, primitives in explore(imitator, episodes=episodes, seed=seed):
         if len(frames) < window_frames + BEFORE_FRAMES:
             continue  # an episode that ended at once shows no window of motion
-        starts = np.arange(0, len(frames) - window_frames + 1, STEP_STRIDE_FRAMES)
+        starts = np.arange(0, len(frames) - window_frames + 1, WINDOW_STRIDE_FRAMES)
         features.append(transition_features(_poses(frames), starts, window_frames=window_frames))
         executed.append(primitives[starts])
     if not features:
@@ -264,10 +264,10 @@ def _learned(imitator: str | WheeledBody, seed: int, episodes: int, window_frame
 
 
 def inverse_dynamics_labels(demonstrations: Sequence[Demonstration], model: InverseDynamics, *,
-                            stride_frames: int = STEP_STRIDE_FRAMES,
+                            stride_frames: int = WINDOW_STRIDE_FRAMES,
                             frames: Sequence[np.ndarray] | None = None) -> list[Labelled]:
     """Frames labelled with the primitive ``model`` names for the window from them, as
-    :func:`polymimic.baselines.labels.step_labels` names them with the recogniser: every
+    :func:`polymimic.baselines.labels.window_labels` names them with the recogniser: every
     ``stride_frames``-th frame from the first (the frames between carry the label of the one
     before), or, given ``frames`` (per demonstration, as
     :func:`~polymimic.baselines.training.sample_rows` draws them), those frames alone (every

@@ -5,7 +5,7 @@ Three ways to label; the first is ``bc``'s, the second ``bco``'s (docs/results/b
 
 - :func:`command_labels` (privileged): the primitive equivalent of the command the
   demonstrator sent in each frame (``polymimic.field.command_primitives()``);
-- :func:`step_labels` (tracker frames only): the primitive the recogniser names for the
+- :func:`window_labels` (tracker frames only): the primitive the recogniser names for the
   second of motion that starts at each frame, as BCO's inverse model names each transition;
 - :func:`segment_labels` (tracker frames only): the primitive of the recogniser's segment
   covering each frame (``recognizer.segment_many``, thesis §3.2.2). A segment grows until its motion
@@ -35,7 +35,7 @@ driving into the ball (:data:`CLONING_EQUIVALENTS`). In the same ten fits that m
 by +0.7 (mapped), +2.3 (as recorded) and 0.0 (stretched), within the fits' spread: it is kept
 for what a kick does. The labellings from tracker frames alone cannot know what was sent: they
 name a kick as it looks, backward, as a wheeled recogniser reads it, and so does the humanoid's
-own recogniser once its steps and segments are named in the five
+own recogniser once its windows and segments are named in the five
 (:data:`polymimic.field.WHEELED_EQUIVALENT`).
 
 >>> import polymimic
@@ -64,21 +64,17 @@ from polymimic.field import (
     command_table,
     primitives_sent,
 )
-from polymimic.step_names import NO_NAME, WINDOW_FRAMES, name_windows, repeat_last_good
+from polymimic.window_names import NO_NAME, WINDOW_FRAMES, name_windows, repeat_last_good
 
-__all__ = ["CLONING_EQUIVALENTS", "IMITATOR_BODY", "NO_LABEL", "STEP_STRIDE_FRAMES", "STEP_WINDOW_FRAMES", "Labelled",
+__all__ = ["CLONING_EQUIVALENTS", "IMITATOR_BODY", "NO_LABEL", "WINDOW_FRAMES", "WINDOW_STRIDE_FRAMES", "Labelled",
            "check_demonstrations", "check_weights", "cloning_primitives", "command_labels",
-           "segment_labels", "starts_as_imitator", "step_labels"]
+           "segment_labels", "starts_as_imitator", "window_labels"]
 
 NO_LABEL = NO_NAME
 """The label of a frame that gives no training sample (a gap, or no segment)."""
 
-STEP_WINDOW_FRAMES = WINDOW_FRAMES
-"""Frames the recogniser reads to name a step: one second, the length of every self-observed
-primitive it learned from."""
-
-STEP_STRIDE_FRAMES = 3
-"""By default a step is named at every third frame, the decision samples' densest stride
+WINDOW_STRIDE_FRAMES = 3
+"""By default a window is named at every third frame, the decision samples' densest stride
 (:data:`polymimic.baselines.training.SAMPLE_STRIDE_FRAMES`)."""
 
 CLONING_EQUIVALENTS = {"Kick Left": "forward", "Kick Right": "forward"}
@@ -193,7 +189,7 @@ def segment_labels(demonstrations: Sequence[Demonstration], recognizer: Primitiv
                    imitator: str | WheeledBody = IMITATOR_BODY, **segmenter: Any) -> list[Labelled]:
     """Each frame labelled with the primitive of the recogniser's segment covering it (none in
     a gap or outside every segment; the humanoid's own side-steps and kick by their wheeled
-    equivalents, :data:`polymimic.field.WHEELED_EQUIVALENT`, as step names have them);
+    equivalents, :data:`polymimic.field.WHEELED_EQUIVALENT`, as window names have them);
     ``segmenter`` passes the segmenter's settings, and the observations are on the field of body
     ``imitator``."""
     demos = check_demonstrations(demonstrations)
@@ -208,14 +204,14 @@ def segment_labels(demonstrations: Sequence[Demonstration], recognizer: Primitiv
     return labelled
 
 
-def step_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer, *,
-                window_frames: int = STEP_WINDOW_FRAMES, stride_frames: int = STEP_STRIDE_FRAMES,
+def window_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer, *,
+                window_frames: int = WINDOW_FRAMES, stride_frames: int = WINDOW_STRIDE_FRAMES,
                 frames: Sequence[np.ndarray] | None = None, stop_distance_mm: float = 1.0,
                 stop_rotation_deg: float = 20.0, gap_margin: float = 2.0,
                 imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
     """Frames labelled with the primitive of the ``window_frames`` frames from them (from the
     demonstration's last full window near its end), named as the segmenter names a segment
-    (:func:`polymimic.step_names.name_windows`): a stop if the robot ends the window within
+    (:func:`polymimic.window_names.name_windows`): a stop if the robot ends the window within
     ``stop_distance_mm`` and ``stop_rotation_deg`` of where it started it, else the HMM that
     scores the window highest, and no label where the best two scores are within ``gap_margin``.
 

@@ -83,7 +83,7 @@ class QuickFitMLP(MLPClassifier):  # type: ignore[misc]
                 stop = min(start + batch_size, n_samples)
                 rows = order[start:stop]
                 weights = None if sample_weight is None else sample_weight[rows]
-                batch_loss = self._step(X[rows], y[rows], weights, loss_of, coef_grads, intercept_grads)
+                batch_loss = self._batch_gradients(X[rows], y[rows], weights, loss_of, coef_grads, intercept_grads)
                 accumulated_loss += batch_loss * (stop - start)
                 adam.step(grads_flat)
             self.n_iter_ += 1
@@ -97,8 +97,8 @@ class QuickFitMLP(MLPClassifier):  # type: ignore[misc]
                 warnings.warn(f"Stochastic Optimizer: Maximum iterations ({self.max_iter}) reached and the "
                               f"optimization hasn't converged yet.", ConvergenceWarning, stacklevel=3)
 
-    def _step(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None, loss_of: Any,
-              coef_grads: list[np.ndarray], intercept_grads: list[np.ndarray]) -> float:
+    def _batch_gradients(self, X: np.ndarray, y: np.ndarray, sample_weight: np.ndarray | None, loss_of: Any,
+                         coef_grads: list[np.ndarray], intercept_grads: list[np.ndarray]) -> float:
         """One batch forward and back: its loss (by ``loss_of``, scikit-learn's loss function
         for this output), with the gradients written into the views."""
         layers = len(self.coefs_)

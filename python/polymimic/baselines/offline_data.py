@@ -34,7 +34,7 @@ import numpy as np
 from polymimic.baselines.labels import NO_LABEL, Labelled
 from polymimic.bodies import WheeledBody, as_body
 from polymimic.field import Demonstration
-from polymimic.step_names import repeat_last_good
+from polymimic.window_names import repeat_last_good
 
 __all__ = ["ENDINGS", "LINE_TOLERANCE_MM", "REWARDS", "Transitions", "outcome_read", "transitions"]
 

@@ -36,7 +36,6 @@ import numpy as np
 from polymimic._native import PrimitiveRecognizer
 from polymimic.baselines.bco import labelled as bco_labelled
 from polymimic.baselines.features import check_observations
-from polymimic.baselines.files import write_policy_file
 from polymimic.baselines.labels import IMITATOR_BODY, Labelled, check_demonstrations
 from polymimic.baselines.offline_data import Transitions, transitions
 from polymimic.baselines.offline_hyperparameters import (
@@ -48,6 +47,7 @@ from polymimic.baselines.offline_hyperparameters import (
     OfflineHyperparameters,
 )
 from polymimic.baselines.offline_hyperparameters import candidates as draw_candidates
+from polymimic.baselines.policy_file import write_policy_file
 from polymimic.baselines.ppo import scaled
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_fit_seed, check_max_samples
 from polymimic.baselines.tuning import best_on_validation, validation_attempts_apart

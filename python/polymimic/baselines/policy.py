@@ -4,7 +4,7 @@ Every policy has ``frames_per_action`` (tracker frames each chosen primitive is 
 ``predict(observations)`` mapping an ``(n, 5)`` batch of ``PenaltyKick-v0`` observations to
 ``n`` primitive indices (0 forward, 1 backward, 2 left, 3 right, 4 stop: the environment's
 actions), ``reset()`` (restarts any random stream, so evaluations repeat), and ``save(path)``;
-:func:`load_policy` reads any of them back (see :mod:`polymimic.baselines.files` for the format).
+:func:`load_policy` reads any of them back (see :mod:`polymimic.baselines.policy_file` for the format).
 
 >>> import numpy as np, pathlib, tempfile
 >>> policy = RandomPolicy(seed=3)
@@ -26,8 +26,8 @@ import numpy as np
 
 from polymimic._native import ModelFileError
 from polymimic.baselines.features import check_observations, features, target_goal_of
-from polymimic.baselines.files import read_policy_file, write_policy_file
 from polymimic.baselines.hyperparameters import Hyperparameters
+from polymimic.baselines.policy_file import read_policy_file, write_policy_file
 from polymimic.field import PRIMITIVES
 
 __all__ = ["ClonedPolicy", "Policy", "RandomPolicy", "load_policy"]

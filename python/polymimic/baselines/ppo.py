@@ -32,7 +32,7 @@ from typing import Any
 import numpy as np
 
 from polymimic.baselines.features import FEATURE_NAMES, check_observations, features, target_goal_of
-from polymimic.baselines.files import write_policy_file
+from polymimic.baselines.policy_file import write_policy_file
 from polymimic.bodies import WheeledBody, as_body, body_name
 
 __all__ = ["FEATURE_SCALE", "Checkpoint", "PPOPolicy", "available", "fit", "learning_curve", "new_model", "scaled",

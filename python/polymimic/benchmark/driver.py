@@ -38,7 +38,10 @@ from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
 from polymimic.benchmark.config import FROM_THE_REWARD, BenchmarkConfig
 from polymimic.benchmark.figures import draw_figures
-from polymimic.benchmark.files import (
+from polymimic.benchmark.report import benchmark_html, benchmark_markdown
+from polymimic.benchmark.rundir import BenchmarkDir
+from polymimic.benchmark.summary import gather
+from polymimic.benchmark.task_files import (
     load_controller_skill,
     load_method_evaluation,
     load_ppo_bc_curve,
@@ -47,9 +50,6 @@ from polymimic.benchmark.files import (
     load_tuning,
     load_weighing,
 )
-from polymimic.benchmark.report import benchmark_html, benchmark_markdown
-from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.benchmark.summary import gather
 from polymimic.benchmark.tasks import (
     POLYMIMIC_METHODS,
     PRACTISED,
@@ -76,7 +76,7 @@ from polymimic.runs.backends import TaskRunner
 from polymimic.runs.config import ConfigError
 from polymimic.runs.practising import is_practice_of, load_practice, practice_task
 from polymimic.runs.progress import progress
-from polymimic.runs.steps import Stepped, counted, each_member_recorded
+from polymimic.runs.stages import Staged, counted, each_member_recorded
 
 __all__ = ["Benchmark"]
 
@@ -87,7 +87,7 @@ random (no fit), so that no worker is left idle while the other finishes a long 
 
 
 @dataclasses.dataclass
-class Benchmark(Stepped):
+class Benchmark(Staged):
     """One benchmark run: its directory, config, where tasks run, and whether to keep quiet."""
 
     run: BenchmarkDir
@@ -123,21 +123,21 @@ class Benchmark(Stepped):
         """Every step, in order; the seconds they took."""
         self.check_extras(self.config)
         started = time.perf_counter()
-        self._step("recognise", self.recognise)
-        self._step("record", self.record)
+        self._stage("recognise", self.recognise)
+        self._stage("record", self.record)
         shared = self.shared()
-        self._step("learn", lambda: self.learn(shared))
+        self._stage("learn", lambda: self.learn(shared))
         if is_weighed(self.config):
-            self._step("weigh", lambda: self.weigh(shared))
-        self._step("tune", lambda: self.tune(shared))
-        self._step("evaluate", lambda: self.evaluate(shared))
+            self._stage("weigh", lambda: self.weigh(shared))
+        self._stage("tune", lambda: self.tune(shared))
+        self._stage("evaluate", lambda: self.evaluate(shared))
         if PRACTISED in self.config.benchmark.methods:
-            self._step("practice", lambda: self.practice(shared))
+            self._stage("practice", lambda: self.practice(shared))
         if "ppo" in self.config.benchmark.methods:
-            self._step("ppo", lambda: self.ppo(shared))
+            self._stage("ppo", lambda: self.ppo(shared))
         if "ppo_bc" in self.config.benchmark.methods:
-            self._step("ppo_bc", lambda: self.ppo_bc(shared))
-        self._step("report", self.report)
+            self._stage("ppo_bc", lambda: self.ppo_bc(shared))
+        self._stage("report", self.report)
         return time.perf_counter() - started
 
     # 1. The recogniser.

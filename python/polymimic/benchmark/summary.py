@@ -32,7 +32,8 @@ from polymimic._native import __version__
 from polymimic.baselines.ppo import steps_to_reach
 from polymimic.baselines.tuning import validation_rank
 from polymimic.benchmark.config import BenchmarkConfig
-from polymimic.benchmark.files import (
+from polymimic.benchmark.rundir import BenchmarkDir
+from polymimic.benchmark.task_files import (
     load_controller_skill,
     load_method_evaluation,
     load_ppo_bc_curve,
@@ -40,7 +41,6 @@ from polymimic.benchmark.files import (
     load_ppo_curve,
     load_tuning,
 )
-from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.benchmark.tasks import POLYMIMIC_METHODS, PRACTISED, WEIGHED, final_lps, ppo_hyperparameters
 from polymimic.benchmark.weighing import chosen_world_weighting
 from polymimic.crowds import FLOOR, Crowd

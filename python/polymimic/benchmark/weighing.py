@@ -10,8 +10,8 @@ from typing import Any
 
 from polymimic.baselines.tuning import validation_rank
 from polymimic.benchmark.config import BenchmarkConfig
-from polymimic.benchmark.files import load_weighing
 from polymimic.benchmark.rundir import BenchmarkDir
+from polymimic.benchmark.task_files import load_weighing
 from polymimic.benchmark.tasks import WEIGHED
 
 __all__ = ["chosen_world_weighting", "is_weighed"]

@@ -14,12 +14,15 @@ robot from a live tracker stream.
 from __future__ import annotations
 
 import argparse
+import functools
 import sys
 import time
 
 from polymimic import __version__
 from polymimic._native import PolymimicError
+from polymimic.benchmark.practice_source import PRACTICE_SOURCE as BENCHMARK_PRACTICE
 from polymimic.cli import benchmark, demo, export, import_tracks, live, matrix, practice, replay, stages
+from polymimic.reproduce.practice_source import PRACTICE_SOURCE as REPRODUCTION_PRACTICE
 from polymimic.runs.config import ConfigError
 
 __all__ = ["EXIT_INTERRUPTED", "EXIT_USAGE", "build_parser", "main"]
@@ -35,8 +38,10 @@ def build_parser() -> argparse.ArgumentParser:
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
-    for command in (demo, stages, replay, export, benchmark, matrix, practice, import_tracks, live):
-        command.add(commands)
+    practice_on_runs = functools.partial(practice.add, sources=(REPRODUCTION_PRACTICE, BENCHMARK_PRACTICE))
+    for add in (demo.add, stages.add, replay.add, export.add, benchmark.add, matrix.add, practice_on_runs,
+                import_tracks.add, live.add):
+        add(commands)
     return parser
 
 

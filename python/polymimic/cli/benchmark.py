@@ -10,7 +10,7 @@ from typing import Any
 
 from polymimic.benchmark.config import METHODS, OPTIONAL_METHODS, BenchmarkConfig
 from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.cli.common import benchmark_config, run_options
+from polymimic.cli.run_options import benchmark_config, run_options
 from polymimic.crowds import PROFILES
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.config import ConfigError

@@ -10,7 +10,7 @@ from typing import Any
 
 from polymimic.benchmark.export import export_crowds
 from polymimic.benchmark.rundir import BenchmarkDir
-from polymimic.cli.common import benchmark_config, existing, requested_config, run_options, run_path
+from polymimic.cli.run_options import benchmark_config, existing, requested_config, run_options, run_path
 from polymimic.export import ACTIONS, LABELS
 from polymimic.reproduce.export import export_run
 from polymimic.reproduce.rundir import RunDir

@@ -9,8 +9,8 @@ import warnings
 from typing import Any
 
 from polymimic.bodies import WheeledBody
-from polymimic.cli.common import existing
 from polymimic.cli.import_options import without_run
+from polymimic.cli.run_options import existing
 from polymimic.datasets import save_demonstrations
 from polymimic.field import BODY_NAMES
 from polymimic.reproduce.rundir import RunDir

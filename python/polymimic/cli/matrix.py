@@ -9,7 +9,7 @@ import pathlib
 import sys
 from typing import Any
 
-from polymimic.cli.common import asked_config, run_options
+from polymimic.cli.run_options import asked_config, run_options
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.config import ConfigError
 from polymimic.runs.rundir import new_run_path

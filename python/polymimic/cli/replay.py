@@ -6,7 +6,7 @@ import argparse
 import pathlib
 from typing import Any
 
-from polymimic.cli.common import existing, positive, requested_config, run_options, run_path
+from polymimic.cli.run_options import existing, positive, requested_config, run_options, run_path
 from polymimic.datasets import load_demonstrations
 from polymimic.plots import animate_demonstration
 from polymimic.reproduce.rundir import RunDir

@@ -6,7 +6,7 @@ import argparse
 import sys
 from typing import Any
 
-from polymimic.cli.common import existing, positive, requested_config, run_options, run_path
+from polymimic.cli.run_options import existing, positive, requested_config, run_options, run_path
 from polymimic.reproduce.rundir import RunDir
 from polymimic.reproduce.stages import Context, reproduce, run_stage
 from polymimic.runs.backends import TaskRunner

@@ -42,9 +42,9 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.crowds import member_seed
 from polymimic.datasets import load_demonstrations, save_demonstrations, save_self_observation
 from polymimic.field import Demonstration, record
+from polymimic.matrix.cell_files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig, demonstrator_sets, stored_column
 from polymimic.matrix.draws import pool_size
-from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning, load_cell_weighing
 from polymimic.matrix.pictures import draw_pictures, one_attempt, pictured_attempt_path, pictured_trial
 from polymimic.matrix.report import matrix_html, matrix_markdown
 from polymimic.matrix.rundir import MatrixDir
@@ -63,13 +63,13 @@ from polymimic.matrix.weighing import chosen_weighting, is_weighed
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.progress import progress
 from polymimic.runs.roster_config import demonstrations_expected, record_demonstrator
-from polymimic.runs.steps import Stepped, each_member_recorded
+from polymimic.runs.stages import Staged, each_member_recorded
 
 __all__ = ["Matrix"]
 
 
 @dataclasses.dataclass
-class Matrix(Stepped):
+class Matrix(Staged):
     """One matrix run: its directory, config, where tasks run, and whether to keep quiet."""
 
     run: MatrixDir
@@ -80,15 +80,15 @@ class Matrix(Stepped):
     def run_all(self) -> float:
         """Every step, in order; the seconds they took."""
         started = time.perf_counter()
-        self._step("recognise", self.recognise)
-        self._step("record", self.record)
+        self._stage("recognise", self.recognise)
+        self._stage("record", self.record)
         shared = self.shared()
-        self._step("weigh", lambda: self.weigh(shared))
-        self._step("polymimic", lambda: self.polymimic(shared))
-        self._step("attempts", lambda: self.attempts(shared))
-        self._step("tune", lambda: self.tune(shared))
-        self._step("bco", lambda: self.bco(shared))
-        self._step("report", self.report)
+        self._stage("weigh", lambda: self.weigh(shared))
+        self._stage("polymimic", lambda: self.polymimic(shared))
+        self._stage("attempts", lambda: self.attempts(shared))
+        self._stage("tune", lambda: self.tune(shared))
+        self._stage("bco", lambda: self.bco(shared))
+        self._stage("report", self.report)
         return time.perf_counter() - started
 
     def rows(self) -> tuple[str, ...]:

@@ -31,7 +31,7 @@ from polymimic.matrix.config import MatrixConfig, demonstrator_sets, stored_colu
 from polymimic.matrix.rundir import MatrixDir
 from polymimic.matrix.weighing import chosen_weighting
 from polymimic.plots import plot_demonstration, save_figure
-from polymimic.runs.steps import counted
+from polymimic.runs.stages import counted
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -15,8 +15,8 @@ from typing import Any
 
 from polymimic import __version__
 from polymimic.bodies import Field, as_body
+from polymimic.matrix.cell_files import load_cell_evaluation, load_cell_tuning
 from polymimic.matrix.config import MatrixConfig, demonstrator_sets, stored_column
-from polymimic.matrix.files import load_cell_evaluation, load_cell_tuning
 from polymimic.matrix.rundir import MatrixDir
 from polymimic.matrix.weighing import chosen_weighting
 from polymimic.runs.stats import mean_sd

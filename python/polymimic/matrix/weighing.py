@@ -9,8 +9,8 @@ from __future__ import annotations
 from typing import Any
 
 from polymimic.baselines.tuning import validation_rank
+from polymimic.matrix.cell_files import load_cell_weighing
 from polymimic.matrix.config import MatrixConfig, demonstrator_sets
-from polymimic.matrix.files import load_cell_weighing
 from polymimic.matrix.rundir import MatrixDir
 
 __all__ = ["chosen_weighting", "is_weighed"]

@@ -31,7 +31,8 @@ from typing import Any
 from polymimic import _native
 from polymimic._native import SegmentedDemonstrations
 from polymimic.bodies import as_body
-from polymimic.field import Demonstration, _field_config
+from polymimic.field import Demonstration
+from polymimic.field_config import native_field_config
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import DEFAULT_CHECKPOINTS, CurvePoint
 from polymimic.practice.exploring import explored_attempts
@@ -132,7 +133,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
                 round_index += 1
                 if explore > 0.0:
                     attempts = explored_attempts(refined, attempts_per_configuration=per_round, seed=round_at,
-                                                 epsilon=explore, field_config=_field_config(field_config))
+                                                 epsilon=explore, field_config=native_field_config(field_config))
                 else:
                     attempts = evaluate(refined, attempts_per_configuration=per_round, seed=round_at,
                                         field_config=field_config).attempts

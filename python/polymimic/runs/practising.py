@@ -5,6 +5,9 @@ A practice is one piece of work (an interrupted one starts again): the imitator 
 one group (a benchmark's profile or a reproduction's experiment) practises for a budget of
 environment steps under the trial's seed (:func:`polymimic.practice.practice`) and is scored at
 every checkpoint on the run's evaluation attempts.
+
+Each kind of run whose imitators can practise says what its practice needs as a
+:class:`PracticeSource`: ``polymimic practice`` knows runs only through it.
 """
 
 from __future__ import annotations
@@ -24,13 +27,15 @@ from polymimic.plots import MeanSd
 from polymimic.practice.curve import plot_curves
 from polymimic.practice.methods import METHODS, practise
 from polymimic.runs.backends import TaskRunner
-from polymimic.runs.files import integer_key, json_object, name_key
+from polymimic.runs.checked_json import integer_key, json_object, name_key
+from polymimic.runs.config import ConfigError
 from polymimic.runs.progress import progress
 from polymimic.runs.rundir import RunHouse
 from polymimic.runs.stats import mean_sd
 
-__all__ = ["CHECKPOINT_KEYS", "FORMAT", "VERSION", "PracticeCurve", "PracticeInputs", "SavedPractice", "is_practice_of",
-           "load_practice", "practice_task", "practise_run", "summarise"]
+__all__ = ["CHECKPOINT_KEYS", "FORMAT", "VERSION", "PracticeCurve", "PracticeInputs", "PracticeSource", "RunPractice",
+           "SavedPractice", "chosen_groups", "is_practice_of", "load_practice", "practice_task", "practise_run",
+           "summarise"]
 
 CHECKPOINT_KEYS = ("checkpoint", "steps", "net_goals", "goals", "own_goals", "attempts_learned", "attempts_lost")
 """A checkpoint's keys in a practice file (:class:`polymimic.practice.CurvePoint`'s)."""
@@ -53,6 +58,45 @@ class PracticeInputs:
     attempts_per_configuration: int
     method: str = "refine"
     """How the imitators practise (:data:`polymimic.practice.methods.METHODS`)."""
+
+
+@dataclasses.dataclass(frozen=True)
+class RunPractice:
+    """A finished run's imitators ready to practise: the run, the groups chosen, every trial's
+    seed (in order; the first ones practise), what every practice shares, and where each trial's
+    file is (``trial_path(group, seed)``)."""
+
+    run: RunHouse[Any]
+    groups: list[str]
+    trial_seeds: list[int]
+    inputs: PracticeInputs
+    trial_path: Callable[[str, int], pathlib.Path]
+
+
+@dataclasses.dataclass(frozen=True)
+class PracticeSource:
+    """What a kind of run directory offers practice: the format its manifest names, the command
+    that makes it, the name ``practice.json`` gives it (``kind``), what a group of it is called,
+    and ``practice(path, only, steps, method)``: the run at ``path`` ready to practise, its groups
+    those of ``only`` (all for None, checked by :func:`chosen_groups`)."""
+
+    manifest_format: str
+    command: str
+    kind: str
+    group: str
+    practice: Callable[[pathlib.Path, Sequence[str] | None, int, str], RunPractice]
+
+
+def chosen_groups(names: Sequence[str], only: Sequence[str] | None, group: str) -> list[str]:
+    """The groups of ``names`` that ``only`` (``--only``) names, in the run's order; all of them
+    for None. A name the run lacks is a :class:`~polymimic.runs.config.ConfigError` naming it, as a
+    ``group`` of the run, and listing the run's."""
+    if only is None:
+        return list(names)
+    unknown = [n for n in only if n not in names]
+    if unknown:
+        raise ConfigError(f"--only: the run has no {group} {unknown[0]!r}; it has {', '.join(names)}")
+    return [n for n in names if n in only]
 
 
 def practice_task(inputs: PracticeInputs, job: tuple[str, int, str]) -> dict[str, Any]:

@@ -41,8 +41,8 @@ most a minute)."""
 def turn_rates_rad_s(theta_rad: np.ndarray, t_s: np.ndarray) -> np.ndarray:
     """How fast the heading changes from each reading to the next (times increasing), rad/s; 0
     where either reading is lost (NaN)."""
-    step_rad = np.abs(np.diff(theta_rad))
-    rates: np.ndarray = np.where(np.isfinite(step_rad), step_rad, 0.0) / np.diff(t_s)
+    turn_rad = np.abs(np.diff(theta_rad))
+    rates: np.ndarray = np.where(np.isfinite(turn_rad), turn_rad, 0.0) / np.diff(t_s)
     return rates
 
 

@@ -1,4 +1,5 @@
-"""The benchmark's own files, each checked whole on reading, so that a damaged one is redone
+"""The files the benchmark's tasks leave (evaluations, tunings, ppo curves, weighings, the
+controllers' skill), each checked whole on reading, so that a damaged one is redone
 rather than counted (see :meth:`~polymimic.reproduce.rundir.RunHouse.finished`)."""
 
 from __future__ import annotations
@@ -8,7 +9,7 @@ from typing import Any, TypedDict
 
 from polymimic._native import ModelFileError
 from polymimic.benchmark.config import METHODS, TRIAL_INDEPENDENT, WORLD_WEIGHTINGS
-from polymimic.runs.files import checked_outcomes, checked_tuning, integer_key, json_object, name_key
+from polymimic.runs.checked_json import checked_outcomes, checked_tuning, integer_key, json_object, name_key
 
 __all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_controller_skill", "load_method_evaluation",
            "load_ppo_bc_curve", "load_ppo_bc_tuning", "load_ppo_curve", "load_tuning", "load_weighing"]

@@ -1,4 +1,4 @@
-"""How an application runs its steps: each one timed into the run's manifest and said when it
+"""How an application runs its stages: each one timed into the run's manifest and said when it
 ends, and a finished output recognised by how many items it holds.
 
 >>> counted([1, 2, 3], 3)
@@ -21,7 +21,7 @@ from polymimic.datasets import load_demonstrations
 from polymimic.field import Demonstration
 from polymimic.runs.rundir import RunHouse
 
-__all__ = ["Stepped", "counted", "each_member_recorded"]
+__all__ = ["Staged", "counted", "each_member_recorded"]
 
 Items = TypeVar("Items", bound=Sized)
 
@@ -43,9 +43,9 @@ def each_member_recorded(path: pathlib.Path, *, names: Sequence[str], n: int) ->
     return demos
 
 
-class Stepped:
+class Staged:
     """What an application's run shares: saying what it does (unless ``quiet``) and running a
-    step timed into its run directory's manifest. Subclasses give ``run`` and ``quiet``."""
+    stage timed into its run directory's manifest. Subclasses give ``run`` and ``quiet``."""
 
     run: RunHouse[Any]
     quiet: bool
@@ -55,7 +55,7 @@ class Stepped:
         if not self.quiet:
             print(message, file=sys.stderr)
 
-    def _step(self, name: str, work: Callable[[], int]) -> int:
+    def _stage(self, name: str, work: Callable[[], int]) -> int:
         started = time.perf_counter()
         self.run.stage_started(name)
         made = work()

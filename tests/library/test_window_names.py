@@ -1,4 +1,4 @@
-"""Naming steps: the settings and starts refused by name, and lost readings filled from the
+"""Naming windows: the settings and starts refused by name, and lost readings filled from the
 nearest good one."""
 
 import math
@@ -8,7 +8,7 @@ import pytest
 
 import polymimic
 from polymimic.field import as_frames
-from polymimic.step_names import NO_NAME, name_windows, repeat_last_good, segmenter_settings, step_settings
+from polymimic.window_names import NO_NAME, name_windows, repeat_last_good, segmenter_settings, window_settings
 
 
 class _Impossible:
@@ -27,15 +27,15 @@ def frames():
 def test_a_misspelt_segmenter_setting_is_refused_by_name():
     with pytest.raises(ValueError, match="segmenter has no setting 'gap_margn'; its settings are min_frames, "
                                          "stop_distance_mm, stop_rotation_deg, limit_sds, gap_margin"):
-        step_settings({"gap_margin": 1.0, "gap_margn": 3.0})
+        window_settings({"gap_margin": 1.0, "gap_margn": 3.0})
     with pytest.raises(ValueError, match="segmenter has no setting 'stop_distance', 'window'"):
         segmenter_settings({"stop_distance": 1.0, "window": 30})
 
 
-def test_step_settings_keep_the_segmenters_step_tolerances_only():
-    assert step_settings({"min_frames": 12, "limit_sds": 3.0, "gap_margin": 1.5, "stop_distance_mm": 2.0}) == {
+def test_window_settings_keep_the_segmenters_window_tolerances_only():
+    assert window_settings({"min_frames": 12, "limit_sds": 3.0, "gap_margin": 1.5, "stop_distance_mm": 2.0}) == {
         "gap_margin": 1.5, "stop_distance_mm": 2.0}
-    assert step_settings(None) == {}
+    assert window_settings(None) == {}
 
 
 @pytest.mark.parametrize("name", ["gap_margin", "stop_distance_mm", "stop_rotation_deg"])

@@ -1,5 +1,5 @@
-"""The matrix's own files, each checked whole on reading, so that a damaged one is redone rather
-than counted."""
+"""The files the matrix's cells leave (evaluations, weighings, tunings), each checked whole on
+reading, so that a damaged one is redone rather than counted."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from typing import Any, TypedDict
 
 from polymimic._native import ModelFileError
 from polymimic.matrix.config import WEIGHTINGS
-from polymimic.runs.files import checked_outcomes, checked_tuning, integer_key, json_object, name_key
+from polymimic.runs.checked_json import checked_outcomes, checked_tuning, integer_key, json_object, name_key
 
 __all__ = ["SavedCellEvaluation", "SavedCellTuning", "SavedCellWeighing", "load_cell_evaluation", "load_cell_tuning",
            "load_cell_weighing"]

@@ -6,7 +6,7 @@ A window of :data:`WINDOW_FRAMES` frames is a stop if the robot ends it within t
 tolerances of where it started it; otherwise the HMM that scores it highest names it, and none
 does (:data:`NO_NAME`) where the best two scores are within the gap margin. A window that would
 run past the demonstration's end is moved back to its last full window. Both ``bco``'s labels
-(:func:`polymimic.baselines.labels.step_labels`) and Minari's actions
+(:func:`polymimic.baselines.labels.window_labels`) and Minari's actions
 (:func:`polymimic.export.steps_of`) are named so.
 
 Examples
@@ -32,23 +32,23 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, WHEELED_EQUIVALENT
 
 __all__ = ["LABELS", "NO_NAME", "SEGMENTER_SETTINGS", "WINDOW_FRAMES", "name_windows", "repeat_last_good",
-           "segmenter_settings", "step_settings"]
+           "segmenter_settings", "window_settings"]
 
 LABELS = ("steps", "segments")
-"""How a recogniser may label demonstrations: by the second of motion from each step (the
+"""How a recogniser may label demonstrations: by the second of motion from each frame (the
 default), or by the segments (thesis §3.2.2) the frames lie in."""
 
 SEGMENTER_SETTINGS = ("min_frames", "stop_distance_mm", "stop_rotation_deg", "limit_sds", "gap_margin")
 """The settings :meth:`polymimic.PrimitiveRecognizer.segment` takes."""
 
-# The segmenter's settings that name a step as they name a segment.
-_STEP_SETTINGS = ("stop_distance_mm", "stop_rotation_deg", "gap_margin")
+# The segmenter's settings that name a window as they name a segment.
+_WINDOW_SETTINGS = ("stop_distance_mm", "stop_rotation_deg", "gap_margin")
 
 NO_NAME = -1
 """The name of a window too close to call (a gap) or too short to read."""
 
 WINDOW_FRAMES = 30
-"""Frames the recogniser reads to name a step: one second, the length of every self-observed
+"""Frames the recogniser reads to name a window: one second, the length of every self-observed
 primitive it learned from."""
 
 _MOVING = -2
@@ -84,10 +84,10 @@ def segmenter_settings(segmenter: Mapping[str, Any] | None) -> dict[str, Any]:
     return settings
 
 
-def step_settings(segmenter: Mapping[str, Any] | None) -> dict[str, Any]:
-    """The segmenter's settings that :func:`name_windows` names a step with (a ValueError for
+def window_settings(segmenter: Mapping[str, Any] | None) -> dict[str, Any]:
+    """The segmenter's settings that :func:`name_windows` names a window with (a ValueError for
     a key the segmenter has not)."""
-    return {k: v for k, v in segmenter_settings(segmenter).items() if k in _STEP_SETTINGS}
+    return {k: v for k, v in segmenter_settings(segmenter).items() if k in _WINDOW_SETTINGS}
 
 
 def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Sequence[int] | np.ndarray, *,
@@ -96,7 +96,7 @@ def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Se
     """The index into :data:`polymimic.field.PRIMITIVES` of the window of ``window_frames``
     frames from each of ``starts`` (a tracker-frame record array), or :data:`NO_NAME`. A
     recogniser of the humanoid's own primitives names its side-steps and kick by their wheeled
-    equivalents (:data:`polymimic.field.WHEELED_EQUIVALENT`): steps are actions of the five.
+    equivalents (:data:`polymimic.field.WHEELED_EQUIVALENT`): every name is one of the five.
     ``starts`` are frame indices in time order; the tolerances and ``gap_margin`` are finite
     and ≥ 0, as the segmenter has them. Lost readings repeat the last good one, as the
     environment repeats them."""
@@ -133,8 +133,8 @@ def _check_non_negative(name: str, value: Any) -> None:
 
 def _checked_starts(starts: Sequence[int] | np.ndarray, n_frames: int) -> np.ndarray:
     """``starts`` as int64 frame indices, or a ValueError: each must be a frame of the
-    demonstration (a negative one would slice from its end), and they run in time order, as
-    steps do (a repeat is allowed)."""
+    demonstration (a negative one would slice from its end), and they run in time order (a
+    repeat is allowed)."""
     checked = np.asarray(starts)
     if checked.ndim != 1 or (checked.size and checked.dtype.kind not in "iu"):
         raise ValueError(f"starts must be a sequence of integer frame indices, got {starts!r}")

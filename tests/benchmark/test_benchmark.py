@@ -38,6 +38,12 @@ members = [{ controller = "tiny", lapse = 0.1 }, { controller = "poor", lapse = 
 """.replace("{methods}", json.dumps(TINY_METHODS))
 
 
+def _polymimic_on_pair() -> str:
+    """The tiny benchmark, polymimic alone on the pair."""
+    return (TINY.replace('profiles = ["pair", "duo"]', 'profiles = ["pair"]')
+            .replace(f"methods = {json.dumps(TINY_METHODS)}", 'methods = ["polymimic"]'))
+
+
 @pytest.fixture(scope="module")
 def tiny_toml(tmp_path_factory):
     path = tmp_path_factory.mktemp("config") / "tiny.toml"
@@ -118,8 +124,8 @@ def test_polymimic_weighs_its_world_model_as_its_validation_prefers(benchmarked)
 
 def test_one_world_weighting_is_used_untried(tmp_path):
     config = tmp_path / "every.toml"
-    config.write_text(TINY.replace('profiles = ["pair", "duo"]', 'profiles = ["pair"]\nmethods = ["polymimic"]\n'
-                                   'world_weightings = ["every"]'))
+    config.write_text(_polymimic_on_pair().replace('profiles = ["pair"]', 'profiles = ["pair"]\n'
+                                                   'world_weightings = ["every"]'))
     run = tmp_path / "every"
     assert main(["benchmark", "--config", str(config), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0
     assert not list(run.rglob("weighing_*.json"))
@@ -272,8 +278,7 @@ def test_the_report_names_the_improved_controls_choices_where_they_are_not_the_d
     defaults = _summary(benchmarked)["profiles"]["pair"]["methods"]["polymimic"]["hyperparameters"]
     assert "prefer_sooner_goals" not in defaults and "push_heading_tail" not in defaults
     config = tmp_path / "sooner.toml"
-    config.write_text(TINY.replace('profiles = ["pair", "duo"]', 'profiles = ["pair"]\nmethods = ["polymimic"]')
-                      + "[learning]\nprefer_sooner_goals = true\npush_heading_tail = 0.2\n")
+    config.write_text(_polymimic_on_pair() + "[learning]\nprefer_sooner_goals = true\npush_heading_tail = 0.2\n")
     run = tmp_path / "sooner"
     assert main(["benchmark", "--config", str(config), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0
     chosen = _summary(run)["profiles"]["pair"]["methods"]["polymimic"]["hyperparameters"]

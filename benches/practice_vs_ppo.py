@@ -37,7 +37,7 @@ CHECKPOINTS = (0, 10_000, 25_000, 50_000, 100_000, 150_000, 250_000, 350_000, 50
 def curve_of(method: str, run: BenchmarkDir, config: Any, profile: str, seed: int, steps: int) -> list[list[float]]:
     """``[checkpoint, steps played, net goals]`` at each checkpoint up to ``steps``."""
     marks = [c for c in CHECKPOINTS if c <= steps] + ([steps] if steps not in CHECKPOINTS else [])
-    per_configuration = config.benchmark.attempts_per_configuration
+    per_configuration = config.benchmark.sizes.attempts_per_configuration
     demos = load_demonstrations(run.crowd_path(profile))
     if method in ("jsrl", "distil"):
         from polymimic.practice.distil import distil

@@ -41,7 +41,7 @@ def main() -> None:
     run = BenchmarkDir(options.run_dir)
     config = run.open(None)
     segmenter = dataclasses.asdict(config.segmenter)
-    per_configuration = config.benchmark.attempts_per_configuration
+    per_configuration = config.benchmark.sizes.attempts_per_configuration
     done: dict[str, Any] = json.loads(options.out.read_text()) if options.out.exists() else {}
     profiles = options.profiles or list(config.benchmark.profiles)
     for profile in profiles:

@@ -159,7 +159,7 @@ class Benchmark(Staged):
 
     def record(self) -> int:
         """Stage: every profile's crowd recorded; returns the crowds recorded now."""
-        made, n = 0, self.config.benchmark.demonstrations_per_configuration
+        made, n = 0, self.config.benchmark.sizes.demonstrations_per_configuration
         crowds = self.config.crowds()
         with progress(total=len(crowds), desc="record", quiet=self.quiet) as bar:
             for crowd in crowds:
@@ -275,7 +275,7 @@ class Benchmark(Staged):
         under ``world_weighting``: one played under another than validation now chooses is redone."""
         path = self.run.evaluation_path(profile, method, seed)
         saved = self.run.loaded(path, load_method_evaluation)
-        done = saved is not None and (saved["attempts"] == 2 * self.config.benchmark.attempts_per_configuration
+        done = saved is not None and (saved["attempts"] == 2 * self.config.benchmark.sizes.attempts_per_configuration
                                       and saved["seed"] == self.config.seeds.evaluation)
         if done and world_weighting is not None:
             return bool(json.loads(path.read_text(encoding="utf-8")).get("world_weighting") == world_weighting)
@@ -319,7 +319,7 @@ class Benchmark(Staged):
         saved = self.run.loaded(self.run.practice_path(profile, seed), load_practice)
         return self._evaluation_done(profile, PRACTISED, seed) and is_practice_of(
             saved, profile, seed, evaluation_seed=self.config.seeds.evaluation,
-            attempts=2 * settings.attempts_per_configuration, budget=settings.practice_steps,
+            attempts=2 * settings.sizes.attempts_per_configuration, budget=settings.practice_steps,
             method=settings.practice_method)
 
     def practice(self, shared: Shared) -> int:
@@ -344,8 +344,9 @@ class Benchmark(Staged):
             return False
         settings = self.config.benchmark
         return (saved["seed"], saved["evaluation_seed"], saved["attempts"], saved["total_timesteps"],
-                saved["eval_every"]) == (seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
-                                         settings.ppo_timesteps, settings.ppo_eval_every)
+                saved["eval_every"]) == (seed, self.config.seeds.evaluation,
+                                         2 * settings.sizes.attempts_per_configuration, settings.ppo_timesteps,
+                                         settings.ppo_eval_every)
 
     def ppo(self, shared: Shared) -> int:
         """Stage: ``ppo``'s runs and their curves; returns the runs made."""
@@ -367,7 +368,7 @@ class Benchmark(Staged):
         settings = self.config.benchmark
         return saved is not None and saved["pretraining"] == chosen and (
             saved["seed"], saved["evaluation_seed"], saved["attempts"], saved["total_timesteps"],
-            saved["eval_every"]) == (seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
+            saved["eval_every"]) == (seed, self.config.seeds.evaluation, 2 * settings.sizes.attempts_per_configuration,
                                      settings.ppo_timesteps, settings.ppo_eval_every)
 
     def ppo_bc(self, shared: Shared) -> int:

@@ -49,7 +49,7 @@ class Shared:
             dataclasses.replace(body)
         chosen = self.sets[row][column]
         return chosen, drawn(self.demonstrations[chosen.name], names=chosen.names, spec=chosen.spec, draw=draw,
-                             per_configuration=self.config.matrix.demonstrations_per_configuration,
+                             per_configuration=self.config.matrix.sizes.demonstrations_per_configuration,
                              seed=self.config.seeds.demonstrations)
 
     def draw_of(self, seed: int) -> int:
@@ -90,7 +90,7 @@ def polymimic_task(shared: Shared, job: tuple[str, str, int, str]) -> dict[str, 
     by the improved control."""
     row, column, seed, weighting = job
     played = _played(shared, row, column, seed, weighting, attempts_per_configuration=(
-        shared.config.matrix.attempts_per_configuration), attempts_seed=shared.config.seeds.evaluation)
+        shared.config.matrix.sizes.attempts_per_configuration), attempts_seed=shared.config.seeds.evaluation)
     return {**_evaluation(shared, row, column, "polymimic", seed, played), "weighting": weighting}
 
 
@@ -100,7 +100,7 @@ def attempt_task(shared: Shared, job: tuple[str, str, int, str]) -> dict[str, An
     attempt's outcome, for the caller to check against the saved evaluation."""
     row, column, seed, weighting = job
     played = _played(shared, row, column, seed, weighting, attempts_per_configuration=(
-        shared.config.matrix.attempts_per_configuration), attempts_seed=shared.config.seeds.evaluation)
+        shared.config.matrix.sizes.attempts_per_configuration), attempts_seed=shared.config.seeds.evaluation)
     return {"row": row, "column": column, "seed": seed, "weighting": weighting, "attempt": played.attempts[0],
             "outcomes": [a.outcome for a in played.attempts]}
 
@@ -111,17 +111,17 @@ def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:
     evaluation's): polymimic's tuning, with bco's effort."""
     row, column, weighting = job
     config, settings = shared.config, shared.config.matrix
-    attempts = validation_attempts_apart(settings.validation_attempts_per_configuration,
-                                         validation_seed=settings.validation_seed,
+    attempts = validation_attempts_apart(settings.tuning.validation_attempts_per_configuration,
+                                         validation_seed=settings.tuning.validation_seed,
                                          evaluation_seed=config.seeds.evaluation,
-                                         evaluation_attempts_per_configuration=settings.attempts_per_configuration)
+                                         evaluation_attempts_per_configuration=settings.sizes.attempts_per_configuration)
     played = _played(shared, row, column, config.seeds.first_trial, weighting,
-                     attempts_per_configuration=settings.validation_attempts_per_configuration,
-                     attempts_seed=VALIDATION_SEED_BASE + settings.validation_seed)
+                     attempts_per_configuration=settings.tuning.validation_attempts_per_configuration,
+                     attempts_seed=VALIDATION_SEED_BASE + settings.tuning.validation_seed)
     if [(a.configuration, a.seed) for a in played.attempts] != attempts:
         raise RuntimeError("the imitator's validation attempts are not bco's")  # the seed rule, guarded
     return {"row": row, "column": column, "weighting": weighting, "seed": config.seeds.first_trial,
-            "validation_seed": settings.validation_seed, "goals": played.goals, "own_goals": played.own_goals,
+            "validation_seed": settings.tuning.validation_seed, "goals": played.goals, "own_goals": played.own_goals,
             "attempts": len(played.attempts)}
 
 
@@ -143,7 +143,7 @@ def _played(shared: Shared, row: str, column: str, seed: int, weighting: str, *,
 
 def _bco_inputs(shared: Shared, row: str) -> dict[str, Any]:
     return {"recognizer": shared.recognizers[row], "segmenter": dataclasses.asdict(shared.config.run.segmenter),
-            "imitator": shared.config.body(row), "max_samples": shared.config.matrix.max_decision_samples}
+            "imitator": shared.config.body(row), "max_samples": shared.config.matrix.tuning.max_decision_samples}
 
 
 def bco_candidates(budget: int) -> list[Hyperparameters]:
@@ -163,11 +163,11 @@ def tuning_task(shared: Shared, job: tuple[str, str]) -> dict[str, Any]:
     row, column = job
     config, settings = shared.config, shared.config.matrix
     _, demos = shared.cell(row, column, 0)
-    tuning = baselines.tune("bco", demos, candidates=bco_candidates(settings.tuning_budget),
-                            validation_seed=settings.validation_seed,
-                            attempts_per_configuration=settings.validation_attempts_per_configuration,
+    tuning = baselines.tune("bco", demos, candidates=bco_candidates(settings.tuning.tuning_budget),
+                            validation_seed=settings.tuning.validation_seed,
+                            attempts_per_configuration=settings.tuning.validation_attempts_per_configuration,
                             evaluation_seed=config.seeds.evaluation,
-                            evaluation_attempts_per_configuration=settings.attempts_per_configuration,
+                            evaluation_attempts_per_configuration=settings.sizes.attempts_per_configuration,
                             seed=config.seeds.first_trial, field_config=config.run.field, **_bco_inputs(shared, row))
     return {"row": row, "column": column, "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
             "evaluation": _bco_evaluation(shared, row, column, config.seeds.first_trial, tuning.policy)}
@@ -184,7 +184,7 @@ def bco_task(shared: Shared, job: tuple[str, str, int, dict[str, Any]]) -> dict[
 
 def _bco_evaluation(shared: Shared, row: str, column: str, seed: int, policy: Any) -> dict[str, Any]:
     settings = shared.config.matrix
-    played = baselines.evaluate_policy(policy, attempts_per_configuration=settings.attempts_per_configuration,
+    played = baselines.evaluate_policy(policy, attempts_per_configuration=settings.sizes.attempts_per_configuration,
                                        seed=shared.config.seeds.evaluation, field_config=shared.config.run.field)
     return _evaluation(shared, row, column, "bco", seed, played)
 

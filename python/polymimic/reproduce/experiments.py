@@ -49,7 +49,7 @@ __all__ = ["SavedEvaluation", "evaluate_imitators", "evaluated_seeds", "imitator
 
 def trial_seeds(config: RunConfig) -> list[int]:
     """Every experiment's trial seeds: ``first_trial``, ``first_trial + 1``, …"""
-    return [config.seeds.first_trial + i for i in range(config.experiments.trials)]
+    return [config.seeds.first_trial + i for i in range(config.experiments.sizes.trials)]
 
 
 def evaluated_seeds(config: RunConfig) -> list[int]:
@@ -246,7 +246,7 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
     control, where not done yet; the first imitator's attempts are kept as a dataset. Returns how
     many evaluations ran, by experiment."""
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
-    attempts = 2 * config.experiments.attempts_per_configuration
+    attempts = 2 * config.experiments.sizes.attempts_per_configuration
     seeds = evaluated_seeds(config)
     ran = {}
     for experiment in _selected(config, experiments):
@@ -266,7 +266,7 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
         if not jobs:
             continue
         inputs = EvaluationInputs(recognizer=recognizer, learning=config.learning,
-                                  attempts_per_configuration=config.experiments.attempts_per_configuration,
+                                  attempts_per_configuration=config.experiments.sizes.attempts_per_configuration,
                                   seed=config.seeds.evaluation, items=experiment_items(run, experiment),
                                   field=config.field, body=config.imitator_body())
         with progress(total=len(jobs), desc=f"evaluate {experiment.name}", quiet=quiet) as bar:

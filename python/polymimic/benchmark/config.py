@@ -31,6 +31,7 @@ from typing import Any
 from polymimic._toml import documented as _doc
 from polymimic._toml import write_table, write_value
 from polymimic.crowds import PROFILES, Crowd
+from polymimic.evaluation import Attempts
 from polymimic.practice.methods import DEFAULT_METHOD as DEFAULT_PRACTICE
 from polymimic.practice.methods import METHODS as PRACTICE_METHODS
 from polymimic.runs.config import (
@@ -186,6 +187,11 @@ class BenchmarkConfig(ConfigFile):
     def imitator_body(self) -> Any:
         """The imitator's body (``[imitator] body``), as the library takes it."""
         return self.run.imitator_body()
+
+    def evaluation_attempts(self) -> Attempts:
+        """The attempts every method plays after every trial (``[benchmark]
+        attempts_per_configuration`` from each configuration, under ``[seeds] evaluation``)."""
+        return self.benchmark.sizes.evaluation_attempts(seed=self.seeds.evaluation)
 
     def trial_seeds(self) -> list[int]:
         """Every profile's trial seeds: ``first_trial``, ``first_trial + 1``, …"""

@@ -31,6 +31,7 @@ from polymimic._toml import documented as _doc
 from polymimic._toml import write_table
 from polymimic.bodies import Field, WheeledBody
 from polymimic.crowds import PROFILES
+from polymimic.evaluation import Attempts
 from polymimic.runs.config import (
     IMITATOR_BODIES,
     ConfigError,
@@ -210,6 +211,11 @@ class MatrixConfig(ConfigFile):
     def body(self, row: str) -> str | WheeledBody:
         """The imitator ``row`` as the library takes it."""
         return row if row in IMITATOR_BODIES else self.run.bodies[row]
+
+    def evaluation_attempts(self) -> Attempts:
+        """The attempts both methods play in every cell (``[matrix] attempts_per_configuration``
+        from each configuration, under ``[seeds] evaluation``)."""
+        return self.matrix.sizes.evaluation_attempts(seed=self.seeds.evaluation)
 
     def trial_seeds(self) -> list[int]:
         """The seeds of polymimic's trials in every cell."""

@@ -186,8 +186,9 @@ class Matrix(Staged):
 
     def _done(self, row: str, column: str, method: str, seed: int, weighting: str | None = None) -> bool:
         saved = self.run.loaded(self.run.evaluation_path(row, column, method, seed), load_cell_evaluation)
+        attempts = self.config.evaluation_attempts()
         return saved is not None and (saved["attempts"], saved["evaluation_seed"], saved["weighting"]) == (
-            2 * self.config.matrix.sizes.attempts_per_configuration, self.config.seeds.evaluation, weighting)
+            attempts.count, attempts.seed, weighting)
 
     def _write(self, result: dict[str, Any]) -> None:
         _write_in_cell(self.run.evaluation_path(result["row"], result["column"], result["method"], result["seed"]),

@@ -33,6 +33,7 @@ from polymimic._tables import Path, merged
 from polymimic._toml import documented as _doc
 from polymimic._toml import loads, write_table
 from polymimic.bodies import THESIS_BODIES, WheeledBody
+from polymimic.evaluation import Attempts
 from polymimic.field import PrimitiveSequence, check_config, default_config, primitive_set_of
 from polymimic.learning import LearningConfig
 from polymimic.runs.roster import EXPERIMENTS, Experiment
@@ -241,6 +242,15 @@ class RunConfig(ConfigFile):
         """Whether the imitator is the thesis's, the Lego robot: only then do the thesis's figures
         compare."""
         return self.imitator.body == "lego"
+
+    def evaluation_attempts(self) -> Attempts:
+        """The attempts every evaluated imitator plays (``[experiments] attempts_per_configuration``
+        from each configuration, under ``[seeds] evaluation``).
+
+        >>> RunConfig().evaluation_attempts()
+        Attempts(per_configuration=25, seed=1000, starts=None)
+        """
+        return self.experiments.sizes.evaluation_attempts(seed=self.seeds.evaluation)
 
     def all_experiments(self) -> dict[str, Experiment]:
         """The thesis's three experiments, then the user's."""

@@ -9,6 +9,8 @@ one learning trial belongs to: an experiment, a crowd's profile, a matrix's cell
 
 >>> Sizes(trials=8).demonstrations_per_configuration
 25
+>>> Sizes(trials=8, attempts_per_configuration=5).evaluation_attempts(seed=1000)
+Attempts(per_configuration=5, seed=1000, starts=None)
 >>> Sizes(trials=0)
 Traceback (most recent call last):
 ...
@@ -22,6 +24,7 @@ from typing import Any
 
 from polymimic._arguments import in_range
 from polymimic._toml import documented
+from polymimic.evaluation import Attempts
 
 __all__ = ["Sizes", "TuningSizes"]
 
@@ -40,6 +43,11 @@ class Sizes:
     def __post_init__(self) -> None:
         for field in dataclasses.fields(self):
             in_range(field.name, _integer(field.name, getattr(self, field.name)), 1)
+
+    def evaluation_attempts(self, *, seed: int) -> Attempts:
+        """The attempts every evaluated policy plays: ``attempts_per_configuration`` from each of
+        the thesis's two configurations, under the run's evaluation ``seed``."""
+        return Attempts(per_configuration=self.attempts_per_configuration, seed=seed)
 
 
 @dataclasses.dataclass(frozen=True)

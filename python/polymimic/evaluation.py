@@ -70,7 +70,7 @@ class Attempts:
 
     def episodes(self) -> list[tuple[int, int]]:
         """The (configuration, episode seed) of every attempt from the thesis's two starts,
-        configuration 1's first: what a batched player (:func:`polymimic.baselines.play`) steps.
+        configuration 1's first: what a batched player (``polymimic.baselines.evaluation.play``) steps.
 
         Raises
         ------

@@ -81,12 +81,14 @@ def main() -> None:
     parser.add_argument("--out", type=pathlib.Path, default=pathlib.Path("practice_vs_ppo"))
     parser.add_argument("--summary", type=pathlib.Path, help="every curve in --out, gathered into one JSON file")
     parser.add_argument("--plot", type=pathlib.Path)
+    parser.add_argument("--gather", action="store_true",
+                        help="only gather the curves already in --out into --summary and --plot; run nothing")
     options = parser.parse_args()
     os.environ.setdefault("OMP_NUM_THREADS", "1")  # torch on a small machine: one thread learns fastest
     run = BenchmarkDir(options.run_dir)
     config = run.open(None)
     options.out.mkdir(parents=True, exist_ok=True)
-    for profile in options.profiles:
+    for profile in [] if options.gather else options.profiles:
         for seed in options.seeds:
             for method in options.methods:
                 key = f"{method}/{profile}/{seed}/{options.steps}"
@@ -94,18 +96,33 @@ def main() -> None:
                 if path.exists():
                     json.loads(path.read_text())  # a damaged file is an error, not a result
                     continue
+                shared = _ppo_of_another_profile(options.out, method, seed, options.steps)
                 started = time.perf_counter()
-                curve = curve_of(method, run, config, profile, seed, options.steps)
+                curve = shared["curve"] if shared else curve_of(method, run, config, profile, seed, options.steps)
                 finished = {"key": key, "curve": curve, "seconds": round(time.perf_counter() - started, 1)}
+                if shared:  # ppo learns no crowd: one run per seed serves every profile, bit for bit
+                    finished.update(seconds=shared["seconds"], shared_with=shared["key"])
                 atomic_write_text(path, json.dumps(finished) + "\n")
                 print(f"{key}: {curve[-1][2]:+.0f} net goals at {curve[-1][1]} steps "
                       f"({finished['seconds']:.0f} s)", flush=True)
-    done = {v["key"]: {"curve": v["curve"], "seconds": v["seconds"]}
+    done = {v["key"]: {k: w for k, w in v.items() if k != "key"}
             for v in (json.loads(p.read_text()) for p in sorted(options.out.glob("*.json")))}
     if options.summary is not None:
         atomic_write_text(options.summary, json.dumps(done, indent=1) + "\n")
     if options.plot is not None:
         plot(done, options)
+
+
+def _ppo_of_another_profile(out: pathlib.Path, method: str, seed: int, steps: int) -> dict[str, Any] | None:
+    """A finished ``ppo`` curve of the same seed and budget on another profile (``ppo`` reads no
+    crowd, so its run is the same on every profile), else None."""
+    if method != "ppo":
+        return None
+    for path in sorted(out.glob(f"ppo_*_{seed}_{steps}.json")):
+        found: dict[str, Any] = json.loads(path.read_text())
+        if found["key"].startswith("ppo/") and "shared_with" not in found:
+            return found
+    return None
 
 
 def plot(done: dict[str, Any], options: argparse.Namespace) -> None:
@@ -124,7 +141,7 @@ def plot(done: dict[str, Any], options: argparse.Namespace) -> None:
                 continue
             steps = np.array([p[1] for p in curves[0]])
             mean = np.mean([[p[2] for p in c][: len(steps)] for c in curves], axis=0)
-            ax.plot(steps, mean, marker="o", label=f"{method} ({len(curves)} seeds)")
+            ax.plot(steps, mean, marker="o", markersize=3, label=f"{method} ({len(curves)} seeds)")
         ax.set_title(profile)
         ax.set_xlabel("environment steps")
         ax.set_ylabel("net goals of 50")

@@ -239,7 +239,7 @@ def _at(curve: list[list[float]], steps: int) -> float | None:
     return points[-1] if points else None
 
 
-def _mean_curves(compared: dict[str, Any]) -> dict[tuple[str, str], list[list[list[float]]]]:
+def _curves_by_method(compared: dict[str, Any]) -> dict[tuple[str, str], list[list[list[float]]]]:
     """Per (method, profile): the seeds' curves, each ``[checkpoint, steps played, net goals]``."""
     out: dict[tuple[str, str], list[list[list[float]]]] = {}
     for key, entry in compared.items():
@@ -269,7 +269,7 @@ def practice_vs_ppo_table() -> str | None:
     compared = load("practice_vs_ppo.json")
     if compared is None:
         return None
-    curves = _mean_curves(compared)
+    curves = _curves_by_method(compared)
     header = ["0 steps" if c == 0 else f"{c:,}".replace(",", " ") for c in COMPARED_AT]
     lines = ["| profile | method | seeds | " + " | ".join(header) + " |", "| --- " * (len(header) + 3) + "|"]
     for (method, profile), runs in sorted(curves.items(), key=lambda kv: (kv[0][1], kv[0][0])):
@@ -287,7 +287,7 @@ def practice_targets() -> str | None:
     compared = load("practice_vs_ppo.json")
     if compared is None:
         return None
-    curves = _mean_curves(compared)
+    curves = _curves_by_method(compared)
     methods = sorted({m for m, _ in curves} - {"ppo", "ppo_bc"})
     verdict = {True: "met", False: "**missed**", None: "n/a"}
     lines = ["| profile | target | measured | verdict |", "| --- | --- | --- | --- |"]
@@ -344,7 +344,7 @@ def practice_summary() -> str | None:
     compared = load("practice_vs_ppo.json")
     if compared is None:
         return None
-    curves = _mean_curves(compared)
+    curves = _curves_by_method(compared)
     made = provenance("practice_vs_ppo.json")
     method = next(m for m, _ in curves if m not in ("ppo", "ppo_bc"))
     parts = []

@@ -51,7 +51,7 @@ import numpy as np
 from polymimic._arguments import integer
 from polymimic._native import Episode, FieldRunError
 from polymimic.bodies import WheeledBody, body_name, resolve
-from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, primitive_command
+from polymimic.field import OUTCOME_REWARDS, PRIMITIVE_SETS, PRIMITIVES, primitive_command
 from polymimic.field_config import native_field_config
 from polymimic.plots import state_image
 
@@ -66,7 +66,6 @@ __all__ = ["ENV_ID", "PenaltyKickEnv", "register"]
 ENV_ID = "PenaltyKick-v0"
 """The id under which :func:`register` makes the environment known to Gymnasium."""
 
-_REWARDS = {"goal": 1.0, "own_goal": -1.0}
 _TRUNCATING = frozenset({"time_up"})
 _Base: Any = gymnasium.Env if gymnasium is not None else object
 
@@ -167,7 +166,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         command = self._commands[index] if index < len(self._commands) else \
             self._episode.command_for(self.primitives[index])
         _, outcome = self._episode.run([command] * self.frames_per_action)
-        reward = _REWARDS.get(outcome, 0.0) if outcome is not None else 0.0
+        reward = OUTCOME_REWARDS.get(outcome, 0.0) if outcome is not None else 0.0
         terminated = outcome is not None and outcome not in _TRUNCATING
         truncated = outcome in _TRUNCATING
         return self._observation(), reward, terminated, truncated, self._info()

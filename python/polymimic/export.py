@@ -45,7 +45,15 @@ import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
 from polymimic.env import ENV_ID
-from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVES, WHEELED_EQUIVALENT, Demonstration, primitives_sent
+from polymimic.field import (
+    FRAME_DTYPE,
+    OUTCOME_REWARDS,
+    OUTCOMES,
+    PRIMITIVES,
+    WHEELED_EQUIVALENT,
+    Demonstration,
+    primitives_sent,
+)
 from polymimic.window_names import LABELS, NO_NAME, name_windows, repeat_last_good, segmenter_settings, window_settings
 
 __all__ = ["ACTIONS", "LABELS", "OBSERVED", "SIMULATED_BODIES", "from_minari", "steps_of", "to_minari"]
@@ -56,7 +64,6 @@ ACTIONS = ("recognizer", "commands")
 OBSERVED = ("robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm")
 """The frame columns an observation holds, in order."""
 
-_REWARDS = {"goal": 1.0, "own_goal": -1.0}
 _TRUNCATING = frozenset({"time_up"})
 SIMULATED_BODIES = ("lego",)
 """The bodies ``PenaltyKick-v0`` simulates, whose demonstrations a dataset may hold."""
@@ -114,7 +121,7 @@ def steps_of(demonstration: Demonstration, *, step_frames: int = 30, actions: st
     else:
         chosen, gap = _nearest_named(name_windows(frames, recognizer, starts, **window_settings(segmenter)))
     rewards = np.zeros(n_steps)
-    rewards[-1] = _REWARDS.get(demonstration.outcome, 0.0)
+    rewards[-1] = OUTCOME_REWARDS.get(demonstration.outcome, 0.0)
     terminations, truncations = np.zeros(n_steps, dtype=bool), np.zeros(n_steps, dtype=bool)
     if demonstration.outcome in _TRUNCATING:
         truncations[-1] = True

@@ -59,6 +59,8 @@ WHEELED_EQUIVALENT = {"sidestep_left": "left", "sidestep_right": "right", "kick"
 """The wheeled primitive each of the humanoid's own looks most like, as Table 4.4 has its
 commands: a shuffle turns the body's outline the way a spin does, a kick leans it back."""
 OUTCOMES = ("goal", "own_goal", "ball_out", "robot_out", "time_up")
+OUTCOME_REWARDS = {"goal": 1.0, "own_goal": -1.0}
+"""An attempt's return by its outcome (every other outcome 0): net goals, one attempt at a time."""
 UNKNOWN_COMMAND = 65535
 """The ``command`` of a frame whose command was never recorded (a tracker log without a command
 column): the largest ``u2``, far from every real id, so it is never read as a command. Whatever

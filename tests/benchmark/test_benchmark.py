@@ -13,6 +13,9 @@ from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.cli import main
 from polymimic.learning import TrialResult
 
+# Every default method, and polymimic_practice, which runs only when named.
+TINY_METHODS = ["polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
+                "bc", "bc_best", "random"]
 TINY = """
 [recognizer]
 train_per_primitive = 40
@@ -24,8 +27,7 @@ demonstrations_per_configuration = 2
 attempts_per_configuration = 2
 validation_attempts_per_configuration = 1
 tuning_budget = 1
-methods = ["polymimic", "polymimic_thesis_control", "polymimic_uniform_lp", "polymimic_practice", "bco", "bco_lp",
-           "bc", "bc_best", "random"]
+methods = {methods}
 practice_steps = 300
 practice_trials = 1
 practice_method = "refine"
@@ -33,7 +35,13 @@ practice_method = "refine"
 members = [{ controller = "expert", lapse = 0.0, name = "good" }, { controller = "expert", lapse = 1.0, name = "bad" }]
 [profiles.duo]
 members = [{ controller = "tiny", lapse = 0.1 }, { controller = "poor", lapse = 0.6 }]
-"""
+""".replace("{methods}", json.dumps(TINY_METHODS))
+
+
+def _polymimic_on_pair() -> str:
+    """The tiny benchmark, polymimic alone on the pair."""
+    return (TINY.replace('profiles = ["pair", "duo"]', 'profiles = ["pair"]')
+            .replace(f"methods = {json.dumps(TINY_METHODS)}", 'methods = ["polymimic"]'))
 
 
 @pytest.fixture(scope="module")
@@ -76,7 +84,8 @@ def test_the_summary_follows_its_schema(benchmarked):
                                                   "final_lp", "true_skill"}
     assert pair["demonstrators"]["good"]["attempts"] == 4
     assert set(pair["skill_recovery"]) == {"spearman", "kendall", "best_hits", "top_among_best"}
-    assert list(pair["methods"]) == list(METHODS)
+    assert list(pair["methods"]) == TINY_METHODS
+    assert "polymimic_practice" not in METHODS and set(TINY_METHODS) == {*METHODS, "polymimic_practice"}
     for method, entry in pair["methods"].items():
         assert set(entry) == {"goals", "own_goals", "net_goals", "attempts", "evaluated", "hyperparameters",
                               "validation", "floor", "gain_over_floor"}
@@ -115,8 +124,8 @@ def test_polymimic_weighs_its_world_model_as_its_validation_prefers(benchmarked)
 
 def test_one_world_weighting_is_used_untried(tmp_path):
     config = tmp_path / "every.toml"
-    config.write_text(TINY.replace('profiles = ["pair", "duo"]', 'profiles = ["pair"]\nmethods = ["polymimic"]\n'
-                                   'world_weightings = ["every"]'))
+    config.write_text(_polymimic_on_pair().replace('profiles = ["pair"]', 'profiles = ["pair"]\n'
+                                                   'world_weightings = ["every"]'))
     run = tmp_path / "every"
     assert main(["benchmark", "--config", str(config), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0
     assert not list(run.rglob("weighing_*.json"))
@@ -269,8 +278,7 @@ def test_the_report_names_the_improved_controls_choices_where_they_are_not_the_d
     defaults = _summary(benchmarked)["profiles"]["pair"]["methods"]["polymimic"]["hyperparameters"]
     assert "prefer_sooner_goals" not in defaults and "push_heading_tail" not in defaults
     config = tmp_path / "sooner.toml"
-    config.write_text(TINY.replace('profiles = ["pair", "duo"]', 'profiles = ["pair"]\nmethods = ["polymimic"]')
-                      + "[learning]\nprefer_sooner_goals = true\npush_heading_tail = 0.2\n")
+    config.write_text(_polymimic_on_pair() + "[learning]\nprefer_sooner_goals = true\npush_heading_tail = 0.2\n")
     run = tmp_path / "sooner"
     assert main(["benchmark", "--config", str(config), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0
     chosen = _summary(run)["profiles"]["pair"]["methods"]["polymimic"]["hyperparameters"]

@@ -8,6 +8,7 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 import pytest
+from _track_logs import HEADER, _csv, _readings
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -21,7 +22,6 @@ from polymimic.tracks.resampling import heading
 
 METRES_DEGREES = {"length": "m", "angle": "deg"}
 POSITIONS = ("robot_x_mm", "robot_y_mm", "ball_x_mm", "ball_y_mm")
-HEADER = "t_s,robot_x_mm,robot_y_mm,robot_theta_rad,ball_x_mm,ball_y_mm"
 
 
 def _errors(original, imported):
@@ -119,19 +119,6 @@ def test_segmenting_the_imported_expert_gives_the_originals_labels(recognizer, t
 
 
 # Known answers.
-
-def _csv(tmp_path, rows, header=HEADER, name="log.csv"):
-    path = tmp_path / name
-    path.write_text(header + "\n" + "".join(",".join(map(str, row)) + "\n" for row in rows))
-    return path
-
-
-def _readings(n, *, robot=(-170.0, 0.0), ball=(170.0, 0.0), ball_step=(0.0, 0.0), robot_step=(0.0, 0.0),
-              start_s=0.0):
-    """n readings 1/30 s apart, robot and ball moving by a fixed step per reading."""
-    return [[start_s + i / 30, robot[0] + i * robot_step[0], robot[1] + i * robot_step[1], 0.0,
-             ball[0] + i * ball_step[0], ball[1] + i * ball_step[1]] for i in range(n)]
-
 
 def test_headings_are_resampled_along_the_shorter_arc(tmp_path):
     rows = [[0.0, -170, 0, math.radians(170), 170, 0], [2 / 30, -170, 0, math.radians(-170), 170, 0]]

@@ -57,7 +57,6 @@ mod record;
 mod setup;
 mod stats;
 mod tracker;
-mod wheels;
 
 pub use batch::EpisodeBatch;
 pub use body::BodyKind;

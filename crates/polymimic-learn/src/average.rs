@@ -11,7 +11,7 @@ use polymimic_field::{BodyKind, Configuration, FieldConfig, Frame};
 
 use crate::config::LearningConfig;
 use crate::control::{Attempt, ControlMode, ImitatorPolicy};
-use crate::laboratory::LaboratoryError;
+use crate::error::LaboratoryError;
 use crate::prediction::MotionTable;
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::trial::TrialResult;

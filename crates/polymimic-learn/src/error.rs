@@ -1,5 +1,8 @@
-//! Errors of learning: bad parameters apart from failures at run time.
+//! Errors of learning: bad parameters apart from failures at run time, and what can stop an
+//! experiment run end to end (the laboratory's, and the search for the Average demonstrator).
 
+use polymimic_field::FieldError;
+use polymimic_perceive::PerceiveError;
 use thiserror::Error;
 
 /// A config, ordering, demonstration set or motion table that can never be valid.
@@ -48,6 +51,21 @@ impl LearnError {
             params @ Self::Params(_) => params,
         }
     }
+}
+
+/// What can stop an experiment.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum LaboratoryError {
+    #[error(transparent)]
+    Field(#[from] FieldError),
+    #[error(transparent)]
+    Perceive(#[from] PerceiveError),
+    #[error(transparent)]
+    Learn(#[from] LearnError),
+    #[error(
+        "no imitator of {tried} trials, with tracking held in enough attempts, scored net goals (goals less own goals) between the Poor's {poor} and the Expert's {expert}"
+    )]
+    NoAverage { tried: usize, poor: i64, expert: i64 },
 }
 
 #[cfg(test)]

@@ -6,36 +6,20 @@
 use polymimic_field::{
     BodyKind, Demonstrator, FieldConfig, FieldError, Frame, LapseRate, Outcome, record_all, self_observation,
 };
-use polymimic_perceive::{LabelledSequence, PerceiveError, Recognizer, RecognizerConfig, SegmenterConfig, segment};
+use polymimic_perceive::{LabelledSequence, Recognizer, RecognizerConfig, SegmenterConfig, segment};
 use polymimic_types::TrackedFrame;
-use thiserror::Error;
 
 use crate::average::AverageSearch;
 use crate::config::LearningConfig;
 use crate::control::{Attempt, ControlMode, ImitatorPolicy};
 use crate::correspondence::{Setting, onto_setting};
-use crate::error::LearnError;
+use crate::error::{LaboratoryError, LearnError};
 use crate::prediction::MotionTable;
 use crate::record::TrialRecord;
 use crate::round::{Ending, SegmentedDemonstration};
 use crate::running::Running;
 use crate::trial::{PhaseOne, TrialResult, run_trial};
 use crate::world::WorldModel;
-
-/// What can stop an experiment.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum LaboratoryError {
-    #[error(transparent)]
-    Field(#[from] FieldError),
-    #[error(transparent)]
-    Perceive(#[from] PerceiveError),
-    #[error(transparent)]
-    Learn(#[from] LearnError),
-    #[error(
-        "no imitator of {tried} trials, with tracking held in enough attempts, scored net goals (goals less own goals) between the Poor's {poor} and the Expert's {expert}"
-    )]
-    NoAverage { tried: usize, poor: i64, expert: i64 },
-}
 
 /// A trained imitator's score on the field.
 #[derive(Debug, Clone, PartialEq)]

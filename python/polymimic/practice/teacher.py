@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 
+from polymimic.field import OUTCOME_REWARDS
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import CurvePoint
 from polymimic.practice.practised import PractisedPolicy
@@ -167,7 +168,7 @@ class Gate:
         played = evaluate(policy, attempts_per_configuration=self.attempts, seed=round_seed(seed, 10_000),
                           field_config=field_config)
         steps = sum(math.ceil(len(a.frames) / _FRAMES_PER_STEP) for a in played.attempts)
-        return steps, [_RETURNS.get(a.outcome, 0.0) for a in played.attempts]
+        return steps, [OUTCOME_REWARDS.get(a.outcome, 0.0) for a in played.attempts]
 
     def check(self, policy: PractisedPolicy, curriculum: Curriculum, counter: _Counter, seed: int,
               field_config: Any) -> None:
@@ -186,8 +187,6 @@ class Gate:
         return teacher_alone if self.passed is None else self.passed
 
 
-_RETURNS = {"goal": 1.0, "own_goal": -1.0}
-"""An attempt's return by its outcome (every other outcome 0)."""
 _FRAMES_PER_STEP = 30
 """Tracker frames per environment step (one decision a second)."""
 _ATTEMPT_STEPS = 60
@@ -342,4 +341,4 @@ def _teacher_alone(teacher: ImitatorPolicy, seed: int, field_config: Any, gate: 
                       field_config=field_config)
     attempts = played.attempts
     scoring = [len(a.frames) for a in attempts if a.outcome == "goal"] or [len(a.frames) for a in attempts]
-    return max(1, math.ceil(float(np.median(scoring)) / 30)), [_RETURNS.get(a.outcome, 0.0) for a in attempts]
+    return max(1, math.ceil(float(np.median(scoring)) / 30)), [OUTCOME_REWARDS.get(a.outcome, 0.0) for a in attempts]

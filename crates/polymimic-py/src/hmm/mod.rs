@@ -1,18 +1,23 @@
-//! `polymimic.DiscreteHMM`: the core HMM behind a scikit-learn-like class.
+//! `polymimic.DiscreteHMM`: the core HMM behind a scikit-learn-like class; its keyword arguments
+//! become the core's parameters in arguments.rs, and hmmlearn's model is read and built in
+//! hmmlearn.rs.
 
 use std::path::PathBuf;
 use std::sync::RwLock;
 
 use numpy::{PyArray1, PyArray2};
 use polymimic_hmm::{DiscreteHmm, HmmError, HmmParams, Init, Topology};
-use pyo3::exceptions::{PyImportError, PyTypeError, PyValueError};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple, PyType};
+use pyo3::types::{PyTuple, PyType};
 
 use crate::convert::{
     floats, matrix, non_negative, one_of, read_model, reduce_to_json, symbol_sequences, symbols, write_atomically,
 };
-use crate::errors::{NotFittedError, hmm_error};
+use crate::errors::hmm_error;
+
+mod arguments;
+mod hmmlearn;
 
 /// Sampled symbols and hidden states, each `(n, length)`.
 type SymbolsAndStates<'py> = (Bound<'py, PyArray2<i64>>, Bound<'py, PyArray2<i64>>);
@@ -74,34 +79,6 @@ pub struct PyDiscreteHmm {
     model: RwLock<DiscreteHmm>,
 }
 
-fn topology(name: &str, links: i64) -> PyResult<Topology> {
-    match name {
-        "left-right" => Ok(Topology::LeftRight { links: non_negative("links", links)? }),
-        "ergodic" => Ok(Topology::Ergodic),
-        other => Err(PyValueError::new_err(format!("topology must be \"left-right\" or \"ergodic\", got {other:?}"))),
-    }
-}
-
-#[allow(clippy::too_many_arguments)]
-fn params(
-    n_states: i64,
-    n_symbols: i64,
-    topology_name: &str,
-    links: i64,
-    max_iter: i64,
-    tol: f64,
-    emission_floor: f64,
-    seed: i64,
-) -> PyResult<HmmParams> {
-    let mut params = HmmParams::new(non_negative("n_states", n_states)?, non_negative("n_symbols", n_symbols)?);
-    params.topology = topology(topology_name, links)?;
-    params.max_iter = non_negative("max_iter", max_iter)?;
-    params.tol = tol;
-    params.emission_floor = emission_floor;
-    params.seed = non_negative("seed", seed)? as u64;
-    Ok(params)
-}
-
 impl PyDiscreteHmm {
     pub(crate) fn wrap(model: DiscreteHmm) -> Self {
         Self { model: RwLock::new(model) }
@@ -137,7 +114,7 @@ impl PyDiscreteHmm {
         emission_floor: f64,
         seed: i64,
     ) -> PyResult<Self> {
-        let params = params(n_states, n_symbols, topology, links, max_iter, tol, emission_floor, seed)?;
+        let params = arguments::params(n_states, n_symbols, topology, links, max_iter, tol, emission_floor, seed)?;
         let valid = params.check().map_err(|e| hmm_error(e.into()))?;
         Ok(Self::wrap(DiscreteHmm::new(valid)))
     }
@@ -190,12 +167,13 @@ impl PyDiscreteHmm {
                 "emissionprob has shape {emit_shape:?} but startprob has {n} states: expected [{n}, n_symbols]"
             )));
         }
-        let mut params = params(n as i64, emit_shape[1] as i64, "ergodic", 0, max_iter, tol, emission_floor, seed)?;
+        let mut params =
+            arguments::params(n as i64, emit_shape[1] as i64, "ergodic", 0, max_iter, tol, emission_floor, seed)?;
         params.topology = match (topology, links) {
             (None, None) => Topology::implied_by(&start, &trans, n),
             // Links are a left-right model's; giving them names the topology.
-            (None, Some(links)) => self::topology("left-right", links)?,
-            (Some(name), links) => self::topology(name, links.unwrap_or(2))?,
+            (None, Some(links)) => arguments::topology("left-right", links)?,
+            (Some(name), links) => arguments::topology(name, links.unwrap_or(2))?,
         };
         let valid = params.check().map_err(|e| hmm_error(e.into()))?;
         let model = DiscreteHmm::from_probabilities(valid, start, trans, emit).map_err(|e| hmm_error(e.into()))?;
@@ -306,24 +284,10 @@ impl PyDiscreteHmm {
     #[classmethod]
     #[pyo3(signature = (model, *, seed=None))]
     fn from_hmmlearn(cls: &Bound<'_, PyType>, model: &Bound<'_, PyAny>, seed: Option<i64>) -> PyResult<Self> {
-        let py = model.py();
-        let categorical = py.import("hmmlearn.hmm").and_then(|m| m.getattr("CategoricalHMM"));
-        if !categorical.is_ok_and(|class| model.is_instance(&class).unwrap_or(false)) {
-            let kind = model.get_type().name().map_or_else(|_| "?".to_owned(), |n| n.to_string());
-            return Err(PyTypeError::new_err(format!(
-                "from_hmmlearn takes a fitted hmmlearn.hmm.CategoricalHMM, got a {kind}"
-            )));
-        }
-        for name in ["startprob_", "transmat_", "emissionprob_"] {
-            if !model.hasattr(name)? {
-                return Err(NotFittedError::new_err(format!(
-                    "the CategoricalHMM is not fitted: it has no {name} (fit it, or set its parameters, first)"
-                )));
-            }
-        }
+        hmmlearn::check_fitted_categorical(model)?;
         let seed = match seed {
             Some(seed) => seed,
-            None => seed_of(&model.getattr("random_state")?)?,
+            None => hmmlearn::seed_of(&model.getattr("random_state")?)?,
         };
         Self::from_params(
             cls,
@@ -343,27 +307,7 @@ impl PyDiscreteHmm {
     /// decode or train further: the same probabilities, `n_iter`, `tol` and `random_state`,
     /// with `init_params=""` so that fitting starts from them.
     fn to_hmmlearn<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let hmm = py
-            .import("hmmlearn.hmm")
-            .map_err(|_| PyImportError::new_err("to_hmmlearn needs hmmlearn: pip install hmmlearn"))?;
-        let (n_states, n_symbols, max_iter, tol, seed) = self.with_model(|m| {
-            let p = m.params();
-            (p.n_states, p.n_symbols, p.max_iter, p.tol, p.seed)
-        });
-        let kwargs = PyDict::new(py);
-        kwargs.set_item("n_components", n_states)?;
-        kwargs.set_item("n_features", n_symbols)?;
-        kwargs.set_item("n_iter", max_iter)?;
-        kwargs.set_item("tol", tol)?;
-        kwargs.set_item("random_state", seed)?;
-        kwargs.set_item("init_params", "")?;
-        kwargs.set_item("params", "ste")?;
-        kwargs.set_item("implementation", "scaling")?;
-        let peer = hmm.getattr("CategoricalHMM")?.call((), Some(&kwargs))?;
-        peer.setattr("startprob_", self.startprob_(py)?)?;
-        peer.setattr("transmat_", self.transmat_(py)?)?;
-        peer.setattr("emissionprob_", self.emissionprob_(py)?)?;
-        Ok(peer)
+        hmmlearn::categorical_hmm(py, &self.snapshot())
     }
 
     /// `n` sequences of `length` symbols and their hidden states, as two `(n, length)` arrays.
@@ -507,29 +451,4 @@ impl PyDiscreteHmm {
             format!("DiscreteHMM(n_states={}, n_symbols={}, {topology}{state})", p.n_states, p.n_symbols)
         })
     }
-}
-
-/// A seed from an hmmlearn model's `random_state`: an integer as it is, 0 for None, and a
-/// `numpy.random.RandomState` or `Generator` drawn from once through a copy, which leaves the
-/// model's own state untouched.
-fn seed_of(random_state: &Bound<'_, PyAny>) -> PyResult<i64> {
-    if random_state.is_none() {
-        return Ok(0);
-    }
-    if let Ok(seed) = random_state.extract::<i64>() {
-        return Ok(seed);
-    }
-    let py = random_state.py();
-    let draw = if random_state.hasattr("integers")? {
-        "integers"
-    } else if random_state.hasattr("randint")? {
-        "randint"
-    } else {
-        return Err(PyValueError::new_err(format!(
-            "the CategoricalHMM's random_state must be an int, None, a RandomState or a Generator to carry over, \
-             got {random_state}: pass seed="
-        )));
-    };
-    let copy = py.import("copy")?.call_method1("deepcopy", (random_state,))?;
-    copy.call_method1(draw, (0_i64, 1_i64 << 62))?.extract()
 }

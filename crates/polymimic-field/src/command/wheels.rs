@@ -3,8 +3,11 @@
 use polymimic_types::Primitive;
 use serde::{Deserialize, Serialize};
 
-use crate::command::LEGO_WHEEL_BASE_MM;
 use crate::error::{FieldParamError, check_range};
+
+/// The Lego body's wheel base, mm: the Expert's wheel speeds are written for it, and its
+/// equivalent primitives are read through it.
+pub(crate) const LEGO_WHEEL_BASE_MM: f64 = 175.0;
 
 /// Wheel speeds of a policy's own choosing (left, right), kept to the micrometre per second so
 /// that two commands compare exactly (a command held is not a new one).

@@ -49,8 +49,8 @@ def curve_of(method: str, run: BenchmarkDir, config: Any, profile: str, seed: in
         teacher = ImitatorPolicy(trial, recognizer=recognizer, config=config.learning, control="improved",
                                  demonstrations=batch, body=config.imitator_body())
         practise = jsrl if method == "jsrl" else distil
-        result = practise(teacher, steps=steps, seed=seed, checkpoints=marks, evaluation_seed=config.seeds.evaluation,
-                          evaluation_attempts=per_configuration, field_config=config.field)
+        result = practise(teacher, steps=steps, seed=seed, checkpoints=marks, evaluation=config.evaluation_attempts(),
+                          field_config=config.field)
         return [[p.checkpoint, p.steps, p.net_goals] for p in result.curve]
     from polymimic.baselines import ppo, ppo_bc
 

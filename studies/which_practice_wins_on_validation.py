@@ -25,6 +25,7 @@ import time
 from typing import Any
 
 from _benchmark_run import imitators
+from polymimic import Attempts
 from polymimic._atomic import atomic_write_text
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.practice.methods import METHODS, practise
@@ -53,8 +54,8 @@ def main() -> None:
                     continue
                 started = time.perf_counter()
                 result = practise(policy, method=method, steps=options.steps, seed=trial_seed,
-                                  evaluation_seed=settings.tuning.validation_seed,
-                                  evaluation_attempts=settings.tuning.validation_attempts_per_configuration,
+                                  evaluation=Attempts(per_configuration=settings.tuning.validation_attempts_per_configuration,
+                                                      seed=settings.tuning.validation_seed),
                                   field_config=config.field, segmenter=segmenter)
                 curve = [[p.checkpoint, p.steps, p.net_goals] for p in result.curve]
                 done[key] = {"curve": curve, "seconds": round(time.perf_counter() - started, 1)}

@@ -103,6 +103,35 @@ def attempts_given(attempts: Attempts | None, *, attempts_per_configuration: int
     return attempts
 
 
+def thesis_attempts(attempts: Any, *, name: str) -> Attempts:
+    """``attempts``, the argument ``name``, checked to be :class:`Attempts` from the thesis's two
+    configurations: what a call takes that knows its attempts by their episodes (practice and
+    tuning keep their own attempts apart from them; a batched player steps them).
+
+    Raises
+    ------
+    TypeError
+        For anything but an :class:`Attempts`.
+    ValueError
+        For attempts from starts of one's own.
+
+    Examples
+    --------
+    >>> thesis_attempts(Attempts(per_configuration=2), name="evaluation").count
+    4
+    >>> thesis_attempts(Attempts(starts=[1]), name="evaluation")
+    Traceback (most recent call last):
+    ...
+    ValueError: evaluation must be attempts from the thesis's configurations, got starts=(1,): ...
+    """
+    if not isinstance(attempts, Attempts):
+        raise TypeError(f"{name} must be a polymimic.Attempts, got {type(attempts).__name__}")
+    if attempts.starts is not None:
+        raise ValueError(f"{name} must be attempts from the thesis's configurations, got starts={attempts.starts!r}: "
+                         f"attempts from starts of your own are played by polymimic.evaluate")
+    return attempts
+
+
 @dataclasses.dataclass(frozen=True)
 class Evaluation:
     """Goals and own goals of a policy over its attempts (thesis Tables 4.8, 4.11), and every

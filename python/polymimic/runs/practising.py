@@ -107,8 +107,7 @@ def practice_task(inputs: PracticeInputs, job: tuple[str, int, str]) -> dict[str
     group, trial_seed, trial_json = job
     policy = ImitatorPolicy(TrialResult.from_json(trial_json), recognizer=inputs.recognizer, config=inputs.learning,
                             control="improved", demonstrations=inputs.demonstrations[group], body=inputs.body)
-    result = practise(policy, method=inputs.method, steps=inputs.steps, seed=trial_seed,
-                      evaluation_seed=inputs.attempts.seed, evaluation_attempts=inputs.attempts.per_configuration,
+    result = practise(policy, method=inputs.method, steps=inputs.steps, seed=trial_seed, evaluation=inputs.attempts,
                       field_config=inputs.field, segmenter=inputs.segmenter)
     final = evaluate(result.policy, attempts=inputs.attempts, field_config=inputs.field)
     return {"group": group, "trial_seed": trial_seed, "evaluation_seed": inputs.attempts.seed,

@@ -60,8 +60,7 @@ def curve_of(method: str, run: BenchmarkDir, config: Any, profile: str, seed: in
                                           evaluation_seed=config.seeds.evaluation, seed=seed,
                                           field_config=config.field)
     else:
-        choice = ppo_bc.tune_pretraining(demos, validation_seed=0, evaluation_seed=config.seeds.evaluation,
-                                         evaluation_attempts_per_configuration=per_configuration)
+        choice = ppo_bc.tune_pretraining(demos, validation_seed=0, evaluation=config.evaluation_attempts())
         _, points, _ = ppo_bc.learning_curve(demos, choice.chosen, total_timesteps=steps,
                                              eval_every=marks[1] if len(marks) > 1 else steps,
                                              attempts_per_configuration=per_configuration,

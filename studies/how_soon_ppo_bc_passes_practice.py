@@ -43,9 +43,7 @@ def main() -> None:
     choice = ppo_bc.tune_pretraining(demos, budget=budget,
                                      validation_seed=settings.tuning.validation_seed,
                                      attempts_per_configuration=settings.tuning.validation_attempts_per_configuration,
-                                     evaluation_seed=config.seeds.evaluation,
-                                     evaluation_attempts_per_configuration=settings.sizes.attempts_per_configuration,
-                                     seed=config.seeds.first_trial, **common)
+                                     evaluation=config.evaluation_attempts(), seed=config.seeds.first_trial, **common)
     _, curve, _ = ppo_bc.learning_curve(demos, choice.chosen, total_timesteps=options.timesteps,
                                         eval_every=options.eval_every,
                                         attempts_per_configuration=settings.sizes.attempts_per_configuration,

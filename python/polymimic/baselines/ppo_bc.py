@@ -28,6 +28,7 @@ from polymimic.baselines.labels import IMITATOR_BODY, command_labels
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, decision_samples
 from polymimic.baselines.tuning import validation_attempts_apart, validation_rank
 from polymimic.bodies import WheeledBody, body_name
+from polymimic.evaluation import Attempts
 from polymimic.field import Demonstration
 
 __all__ = ["PRETRAINING_CANDIDATES", "Pretraining", "agreement", "clone_into", "cloning_samples", "learning_curve",
@@ -118,8 +119,7 @@ class PretrainingChoice:
 
 
 def tune_pretraining(demonstrations: Sequence[Demonstration], *, budget: int = 6, validation_seed: int = 0,
-                     attempts_per_configuration: int = 50, evaluation_seed: int = 0,
-                     evaluation_attempts_per_configuration: int = 25, seed: int = 0,
+                     attempts_per_configuration: int = 50, evaluation: Attempts = Attempts(), seed: int = 0,
                      feature_set: str = "goal_relative", frames_per_action: int = 30,
                      field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
                      max_samples: int = MAX_DECISION_SAMPLES) -> PretrainingChoice:
@@ -127,12 +127,11 @@ def tune_pretraining(demonstrations: Sequence[Demonstration], *, budget: int = 6
     played (before any reward) on the validation attempts of ``validation_seed``; the best by net
     goals, then goals, the first of equals (:func:`polymimic.baselines.tuning.validation_rank`).
     As :func:`polymimic.baselines.tune`, it refuses validation attempts that share an episode seed
-    with the evaluation's under ``evaluation_seed``."""
+    with the ``evaluation``'s (an :class:`~polymimic.Attempts` from the thesis's configurations)."""
     if isinstance(budget, bool) or not isinstance(budget, int) or not 1 <= budget <= len(PRETRAINING_CANDIDATES):
         raise ValueError(f"budget must be an integer in 1..{len(PRETRAINING_CANDIDATES)}, got {budget!r}")
     attempts = validation_attempts_apart(attempts_per_configuration, validation_seed=validation_seed,
-                                         evaluation_seed=evaluation_seed,
-                                         evaluation_attempts_per_configuration=evaluation_attempts_per_configuration)
+                                         evaluation=evaluation)
     scores = []
     for candidate in PRETRAINING_CANDIDATES[:budget]:
         policy = pretrained(demonstrations, candidate, seed=seed, feature_set=feature_set,

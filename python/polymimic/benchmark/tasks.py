@@ -113,12 +113,11 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
 def _tuning_inputs(shared: Shared) -> dict[str, Any]:
     """What every baseline's tuning takes from the config: the validation and evaluation
     attempts, the first trial's seed, the field and the sample cap."""
-    tuning, evaluation = shared.config.benchmark.tuning, shared.config.evaluation_attempts()
+    tuning = shared.config.benchmark.tuning
     return {"validation_seed": tuning.validation_seed,
             "attempts_per_configuration": tuning.validation_attempts_per_configuration,
-            "evaluation_seed": evaluation.seed, "evaluation_attempts_per_configuration": evaluation.per_configuration,
-            "seed": shared.config.seeds.first_trial, "field_config": shared.config.field,
-            "max_samples": tuning.max_decision_samples}
+            "evaluation": shared.config.evaluation_attempts(), "seed": shared.config.seeds.first_trial,
+            "field_config": shared.config.field, "max_samples": tuning.max_decision_samples}
 
 
 def _tuned(shared: Shared, profile: str, method: str, tuning: Any) -> dict[str, Any]:
@@ -152,10 +151,10 @@ def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:
     trial, its world model weighed so, played on the validation attempts the baselines are tuned
     on (never the evaluation's): polymimic's tuning, with a baseline's effort."""
     profile, weighting, trial_json = job
-    tuning, evaluation = shared.config.benchmark.tuning, shared.config.evaluation_attempts()
-    attempts = validation_attempts_apart(
-        tuning.validation_attempts_per_configuration, validation_seed=tuning.validation_seed,
-        evaluation_seed=evaluation.seed, evaluation_attempts_per_configuration=evaluation.per_configuration)
+    tuning = shared.config.benchmark.tuning
+    attempts = validation_attempts_apart(tuning.validation_attempts_per_configuration,
+                                         validation_seed=tuning.validation_seed,
+                                         evaluation=shared.config.evaluation_attempts())
     policy = _imitator(shared, profile, WEIGHED, trial_json, weighting)
     played = evaluate(policy, attempts=Attempts(per_configuration=tuning.validation_attempts_per_configuration,
                                                 seed=VALIDATION_SEED_BASE + tuning.validation_seed),
@@ -288,12 +287,11 @@ def ppo_bc_tuning_task(shared: Shared, profile: str) -> dict[str, Any]:
     from polymimic.baselines import ppo_bc
 
     torch.set_num_threads(1)
-    tuning, evaluation = shared.config.benchmark.tuning, shared.config.evaluation_attempts()
+    tuning = shared.config.benchmark.tuning
     choice = ppo_bc.tune_pretraining(
         shared.profiles[profile].demonstrations, budget=min(tuning.tuning_budget, len(ppo_bc.PRETRAINING_CANDIDATES)),
         validation_seed=tuning.validation_seed, attempts_per_configuration=tuning.validation_attempts_per_configuration,
-        evaluation_seed=evaluation.seed, evaluation_attempts_per_configuration=evaluation.per_configuration,
-        seed=shared.config.seeds.first_trial,
+        evaluation=shared.config.evaluation_attempts(), seed=shared.config.seeds.first_trial,
         feature_set=PPO_FEATURE_SET, frames_per_action=PPO_FRAMES_PER_ACTION, field_config=shared.config.field,
         imitator=shared.config.imitator_body(), max_samples=tuning.max_decision_samples)
     return {"profile": profile, "chosen": choice.chosen.to_dict(), "scores": choice.scores,

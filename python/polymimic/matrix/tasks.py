@@ -109,10 +109,10 @@ def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:
     of the cell's members, played on the validation attempts bco's tuning plays (never the
     evaluation's): polymimic's tuning, with bco's effort."""
     row, column, weighting = job
-    config, tuning, evaluation = shared.config, shared.config.matrix.tuning, shared.config.evaluation_attempts()
+    config, tuning = shared.config, shared.config.matrix.tuning
     attempts = validation_attempts_apart(tuning.validation_attempts_per_configuration,
-                                         validation_seed=tuning.validation_seed, evaluation_seed=evaluation.seed,
-                                         evaluation_attempts_per_configuration=evaluation.per_configuration)
+                                         validation_seed=tuning.validation_seed,
+                                         evaluation=config.evaluation_attempts())
     played = _played(shared, row, column, config.seeds.first_trial, weighting,
                      attempts=Attempts(per_configuration=tuning.validation_attempts_per_configuration,
                                        seed=VALIDATION_SEED_BASE + tuning.validation_seed))
@@ -157,14 +157,13 @@ def tuning_task(shared: Shared, job: tuple[str, str]) -> dict[str, Any]:
     row's recogniser, played by the row's body), every candidate's score, and (``"evaluation"``)
     the chosen fit's evaluation under the first fit seed: the fit the evaluation would make."""
     row, column = job
-    config, settings, evaluation = shared.config, shared.config.matrix.tuning, shared.config.evaluation_attempts()
+    config, settings = shared.config, shared.config.matrix.tuning
     _, demos = shared.cell(row, column, 0)
     tuning = baselines.tune("bco", demos, candidates=bco_candidates(settings.tuning_budget),
                             validation_seed=settings.validation_seed,
                             attempts_per_configuration=settings.validation_attempts_per_configuration,
-                            evaluation_seed=evaluation.seed,
-                            evaluation_attempts_per_configuration=evaluation.per_configuration,
-                            seed=config.seeds.first_trial, field_config=config.run.field, **_bco_inputs(shared, row))
+                            evaluation=config.evaluation_attempts(), seed=config.seeds.first_trial,
+                            field_config=config.run.field, **_bco_inputs(shared, row))
     return {"row": row, "column": column, "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
             "evaluation": _bco_evaluation(shared, row, column, config.seeds.first_trial, tuning.policy)}
 

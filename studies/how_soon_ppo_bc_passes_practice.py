@@ -46,8 +46,7 @@ def main() -> None:
                                      evaluation=config.evaluation_attempts(), seed=config.seeds.first_trial, **common)
     _, curve, _ = ppo_bc.learning_curve(demos, choice.chosen, total_timesteps=options.timesteps,
                                         eval_every=options.eval_every,
-                                        attempts_per_configuration=settings.sizes.attempts_per_configuration,
-                                        evaluation_seed=config.seeds.evaluation, seed=options.seed, **common)
+                                        evaluation=config.evaluation_attempts(), seed=options.seed, **common)
     points = [c.to_dict() for c in curve]
     print(json.dumps({"profile": options.profile, "seed": options.seed, "chosen": choice.chosen.to_dict(),
                       "scores": choice.scores, "curve": points,

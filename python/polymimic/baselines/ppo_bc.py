@@ -144,16 +144,15 @@ def tune_pretraining(demonstrations: Sequence[Demonstration], *, budget: int = 6
 
 
 def learning_curve(demonstrations: Sequence[Demonstration], pretraining: Pretraining, *, total_timesteps: int,
-                   eval_every: int, attempts_per_configuration: int = 25, evaluation_seed: int = 0, seed: int = 0,
-                   frames_per_action: int = 30, feature_set: str = "goal_relative",
+                   eval_every: int, evaluation: Attempts = Attempts(), seed: int = 0, frames_per_action: int = 30,
+                   feature_set: str = "goal_relative",
                    field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
                    max_samples: int = MAX_DECISION_SAMPLES) -> tuple[ppo.PPOPolicy, list[ppo.Checkpoint], Any]:
-    """:func:`polymimic.baselines.ppo.learning_curve` with the network cloned first: its first
-    checkpoint (0 steps) is the cloned network's."""
+    """:func:`polymimic.baselines.ppo.learning_curve` with the network cloned first, played on
+    the ``evaluation`` attempts: its first checkpoint (0 steps) is the cloned network's."""
     features, labels = cloning_samples(demonstrations, feature_set=feature_set, imitator=imitator,
                                        max_samples=max_samples, seed=seed)
-    return ppo.learning_curve(total_timesteps=total_timesteps, eval_every=eval_every,
-                              attempts_per_configuration=attempts_per_configuration, evaluation_seed=evaluation_seed,
-                              seed=seed, frames_per_action=frames_per_action, feature_set=feature_set,
-                              field_config=field_config, method="ppo_bc", imitator=imitator,
+    return ppo.learning_curve(total_timesteps=total_timesteps, eval_every=eval_every, evaluation=evaluation, seed=seed,
+                              frames_per_action=frames_per_action, feature_set=feature_set, field_config=field_config,
+                              method="ppo_bc", imitator=imitator,
                               before_learning=lambda model: clone_into(model, features, labels, pretraining, seed=seed))

@@ -269,8 +269,7 @@ def ppo_task(shared: Shared, seed: int) -> dict[str, Any]:
     torch.set_num_threads(1)
     settings, attempts = shared.config.benchmark, shared.config.evaluation_attempts()
     policy, curve, _ = baselines.ppo.learning_curve(
-        total_timesteps=settings.ppo_timesteps, eval_every=settings.ppo_eval_every,
-        attempts_per_configuration=attempts.per_configuration, evaluation_seed=attempts.seed, seed=seed,
+        total_timesteps=settings.ppo_timesteps, eval_every=settings.ppo_eval_every, evaluation=attempts, seed=seed,
         frames_per_action=PPO_FRAMES_PER_ACTION, feature_set=PPO_FEATURE_SET, field_config=shared.config.field,
         imitator=shared.config.imitator_body())
     return {"seed": seed, "evaluation_seed": attempts.seed, "attempts": attempts.count,
@@ -311,8 +310,7 @@ def ppo_bc_task(shared: Shared, job: tuple[str, int, dict[str, Any]]) -> dict[st
     settings, attempts = shared.config.benchmark, shared.config.evaluation_attempts()
     policy, curve, _ = ppo_bc.learning_curve(
         shared.profiles[profile].demonstrations, ppo_bc.Pretraining(**chosen), total_timesteps=settings.ppo_timesteps,
-        eval_every=settings.ppo_eval_every, attempts_per_configuration=attempts.per_configuration,
-        evaluation_seed=attempts.seed, seed=seed, frames_per_action=PPO_FRAMES_PER_ACTION,
+        eval_every=settings.ppo_eval_every, evaluation=attempts, seed=seed, frames_per_action=PPO_FRAMES_PER_ACTION,
         feature_set=PPO_FEATURE_SET, field_config=shared.config.field, imitator=shared.config.imitator_body(),
         max_samples=settings.tuning.max_decision_samples)
     return {"profile": profile, "seed": seed, "evaluation_seed": attempts.seed,

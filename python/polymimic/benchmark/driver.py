@@ -318,8 +318,7 @@ class Benchmark(Staged):
         settings = self.config.benchmark
         saved = self.run.loaded(self.run.practice_path(profile, seed), load_practice)
         return self._evaluation_done(profile, PRACTISED, seed) and is_practice_of(
-            saved, profile, seed, evaluation_seed=self.config.seeds.evaluation,
-            attempts=self.config.evaluation_attempts().count, budget=settings.practice_steps,
+            saved, profile, seed, evaluation=self.config.evaluation_attempts(), budget=settings.practice_steps,
             method=settings.practice_method)
 
     def practice(self, shared: Shared) -> int:

@@ -190,13 +190,14 @@ def summarise(saved: Sequence[SavedPractice]) -> PracticeCurve:
 FORMAT, VERSION = "polymimic.practice", 1
 
 
-def is_practice_of(saved: SavedPractice | None, group: str, trial_seed: int, *, evaluation_seed: int,
-                   attempts: int, budget: int, method: str = "refine") -> bool:
+def is_practice_of(saved: SavedPractice | None, group: str, trial_seed: int, *, evaluation: Attempts, budget: int,
+                   method: str = "refine") -> bool:
     """Whether ``saved`` (a practice file read whole, or None) is the practice asked for: of this
-    group's trial, scored on these evaluation attempts, for this budget of steps, by this method."""
+    group's trial, scored on the ``evaluation`` attempts (the file keeps their seed and count),
+    for this budget of steps, by this method."""
     return saved is not None and (saved["group"], saved["trial_seed"], saved["evaluation_seed"], saved["attempts"],
-                                  saved["budget"], saved["method"]) == (group, trial_seed, evaluation_seed, attempts,
-                                                                        budget, method)
+                                  saved["budget"], saved["method"]) == (group, trial_seed, evaluation.seed,
+                                                                        evaluation.count, budget, method)
 
 
 def practise_run(run: RunHouse[Any], folder: pathlib.Path, inputs: PracticeInputs, jobs: Sequence[tuple[str, int]],
@@ -210,8 +211,7 @@ def practise_run(run: RunHouse[Any], folder: pathlib.Path, inputs: PracticeInput
         return folder / group / f"practice_{seed}.json"
 
     def done(group: str, seed: int) -> bool:
-        return is_practice_of(run.loaded(path(group, seed), load_practice), group, seed,
-                              evaluation_seed=inputs.attempts.seed, attempts=inputs.attempts.count,
+        return is_practice_of(run.loaded(path(group, seed), load_practice), group, seed, evaluation=inputs.attempts,
                               budget=inputs.steps, method=inputs.method)
 
     todo = [(group, seed, trial_json(group, seed)) for group, seed in jobs if not done(group, seed)]

@@ -37,7 +37,6 @@ CHECKPOINTS = (0, 10_000, 25_000, 50_000, 100_000, 150_000, 250_000, 350_000, 50
 def curve_of(method: str, run: BenchmarkDir, config: Any, profile: str, seed: int, steps: int) -> list[list[float]]:
     """``[checkpoint, steps played, net goals]`` at each checkpoint up to ``steps``."""
     marks = [c for c in CHECKPOINTS if c <= steps] + ([steps] if steps not in CHECKPOINTS else [])
-    per_configuration = config.benchmark.attempts_per_configuration
     demos = load_demonstrations(run.crowd_path(profile))
     if method in ("jsrl", "distil"):
         from polymimic.practice.distil import distil
@@ -49,23 +48,20 @@ def curve_of(method: str, run: BenchmarkDir, config: Any, profile: str, seed: in
         teacher = ImitatorPolicy(trial, recognizer=recognizer, config=config.learning, control="improved",
                                  demonstrations=batch, body=config.imitator_body())
         practise = jsrl if method == "jsrl" else distil
-        result = practise(teacher, steps=steps, seed=seed, checkpoints=marks, evaluation_seed=config.seeds.evaluation,
-                          evaluation_attempts=per_configuration, field_config=config.field)
+        result = practise(teacher, steps=steps, seed=seed, checkpoints=marks, evaluation=config.evaluation_attempts(),
+                          field_config=config.field)
         return [[p.checkpoint, p.steps, p.net_goals] for p in result.curve]
     from polymimic.baselines import ppo, ppo_bc
 
     if method == "ppo":
         _, points, _ = ppo.learning_curve(total_timesteps=steps, eval_every=marks[1] if len(marks) > 1 else steps,
-                                          attempts_per_configuration=per_configuration,
-                                          evaluation_seed=config.seeds.evaluation, seed=seed,
+                                          evaluation=config.evaluation_attempts(), seed=seed,
                                           field_config=config.field)
     else:
-        choice = ppo_bc.tune_pretraining(demos, validation_seed=0, evaluation_seed=config.seeds.evaluation,
-                                         evaluation_attempts_per_configuration=per_configuration)
+        choice = ppo_bc.tune_pretraining(demos, validation_seed=0, evaluation=config.evaluation_attempts())
         _, points, _ = ppo_bc.learning_curve(demos, choice.chosen, total_timesteps=steps,
                                              eval_every=marks[1] if len(marks) > 1 else steps,
-                                             attempts_per_configuration=per_configuration,
-                                             evaluation_seed=config.seeds.evaluation, seed=seed,
+                                             evaluation=config.evaluation_attempts(), seed=seed,
                                              field_config=config.field)
     return [[p.env_steps, p.env_steps, p.net_goals] for p in points]
 

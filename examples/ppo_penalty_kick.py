@@ -33,6 +33,7 @@ import tempfile
 from collections.abc import Sequence
 from typing import Any
 
+from polymimic import Attempts
 from polymimic.baselines import ppo
 from polymimic.baselines.ppo import Checkpoint
 from polymimic.plots import plot_demonstration, save_figure
@@ -120,8 +121,8 @@ def main(argv: Sequence[str] | None = None) -> dict[str, Any]:
     print(f"PPO on PenaltyKick-v0 for {args.timesteps:,} env steps, checkpoints every {args.eval_every:,}, "
           f"{2 * args.attempts} evaluation attempts (seed {args.eval_seed})", flush=True)
     policy, curve, final = ppo.learning_curve(total_timesteps=args.timesteps, eval_every=args.eval_every,
-                                              attempts_per_configuration=args.attempts,
-                                              evaluation_seed=args.eval_seed, seed=args.seed,
+                                              evaluation=Attempts(per_configuration=args.attempts,
+                                                                  seed=args.eval_seed), seed=args.seed,
                                               frames_per_action=FRAMES_PER_ACTION, feature_set=FEATURE_SET,
                                               on_checkpoint=report)
     policy.save(folder / "ppo.pmp")

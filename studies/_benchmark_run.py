@@ -28,7 +28,7 @@ def opened(run_dir: str):
     """The run, its config and its evaluation attempts (configuration, episode seed)."""
     run = BenchmarkDir(run_dir)
     config = run.open(None)
-    return run, config, attempts_of(config.benchmark.attempts_per_configuration, seed=config.seeds.evaluation)
+    return run, config, attempts_of(config.benchmark.sizes.attempts_per_configuration, seed=config.seeds.evaluation)
 
 
 def imitators(run: BenchmarkDir, config, profile: str, trials: int) -> Iterator[tuple[int, ImitatorPolicy]]:

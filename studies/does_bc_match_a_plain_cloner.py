@@ -100,16 +100,16 @@ def main() -> None:
     args = arguments(__doc__, fits=3)
     run, config, evaluation = opened(args.run_dir)
     settings = config.benchmark
-    validation = validation_attempts(settings.validation_attempts_per_configuration,
-                                     validation_seed=settings.validation_seed)
+    validation = validation_attempts(settings.tuning.validation_attempts_per_configuration,
+                                     validation_seed=settings.tuning.validation_seed)
     for profile in args.profiles or list(settings.profiles):
         demonstrations = load_demonstrations(run.crowd_path(profile))
-        chosen, scores = chosen_step(demonstrations, validation, max_samples=settings.max_decision_samples,
+        chosen, scores = chosen_step(demonstrations, validation, max_samples=settings.tuning.max_decision_samples,
                                      field_config=config.field)
         plain = []
         for seed in range(args.fits):
-            played = play(fit(demonstrations, chosen, max_samples=settings.max_decision_samples, seed=seed), evaluation,
-                          field_config=config.field)
+            played = play(fit(demonstrations, chosen, max_samples=settings.tuning.max_decision_samples, seed=seed),
+                          evaluation, field_config=config.field)
             plain.append({"seed": seed, "goals": played.goals, "own_goals": played.own_goals,
                           "net": played.goals - played.own_goals})
         bc = [json.loads(p.read_text()) for p in sorted(run.profile_dir(profile).glob("evaluation_bc_[0-9]*.json"))]

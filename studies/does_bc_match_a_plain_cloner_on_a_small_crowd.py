@@ -14,7 +14,7 @@ import json
 import pathlib
 import statistics
 
-from polymimic import baselines
+from polymimic import Attempts, baselines
 from polymimic.baselines.evaluation import attempts_of, play
 from polymimic.baselines.tuning import validation_attempts
 from polymimic.crowds import PROFILES, record_crowd
@@ -44,8 +44,8 @@ def compare() -> tuple[list[int], list[int], dict]:
     plain = plain_cloner()
     frames, _ = plain.chosen_step(demos, validation, max_samples=MAX_SAMPLES)
     plain_nets = [net(plain.fit(demos, frames, max_samples=MAX_SAMPLES, seed=seed), evaluation) for seed in FITS]
-    tuned = baselines.tune("bc", demos, budget=BUDGET, attempts_per_configuration=20, evaluation_seed=EVALUATION_SEED,
-                           evaluation_attempts_per_configuration=25, max_samples=MAX_SAMPLES)
+    tuned = baselines.tune("bc", demos, budget=BUDGET, attempts_per_configuration=20,
+                           evaluation=Attempts(per_configuration=25, seed=EVALUATION_SEED), max_samples=MAX_SAMPLES)
     bc_nets = [net(baselines.fit("bc", demos, hyperparameters=tuned.hyperparameters, seed=seed,
                                  max_samples=MAX_SAMPLES), evaluation) for seed in FITS]
     return plain_nets, bc_nets, tuned.chosen

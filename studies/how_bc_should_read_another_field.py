@@ -83,7 +83,7 @@ def main() -> None:
             fits = []
             for seed in range(args.fits):
                 policy = train("bc", items, hyperparameters=CHOSEN, seed=seed,
-                               max_samples=settings.max_decision_samples)
+                               max_samples=settings.tuning.max_decision_samples)
                 played = play(policy, evaluation, field_config=config.field)
                 fits.append({"net": played.goals - played.own_goals, "goals": played.goals,
                              "own_goals": played.own_goals})

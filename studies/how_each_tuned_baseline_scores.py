@@ -66,7 +66,8 @@ def main():
     for method in args.methods:
         started = time.perf_counter()
         tuning = baselines.tune(method, demos, budget=args.budget, validation_seed=args.validation_seed,
-                                attempts_per_configuration=args.validation, evaluation_seed=args.seed, seed=args.seed,
+                                attempts_per_configuration=args.validation,
+                                evaluation=polymimic.Attempts(seed=args.seed), seed=args.seed,
                                 **needs.get(method, {}))
         result = baselines.evaluate_policy(tuning.policy, attempts_per_configuration=25, seed=args.seed)
         by_configuration = {c: {o: sum(a.outcome == o for a in result.attempts if a.configuration == c)

@@ -38,17 +38,15 @@ def main() -> None:
     demos = load_demonstrations(run.crowd_path(options.profile))
     started = time.perf_counter()
     common = {"feature_set": PPO_FEATURE_SET, "frames_per_action": PPO_FRAMES_PER_ACTION, "field_config": config.field,
-              "max_samples": settings.max_decision_samples}
-    choice = ppo_bc.tune_pretraining(demos, budget=min(settings.tuning_budget, len(ppo_bc.PRETRAINING_CANDIDATES)),
-                                     validation_seed=settings.validation_seed,
-                                     attempts_per_configuration=settings.validation_attempts_per_configuration,
-                                     evaluation_seed=config.seeds.evaluation,
-                                     evaluation_attempts_per_configuration=settings.attempts_per_configuration,
-                                     seed=config.seeds.first_trial, **common)
+              "max_samples": settings.tuning.max_decision_samples}
+    budget = min(settings.tuning.tuning_budget, len(ppo_bc.PRETRAINING_CANDIDATES))
+    choice = ppo_bc.tune_pretraining(demos, budget=budget,
+                                     validation_seed=settings.tuning.validation_seed,
+                                     attempts_per_configuration=settings.tuning.validation_attempts_per_configuration,
+                                     evaluation=config.evaluation_attempts(), seed=config.seeds.first_trial, **common)
     _, curve, _ = ppo_bc.learning_curve(demos, choice.chosen, total_timesteps=options.timesteps,
                                         eval_every=options.eval_every,
-                                        attempts_per_configuration=settings.attempts_per_configuration,
-                                        evaluation_seed=config.seeds.evaluation, seed=options.seed, **common)
+                                        evaluation=config.evaluation_attempts(), seed=options.seed, **common)
     points = [c.to_dict() for c in curve]
     print(json.dumps({"profile": options.profile, "seed": options.seed, "chosen": choice.chosen.to_dict(),
                       "scores": choice.scores, "curve": points,

@@ -41,7 +41,7 @@ def main() -> None:
     run = BenchmarkDir(options.run_dir)
     config = run.open(None)
     segmenter = dataclasses.asdict(config.segmenter)
-    per_configuration = config.benchmark.attempts_per_configuration
+    per_configuration = config.benchmark.sizes.attempts_per_configuration
     done: dict[str, Any] = json.loads(options.out.read_text()) if options.out.exists() else {}
     profiles = options.profiles or list(config.benchmark.profiles)
     for profile in profiles:
@@ -51,8 +51,7 @@ def main() -> None:
                 continue
             started = time.perf_counter()
             result = practise(policy, method=options.method, steps=options.steps, seed=trial_seed,
-                              evaluation_seed=config.seeds.evaluation, evaluation_attempts=per_configuration,
-                              field_config=config.field, segmenter=segmenter)
+                              evaluation=config.evaluation_attempts(), field_config=config.field, segmenter=segmenter)
             done[key] = {"curve": [[p.checkpoint, p.steps, p.net_goals] for p in result.curve],
                          "seconds": round(time.perf_counter() - started, 1)}
             atomic_write_text(options.out, json.dumps(done, indent=1) + "\n")

@@ -27,7 +27,7 @@ def main() -> None:
     for trial_seed in range(options.trials):
         trial = learning.run_trial(batch, recognizer=recognizer, ordering=[options.who], seed=trial_seed)
         policy = learning.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=batch)
-        result = practice(policy, steps=options.steps, seed=trial_seed, evaluation_attempts=25)
+        result = practice(policy, steps=options.steps, seed=trial_seed, evaluation=polymimic.Attempts())
         print(options.who, options.n, trial_seed, [(p.checkpoint, p.net_goals) for p in result.curve], flush=True)
 
 

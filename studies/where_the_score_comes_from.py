@@ -59,7 +59,7 @@ def _policy(trial: TrialResult, batch: Any, recognizer: PrimitiveRecognizer, con
 
 
 def _net(policy: Any, config: Any) -> int:
-    played = evaluate(policy, attempts_per_configuration=config.benchmark.attempts_per_configuration,
+    played = evaluate(policy, attempts_per_configuration=config.benchmark.sizes.attempts_per_configuration,
                       seed=config.seeds.evaluation, field_config=config.field)
     return played.goals - played.own_goals
 
@@ -85,7 +85,7 @@ def measure(run: BenchmarkDir, profile: str, trials: int, world_weighting: str) 
         held = TrialResult.load(run.require(run.trial_path(profile, seed, uniform_lp=True), "benchmark"))
         policy = _policy(held, batch, recognizer, config, world_weighting=world_weighting, uniform=True)
         rows["every LP held at 0.5 (polymimic_uniform_lp)"].append(_net(policy, config))
-    return {"trial_seeds": seeds, "attempts": 2 * config.benchmark.attempts_per_configuration,
+    return {"trial_seeds": seeds, "attempts": 2 * config.benchmark.sizes.attempts_per_configuration,
             "evaluation_seed": config.seeds.evaluation, "world_weighting": world_weighting,
             "net_goals": {name: {"per_trial": values, **mean_sd(values)} for name, values in rows.items()}}
 

@@ -71,8 +71,8 @@ def tuned_nets(method, demos, tried, *, budget, fits, max_samples, **inputs) -> 
     then its choice's net goals on the evaluation attempts under each fit seed."""
     tuning = baselines.tune(method, demos, candidates=tried, budget=budget,
                             attempts_per_configuration=VALIDATION_PER_CONFIGURATION,
-                            evaluation_seed=EVALUATION_SEED,
-                            evaluation_attempts_per_configuration=EVALUATION_PER_CONFIGURATION,
+                            evaluation=polymimic.Attempts(per_configuration=EVALUATION_PER_CONFIGURATION,
+                                                          seed=EVALUATION_SEED),
                             max_samples=max_samples, **inputs)
     evaluation = attempts_of(EVALUATION_PER_CONFIGURATION, seed=EVALUATION_SEED)
     nets = [net(baselines.fit(method, demos, hyperparameters=tuning.hyperparameters, seed=seed,

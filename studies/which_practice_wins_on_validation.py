@@ -25,6 +25,7 @@ import time
 from typing import Any
 
 from _benchmark_run import imitators
+from polymimic import Attempts
 from polymimic._atomic import atomic_write_text
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.practice.methods import METHODS, practise
@@ -53,13 +54,13 @@ def main() -> None:
                     continue
                 started = time.perf_counter()
                 result = practise(policy, method=method, steps=options.steps, seed=trial_seed,
-                                  evaluation_seed=settings.validation_seed,
-                                  evaluation_attempts=settings.validation_attempts_per_configuration,
+                                  evaluation=Attempts(per_configuration=settings.tuning.validation_attempts_per_configuration,
+                                                      seed=settings.tuning.validation_seed),
                                   field_config=config.field, segmenter=segmenter)
                 curve = [[p.checkpoint, p.steps, p.net_goals] for p in result.curve]
                 done[key] = {"curve": curve, "seconds": round(time.perf_counter() - started, 1)}
                 atomic_write_text(options.out, json.dumps(done, indent=1) + "\n")
-                scored = 2 * settings.validation_attempts_per_configuration
+                scored = 2 * settings.tuning.validation_attempts_per_configuration
                 print(f"{key}: {curve[0][2]:+.0f} -> {curve[-1][2]:+.0f} of {scored} ({done[key]['seconds']:.0f} s)",
                       flush=True)
     summarise(done, options)

@@ -52,7 +52,7 @@ def main() -> None:
             nets = []
             for seed in range(args.fits):
                 policy = training.train("bc", items, hyperparameters=CHOSEN, seed=seed,
-                                        max_samples=settings.max_decision_samples)
+                                        max_samples=settings.tuning.max_decision_samples)
                 played = play(policy, evaluation, field_config=config.field)
                 nets.append(played.goals - played.own_goals)
             print(json.dumps({"profile": profile, "way": way, "net": nets, "net_mean": statistics.mean(nets)}),

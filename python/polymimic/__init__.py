@@ -28,6 +28,7 @@ from polymimic._native import (
     __version__,
 )
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
+from polymimic.evaluation import Attempts
 from polymimic.field import Demonstration, PrimitiveSequence, command_table, record, self_observation
 from polymimic.learning import (
     Evaluation,
@@ -47,6 +48,7 @@ if importlib.util.find_spec("gymnasium") is not None:
     from polymimic import env as _env  # noqa: F401  (registers PenaltyKick-v0 with Gymnasium)
 
 __all__ = [
+    "Attempts",
     "Body",
     "Codebook",
     "Demonstration",

@@ -3,10 +3,11 @@ and what is allowed (Python's own say only that an int was expected, and take Tr
 
 from __future__ import annotations
 
+import math
 import numbers
 from typing import Any
 
-__all__ = ["integer", "probability"]
+__all__ = ["in_range", "integer", "probability"]
 
 
 def integer(name: str, value: Any, low: int, high: int | None = None) -> int:
@@ -27,6 +28,23 @@ def integer(name: str, value: Any, low: int, high: int | None = None) -> int:
         allowed = f"at least {low}" if high is None else f"in {low}..{high}"
         raise ValueError(f"{name} must be {allowed}, got {number}")
     return number
+
+
+def in_range(name: str, value: float, low: float, high: float | None = None, *, exclusive_low: bool = False) -> None:
+    """A ``ValueError`` naming ``name = value`` unless ``value`` is a finite number from ``low`` (or
+    above it, ``exclusive_low``) to ``high``, worded as a config's key is (the config prefixes
+    its section).
+
+    >>> in_range("trials", 0, 1)
+    Traceback (most recent call last):
+    ...
+    ValueError: trials = 0 must be at least 1
+    """
+    below = value <= low if exclusive_low else value < low
+    if not math.isfinite(value) or below or (high is not None and value > high):
+        bound = f"{'above' if exclusive_low else 'at least'} {low}"
+        bound += f" and at most {high}" if high is not None else ""
+        raise ValueError(f"{name} = {value!r} must be {bound}")
 
 
 def probability(name: str, value: Any) -> float:

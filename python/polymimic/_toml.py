@@ -17,6 +17,7 @@ decay_step = 0.007                       # per step
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import sys
 from collections.abc import Mapping
@@ -27,7 +28,7 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover - exercised on Python 3.9 and 3.10 only
     import tomli as tomllib
 
-__all__ = ["dumps", "loads", "write_table", "write_value"]
+__all__ = ["documented", "dumps", "loads", "write_table", "write_value"]
 
 
 def loads(text: str) -> dict[str, Any]:
@@ -41,6 +42,12 @@ def loads(text: str) -> dict[str, Any]:
 def dumps(values: Mapping[str, Any]) -> str:
     """One ``key = value`` line per value: a TOML document of plain values, no tables."""
     return "".join(f"{key} = {write_value(value)}\n" for key, value in values.items())
+
+
+def documented(text: str, default: Any) -> Any:
+    """A dataclass field of a config's section with its ``default`` and the doc ``text`` that
+    :func:`write_table` writes beside its value (``field.metadata["doc"]``)."""
+    return dataclasses.field(default=default, metadata={"doc": text})
 
 
 def write_table(lines: list[str], name: str, values: Mapping[str, Any], docs: Mapping[str, str]) -> None:

@@ -8,6 +8,7 @@ import sys
 
 import pytest
 
+from polymimic import Attempts
 from polymimic.benchmark.config import METHODS, BenchmarkConfig
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.cli import main
@@ -324,9 +325,10 @@ def test_ppo_learns_the_tiny_imitators_policy_as_the_library_does(tiny_toml, tmp
     summary = _summary(run)
     assert summary["imitator"] == "tiny"
     (ran,) = summary["ppo"]["runs"]
+    evaluation = Attempts(per_configuration=summary["sizes"]["attempts_per_configuration"],
+                          seed=summary["sizes"]["evaluation_seed"])
     _, curve, _ = ppo.learning_curve(imitator="tiny", total_timesteps=2048, eval_every=2048, seed=0,
-                                     attempts_per_configuration=summary["sizes"]["attempts_per_configuration"],
-                                     evaluation_seed=summary["sizes"]["evaluation_seed"])
+                                     evaluation=evaluation)
     assert ran["checkpoints"] == [{k: v for k, v in c.to_dict().items() if k != "wall_s"} for c in curve]
 
 

@@ -5,7 +5,7 @@ import pytest
 from threadpoolctl import threadpool_limits
 
 import polymimic
-from polymimic import _native, baselines
+from polymimic import Attempts, _native, baselines
 from polymimic.baselines import random_primitive
 from polymimic.baselines.evaluation import attempts_of
 
@@ -19,7 +19,7 @@ def one_thread():
 
 def test_tuning_never_sees_the_evaluation_and_repeats_its_choice():
     demos = polymimic.record("poor", configuration=1, n=1, seed=0)
-    one, two = (baselines.tune("bc", demos, budget=2, attempts_per_configuration=2, evaluation_seed=3)
+    one, two = (baselines.tune("bc", demos, budget=2, attempts_per_configuration=2, evaluation=Attempts(seed=3))
                 for _ in range(2))
     validation = {s for _, s in one.validation_attempts}
     assert validation.isdisjoint(s for _, s in attempts_of(25, seed=3))
@@ -31,18 +31,26 @@ def test_tuning_never_sees_the_evaluation_and_repeats_its_choice():
 def test_validation_attempts_sharing_an_evaluation_seed_are_refused(monkeypatch):
     from polymimic.baselines import tuning
     validation = tuning.validation_attempts(2, validation_seed=0)
-    assert tuning.validation_attempts_apart(2, validation_seed=0, evaluation_seed=0,
-                                            evaluation_attempts_per_configuration=25) == validation
+    assert tuning.validation_attempts_apart(2, validation_seed=0, evaluation=Attempts()) == validation
     # A 64-bit collision, forced: the evaluation's attempts are made to hold a validation seed.
     clash = validation[1][1]
-    monkeypatch.setattr(tuning, "attempts_of",
-                        lambda n, *, seed: [(1, clash)] if seed < 2**62 else attempts_of(n, seed=seed))
+    monkeypatch.setattr(Attempts, "episodes", lambda self: [(1, clash)])
     with pytest.raises(ValueError, match=rf"validation attempts share episode seeds \[{clash}\] with the evaluation"):
-        tuning.validation_attempts_apart(2, validation_seed=0, evaluation_seed=0,
-                                         evaluation_attempts_per_configuration=25)
+        tuning.validation_attempts_apart(2, validation_seed=0, evaluation=Attempts())
     demos = polymimic.record("poor", configuration=1, n=1, seed=0)
     with pytest.raises(ValueError, match="share episode seeds"):
         baselines.tune("bc", demos, budget=1, attempts_per_configuration=2)
+
+
+def test_the_evaluation_validation_must_not_meet_is_one_attempts_value():
+    from polymimic.baselines import tuning
+
+    with pytest.raises(TypeError, match="evaluation must be a polymimic.Attempts, got int"):
+        tuning.validation_attempts_apart(2, validation_seed=0, evaluation=25)
+    with pytest.raises(ValueError, match="evaluation must be attempts from the thesis's configurations"):
+        tuning.validation_attempts_apart(2, validation_seed=0, evaluation=Attempts(starts=[1, 2]))
+    with pytest.raises(ValueError, match=r"evaluation's seed must be below 2\*\*62"):
+        tuning.validation_attempts_apart(2, validation_seed=0, evaluation=Attempts(seed=baselines.VALIDATION_SEED_BASE))
 
 
 def test_every_method_gets_the_same_candidates():

@@ -425,7 +425,7 @@ def test_max_samples_widens_the_stride_evenly():
     assert len(X) == len(y) == len(w) and 1000 <= len(X) <= 1010
     assert all(100 <= int((X[:, 0] == i).sum()) <= 101 for i in range(10))
     from polymimic.benchmark.config import BenchmarkSettings
-    assert BenchmarkSettings().max_decision_samples == MAX_DECISION_SAMPLES
+    assert BenchmarkSettings().tuning.max_decision_samples == MAX_DECISION_SAMPLES
 
 
 def test_only_the_imitators_own_body_gives_its_first_frame():

@@ -59,8 +59,7 @@ def test_pretraining_is_chosen_on_validation_attempts(demos):
 def test_pretraining_refuses_validation_attempts_the_evaluation_plays(demos, monkeypatch):
     from polymimic.baselines import tuning
     clash = tuning.validation_attempts(2, validation_seed=0)[0][1]
-    real = tuning.attempts_of
-    monkeypatch.setattr(tuning, "attempts_of", lambda n, *, seed: [(1, clash)] if seed < 2**62 else real(n, seed=seed))
+    monkeypatch.setattr(polymimic.Attempts, "episodes", lambda self: [(1, clash)])
     with pytest.raises(ValueError, match="share episode seeds"):
         ppo_bc.tune_pretraining(demos, budget=1, attempts_per_configuration=2)
 
@@ -68,7 +67,13 @@ def test_pretraining_refuses_validation_attempts_the_evaluation_plays(demos, mon
 def test_the_curve_starts_from_the_cloned_network(demos):
     pretraining = ppo_bc.Pretraining(10, 1e-3)
     _, curve, _ = ppo_bc.learning_curve(demos, pretraining, total_timesteps=256, eval_every=256,
-                                        attempts_per_configuration=2, seed=1)
+                                        evaluation=polymimic.Attempts(per_configuration=2), seed=1)
     cloned = evaluate_policy(ppo_bc.pretrained(demos, pretraining, seed=1), attempts_per_configuration=2)
     assert curve[0].env_steps == 0
     assert (curve[0].goals, curve[0].own_goals) == (cloned.goals, cloned.own_goals)
+
+
+def test_the_curve_plays_attempts_from_the_thesis_configurations_only(demos):
+    with pytest.raises(ValueError, match="evaluation must be attempts from the thesis's configurations"):
+        ppo_bc.learning_curve(demos, ppo_bc.Pretraining(10, 1e-3), total_timesteps=256, eval_every=256,
+                              evaluation=polymimic.Attempts(starts=[1]))

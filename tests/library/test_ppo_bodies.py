@@ -51,8 +51,8 @@ def test_ppo_trains_and_plays_the_tiny_on_its_own_field_and_its_file_keeps_the_b
 
 
 def test_ppo_drives_the_humanoid():
-    policy, curve, played = ppo.learning_curve(imitator="humanoid", eval_every=128, attempts_per_configuration=1,
-                                               **SMALL_PPO)
+    policy, curve, played = ppo.learning_curve(imitator="humanoid", eval_every=128,
+                                               evaluation=polymimic.Attempts(per_configuration=1), **SMALL_PPO)
     assert policy.body == "humanoid" and {a.body for a in played.attempts} == {"humanoid"}
     assert [c.env_steps for c in curve][0] == 0 and all(c.attempts == 2 for c in curve)
 

@@ -3,6 +3,7 @@ never chooses, learned as physics."""
 
 import pytest
 
+from polymimic import Attempts
 from polymimic.learning import ImitatorPolicy, evaluate
 
 
@@ -25,8 +26,8 @@ def test_exploring_practice_explores_near_the_ball_and_refines_only_what_it_is_t
         explored_attempts(teacher, attempts_per_configuration=1, seed=6, epsilon=1.5)
     from polymimic.practice import practice
 
-    result = practice(teacher, steps=300, checkpoints=[0, 300], attempts_per_round=2, evaluation_attempts=2,
-                      explore=0.5, refines=["ball_response"])
+    result = practice(teacher, steps=300, checkpoints=[0, 300], attempts_per_round=2,
+                      evaluation=Attempts(per_configuration=2), explore=0.5, refines=["ball_response"])
     assert result.steps <= 300 and result.policy.made_from.practice_refines == ("ball_response",)
     result.policy.save(tmp_path / "explored.zip")
     assert ImitatorPolicy.load(tmp_path / "explored.zip").made_from.practice_refines == ("ball_response",)

@@ -12,7 +12,7 @@ from polymimic._native import attempt_seeds
 from polymimic.practice import PRACTICE_SEED_BASE, curve_csv, practice, round_seed, steps_of
 from polymimic.practice.seeds import check_apart
 
-SMALL = {"attempts_per_round": 3, "evaluation_attempts": 3}
+SMALL = {"attempts_per_round": 3, "evaluation": polymimic.Attempts(per_configuration=3)}
 
 
 def _policy(body, demonstrators):
@@ -72,7 +72,7 @@ def test_practice_seeds_never_meet_the_evaluations(practised):
     assert not {(a.configuration, a.seed) for a in practised.attempts} & scored
     # The check itself refuses a practice attempt that is the evaluation's.
     with pytest.raises(ValueError, match="evaluation's attempt"):
-        check_apart([attempt_seeds(3, seed=0)[1]], evaluation_seed=0, attempts_per_configuration=3)
+        check_apart([attempt_seeds(3, seed=0)[1]], evaluation=polymimic.Attempts(per_configuration=3, seed=0))
 
 
 def test_same_seed_same_bits(lego, practised):
@@ -123,10 +123,17 @@ def test_any_imitator_body_practises():
     ({"steps": 100, "checkpoints": [10, 50]}, "checkpoints must start at 0"),
     ({"steps": 100, "checkpoints": [0, 200]}, "checkpoint 200 lies beyond the budget of 100 steps"),
     ({"steps": 100, "attempts_per_round": 0}, "attempts_per_round must be an integer of at least 1"),
+    ({"steps": 100, "evaluation": polymimic.Attempts(starts=[1])},
+     r"evaluation must be attempts from the thesis's configurations, got starts=\(1,\)"),
 ])
 def test_bad_arguments_are_named(lego, arguments, message):
     with pytest.raises(ValueError, match=message):
         practice(lego, **arguments)
+
+
+def test_the_evaluation_is_one_attempts_value(lego):
+    with pytest.raises(TypeError, match="evaluation must be a polymimic.Attempts, got int"):
+        practice(lego, steps=10, evaluation=25)
 
 
 def test_policies_practice_cannot_refine_are_refused(lego):

@@ -13,6 +13,8 @@ from polymimic.learning import evaluate
 pytestmark = pytest.mark.skipif(importlib.util.find_spec("stable_baselines3") is None,
                                 reason="stable-baselines3 is the optional `rl` extra")
 
+TWO_EACH = polymimic.Attempts(per_configuration=2)
+
 
 @pytest.fixture(scope="module")
 def teacher(expert_imitator):
@@ -24,7 +26,7 @@ def practised(teacher):
     from polymimic.practice.teacher import Gate, jsrl
 
     # A gate always open (no pair of returns is 10 apart): each check earns a stage.
-    return jsrl(teacher, steps=600, checkpoints=[0, 600], evaluation_attempts=2, handover_start=4, stages=2,
+    return jsrl(teacher, steps=600, checkpoints=[0, 600], evaluation=TWO_EACH, handover_start=4, stages=2,
                 tolerance=10.0, gate=Gate(every=100, attempts=1), n_steps=64, batch_size=32)
 
 
@@ -95,10 +97,13 @@ def test_a_check_plays_practice_attempts_counts_their_steps_and_fits_before_the_
 def test_practise_names_its_methods_and_refuses_others(teacher):
     from polymimic.practice.methods import practise
 
-    taught = practise(teacher, method="jsrl", steps=300, evaluation_attempts=1)
+    taught = practise(teacher, method="jsrl", steps=300, evaluation=polymimic.Attempts(per_configuration=1))
     assert [p.checkpoint for p in taught.curve][-1] == 300 and taught.attempts == []
     with pytest.raises(ValueError, match="unknown practice method 'rl'; expected one of refine, explore, jsrl, distil"):
         practise(teacher, method="rl", steps=10)
+    for method in ("jsrl", "distil"):  # refused before any learning: a practised policy plays no starts of its own
+        with pytest.raises(ValueError, match="evaluation must be attempts from the thesis's configurations"):
+            practise(teacher, method=method, steps=10, evaluation=polymimic.Attempts(starts=[1]))
 
 
 def test_the_practised_policy_saves_loads_and_plays_through_evaluate_predict_and_record(tmp_path, practised):
@@ -127,7 +132,7 @@ def test_distilling_clones_the_teacher_then_fine_tunes_within_the_budget(teacher
     from polymimic.practice.teacher import Gate
 
     # A gate always open: the actor replaces the teacher at its first check.
-    taught = distil(teacher, steps=900, checkpoints=[0, 300, 900], evaluation_attempts=2, dagger_rounds=1,
+    taught = distil(teacher, steps=900, checkpoints=[0, 300, 900], evaluation=TWO_EACH, dagger_rounds=1,
                     dagger_steps=300, warmup_steps=100, tolerance=10.0, gate=Gate(every=1, attempts=1),
                     n_steps=64, batch_size=32)
     alone = evaluate(teacher, attempts_per_configuration=2)
@@ -142,7 +147,7 @@ def test_an_actor_that_never_earns_it_never_replaces_the_teacher(teacher):
     from polymimic.practice.teacher import TEACHER_ALONE, Gate
 
     # A gate never open (a check would have to beat the teacher by 5 per attempt).
-    taught = distil(teacher, steps=500, checkpoints=[0, 250, 500], evaluation_attempts=2, dagger_rounds=2,
+    taught = distil(teacher, steps=500, checkpoints=[0, 250, 500], evaluation=TWO_EACH, dagger_rounds=2,
                     dagger_steps=150, warmup_steps=100, tolerance=-5.0, gate=Gate(every=1, attempts=1),
                     n_steps=64, batch_size=32)
     alone = evaluate(teacher, attempts_per_configuration=2)

@@ -13,8 +13,8 @@ def test_defaults_are_the_thesis_sizes():
     config = RunConfig()
     assert (config.recognizer.n_states, config.recognizer.codebook_size) == (1, 512)
     assert (config.recognizer.train_per_primitive, config.recognizer.test_per_primitive) == (1000, 340)
-    assert (config.experiments.trials, config.experiments.demonstrations_per_configuration,
-            config.experiments.attempts_per_configuration) == (100, 25, 25)
+    assert (config.experiments.sizes.trials, config.experiments.sizes.demonstrations_per_configuration,
+            config.experiments.sizes.attempts_per_configuration) == (100, 25, 25)
     assert config.learning == polymimic.LearningConfig()
 
 
@@ -39,7 +39,7 @@ def test_a_partial_file_changes_only_what_it_names(tmp_path):
     path = tmp_path / "run.toml"
     path.write_text("[experiments]\ntrials = 7\n[field.ball]\nfriction = 0.5\n[learning]\ndecay_step = 0.01\n")
     config = RunConfig.load(path)
-    assert config.experiments.trials == 7 and config.experiments.demonstrations_per_configuration == 25
+    assert config.experiments.sizes.trials == 7 and config.experiments.sizes.demonstrations_per_configuration == 25
     assert config.field["ball"]["friction"] == 0.5 and config.field["ball"]["restitution"] == 0.6
     assert config.learning.decay_step == 0.01
     assert RunConfig.load(path, base=RunConfig.quick()).recognizer.codebook_size == 128

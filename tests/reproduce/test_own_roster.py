@@ -88,7 +88,7 @@ def test_the_config_reads_and_round_trips(own_run):
 
 def test_every_own_demonstrator_is_recorded_and_segmented(own_run):
     run, config, logged = own_run
-    n = config.experiments.demonstrations_per_configuration
+    n = config.experiments.sizes.demonstrations_per_configuration
     cart = load_demonstrations(run.demonstrations_path("cart_poor"))
     straight = load_demonstrations(run.demonstrations_path("straight"))
     imported = load_demonstrations(run.demonstrations_path("logged"))

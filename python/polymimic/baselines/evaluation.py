@@ -10,8 +10,9 @@ policies changing. During a tracking dropout the observation repeats the last go
 Seeds from :data:`VALIDATION_SEED_BASE` on are reserved for validation (tuning), so an
 evaluation seed is below it.
 
+>>> from polymimic import Attempts
 >>> from polymimic.baselines.policy import RandomPolicy
->>> result = evaluate_policy(RandomPolicy(seed=0), attempts_per_configuration=1, seed=0)
+>>> result = evaluate_policy(RandomPolicy(seed=0), attempts=Attempts(per_configuration=1, seed=0))
 >>> len(result.attempts), [a.configuration for a in result.attempts]
 (2, [1, 2])
 """
@@ -28,6 +29,7 @@ from threadpoolctl import threadpool_limits  # type: ignore[import-untyped, unus
 from polymimic import _native
 from polymimic.baselines.policy import Policy
 from polymimic.bodies import resolve
+from polymimic.evaluation import Attempts, attempts_given
 from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, Demonstration, as_frames, primitive_command
 from polymimic.field_config import native_field_config
 from polymimic.learning import Evaluation
@@ -108,20 +110,30 @@ def _step_together(policy: Policy, episodes: list[_native.Episode], commands: li
     return executed
 
 
-def evaluate_policy(policy: Policy, *, attempts_per_configuration: int = 25, seed: int = 0,
-                    field_config: dict[str, Any] | str | None = None) -> Evaluation:
-    """Goals, own goals and every attempt of ``policy`` over ``attempts_per_configuration``
-    attempts from each configuration, the imitator's own (:func:`polymimic.evaluate`'s for the
-    same ``seed``). ``behaviours`` lists the primitives each attempt chose (``F B L R S``).
+def evaluate_policy(policy: Policy, *, attempts: Attempts | None = None, attempts_per_configuration: int | None = None,
+                    seed: int | None = None, field_config: dict[str, Any] | str | None = None) -> Evaluation:
+    """Goals, own goals and every attempt of ``policy`` over ``attempts`` from the thesis's two
+    configurations (or ``attempts_per_configuration``, default 25, from each under ``seed``,
+    default 0): the imitator's own, :func:`polymimic.evaluate`'s for the same attempts.
+    ``behaviours`` lists the primitives each attempt chose (``F B L R S``).
 
     Raises
     ------
     ValueError
-        If ``seed`` is outside ``[0, 2**62)`` (the validation seeds lie above), the attempts
-        are not a positive integer, or the policy returns the wrong number of actions.
+        If the seed is outside ``[0, 2**62)`` (the validation seeds lie above), the attempts
+        are not a positive integer or start where the imitator chose, or the policy returns the
+        wrong number of actions.
+    TypeError
+        For ``attempts`` given beside the keywords it stands for.
     """
-    seed = _check_seed(seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's")
-    return play(policy, attempts_of(attempts_per_configuration, seed=seed), field_config=field_config)
+    if attempts is None:  # the keywords' own checks, worded as they were
+        attempts_per_configuration = None if attempts_per_configuration is None else _check_attempts(
+            attempts_per_configuration)
+        seed = None if seed is None else _check_seed(seed, low=0, high=VALIDATION_SEED_BASE,
+                                                     what="seeds from 2**62 are validation's")
+    chosen = attempts_given(attempts, attempts_per_configuration=attempts_per_configuration, seed=seed)
+    _check_seed(chosen.seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's")
+    return play(policy, chosen.episodes(), field_config=field_config)
 
 
 def _observation(episode: _native.Episode, last: np.ndarray | None) -> np.ndarray:

@@ -52,6 +52,7 @@ from polymimic.baselines.ppo import scaled
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_fit_seed, check_max_samples
 from polymimic.baselines.tuning import best_on_validation, validation_attempts_apart
 from polymimic.bodies import WheeledBody, body_name, resolve
+from polymimic.evaluation import Attempts
 from polymimic.field import PRIMITIVES, Demonstration
 
 __all__ = ["OfflineRLPolicy", "OfflineTuning", "Prepared", "available", "fit", "fit_prepared", "prepare", "tune"]
@@ -259,7 +260,7 @@ class OfflineTuning:
 
 def tune(demonstrations: Sequence[Demonstration], *, candidates: Sequence[OfflineHyperparameters] | None = None,
          budget: int = 12, candidate_seed: int = 0, validation_seed: int = 0, attempts_per_configuration: int = 50,
-         evaluation_seed: int = 0, evaluation_attempts_per_configuration: int = 25, seed: int = 0,
+         evaluation: Attempts = Attempts(), seed: int = 0,
          recognizer: PrimitiveRecognizer | None = None, segmenter: Mapping[str, Any] | None = None,
          field_config: dict[str, Any] | str | None = None, max_samples: int = MAX_DECISION_SAMPLES,
          imitator: str | WheeledBody = IMITATOR_BODY) -> OfflineTuning:
@@ -267,20 +268,22 @@ def tune(demonstrations: Sequence[Demonstration], *, candidates: Sequence[Offlin
     :func:`polymimic.baselines.tune` chooses a cloner's: ``budget`` candidates (default
     :func:`~polymimic.baselines.offline_hyperparameters.candidates` of ``candidate_seed``), each
     fitted under ``seed`` and ranked by its net goals, then goals, on the validation attempts
-    (which must not meet the evaluation's); the first best wins.
+    (which must not meet the ``evaluation``'s, an :class:`~polymimic.Attempts`); the first best
+    wins.
 
     Raises
     ------
     ModuleNotFoundError
         If d3rlpy is not installed.
     ValueError
-        On bad input (see :func:`fit`), an empty candidate list, or a validation attempt that is
-        also an evaluation attempt.
+        On bad input (see :func:`fit`), an empty candidate list, an ``evaluation`` from starts of
+        its own, or a validation attempt that is also an evaluation attempt.
+    TypeError
+        If ``evaluation`` is not an :class:`~polymimic.Attempts`.
     """
     _require()
     attempts = validation_attempts_apart(attempts_per_configuration, validation_seed=validation_seed,
-                                         evaluation_seed=evaluation_seed,
-                                         evaluation_attempts_per_configuration=evaluation_attempts_per_configuration)
+                                         evaluation=evaluation)
     tried = draw_candidates(budget, seed=candidate_seed) if candidates is None else list(candidates)
     if not tried:
         raise ValueError("candidates is empty: tuning needs at least one candidate")

@@ -34,6 +34,7 @@ import numpy as np
 from polymimic.baselines.features import FEATURE_NAMES, check_observations, features, target_goal_of
 from polymimic.baselines.policy_file import write_policy_file
 from polymimic.bodies import WheeledBody, as_body, body_name
+from polymimic.evaluation import Attempts, thesis_attempts
 
 __all__ = ["FEATURE_SCALE", "Checkpoint", "PPOPolicy", "available", "fit", "learning_curve", "new_model", "scaled",
            "steps_to_reach"]
@@ -290,17 +291,17 @@ def _checkpoints(every: int, evaluate: Callable[[Any], None]) -> Any:
     return Checkpoints()
 
 
-def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_configuration: int = 25,
-                   evaluation_seed: int = 0, seed: int = 0, frames_per_action: int = 30,
-                   feature_set: str = "goal_relative", field_config: dict[str, Any] | str | None = None,
+def learning_curve(*, total_timesteps: int, eval_every: int, evaluation: Attempts = Attempts(), seed: int = 0,
+                   frames_per_action: int = 30, feature_set: str = "goal_relative",
+                   field_config: dict[str, Any] | str | None = None,
                    on_checkpoint: Callable[[list[Checkpoint]], None] | None = None,
                    before_learning: Callable[[Any], None] | None = None, method: str = "ppo",
                    imitator: str | WheeledBody = IMITATOR_BODY,
                    **ppo_kwargs: Any) -> tuple[PPOPolicy, list[Checkpoint], Any]:
-    """PPO trained as :func:`fit` trains it, driving ``imitator``, and played on the evaluation
-    attempts of ``evaluation_seed`` (:func:`polymimic.baselines.evaluate_policy`, on the
-    imitator's field) before training, at the first policy update at or past every multiple of
-    ``eval_every`` steps and at the end.
+    """PPO trained as :func:`fit` trains it, driving ``imitator``, and played on the
+    ``evaluation`` attempts (an :class:`~polymimic.Attempts` from the thesis's configurations:
+    :func:`polymimic.baselines.evaluate_policy`, on the imitator's field) before training, at the
+    first policy update at or past every multiple of ``eval_every`` steps and at the end.
 
     PPO updates its policy once every ``n_steps × 2`` steps (4096 by default), so a checkpoint
     records the steps the policy has learned from. ``on_checkpoint`` sees the curve so far after
@@ -316,11 +317,15 @@ def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_config
     ModuleNotFoundError
         If stable-baselines3 is not installed.
     ValueError
-        If ``total_timesteps`` or ``eval_every`` is not a positive integer.
+        If ``total_timesteps`` or ``eval_every`` is not a positive integer, or ``evaluation`` is
+        from starts of its own.
+    TypeError
+        If ``evaluation`` is not an :class:`~polymimic.Attempts`.
     """
     _require()
     if isinstance(eval_every, bool) or not isinstance(eval_every, (int, np.integer)) or eval_every < 1:
         raise ValueError(f"eval_every must be an integer ≥ 1 (environment steps), got {eval_every!r}")
+    scored_on = thesis_attempts(evaluation, name="evaluation")
     from polymimic.baselines.evaluation import evaluate_policy
 
     start = time.perf_counter()
@@ -330,8 +335,7 @@ def learning_curve(*, total_timesteps: int, eval_every: int, attempts_per_config
     def evaluate(model: Any) -> None:
         policy = PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
                            total_timesteps=model.num_timesteps, method=method, body=body_name(imitator))
-        played = evaluate_policy(policy, attempts_per_configuration=attempts_per_configuration,
-                                 seed=evaluation_seed, field_config=field_config)
+        played = evaluate_policy(policy, attempts=scored_on, field_config=field_config)
         latest[:] = [played]
         curve.append(Checkpoint(env_steps=int(model.num_timesteps), goals=played.goals, own_goals=played.own_goals,
                                 attempts=len(played.attempts), wall_s=time.perf_counter() - start))

@@ -28,6 +28,7 @@ from polymimic.baselines.labels import IMITATOR_BODY, command_labels
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, decision_samples
 from polymimic.baselines.tuning import validation_attempts_apart, validation_rank
 from polymimic.bodies import WheeledBody, body_name
+from polymimic.evaluation import Attempts
 from polymimic.field import Demonstration
 
 __all__ = ["PRETRAINING_CANDIDATES", "Pretraining", "agreement", "clone_into", "cloning_samples", "learning_curve",
@@ -118,8 +119,7 @@ class PretrainingChoice:
 
 
 def tune_pretraining(demonstrations: Sequence[Demonstration], *, budget: int = 6, validation_seed: int = 0,
-                     attempts_per_configuration: int = 50, evaluation_seed: int = 0,
-                     evaluation_attempts_per_configuration: int = 25, seed: int = 0,
+                     attempts_per_configuration: int = 50, evaluation: Attempts = Attempts(), seed: int = 0,
                      feature_set: str = "goal_relative", frames_per_action: int = 30,
                      field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
                      max_samples: int = MAX_DECISION_SAMPLES) -> PretrainingChoice:
@@ -127,12 +127,11 @@ def tune_pretraining(demonstrations: Sequence[Demonstration], *, budget: int = 6
     played (before any reward) on the validation attempts of ``validation_seed``; the best by net
     goals, then goals, the first of equals (:func:`polymimic.baselines.tuning.validation_rank`).
     As :func:`polymimic.baselines.tune`, it refuses validation attempts that share an episode seed
-    with the evaluation's under ``evaluation_seed``."""
+    with the ``evaluation``'s (an :class:`~polymimic.Attempts` from the thesis's configurations)."""
     if isinstance(budget, bool) or not isinstance(budget, int) or not 1 <= budget <= len(PRETRAINING_CANDIDATES):
         raise ValueError(f"budget must be an integer in 1..{len(PRETRAINING_CANDIDATES)}, got {budget!r}")
     attempts = validation_attempts_apart(attempts_per_configuration, validation_seed=validation_seed,
-                                         evaluation_seed=evaluation_seed,
-                                         evaluation_attempts_per_configuration=evaluation_attempts_per_configuration)
+                                         evaluation=evaluation)
     scores = []
     for candidate in PRETRAINING_CANDIDATES[:budget]:
         policy = pretrained(demonstrations, candidate, seed=seed, feature_set=feature_set,
@@ -145,16 +144,15 @@ def tune_pretraining(demonstrations: Sequence[Demonstration], *, budget: int = 6
 
 
 def learning_curve(demonstrations: Sequence[Demonstration], pretraining: Pretraining, *, total_timesteps: int,
-                   eval_every: int, attempts_per_configuration: int = 25, evaluation_seed: int = 0, seed: int = 0,
-                   frames_per_action: int = 30, feature_set: str = "goal_relative",
+                   eval_every: int, evaluation: Attempts = Attempts(), seed: int = 0, frames_per_action: int = 30,
+                   feature_set: str = "goal_relative",
                    field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
                    max_samples: int = MAX_DECISION_SAMPLES) -> tuple[ppo.PPOPolicy, list[ppo.Checkpoint], Any]:
-    """:func:`polymimic.baselines.ppo.learning_curve` with the network cloned first: its first
-    checkpoint (0 steps) is the cloned network's."""
+    """:func:`polymimic.baselines.ppo.learning_curve` with the network cloned first, played on
+    the ``evaluation`` attempts: its first checkpoint (0 steps) is the cloned network's."""
     features, labels = cloning_samples(demonstrations, feature_set=feature_set, imitator=imitator,
                                        max_samples=max_samples, seed=seed)
-    return ppo.learning_curve(total_timesteps=total_timesteps, eval_every=eval_every,
-                              attempts_per_configuration=attempts_per_configuration, evaluation_seed=evaluation_seed,
-                              seed=seed, frames_per_action=frames_per_action, feature_set=feature_set,
-                              field_config=field_config, method="ppo_bc", imitator=imitator,
+    return ppo.learning_curve(total_timesteps=total_timesteps, eval_every=eval_every, evaluation=evaluation, seed=seed,
+                              frames_per_action=frames_per_action, feature_set=feature_set, field_config=field_config,
+                              method="ppo_bc", imitator=imitator,
                               before_learning=lambda model: clone_into(model, features, labels, pretraining, seed=seed))

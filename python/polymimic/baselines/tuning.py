@@ -6,7 +6,7 @@ evaluation's, with the same number of candidates for every method (docs/results/
 evaluation (:func:`polymimic.baselines.evaluate_policy`, like the imitator's) takes seeds below
 ``VALIDATION_SEED_BASE = 2**62``: the two seed spaces never meet. The episode seeds derived from
 them are 64-bit hashes; :func:`tune` also checks that none of its episodes is one of the
-evaluation's under ``evaluation_seed``, and refuses to tune if one were.
+``evaluation``'s (an :class:`~polymimic.Attempts`), and refuses to tune if one were.
 
 **The effort.** ``budget`` candidates for every method (:func:`~polymimic.baselines.hyperparameters.candidates`:
 the same draws for every method); each is fitted on all the demonstrations and scored by its net
@@ -41,6 +41,7 @@ from polymimic.baselines.methods import check_method, fit_prepared, prepare
 from polymimic.baselines.policy import ClonedPolicy, Policy, RandomPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples
 from polymimic.bodies import WheeledBody
+from polymimic.evaluation import Attempts, thesis_attempts
 from polymimic.field import Demonstration
 
 __all__ = ["LABELLING_TUNED", "Tuning", "tune", "validation_attempts", "validation_attempts_apart", "validation_rank"]
@@ -81,25 +82,36 @@ def validation_attempts(attempts_per_configuration: int, *, validation_seed: int
     return attempts_of(attempts_per_configuration, seed=VALIDATION_SEED_BASE + seed)
 
 
-def validation_attempts_apart(attempts_per_configuration: int, *, validation_seed: int, evaluation_seed: int,
-                              evaluation_attempts_per_configuration: int) -> list[tuple[int, int]]:
-    """:func:`validation_attempts`, checked to share no episode seed with the evaluation's
-    under ``evaluation_seed`` (the seed rule above).
+def validation_attempts_apart(attempts_per_configuration: int, *, validation_seed: int,
+                              evaluation: Attempts) -> list[tuple[int, int]]:
+    """:func:`validation_attempts`, checked to share no episode seed with the ``evaluation``'s
+    attempts (the seed rule above).
 
     Raises
     ------
+    TypeError
+        If ``evaluation`` is not an :class:`~polymimic.Attempts`.
     ValueError
-        Naming the shared episode seeds, if any.
+        Naming the shared episode seeds, if any; for an ``evaluation`` from starts of its own
+        or under a validation seed (from ``2**62``).
     """
     attempts = validation_attempts(attempts_per_configuration, validation_seed=validation_seed)
-    evaluation = {s for _, s in attempts_of(
-        evaluation_attempts_per_configuration,
-        seed=_check_seed(evaluation_seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's"))}
-    shared = sorted(s for _, s in attempts if s in evaluation)
+    evaluated = {s for _, s in _evaluation_episodes(evaluation)}
+    shared = sorted(s for _, s in attempts if s in evaluated)
     if shared:
         raise ValueError(f"validation attempts share episode seeds {shared} with the evaluation; "
                          f"choose another validation_seed")
     return attempts
+
+
+def _evaluation_episodes(evaluation: Attempts) -> list[tuple[int, int]]:
+    """The episodes of ``evaluation``, refused where they are not an evaluation's: from starts of
+    its own, or under a seed of validation's."""
+    scored = thesis_attempts(evaluation, name="evaluation")
+    if scored.seed >= VALIDATION_SEED_BASE:
+        raise ValueError(f"evaluation's seed must be below 2**62 (seeds from 2**62 are validation's), "
+                         f"got {scored.seed}")
+    return scored.episodes()
 
 
 def validation_rank(score: Mapping[str, Any]) -> tuple[int, int]:
@@ -134,7 +146,7 @@ def best_on_validation(tried: Sequence[CandidateT], fit: Callable[[CandidateT], 
 
 def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Sequence[Hyperparameters] | None = None,
          budget: int = 12, candidate_seed: int = 0, validation_seed: int = 0, attempts_per_configuration: int = 50,
-         evaluation_seed: int = 0, evaluation_attempts_per_configuration: int = 25, seed: int = 0,
+         evaluation: Attempts = Attempts(), seed: int = 0,
          recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
          member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
          field_config: dict[str, Any] | str | None = None, max_samples: int = MAX_DECISION_SAMPLES,
@@ -155,8 +167,9 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         Picks the validation attempts (see the seed rule above).
     attempts_per_configuration : int, default 50
         Validation attempts per field configuration.
-    evaluation_seed, evaluation_attempts_per_configuration : int
-        The evaluation the validation must not meet (checked).
+    evaluation : Attempts, default Attempts()
+        The evaluation the validation must not meet (checked): attempts from the thesis's
+        configurations, under a seed below ``2**62``.
     seed : int, default 0
         Seeds every fit.
     recognizer, weights, member, segmenter
@@ -172,13 +185,15 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
     ------
     ValueError
         On an unknown method, missing or bad input for it, an empty candidate list, a
-        ``max_samples`` below 1, or a validation attempt that is also an evaluation attempt.
+        ``max_samples`` below 1, an ``evaluation`` from starts of its own, or a validation attempt
+        that is also an evaluation attempt.
+    TypeError
+        If ``evaluation`` is not an :class:`~polymimic.Attempts`.
     """
     method = check_method(method)
     check_max_samples(max_samples)
     attempts = validation_attempts_apart(attempts_per_configuration, validation_seed=validation_seed,
-                                         evaluation_seed=evaluation_seed,
-                                         evaluation_attempts_per_configuration=evaluation_attempts_per_configuration)
+                                         evaluation=evaluation)
     if candidates is None:
         drawn = draw_candidates(budget, seed=candidate_seed)
         tried = with_labellings(drawn) if method in LABELLING_TUNED else drawn

@@ -8,7 +8,7 @@ The sections a reproduction has (``[seeds]``, ``[field]``, ``[recognizer]``, ``[
 its own and run it with ``profiles = [...]``.
 
 >>> config = BenchmarkConfig()
->>> config.benchmark.trials, config.benchmark.profiles[:2], config.learning.imitator_weighting
+>>> config.benchmark.sizes.trials, config.benchmark.profiles[:2], config.learning.imitator_weighting
 (20, ('one_good', 'half'), 'lp')
 >>> config.benchmark.world_weightings
 ('outcome', 'intent', 'every')
@@ -28,11 +28,23 @@ import dataclasses
 import os
 from typing import Any
 
+from polymimic._toml import documented as _doc
 from polymimic._toml import write_table, write_value
 from polymimic.crowds import PROFILES, Crowd
+from polymimic.evaluation import Attempts
 from polymimic.practice.methods import DEFAULT_METHOD as DEFAULT_PRACTICE
 from polymimic.practice.methods import METHODS as PRACTICE_METHODS
-from polymimic.runs.config import ConfigError, RunConfig, as_table, checked_section, in_range, read_config, toml_tables
+from polymimic.runs.config import (
+    ConfigError,
+    ConfigFile,
+    RunConfig,
+    as_table,
+    in_range,
+    replaced_section,
+    section_docs,
+    section_table,
+)
+from polymimic.runs.sizes import Sizes, TuningSizes
 
 __all__ = ["FROM_THE_REWARD", "METHODS", "OPTIONAL_METHODS", "WORLD_WEIGHTINGS", "BenchmarkConfig", "BenchmarkSettings"]
 
@@ -70,28 +82,16 @@ RENAMED = {"refit_baselines": "baseline_fits (how many fits of bc, bco, bc_best,
 """Keys an older config may hold, and what took their place."""
 
 
-def _doc(text: str, default: Any) -> Any:
-    return dataclasses.field(default=default, metadata={"doc": text})
-
-
 @dataclasses.dataclass(frozen=True)
 class BenchmarkSettings:
     """How big a benchmark is, what it compares, and how hard every baseline is tuned."""
 
     profiles: tuple[str, ...] = _doc("the crowds to run, by name", tuple(PROFILES))
     methods: tuple[str, ...] = _doc("the methods to compare", METHODS)
-    trials: int = _doc("learning trials per profile (seeds first_trial, first_trial + 1, …)", 20)
-    demonstrations_per_configuration: int = _doc("valid demonstrations per member and field configuration", 25)
-    attempts_per_configuration: int = _doc("evaluation attempts per method, trial and field configuration", 25)
-    validation_attempts_per_configuration: int = _doc("tuning attempts per configuration (never evaluated; a "
-                                                      "policy plays 100 in about a second)", 50)
-    tuning_budget: int = _doc("hyperparameter candidates tried per method and profile", 6)
-    validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
+    sizes: Sizes = Sizes(trials=20)
+    tuning: TuningSizes = TuningSizes(tuning_budget=6, validation_attempts_per_configuration=50)
     lp_plugin_trials: int = _doc("trials after which bco_lp, refitted with each trial's LPs, is evaluated: the "
                                  "first ones", 3)
-    # polymimic.baselines.training.MAX_DECISION_SAMPLES, not imported: that would import scikit-learn.
-    max_decision_samples: int = _doc("the most decision samples a baseline's fit takes (its sample stride widens "
-                                     "evenly to stay under it)", 20_000)
     offline_gradient_steps: int = _doc("gradient steps of each offline_rl fit (when methods name offline_rl)",
                                        10_000)
     ppo_timesteps: int = _doc("environment steps each ppo run learns from (when methods name ppo)", 1_000_000)
@@ -116,12 +116,9 @@ class BenchmarkSettings:
                               "classifier (bco_lp is fitted after each of the first lp_plugin_trials trials)", 3)
 
     def __post_init__(self) -> None:
-        for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
-                     "validation_attempts_per_configuration", "tuning_budget", "lp_plugin_trials",
-                     "baseline_fits", "max_decision_samples", "offline_gradient_steps", "ppo_timesteps",
-                     "ppo_eval_every", "ppo_runs", "practice_steps", "practice_trials"):
+        for name in ("lp_plugin_trials", "baseline_fits", "offline_gradient_steps", "ppo_timesteps", "ppo_eval_every",
+                     "ppo_runs", "practice_steps", "practice_trials"):
             in_range("benchmark", name, getattr(self, name), 1)
-        in_range("benchmark", "validation_seed", self.validation_seed, 0, 2**62 - 1)
         if self.practice_method not in PRACTICE_METHODS:
             raise ConfigError(f"[benchmark] practice_method must be one of {', '.join(PRACTICE_METHODS)}, got "
                               f"{self.practice_method!r}")
@@ -142,8 +139,13 @@ class BenchmarkSettings:
                                   f"{', '.join(METHODS + OPTIONAL_METHODS)}")
 
 
+_FILE_ORDER = ("profiles", "methods", "trials", "demonstrations_per_configuration", "attempts_per_configuration",
+               "validation_attempts_per_configuration", "tuning_budget", "validation_seed", "lp_plugin_trials")
+"""The first keys of ``[benchmark]`` in the order its files have always had them."""
+
+
 @dataclasses.dataclass(frozen=True)
-class BenchmarkConfig:
+class BenchmarkConfig(ConfigFile):
     """The whole benchmark. ``BenchmarkConfig()`` is the full one; :meth:`quick` is small."""
 
     run: RunConfig = dataclasses.field(default_factory=lambda: _with_lp_weighting(RunConfig()))
@@ -186,9 +188,14 @@ class BenchmarkConfig:
         """The imitator's body (``[imitator] body``), as the library takes it."""
         return self.run.imitator_body()
 
+    def evaluation_attempts(self) -> Attempts:
+        """The attempts every method plays after every trial (``[benchmark]
+        attempts_per_configuration`` from each configuration, under ``[seeds] evaluation``)."""
+        return self.benchmark.sizes.evaluation_attempts(seed=self.seeds.evaluation)
+
     def trial_seeds(self) -> list[int]:
         """Every profile's trial seeds: ``first_trial``, ``first_trial + 1``, …"""
-        return [self.seeds.first_trial + i for i in range(self.benchmark.trials)]
+        return [self.seeds.first_trial + i for i in range(self.benchmark.sizes.trials)]
 
     def evaluated_seeds(self, method: str) -> list[int]:
         """The seeds ``method`` is evaluated under: every trial's for polymimic's methods, the
@@ -217,23 +224,25 @@ class BenchmarkConfig:
         full = cls()
         return dataclasses.replace(
             full, run=_with_lp_weighting(dataclasses.replace(RunConfig.quick(), experiments=full.run.experiments)),
-            benchmark=dataclasses.replace(full.benchmark, trials=2, demonstrations_per_configuration=5,
-                                          attempts_per_configuration=5, validation_attempts_per_configuration=3,
-                                          tuning_budget=3, max_decision_samples=1000, offline_gradient_steps=300,
-                                          ppo_timesteps=8192,
-                                          ppo_eval_every=4096, practice_steps=1000, practice_trials=1))
+            benchmark=dataclasses.replace(full.benchmark, sizes=Sizes(trials=2, demonstrations_per_configuration=5,
+                                                                      attempts_per_configuration=5),
+                                          tuning=TuningSizes(tuning_budget=3, validation_attempts_per_configuration=3,
+                                                             max_decision_samples=1000),
+                                          offline_gradient_steps=300, ppo_timesteps=8192, ppo_eval_every=4096,
+                                          practice_steps=1000, practice_trials=1))
 
     def to_dict(self) -> dict[str, Any]:
         """The whole config as plain tables (the run's, ``[benchmark]`` and ``[profiles]``)."""
         run = self.run.to_dict()
         del run["experiments"]
-        benchmark = {k: list(v) if isinstance(v, tuple) else v for k, v in dataclasses.asdict(self.benchmark).items()}
-        return {**run, "benchmark": benchmark,
+        return {**run, "benchmark": section_table(self.benchmark, order=_FILE_ORDER),
                 "profiles": {name: {"members": crowd.to_members()} for name, crowd in self.profiles.items()}}
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any], *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
-        """A config from tables such as :meth:`to_dict` gives, laid over ``base`` (the defaults).
+    def from_dict(cls, data: dict[str, Any], *, base: BenchmarkConfig | None = None,
+                  base_dir: str | os.PathLike[str] = ".") -> BenchmarkConfig:
+        """A config from tables such as :meth:`to_dict` gives, laid over ``base`` (the defaults);
+        the run's files (a demonstrator's log) are found relative to ``base_dir``.
 
         Raises
         ------
@@ -242,7 +251,7 @@ class BenchmarkConfig:
         """
         base = base or cls()
         own = {"benchmark", "profiles"}
-        run = RunConfig.from_dict({k: v for k, v in data.items() if k not in own}, base=base.run)
+        run = RunConfig.from_dict({k: v for k, v in data.items() if k not in own}, base=base.run, base_dir=base_dir)
         profiles = dict(base.profiles)
         for name, table in as_table("profiles", data.get("profiles", {})).items():
             members = as_table(f"profiles.{name}", table)
@@ -255,14 +264,11 @@ class BenchmarkConfig:
                 raise ConfigError(f"[profiles.{name}] {error}") from error
         benchmark = base.benchmark
         if "benchmark" in data:
-            defaults = {k: list(v) if isinstance(v, tuple) else v
-                        for k, v in dataclasses.asdict(base.benchmark).items()}
             table = as_table("benchmark", data["benchmark"])
             for old, new in RENAMED.items():
                 if old in table:
                     raise ConfigError(f"[benchmark] {old} is no more: use {new}")
-            values = checked_section("benchmark", table, defaults)
-            benchmark = dataclasses.replace(base.benchmark, **values)
+            benchmark = replaced_section("benchmark", base.benchmark, table)
         return cls(run=run, benchmark=benchmark, profiles=profiles)
 
     def to_toml(self) -> str:
@@ -270,9 +276,8 @@ class BenchmarkConfig:
         lines = self.run.to_toml().split("\n[experiments]")[0].rstrip().split("\n")
         lines[0] = "# polymimic benchmark configuration"
         lines.append("")
-        docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(BenchmarkSettings)}
-        values = {k: list(v) if isinstance(v, tuple) else v for k, v in dataclasses.asdict(self.benchmark).items()}
-        write_table(lines, "benchmark", values, docs)
+        write_table(lines, "benchmark", section_table(self.benchmark, order=_FILE_ORDER),
+                    section_docs(self.benchmark, per="profile"))
         for name, crowd in self.profiles.items():
             lines.append(f"[profiles.{name}]")
             lines.append("members = [")
@@ -280,16 +285,6 @@ class BenchmarkConfig:
                          for m in crowd.to_members())
             lines.extend(["]", ""])
         return "\n".join(lines).rstrip() + "\n"
-
-    @classmethod
-    def from_toml(cls, text: str, *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
-        """A config from TOML text, laid over ``base`` (the defaults)."""
-        return cls.from_dict(toml_tables(text), base=base)
-
-    @classmethod
-    def load(cls, path: str | os.PathLike[str], *, base: BenchmarkConfig | None = None) -> BenchmarkConfig:
-        """A config from a TOML file, laid over ``base`` (the defaults)."""
-        return read_config(path, lambda text: cls.from_toml(text, base=base))
 
 
 def _with_lp_weighting(run: RunConfig) -> RunConfig:

@@ -159,7 +159,7 @@ class Benchmark(Staged):
 
     def record(self) -> int:
         """Stage: every profile's crowd recorded; returns the crowds recorded now."""
-        made, n = 0, self.config.benchmark.demonstrations_per_configuration
+        made, n = 0, self.config.benchmark.sizes.demonstrations_per_configuration
         crowds = self.config.crowds()
         with progress(total=len(crowds), desc="record", quiet=self.quiet) as bar:
             for crowd in crowds:
@@ -275,8 +275,8 @@ class Benchmark(Staged):
         under ``world_weighting``: one played under another than validation now chooses is redone."""
         path = self.run.evaluation_path(profile, method, seed)
         saved = self.run.loaded(path, load_method_evaluation)
-        done = saved is not None and (saved["attempts"] == 2 * self.config.benchmark.attempts_per_configuration
-                                      and saved["seed"] == self.config.seeds.evaluation)
+        attempts = self.config.evaluation_attempts()
+        done = saved is not None and (saved["attempts"], saved["seed"]) == (attempts.count, attempts.seed)
         if done and world_weighting is not None:
             return bool(json.loads(path.read_text(encoding="utf-8")).get("world_weighting") == world_weighting)
         return done
@@ -318,8 +318,7 @@ class Benchmark(Staged):
         settings = self.config.benchmark
         saved = self.run.loaded(self.run.practice_path(profile, seed), load_practice)
         return self._evaluation_done(profile, PRACTISED, seed) and is_practice_of(
-            saved, profile, seed, evaluation_seed=self.config.seeds.evaluation,
-            attempts=2 * settings.attempts_per_configuration, budget=settings.practice_steps,
+            saved, profile, seed, evaluation=self.config.evaluation_attempts(), budget=settings.practice_steps,
             method=settings.practice_method)
 
     def practice(self, shared: Shared) -> int:
@@ -342,10 +341,7 @@ class Benchmark(Staged):
         saved = self.run.loaded(self.run.ppo_curve_path(seed), load_ppo_curve)
         if saved is None:
             return False
-        settings = self.config.benchmark
-        return (saved["seed"], saved["evaluation_seed"], saved["attempts"], saved["total_timesteps"],
-                saved["eval_every"]) == (seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
-                                         settings.ppo_timesteps, settings.ppo_eval_every)
+        return self._curve_of(saved, seed)
 
     def ppo(self, shared: Shared) -> int:
         """Stage: ``ppo``'s runs and their curves; returns the runs made."""
@@ -364,11 +360,15 @@ class Benchmark(Staged):
         if not self.run.ppo_bc_policy_path(profile, seed).is_file():
             return False
         saved = self.run.loaded(self.run.ppo_bc_curve_path(profile, seed), load_ppo_bc_curve)
-        settings = self.config.benchmark
-        return saved is not None and saved["pretraining"] == chosen and (
-            saved["seed"], saved["evaluation_seed"], saved["attempts"], saved["total_timesteps"],
-            saved["eval_every"]) == (seed, self.config.seeds.evaluation, 2 * settings.attempts_per_configuration,
-                                     settings.ppo_timesteps, settings.ppo_eval_every)
+        return saved is not None and saved["pretraining"] == chosen and self._curve_of(saved, seed)
+
+    def _curve_of(self, saved: Any, seed: int) -> bool:
+        """Whether a saved curve (ppo's or ppo_bc's) is training seed ``seed``'s, on this run's
+        evaluation attempts, steps and checkpoints."""
+        settings, attempts = self.config.benchmark, self.config.evaluation_attempts()
+        return bool((saved["seed"], saved["evaluation_seed"], saved["attempts"], saved["total_timesteps"],
+                     saved["eval_every"]) == (seed, attempts.seed, attempts.count, settings.ppo_timesteps,
+                                              settings.ppo_eval_every))
 
     def ppo_bc(self, shared: Shared) -> int:
         """Stage: ``ppo_bc``'s cloning tuned per profile, then its runs; returns the pieces of work done."""

@@ -29,9 +29,7 @@ def _practice(path: pathlib.Path, only: Sequence[str] | None, steps: int, method
              for g in groups}
     inputs = PracticeInputs(recognizer=recognizer, learning=config.learning, demonstrations=demos,
                             body=config.imitator_body(), field=config.field, segmenter=segmenter, steps=steps,
-                            evaluation_seed=config.seeds.evaluation,
-                            attempts_per_configuration=config.benchmark.attempts_per_configuration,
-                            method=method)
+                            attempts=config.evaluation_attempts(), method=method)
     return RunPractice(run=run, groups=groups, trial_seeds=config.trial_seeds(), inputs=inputs,
                        trial_path=run.trial_path)
 

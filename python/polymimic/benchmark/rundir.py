@@ -26,7 +26,6 @@
 
 from __future__ import annotations
 
-import os
 import pathlib
 
 from polymimic.benchmark.config import BenchmarkConfig
@@ -40,12 +39,7 @@ class BenchmarkDir(RunHouse[BenchmarkConfig]):
 
     manifest_format = "polymimic.benchmark_run"
     config_type = BenchmarkConfig
-
-    def __init__(self, path: str | os.PathLike[str]) -> None:
-        super().__init__(path)
-        self.results_path = self.path / "benchmark.json"
-        self.report_md_path = self.path / "benchmark.md"
-        self.report_html_path = self.path / "benchmark.html"
+    results_name = report_name = "benchmark"
 
     def crowd_path(self, profile: str) -> pathlib.Path:
         """The profile's recorded crowd (Parquet)."""

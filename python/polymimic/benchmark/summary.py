@@ -23,6 +23,7 @@ trials at every checkpoint) and, beside ppo, the steps each needs to reach the o
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Mapping, Sequence
 from typing import Any, TypedDict
 
@@ -228,7 +229,7 @@ def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, me
         chosen, scored = tuning["chosen"], validation(tuning)
     return MethodSummary(goals=mean_sd(e["goals"] for e in saved), own_goals=mean_sd(e["own_goals"] for e in saved),
                          net_goals=mean_sd(e["goals"] - e["own_goals"] for e in saved),
-                         attempts=2 * config.benchmark.attempts_per_configuration, evaluated=len(saved),
+                         attempts=2 * config.benchmark.sizes.attempts_per_configuration, evaluated=len(saved),
                          hyperparameters=chosen, validation=scored, floor=None, gain_over_floor=None)
 
 
@@ -242,7 +243,7 @@ def _ppo_summary(curves: Sequence[Mapping[str, Any]], config: BenchmarkConfig, t
     finals = [c["checkpoints"][-1] for c in curves]
     return PPOSummary(goals=mean_sd(f["goals"] for f in finals), own_goals=mean_sd(f["own_goals"] for f in finals),
                       net_goals=mean_sd(f["net_goals"] for f in finals),
-                      attempts=2 * config.benchmark.attempts_per_configuration, evaluated=len(curves),
+                      attempts=2 * config.benchmark.sizes.attempts_per_configuration, evaluated=len(curves),
                       hyperparameters=ppo_hyperparameters(config), validation=None, floor=None,
                       gain_over_floor=None,
                       env_steps_to_polymimic=[None if target is None else steps_to_reach(c["checkpoints"], target)
@@ -330,15 +331,14 @@ def with_floors(profiles: Mapping[str, ProfileSummary]) -> None:
 
 def gather(run: BenchmarkDir, config: BenchmarkConfig) -> dict[str, Any]:
     """The whole ``benchmark.json`` of a finished run (the same seeds give the same bytes)."""
-    settings = config.benchmark
-    sizes = {"trials": settings.trials, "demonstrations_per_configuration": settings.demonstrations_per_configuration,
-             "attempts_per_configuration": settings.attempts_per_configuration,
-             "validation_attempts_per_configuration": settings.validation_attempts_per_configuration,
-             "tuning_budget": settings.tuning_budget, "max_decision_samples": settings.max_decision_samples,
+    settings, tuning = config.benchmark, config.benchmark.tuning
+    sizes = {**dataclasses.asdict(settings.sizes),
+             "validation_attempts_per_configuration": tuning.validation_attempts_per_configuration,
+             "tuning_budget": tuning.tuning_budget, "max_decision_samples": tuning.max_decision_samples,
              "lp_plugin_trials": settings.lp_plugin_trials, "baseline_fits": settings.baseline_fits,
              "practice_steps": settings.practice_steps, "practice_trials": settings.practice_trials,
              "evaluation_seed": config.seeds.evaluation,
-             "validation_seed": settings.validation_seed}
+             "validation_seed": tuning.validation_seed}
     # ppo's runs serve every profile: read once.
     curves = _ppo_curves(run, config) if "ppo" in settings.methods else None
     controllers = load_controller_skill(run.require(run.controller_skill_path, "benchmark"))

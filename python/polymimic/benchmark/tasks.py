@@ -16,6 +16,7 @@ from polymimic.baselines.evaluation import VALIDATION_SEED_BASE
 from polymimic.baselines.tuning import validation_attempts_apart
 from polymimic.benchmark.config import BenchmarkConfig
 from polymimic.crowds import Crowd
+from polymimic.evaluation import Attempts
 from polymimic.field import Demonstration
 from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate, run_trial
 from polymimic.runs.practising import PracticeInputs
@@ -104,7 +105,7 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
     settings = shared.config.benchmark
     if method == "offline_rl":
         return _offline_tuning(shared, profile)
-    tuning = baselines.tune(method, shared.profiles[profile].demonstrations, budget=settings.tuning_budget,
+    tuning = baselines.tune(method, shared.profiles[profile].demonstrations, budget=settings.tuning.tuning_budget,
                             **_tuning_inputs(shared), **_baseline_inputs(shared, profile, method, trial_json))
     return _tuned(shared, profile, method, tuning)
 
@@ -112,13 +113,11 @@ def tuning_task(shared: Shared, job: tuple[str, str, str | None]) -> dict[str, A
 def _tuning_inputs(shared: Shared) -> dict[str, Any]:
     """What every baseline's tuning takes from the config: the validation and evaluation
     attempts, the first trial's seed, the field and the sample cap."""
-    settings, seeds = shared.config.benchmark, shared.config.seeds
-    return {"validation_seed": settings.validation_seed,
-            "attempts_per_configuration": settings.validation_attempts_per_configuration,
-            "evaluation_seed": seeds.evaluation,
-            "evaluation_attempts_per_configuration": settings.attempts_per_configuration,
-            "seed": seeds.first_trial, "field_config": shared.config.field,
-            "max_samples": settings.max_decision_samples}
+    tuning = shared.config.benchmark.tuning
+    return {"validation_seed": tuning.validation_seed,
+            "attempts_per_configuration": tuning.validation_attempts_per_configuration,
+            "evaluation": shared.config.evaluation_attempts(), "seed": shared.config.seeds.first_trial,
+            "field_config": shared.config.field, "max_samples": tuning.max_decision_samples}
 
 
 def _tuned(shared: Shared, profile: str, method: str, tuning: Any) -> dict[str, Any]:
@@ -141,7 +140,7 @@ def _offline_tuning(shared: Shared, profile: str) -> dict[str, Any]:
     torch.set_num_threads(1)
     settings = shared.config.benchmark
     tried = [dataclasses.replace(h, gradient_steps=settings.offline_gradient_steps)
-             for h in candidates(settings.tuning_budget)]
+             for h in candidates(settings.tuning.tuning_budget)]
     tuning = offline_rl.tune(shared.profiles[profile].demonstrations, candidates=tried, **_tuning_inputs(shared),
                              **_baseline_inputs(shared, profile, "offline_rl", None))
     return _tuned(shared, profile, "offline_rl", tuning)
@@ -152,18 +151,18 @@ def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:
     trial, its world model weighed so, played on the validation attempts the baselines are tuned
     on (never the evaluation's): polymimic's tuning, with a baseline's effort."""
     profile, weighting, trial_json = job
-    settings, seeds = shared.config.benchmark, shared.config.seeds
-    attempts = validation_attempts_apart(
-        settings.validation_attempts_per_configuration, validation_seed=settings.validation_seed,
-        evaluation_seed=seeds.evaluation, evaluation_attempts_per_configuration=settings.attempts_per_configuration)
+    tuning = shared.config.benchmark.tuning
+    attempts = validation_attempts_apart(tuning.validation_attempts_per_configuration,
+                                         validation_seed=tuning.validation_seed,
+                                         evaluation=shared.config.evaluation_attempts())
     policy = _imitator(shared, profile, WEIGHED, trial_json, weighting)
-    played = evaluate(policy, attempts_per_configuration=settings.validation_attempts_per_configuration,
-                      seed=VALIDATION_SEED_BASE + settings.validation_seed,
+    played = evaluate(policy, attempts=Attempts(per_configuration=tuning.validation_attempts_per_configuration,
+                                                seed=VALIDATION_SEED_BASE + tuning.validation_seed),
                       field_config=shared.config.field)
     if [(a.configuration, a.seed) for a in played.attempts] != attempts:
         raise RuntimeError("the imitator's validation attempts are not the baselines'")  # the seed rule, guarded
-    return {"profile": profile, "weighting": weighting, "seed": seeds.first_trial,
-            "validation_seed": settings.validation_seed, "goals": played.goals, "own_goals": played.own_goals,
+    return {"profile": profile, "weighting": weighting, "seed": shared.config.seeds.first_trial,
+            "validation_seed": tuning.validation_seed, "goals": played.goals, "own_goals": played.own_goals,
             "attempts": len(played.attempts)}
 
 
@@ -185,9 +184,7 @@ def practice_inputs(shared: Shared) -> PracticeInputs:
                           demonstrations={name: p.segmented for name, p in shared.profiles.items()},
                           body=config.imitator_body(), field=config.field,
                           segmenter=dataclasses.asdict(config.segmenter), steps=config.benchmark.practice_steps,
-                          evaluation_seed=config.seeds.evaluation,
-                          attempts_per_configuration=config.benchmark.attempts_per_configuration,
-                          method=config.benchmark.practice_method)
+                          attempts=config.evaluation_attempts(), method=config.benchmark.practice_method)
 
 
 def practised_evaluation(shared: Shared, result: dict[str, Any]) -> dict[str, Any]:
@@ -200,13 +197,12 @@ def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[s
     method's goals and own goals on the evaluation attempts after that trial (polymimic's
     hyperparameters: its ``world_weighting``, chosen on validation)."""
     profile, method, trial_seed, trial_json, hyperparameters = job
-    settings, seeds, inputs = shared.config.benchmark, shared.config.seeds, shared.profiles[profile]
+    settings, inputs = shared.config.benchmark, shared.profiles[profile]
     if method in POLYMIMIC_METHODS:
         assert trial_json is not None and method != PRACTISED, "the practice stage evaluates practised imitators"
         weighting = None if hyperparameters is None else hyperparameters["world_weighting"]
         result = evaluate(_imitator(shared, profile, method, trial_json, weighting),
-                          attempts_per_configuration=settings.attempts_per_configuration, seed=seeds.evaluation,
-                          field_config=shared.config.field)
+                          attempts=shared.config.evaluation_attempts(), field_config=shared.config.field)
         outcomes = [a.outcome for a in result.attempts]
         return {**_evaluation(shared, profile, method, trial_seed, outcomes),
                 **({} if weighting is None else {"world_weighting": weighting})}
@@ -216,7 +212,7 @@ def evaluation_task(shared: Shared, job: tuple[str, str, int, str | None, dict[s
     chosen = baselines.Hyperparameters.from_dict(hyperparameters)
     demos = inputs.demonstrations if method != "random" else []
     fitted = baselines.fit(method, demos, hyperparameters=chosen, seed=trial_seed,
-                           max_samples=settings.max_decision_samples,
+                           max_samples=settings.tuning.max_decision_samples,
                            **(_baseline_inputs(shared, profile, method, trial_json) if method != "random"
                               else {"imitator": shared.config.imitator_body()}))
     return _evaluated(shared, profile, method, trial_seed, fitted)
@@ -232,16 +228,15 @@ def _offline_evaluation(shared: Shared, profile: str, fit_seed: int, hyperparame
     torch.set_num_threads(1)
     fitted = offline_rl.fit(shared.profiles[profile].demonstrations,
                             hyperparameters=OfflineHyperparameters.from_dict(hyperparameters), seed=fit_seed,
-                            max_samples=shared.config.benchmark.max_decision_samples,
+                            max_samples=shared.config.benchmark.tuning.max_decision_samples,
                             **_baseline_inputs(shared, profile, "offline_rl", None))
     return _evaluated(shared, profile, "offline_rl", fit_seed, fitted)
 
 
 def _evaluated(shared: Shared, profile: str, method: str, trial_seed: int, policy: baselines.Policy) -> dict[str, Any]:
     """A fitted baseline's evaluation after trial ``trial_seed``."""
-    settings, seeds = shared.config.benchmark, shared.config.seeds
-    result = baselines.evaluate_policy(policy, attempts_per_configuration=settings.attempts_per_configuration,
-                                       seed=seeds.evaluation, field_config=shared.config.field)
+    result = baselines.evaluate_policy(policy, attempts=shared.config.evaluation_attempts(),
+                                       field_config=shared.config.field)
     return _evaluation(shared, profile, method, trial_seed, [a.outcome for a in result.attempts])
 
 
@@ -272,14 +267,13 @@ def ppo_task(shared: Shared, seed: int) -> dict[str, Any]:
     import torch  # type: ignore[import-not-found, unused-ignore]
 
     torch.set_num_threads(1)
-    settings = shared.config.benchmark
+    settings, attempts = shared.config.benchmark, shared.config.evaluation_attempts()
     policy, curve, _ = baselines.ppo.learning_curve(
-        total_timesteps=settings.ppo_timesteps, eval_every=settings.ppo_eval_every,
-        attempts_per_configuration=settings.attempts_per_configuration, evaluation_seed=shared.config.seeds.evaluation,
-        seed=seed, frames_per_action=PPO_FRAMES_PER_ACTION, feature_set=PPO_FEATURE_SET,
-        field_config=shared.config.field, imitator=shared.config.imitator_body())
-    return {"seed": seed, "evaluation_seed": shared.config.seeds.evaluation,
-            "attempts": 2 * settings.attempts_per_configuration, "total_timesteps": settings.ppo_timesteps,
+        total_timesteps=settings.ppo_timesteps, eval_every=settings.ppo_eval_every, evaluation=attempts, seed=seed,
+        frames_per_action=PPO_FRAMES_PER_ACTION, feature_set=PPO_FEATURE_SET, field_config=shared.config.field,
+        imitator=shared.config.imitator_body())
+    return {"seed": seed, "evaluation_seed": attempts.seed, "attempts": attempts.count,
+            "total_timesteps": settings.ppo_timesteps,
             "eval_every": settings.ppo_eval_every,
             "checkpoints": [{k: v for k, v in c.to_dict().items() if k != "wall_s"} for c in curve], "policy": policy}
 
@@ -292,17 +286,15 @@ def ppo_bc_tuning_task(shared: Shared, profile: str) -> dict[str, Any]:
     from polymimic.baselines import ppo_bc
 
     torch.set_num_threads(1)
-    settings = shared.config.benchmark
+    tuning = shared.config.benchmark.tuning
     choice = ppo_bc.tune_pretraining(
-        shared.profiles[profile].demonstrations, budget=min(settings.tuning_budget, len(ppo_bc.PRETRAINING_CANDIDATES)),
-        validation_seed=settings.validation_seed,
-        attempts_per_configuration=settings.validation_attempts_per_configuration,
-        evaluation_seed=shared.config.seeds.evaluation,
-        evaluation_attempts_per_configuration=settings.attempts_per_configuration, seed=shared.config.seeds.first_trial,
+        shared.profiles[profile].demonstrations, budget=min(tuning.tuning_budget, len(ppo_bc.PRETRAINING_CANDIDATES)),
+        validation_seed=tuning.validation_seed, attempts_per_configuration=tuning.validation_attempts_per_configuration,
+        evaluation=shared.config.evaluation_attempts(), seed=shared.config.seeds.first_trial,
         feature_set=PPO_FEATURE_SET, frames_per_action=PPO_FRAMES_PER_ACTION, field_config=shared.config.field,
-        imitator=shared.config.imitator_body(), max_samples=settings.max_decision_samples)
+        imitator=shared.config.imitator_body(), max_samples=tuning.max_decision_samples)
     return {"profile": profile, "chosen": choice.chosen.to_dict(), "scores": choice.scores,
-            "validation_attempts": 2 * settings.validation_attempts_per_configuration}
+            "validation_attempts": 2 * tuning.validation_attempts_per_configuration}
 
 
 def ppo_bc_task(shared: Shared, job: tuple[str, int, dict[str, Any]]) -> dict[str, Any]:
@@ -315,15 +307,14 @@ def ppo_bc_task(shared: Shared, job: tuple[str, int, dict[str, Any]]) -> dict[st
 
     torch.set_num_threads(1)
     profile, seed, chosen = job
-    settings = shared.config.benchmark
+    settings, attempts = shared.config.benchmark, shared.config.evaluation_attempts()
     policy, curve, _ = ppo_bc.learning_curve(
         shared.profiles[profile].demonstrations, ppo_bc.Pretraining(**chosen), total_timesteps=settings.ppo_timesteps,
-        eval_every=settings.ppo_eval_every, attempts_per_configuration=settings.attempts_per_configuration,
-        evaluation_seed=shared.config.seeds.evaluation, seed=seed, frames_per_action=PPO_FRAMES_PER_ACTION,
+        eval_every=settings.ppo_eval_every, evaluation=attempts, seed=seed, frames_per_action=PPO_FRAMES_PER_ACTION,
         feature_set=PPO_FEATURE_SET, field_config=shared.config.field, imitator=shared.config.imitator_body(),
-        max_samples=settings.max_decision_samples)
-    return {"profile": profile, "seed": seed, "evaluation_seed": shared.config.seeds.evaluation,
-            "attempts": 2 * settings.attempts_per_configuration, "total_timesteps": settings.ppo_timesteps,
+        max_samples=settings.tuning.max_decision_samples)
+    return {"profile": profile, "seed": seed, "evaluation_seed": attempts.seed,
+            "attempts": attempts.count, "total_timesteps": settings.ppo_timesteps,
             "eval_every": settings.ppo_eval_every, "pretraining": chosen,
             "checkpoints": [{k: v for k, v in c.to_dict().items() if k != "wall_s"} for c in curve], "policy": policy}
 

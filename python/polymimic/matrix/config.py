@@ -13,7 +13,7 @@ config reads as a matrix's too: its ``[imitator]`` body is the first row unless 
 imitators`` names the rows, and its ``[experiments]`` are the reproduction's (checked, unused).
 
 >>> config = MatrixConfig()
->>> config.matrix.imitators, config.matrix.trials
+>>> config.matrix.imitators, config.matrix.sizes.trials
 (('lego', 'tiny', 'humanoid', 'wagon'), 20)
 >>> MatrixConfig.from_toml('[matrix]\\nimitators = ["lego", "tinny"]\\n')
 Traceback (most recent call last):
@@ -27,22 +27,26 @@ import dataclasses
 import os
 from typing import Any
 
+from polymimic._toml import documented as _doc
 from polymimic._toml import write_table
 from polymimic.bodies import Field, WheeledBody
 from polymimic.crowds import PROFILES
+from polymimic.evaluation import Attempts
 from polymimic.runs.config import (
     IMITATOR_BODIES,
     ConfigError,
+    ConfigFile,
     ExperimentSettings,
     ImitatorSettings,
     RunConfig,
     as_table,
-    checked_section,
     in_range,
-    read_config,
-    toml_tables,
+    replaced_section,
+    section_docs,
+    section_table,
 )
 from polymimic.runs.roster_config import ControllerDemonstrator, DemonstratorSpec, ImportedDemonstrator, spec_table
+from polymimic.runs.sizes import Sizes, TuningSizes
 
 __all__ = ["COLUMNS", "WAGON", "WEIGHTINGS", "DemonstratorSet", "MatrixConfig", "MatrixSettings", "demonstrator_sets",
            "stored_column"]
@@ -65,28 +69,20 @@ OWN_CONTROLLER = {"lego": "expert", "tiny": "tiny", "humanoid": "humanoid"}
 """The built-in controller that demonstrates on a built-in body; any other body's is the Tiny
 controller's, which drives any wheeled body."""
 
-def _doc(text: str, default: Any) -> Any:
-    return dataclasses.field(default=default, metadata={"doc": text})
-
 
 @dataclasses.dataclass(frozen=True)
 class MatrixSettings:
-    """The rows, the sizes, and how hard ``bco`` is tuned in each cell."""
+    """The rows, the sizes, and how hard ``bco`` is tuned in each cell: its candidates are plain
+    boosted trees with each labelling, then the benchmark's others, chosen on the validation
+    attempts that choose polymimic's weighting too."""
 
     imitators: tuple[str, ...] = _doc("the imitator bodies, one row each: lego, tiny, humanoid, or a "
                                       "[bodies.<name>]", ("lego", "tiny", "humanoid", "wagon"))
     columns: tuple[str, ...] = _doc("the built-in columns, of expert, tiny, humanoid, own_body, mixed_bodies; each "
                                     "[demonstrators.<name>] adds a column after them", COLUMNS)
-    trials: int = _doc("learning trials per cell (seeds first_trial, first_trial + 1, …)", 20)
-    demonstrations_per_configuration: int = _doc("valid demonstrations per member and field configuration", 25)
-    attempts_per_configuration: int = _doc("evaluation attempts per method, trial and field configuration", 25)
+    sizes: Sizes = Sizes(trials=20)
     bco_fits: int = _doc("fits of bco per cell, each evaluated, under seeds first_trial, first_trial + 1, …", 3)
-    tuning_budget: int = _doc("bco's candidates per cell, chosen on validation attempts: plain boosted trees with "
-                              "each labelling, then the benchmark's others", 2)
-    validation_attempts_per_configuration: int = _doc("bco's tuning attempts per configuration (never evaluated)",
-                                                      25)
-    validation_seed: int = _doc("picks the validation attempts, from a seed space apart from the evaluation's", 0)
-    max_decision_samples: int = _doc("the most decision samples a bco fit takes", 20_000)
+    tuning: TuningSizes = TuningSizes(tuning_budget=2, validation_attempts_per_configuration=25)
     primitives: str = _doc("each row's primitives: own (its body's: the humanoid's eight, a wheeled body's five) "
                            "or wheeled (the five for every row, the humanoid walking, turning and waiting)", "own")
     weightings: tuple[str, ...] = _doc("polymimic's candidates for how it weighs a crowd's members "
@@ -96,10 +92,7 @@ class MatrixSettings:
                                        "candidate)", ("lp", "lp_gain"))
 
     def __post_init__(self) -> None:
-        for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration", "bco_fits",
-                     "tuning_budget", "validation_attempts_per_configuration", "max_decision_samples"):
-            in_range("matrix", name, getattr(self, name), 1)
-        in_range("matrix", "validation_seed", self.validation_seed, 0, 2**62 - 1)
+        in_range("matrix", "bco_fits", self.bco_fits, 1)
         if self.primitives not in ("own", "wheeled"):
             raise ConfigError(f"[matrix] primitives must be 'own' or 'wheeled', got {self.primitives!r}")
         weightings = self.weightings
@@ -181,7 +174,7 @@ def _default_run() -> RunConfig:
 
 
 @dataclasses.dataclass(frozen=True)
-class MatrixConfig:
+class MatrixConfig(ConfigFile):
     """The whole matrix. ``MatrixConfig()`` is the full one; :meth:`quick` is small."""
 
     run: RunConfig = dataclasses.field(default_factory=_default_run)
@@ -219,9 +212,14 @@ class MatrixConfig:
         """The imitator ``row`` as the library takes it."""
         return row if row in IMITATOR_BODIES else self.run.bodies[row]
 
+    def evaluation_attempts(self) -> Attempts:
+        """The attempts both methods play in every cell (``[matrix] attempts_per_configuration``
+        from each configuration, under ``[seeds] evaluation``)."""
+        return self.matrix.sizes.evaluation_attempts(seed=self.seeds.evaluation)
+
     def trial_seeds(self) -> list[int]:
         """The seeds of polymimic's trials in every cell."""
-        return [self.seeds.first_trial + i for i in range(self.matrix.trials)]
+        return [self.seeds.first_trial + i for i in range(self.matrix.sizes.trials)]
 
     def fit_seeds(self) -> list[int]:
         """The seeds of ``bco``'s fits in every cell."""
@@ -236,17 +234,17 @@ class MatrixConfig:
         quick_run = RunConfig.quick()
         return dataclasses.replace(
             full, run=dataclasses.replace(full.run, recognizer=quick_run.recognizer),
-            matrix=dataclasses.replace(full.matrix, trials=2, bco_fits=1, demonstrations_per_configuration=5,
-                                       attempts_per_configuration=5, tuning_budget=2,
-                                       validation_attempts_per_configuration=3, max_decision_samples=1000))
+            matrix=dataclasses.replace(full.matrix, sizes=Sizes(trials=2, demonstrations_per_configuration=5,
+                                                                attempts_per_configuration=5), bco_fits=1,
+                                       tuning=TuningSizes(tuning_budget=2, validation_attempts_per_configuration=3,
+                                                          max_decision_samples=1000)))
 
     def to_dict(self) -> dict[str, Any]:
         """The whole config as plain tables (the run's and ``[matrix]``)."""
         run = self.run.to_dict()
         for section in ("experiments", "imitator"):
             del run[section]
-        return {**run, "matrix": {k: list(v) if isinstance(v, tuple) else v
-                                  for k, v in dataclasses.asdict(self.matrix).items()}}
+        return {**run, "matrix": section_table(self.matrix)}
 
     @classmethod
     def from_dict(cls, data: dict[str, Any], *, base: MatrixConfig | None = None,
@@ -267,9 +265,7 @@ class MatrixConfig:
                                   own_experiments={})
         settings = base.matrix
         if "matrix" in data:
-            defaults = {k: list(v) if isinstance(v, tuple) else v for k, v in dataclasses.asdict(base.matrix).items()}
-            settings = dataclasses.replace(base.matrix, **checked_section("matrix", as_table("matrix", data["matrix"]),
-                                                                          defaults))
+            settings = replaced_section("matrix", base.matrix, as_table("matrix", data["matrix"]))
         if imitator is not None and "imitators" not in as_table("matrix", data.get("matrix", {})):
             rows = (imitator, *(r for r in settings.imitators if r != imitator))
             settings = dataclasses.replace(settings, imitators=rows)
@@ -281,26 +277,12 @@ class MatrixConfig:
         lines = [line for line in _without_table(lines, "imitator")]
         lines[0] = "# polymimic matrix configuration"
         lines.append("")
-        docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(MatrixSettings)}
-        write_table(lines, "matrix", {k: list(v) if isinstance(v, tuple) else v
-                                      for k, v in dataclasses.asdict(self.matrix).items()}, docs)
+        write_table(lines, "matrix", section_table(self.matrix), section_docs(self.matrix, per="cell"))
         for name, body in self.run.bodies.items():
             write_table(lines, f"bodies.{name}", body.to_table(), {})
         for name, spec in self.run.demonstrators.items():
             write_table(lines, f"demonstrators.{name}", spec_table(spec), {})
         return "\n".join(lines).rstrip() + "\n"
-
-    @classmethod
-    def from_toml(cls, text: str, *, base: MatrixConfig | None = None,
-                  base_dir: str | os.PathLike[str] = ".") -> MatrixConfig:
-        """A config from TOML text, laid over ``base`` (the defaults); paths from ``base_dir``."""
-        return cls.from_dict(toml_tables(text), base=base, base_dir=base_dir)
-
-    @classmethod
-    def load(cls, path: str | os.PathLike[str], *, base: MatrixConfig | None = None) -> MatrixConfig:
-        """A config from a TOML file, laid over ``base`` (the defaults); paths from the file's folder."""
-        folder = os.path.dirname(os.path.abspath(path))
-        return read_config(path, lambda text: cls.from_toml(text, base=base, base_dir=folder))
 
 
 def _without_table(lines: list[str], name: str) -> list[str]:

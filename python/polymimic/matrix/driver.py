@@ -127,7 +127,8 @@ class Matrix(Staged):
     def record(self) -> int:
         """Stage: every demonstrator set recorded; returns the sets recorded now."""
         settings = self.config.matrix
-        made, n = 0, pool_size(settings.demonstrations_per_configuration, max(settings.trials, settings.bco_fits))
+        sizes = settings.sizes
+        made, n = 0, pool_size(sizes.demonstrations_per_configuration, max(sizes.trials, settings.bco_fits))
         unique = self._unique_sets()
         with progress(total=len(unique), desc="record", quiet=self.quiet) as bar:
             for name, chosen in unique.items():
@@ -185,8 +186,9 @@ class Matrix(Staged):
 
     def _done(self, row: str, column: str, method: str, seed: int, weighting: str | None = None) -> bool:
         saved = self.run.loaded(self.run.evaluation_path(row, column, method, seed), load_cell_evaluation)
+        attempts = self.config.evaluation_attempts()
         return saved is not None and (saved["attempts"], saved["evaluation_seed"], saved["weighting"]) == (
-            2 * self.config.matrix.attempts_per_configuration, self.config.seeds.evaluation, weighting)
+            attempts.count, attempts.seed, weighting)
 
     def _write(self, result: dict[str, Any]) -> None:
         _write_in_cell(self.run.evaluation_path(result["row"], result["column"], result["method"], result["seed"]),

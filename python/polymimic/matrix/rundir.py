@@ -21,7 +21,6 @@
 
 from __future__ import annotations
 
-import os
 import pathlib
 
 from polymimic.matrix.config import MatrixConfig
@@ -35,12 +34,7 @@ class MatrixDir(RunHouse[MatrixConfig]):
 
     manifest_format = "polymimic.matrix_run"
     config_type = MatrixConfig
-
-    def __init__(self, path: str | os.PathLike[str]) -> None:
-        super().__init__(path)
-        self.results_path = self.path / "matrix.json"
-        self.report_md_path = self.path / "matrix.md"
-        self.report_html_path = self.path / "matrix.html"
+    results_name = report_name = "matrix"
 
     def own_self_observation_path(self, row: str) -> pathlib.Path:
         """The row's own self-observation (Parquet)."""

@@ -8,6 +8,7 @@ transfer ratio (the cell over its row's own-body cell, docs/results/matrix.md), 
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import pathlib
 from collections.abc import Mapping, Sequence
@@ -70,12 +71,10 @@ def _cell(run: MatrixDir, config: MatrixConfig, row: str, column: str) -> dict[s
 
 def gather(run: MatrixDir, config: MatrixConfig) -> dict[str, Any]:
     """The whole ``matrix.json`` of a finished run (the same seeds give the same bytes)."""
-    settings = config.matrix
-    sizes = {"trials": settings.trials, "demonstrations_per_configuration": settings.demonstrations_per_configuration,
-             "attempts_per_configuration": settings.attempts_per_configuration, "bco_fits": settings.bco_fits,
-             "tuning_budget": settings.tuning_budget,
-             "validation_attempts_per_configuration": settings.validation_attempts_per_configuration,
-             "evaluation_seed": config.seeds.evaluation, "validation_seed": settings.validation_seed}
+    settings, tuning = config.matrix, config.matrix.tuning
+    sizes = {**dataclasses.asdict(settings.sizes), "bco_fits": settings.bco_fits, "tuning_budget": tuning.tuning_budget,
+             "validation_attempts_per_configuration": tuning.validation_attempts_per_configuration,
+             "evaluation_seed": config.seeds.evaluation, "validation_seed": tuning.validation_seed}
     own_set = "humanoid" if settings.primitives == "own" else "wheeled"
     imitators = {}
     cells: dict[str, dict[str, Any]] = {}

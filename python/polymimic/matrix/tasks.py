@@ -21,6 +21,7 @@ from polymimic.baselines.hyperparameters import (
     candidates,
 )
 from polymimic.baselines.tuning import validation_attempts_apart
+from polymimic.evaluation import Attempts
 from polymimic.field import Demonstration, PrimitiveSequence, self_observation
 from polymimic.learning import Evaluation, ImitatorPolicy, evaluate, run_trial, segmented
 from polymimic.matrix.config import DemonstratorSet, MatrixConfig
@@ -49,7 +50,7 @@ class Shared:
             dataclasses.replace(body)
         chosen = self.sets[row][column]
         return chosen, drawn(self.demonstrations[chosen.name], names=chosen.names, spec=chosen.spec, draw=draw,
-                             per_configuration=self.config.matrix.demonstrations_per_configuration,
+                             per_configuration=self.config.matrix.sizes.demonstrations_per_configuration,
                              seed=self.config.seeds.demonstrations)
 
     def draw_of(self, seed: int) -> int:
@@ -89,8 +90,7 @@ def polymimic_task(shared: Shared, job: tuple[str, str, int, str]) -> dict[str, 
     row's imitator, learning on its own setting and weighing the cell's members as chosen, driven
     by the improved control."""
     row, column, seed, weighting = job
-    played = _played(shared, row, column, seed, weighting, attempts_per_configuration=(
-        shared.config.matrix.attempts_per_configuration), attempts_seed=shared.config.seeds.evaluation)
+    played = _played(shared, row, column, seed, weighting, attempts=shared.config.evaluation_attempts())
     return {**_evaluation(shared, row, column, "polymimic", seed, played), "weighting": weighting}
 
 
@@ -99,8 +99,7 @@ def attempt_task(shared: Shared, job: tuple[str, str, int, str]) -> dict[str, An
     :func:`polymimic_task` plays it: its first attempt (``"attempt"``, frames and all) and every
     attempt's outcome, for the caller to check against the saved evaluation."""
     row, column, seed, weighting = job
-    played = _played(shared, row, column, seed, weighting, attempts_per_configuration=(
-        shared.config.matrix.attempts_per_configuration), attempts_seed=shared.config.seeds.evaluation)
+    played = _played(shared, row, column, seed, weighting, attempts=shared.config.evaluation_attempts())
     return {"row": row, "column": column, "seed": seed, "weighting": weighting, "attempt": played.attempts[0],
             "outcomes": [a.outcome for a in played.attempts]}
 
@@ -110,25 +109,23 @@ def weighing_task(shared: Shared, job: tuple[str, str, str]) -> dict[str, Any]:
     of the cell's members, played on the validation attempts bco's tuning plays (never the
     evaluation's): polymimic's tuning, with bco's effort."""
     row, column, weighting = job
-    config, settings = shared.config, shared.config.matrix
-    attempts = validation_attempts_apart(settings.validation_attempts_per_configuration,
-                                         validation_seed=settings.validation_seed,
-                                         evaluation_seed=config.seeds.evaluation,
-                                         evaluation_attempts_per_configuration=settings.attempts_per_configuration)
+    config, tuning = shared.config, shared.config.matrix.tuning
+    attempts = validation_attempts_apart(tuning.validation_attempts_per_configuration,
+                                         validation_seed=tuning.validation_seed,
+                                         evaluation=config.evaluation_attempts())
     played = _played(shared, row, column, config.seeds.first_trial, weighting,
-                     attempts_per_configuration=settings.validation_attempts_per_configuration,
-                     attempts_seed=VALIDATION_SEED_BASE + settings.validation_seed)
+                     attempts=Attempts(per_configuration=tuning.validation_attempts_per_configuration,
+                                       seed=VALIDATION_SEED_BASE + tuning.validation_seed))
     if [(a.configuration, a.seed) for a in played.attempts] != attempts:
         raise RuntimeError("the imitator's validation attempts are not bco's")  # the seed rule, guarded
     return {"row": row, "column": column, "weighting": weighting, "seed": config.seeds.first_trial,
-            "validation_seed": settings.validation_seed, "goals": played.goals, "own_goals": played.own_goals,
+            "validation_seed": tuning.validation_seed, "goals": played.goals, "own_goals": played.own_goals,
             "attempts": len(played.attempts)}
 
 
-def _played(shared: Shared, row: str, column: str, seed: int, weighting: str, *, attempts_per_configuration: int,
-            attempts_seed: int) -> Evaluation:
+def _played(shared: Shared, row: str, column: str, seed: int, weighting: str, *, attempts: Attempts) -> Evaluation:
     """One trial of the cell under ``seed`` with the members weighed by ``weighting``, its
-    improved-control policy played on the attempts ``attempts_seed`` names."""
+    improved-control policy played on ``attempts``."""
     config = shared.config
     learning = config.run.learning.replace(imitator_weighting=weighting)
     chosen = shared.sets[row][column]
@@ -137,13 +134,12 @@ def _played(shared: Shared, row: str, column: str, seed: int, weighting: str, *,
                       phase_one="interleaved", seed=seed, body=body)
     policy = ImitatorPolicy(trial, recognizer=shared.recognizers[row], config=learning, control="improved",
                             demonstrations=batch, body=body)
-    return evaluate(policy, attempts_per_configuration=attempts_per_configuration, seed=attempts_seed,
-                    field_config=config.run.field)
+    return evaluate(policy, attempts=attempts, field_config=config.run.field)
 
 
 def _bco_inputs(shared: Shared, row: str) -> dict[str, Any]:
     return {"recognizer": shared.recognizers[row], "segmenter": dataclasses.asdict(shared.config.run.segmenter),
-            "imitator": shared.config.body(row), "max_samples": shared.config.matrix.max_decision_samples}
+            "imitator": shared.config.body(row), "max_samples": shared.config.matrix.tuning.max_decision_samples}
 
 
 def bco_candidates(budget: int) -> list[Hyperparameters]:
@@ -161,14 +157,13 @@ def tuning_task(shared: Shared, job: tuple[str, str]) -> dict[str, Any]:
     row's recogniser, played by the row's body), every candidate's score, and (``"evaluation"``)
     the chosen fit's evaluation under the first fit seed: the fit the evaluation would make."""
     row, column = job
-    config, settings = shared.config, shared.config.matrix
+    config, settings = shared.config, shared.config.matrix.tuning
     _, demos = shared.cell(row, column, 0)
     tuning = baselines.tune("bco", demos, candidates=bco_candidates(settings.tuning_budget),
                             validation_seed=settings.validation_seed,
                             attempts_per_configuration=settings.validation_attempts_per_configuration,
-                            evaluation_seed=config.seeds.evaluation,
-                            evaluation_attempts_per_configuration=settings.attempts_per_configuration,
-                            seed=config.seeds.first_trial, field_config=config.run.field, **_bco_inputs(shared, row))
+                            evaluation=config.evaluation_attempts(), seed=config.seeds.first_trial,
+                            field_config=config.run.field, **_bco_inputs(shared, row))
     return {"row": row, "column": column, "hyperparameters": tuning.hyperparameters.to_dict(), "scores": tuning.scores,
             "evaluation": _bco_evaluation(shared, row, column, config.seeds.first_trial, tuning.policy)}
 
@@ -183,9 +178,8 @@ def bco_task(shared: Shared, job: tuple[str, str, int, dict[str, Any]]) -> dict[
 
 
 def _bco_evaluation(shared: Shared, row: str, column: str, seed: int, policy: Any) -> dict[str, Any]:
-    settings = shared.config.matrix
-    played = baselines.evaluate_policy(policy, attempts_per_configuration=settings.attempts_per_configuration,
-                                       seed=shared.config.seeds.evaluation, field_config=shared.config.run.field)
+    played = baselines.evaluate_policy(policy, attempts=shared.config.evaluation_attempts(),
+                                       field_config=shared.config.run.field)
     return _evaluation(shared, row, column, "bco", seed, played)
 
 

@@ -32,6 +32,7 @@ import numpy as np
 from polymimic.baselines.evaluation import ball_as_read
 from polymimic.bodies import as_body
 from polymimic.env import PenaltyKickEnv
+from polymimic.evaluation import Attempts, thesis_attempts
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.curve import CurvePoint
 from polymimic.practice.practised import PractisedPolicy
@@ -52,23 +53,25 @@ __all__ = ["distil"]
 
 
 def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
-           evaluation_seed: int = 0, evaluation_attempts: int = 25, dagger_rounds: int = 3,
+           evaluation: Attempts = Attempts(), dagger_rounds: int = 3,
            dagger_steps: int = 2000, warmup_steps: int = 4000, teacher_weight: float = 1.0,
            tolerance: float = 0.02, gate: Gate | None = None, field_config: Any = None,
            **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by distilling it into a PPO actor and fine-tuning, for ``steps``
-    environment steps under ``seed``, scored on the evaluation attempts of ``evaluation_seed``
-    at each of ``checkpoints`` (default: every fifth of the budget); the actor replaces the
-    teacher once a check (``gate``: by default every 10 000 steps, on 100 practice attempts)
-    shows it no worse than the teacher alone on the same attempts, to within ``tolerance`` net
-    goals per attempt with confidence, and a later actor replaces it when a check shows the same
-    and nets more on the check's attempts."""
+    environment steps under ``seed``, scored on the ``evaluation`` attempts (an
+    :class:`~polymimic.Attempts` from the thesis's configurations; a ``ValueError`` for one with
+    starts of its own) at each of ``checkpoints`` (default: every fifth of the budget); the
+    actor replaces the teacher once a check (``gate``: by default every 10 000 steps, on 100
+    practice attempts) shows it no worse than the teacher alone on the same attempts, to within
+    ``tolerance`` net goals per attempt with confidence, and a later actor replaces it when a
+    check shows the same and nets more on the check's attempts."""
     from stable_baselines3.common.callbacks import BaseCallback  # type: ignore[import-not-found, unused-ignore]
 
     from polymimic.baselines import ppo
     from polymimic.baselines.ppo_bc import Pretraining, clone_into
 
     marks = _checkpoints(checkpoints, steps)
+    scored_on = thesis_attempts(evaluation, name="evaluation")
     counter = _Counter()
     checks = gate if gate is not None else Gate()
     _, reference = _teacher_alone(teacher, seed, field_config, checks)
@@ -87,8 +90,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
         return _practised(teacher, model, counter, "distil", handover)
 
     def score(mark: int) -> None:
-        curve.append(_scored(checks.scored(practised(TEACHER_ALONE)), mark, counter, evaluation_attempts,
-                             evaluation_seed, field_config))
+        curve.append(_scored(checks.scored(practised(TEACHER_ALONE)), mark, counter, scored_on, field_config))
 
     class Budget(BaseCallback):  # type: ignore[misc, unused-ignore]
         def _on_step(self) -> bool:

@@ -31,6 +31,7 @@ from typing import Any
 from polymimic import _native
 from polymimic._native import SegmentedDemonstrations
 from polymimic.bodies import as_body
+from polymimic.evaluation import Attempts, thesis_attempts
 from polymimic.field import Demonstration
 from polymimic.field_config import native_field_config
 from polymimic.learning import ImitatorPolicy, evaluate
@@ -72,20 +73,21 @@ def steps_of(attempt: Demonstration) -> int:
 
 def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
              checkpoints: Sequence[int] | None = None, attempts_per_round: int = 10,
-             evaluation_seed: int = 0, evaluation_attempts: int = 25, field_config: Any = None,
+             evaluation: Attempts = Attempts(), field_config: Any = None,
              segmenter: dict[str, Any] | None = None, weight: float = 1.0, quiet: bool = True,
              explore: float = 0.0, refines: Sequence[str] | None = None) -> Practice:
     """Practise ``policy`` (an improved-control :class:`~polymimic.ImitatorPolicy` made with its
     constructor) for a budget of ``steps`` environment steps under practice ``seed``.
 
     ``checkpoints`` (default :data:`~polymimic.practice.curve.DEFAULT_CHECKPOINTS` up to the
-    budget, and the budget) are the steps at which the policy is scored on
-    ``evaluation_attempts`` attempts per configuration under ``evaluation_seed`` on the field
-    ``field_config`` describes (as :func:`polymimic.evaluate`); they must rise from 0 to at most
-    ``steps``. ``segmenter`` passes the segmenter's settings, ``weight`` is what every sample of
-    its own attempts weighs beside the demonstrations' (1: as much as the best demonstrator's
-    under LP weighting); ``quiet=False`` shows a progress bar of steps. Zero steps return the
-    policy as it was, bit for bit.
+    budget, and the budget) are the steps at which the policy is scored on the ``evaluation``
+    attempts (an :class:`~polymimic.Attempts` from the thesis's configurations, which practice
+    never plays; a ``ValueError`` for one with starts of its own) on the field ``field_config``
+    describes (as :func:`polymimic.evaluate`); they must rise from 0 to at most ``steps``.
+    ``segmenter`` passes the segmenter's settings, ``weight`` is what every sample of its own
+    attempts weighs beside the demonstrations' (1: as much as the best demonstrator's under LP
+    weighting); ``quiet=False`` shows a progress bar of steps. Zero steps return the policy as it
+    was, bit for bit.
 
     ``explore`` above 0 plays each round's attempts exploring around the ball at that rate
     (:func:`~polymimic.practice.exploring.explored_attempts`) instead of as the policy chooses;
@@ -98,7 +100,8 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     >>> demos = polymimic.record("expert", configuration=1, n=3, seed=0)
     >>> trial = learning.run_trial(demos, recognizer=recognizer, ordering=["expert"])
     >>> policy = learning.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=demos)
-    >>> result = practice(policy, steps=200, checkpoints=[0, 200], attempts_per_round=2, evaluation_attempts=2)
+    >>> result = practice(policy, steps=200, checkpoints=[0, 200], attempts_per_round=2,
+    ...                   evaluation=polymimic.Attempts(per_configuration=2))
     >>> [p.checkpoint for p in result.curve], result.steps <= 200
     ([0, 200], True)
     """
@@ -106,6 +109,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     seed = _whole("seed", seed, 0, 2**62 - 1)
     per_round = _whole("attempts_per_round", attempts_per_round, 1)
     marks = _checkpoints(checkpoints, budget)
+    scored_on = thesis_attempts(evaluation, name="evaluation")
     made_from = _trained(policy)
     field = as_body(made_from.body).field
     body_name = policy.body
@@ -116,8 +120,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     curve: list[CurvePoint] = []
 
     def score(mark: int) -> None:
-        result = evaluate(refined, attempts_per_configuration=evaluation_attempts, seed=evaluation_seed,
-                          field_config=field_config)
+        result = evaluate(refined, attempts=scored_on, field_config=field_config)
         curve.append(CurvePoint(mark, played_steps, result.goals - result.own_goals, result.goals, result.own_goals,
                                 len(learned), lost))
 
@@ -128,8 +131,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
                 if round_index >= MAX_ROUNDS:
                     raise ValueError(f"practice ran out of rounds before {mark} steps")
                 round_at = round_seed(seed, round_index)
-                check_apart(_native.attempt_seeds(per_round, seed=round_at), evaluation_seed=evaluation_seed,
-                            attempts_per_configuration=evaluation_attempts)
+                check_apart(_native.attempt_seeds(per_round, seed=round_at), evaluation=scored_on)
                 round_index += 1
                 if explore > 0.0:
                     attempts = explored_attempts(refined, attempts_per_configuration=per_round, seed=round_at,

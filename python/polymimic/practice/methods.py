@@ -17,6 +17,7 @@ from __future__ import annotations
 import importlib.util
 from typing import Any
 
+from polymimic.evaluation import Attempts
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.loop import Practice, practice
 
@@ -32,11 +33,12 @@ EXPLORE_RATE = 0.3
 
 
 def practise(policy: ImitatorPolicy, *, method: str = DEFAULT_METHOD, steps: int, seed: int = 0,
-             evaluation_seed: int = 0, evaluation_attempts: int = 25, field_config: Any = None,
+             evaluation: Attempts = Attempts(), field_config: Any = None,
              segmenter: dict[str, Any] | None = None) -> Practice:
     """``policy`` practised by ``method`` (one of :data:`METHODS`) for ``steps`` environment
-    steps under ``seed``, scored at the default checkpoints on the evaluation attempts of
-    ``evaluation_seed``. A jump-start practice's ``policy`` is a
+    steps under ``seed``, scored at the default checkpoints on the ``evaluation`` attempts (an
+    :class:`~polymimic.Attempts` from the thesis's configurations; a ``ValueError`` for one with
+    starts of its own). A jump-start practice's ``policy`` is a
     :class:`~polymimic.practice.practised.PractisedPolicy` and learns from no attempts of its
     own (``attempts`` empty). A ``ModuleNotFoundError`` says how to install the ``rl`` extra a
     method through the teacher needs where stable-baselines3 is missing."""
@@ -50,13 +52,11 @@ def practise(policy: ImitatorPolicy, *, method: str = DEFAULT_METHOD, steps: int
 
         marks = [c for c in DEFAULT_CHECKPOINTS if c < steps] + [steps]
         taught = (jsrl if method == "jsrl" else distil)(
-            policy, steps=steps, seed=seed, checkpoints=marks, evaluation_seed=evaluation_seed,
-            evaluation_attempts=evaluation_attempts, field_config=field_config)
+            policy, steps=steps, seed=seed, checkpoints=marks, evaluation=evaluation, field_config=field_config)
         return Practice(policy=taught.policy, curve=taught.curve, steps=taught.steps, attempts=[], attempts_lost=0)
     explore = EXPLORE_RATE if method == "explore" else 0.0
-    return practice(policy, steps=steps, seed=seed, evaluation_seed=evaluation_seed,
-                    evaluation_attempts=evaluation_attempts, field_config=field_config, segmenter=segmenter,
-                    explore=explore, refines=["ball_response"] if method == "explore" else None)
+    return practice(policy, steps=steps, seed=seed, evaluation=evaluation, field_config=field_config,
+                    segmenter=segmenter, explore=explore, refines=["ball_response"] if method == "explore" else None)
 
 
 def needs_rl_extra(method: str) -> None:

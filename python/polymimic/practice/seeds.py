@@ -14,7 +14,7 @@ from __future__ import annotations
 import functools
 from collections.abc import Iterable
 
-from polymimic import _native
+from polymimic.evaluation import Attempts, thesis_attempts
 
 __all__ = ["MAX_ROUNDS", "PRACTICE_SEED_BASE", "check_apart", "round_seed"]
 
@@ -28,19 +28,19 @@ def round_seed(seed: int, round_index: int) -> int:
     return PRACTICE_SEED_BASE + (seed * MAX_ROUNDS + round_index) % PRACTICE_SEED_BASE
 
 
-def check_apart(practice_episodes: Iterable[tuple[int, int]], *, evaluation_seed: int,
-                attempts_per_configuration: int) -> None:
+def check_apart(practice_episodes: Iterable[tuple[int, int]], *, evaluation: Attempts) -> None:
     """A ``ValueError`` if any practice attempt's (configuration, episode seed) is one of the
-    evaluation's under ``evaluation_seed``: an imitator must never practise on what scores it."""
-    scored = _scored(evaluation_seed, attempts_per_configuration)
+    ``evaluation``'s attempts (from the thesis's configurations): an imitator must never practise
+    on what scores it."""
+    scored = _scored(thesis_attempts(evaluation, name="evaluation"))
     met = [episode for episode in practice_episodes if episode in scored]
     if met:
         configuration, seed = met[0]
         raise ValueError(f"practice would play the evaluation's attempt (configuration {configuration}, episode seed "
-                         f"{seed}) under evaluation_seed={evaluation_seed}: choose another practice seed")
+                         f"{seed}) under the evaluation's seed {evaluation.seed}: choose another practice seed")
 
 
 @functools.lru_cache(maxsize=8)
-def _scored(evaluation_seed: int, attempts_per_configuration: int) -> frozenset[tuple[int, int]]:
+def _scored(evaluation: Attempts) -> frozenset[tuple[int, int]]:
     """The evaluation's (configuration, episode seed) pairs, made once for every round that checks them."""
-    return frozenset(_native.attempt_seeds(attempts_per_configuration, seed=evaluation_seed))
+    return frozenset(evaluation.episodes())

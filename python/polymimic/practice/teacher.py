@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 
+from polymimic.evaluation import Attempts, thesis_attempts
 from polymimic.field import OUTCOME_REWARDS
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import CurvePoint
@@ -249,14 +250,15 @@ class TeacherPractice:
 
 
 def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
-         evaluation_seed: int = 0, evaluation_attempts: int = 25, stages: int = 8,
+         evaluation: Attempts = Attempts(), stages: int = 8,
          handover_start: int | None = None, tolerance: float = 0.02, gate: Gate | None = None,
          field_config: Any = None,
          on_checkpoint: Callable[[list[CurvePoint]], None] | None = None, **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by jump-start RL for ``steps`` environment steps under ``seed`` (the
     learner's network, its environments' episodes and the practice attempts), scored on the
-    evaluation attempts of ``evaluation_seed`` at each of ``checkpoints`` (default: every fifth
-    of the budget). The curriculum (:class:`Curriculum`) has ``stages`` handovers from below
+    ``evaluation`` attempts (an :class:`~polymimic.Attempts` from the thesis's configurations; a
+    ``ValueError`` for one with starts of its own) at each of ``checkpoints`` (default: every
+    fifth of the budget). The curriculum (:class:`Curriculum`) has ``stages`` handovers from below
     ``handover_start`` decisions (default: the teacher's median scoring attempt) down to 0, each
     earned when a check (:class:`Gate`: by default every 10 000 steps, on 100 practice attempts)
     shows the practised policy no worse than the teacher alone on the same attempts, to within
@@ -266,6 +268,7 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     from polymimic.baselines import ppo
 
     marks = _checkpoints(checkpoints, steps)
+    scored_on = thesis_attempts(evaluation, name="evaluation")
     checks = gate if gate is not None else Gate()
     typical, reference = _teacher_alone(teacher, seed, field_config, checks)
     schedule = Curriculum.stepping_down(handover_start if handover_start is not None else typical, stages,
@@ -280,8 +283,7 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
         return _practised(teacher, model, counter, "jsrl", handover)
 
     def score(mark: int) -> None:
-        curve.append(_scored(checks.scored(practised(TEACHER_ALONE)), mark, counter, evaluation_attempts,
-                             evaluation_seed, field_config))
+        curve.append(_scored(checks.scored(practised(TEACHER_ALONE)), mark, counter, scored_on, field_config))
         if on_checkpoint is not None:
             on_checkpoint(curve)
 
@@ -324,11 +326,10 @@ def _practised(teacher: ImitatorPolicy, model: Any, counter: _Counter, method: s
     return PractisedPolicy(teacher, actor, handover=handover, method=method, steps=counter.steps)
 
 
-def _scored(policy: PractisedPolicy, mark: int, counter: _Counter, evaluation_attempts: int, evaluation_seed: int,
+def _scored(policy: PractisedPolicy, mark: int, counter: _Counter, evaluation: Attempts,
             field_config: Any) -> CurvePoint:
-    """``policy`` scored at checkpoint ``mark`` on the evaluation attempts."""
-    result = evaluate(policy, attempts_per_configuration=evaluation_attempts, seed=evaluation_seed,
-                      field_config=field_config)
+    """``policy`` scored at checkpoint ``mark`` on the ``evaluation`` attempts."""
+    result = evaluate(policy, attempts=evaluation, field_config=field_config)
     return CurvePoint(mark, counter.steps, result.goals - result.own_goals, result.goals, result.own_goals, 0, 0)
 
 

@@ -26,6 +26,7 @@ from polymimic._native import ImitatorPolicy as CompiledPolicy
 from polymimic._native import ModelFileError, PrimitiveRecognizer
 from polymimic.bodies import WheeledBody
 from polymimic.datasets import load_demonstrations, save_demonstrations
+from polymimic.evaluation import Attempts
 from polymimic.field import OUTCOMES
 from polymimic.learning import (
     ImitatorPolicy,
@@ -49,7 +50,7 @@ __all__ = ["SavedEvaluation", "evaluate_imitators", "evaluated_seeds", "imitator
 
 def trial_seeds(config: RunConfig) -> list[int]:
     """Every experiment's trial seeds: ``first_trial``, ``first_trial + 1``, …"""
-    return [config.seeds.first_trial + i for i in range(config.experiments.trials)]
+    return [config.seeds.first_trial + i for i in range(config.experiments.sizes.trials)]
 
 
 def evaluated_seeds(config: RunConfig) -> list[int]:
@@ -95,8 +96,8 @@ class EvaluationInputs:
 
     recognizer: PrimitiveRecognizer
     learning: LearningConfig
-    attempts_per_configuration: int
-    seed: int
+    attempts: Attempts
+    """The attempts every imitator plays (the run's evaluation attempts)."""
     items: SegmentedDemonstrations
     """The experiment's segmented demonstrations: what its imitators watched."""
     field: dict[str, Any]
@@ -128,9 +129,8 @@ def evaluation_task(inputs: EvaluationInputs, job: tuple[int, str, str, bool]) -
     control, keep the attempts)``."""
     trial_seed, trial_json, control, keep = job
     policy = _policy(inputs, TrialResult.from_json(trial_json), control)
-    evaluation = evaluate(policy, attempts_per_configuration=inputs.attempts_per_configuration, seed=inputs.seed,
-                          field_config=inputs.field)
-    return {"trial_seed": trial_seed, "control": control, "seed": inputs.seed,
+    evaluation = evaluate(policy, attempts=inputs.attempts, field_config=inputs.field)
+    return {"trial_seed": trial_seed, "control": control, "seed": inputs.attempts.seed,
             "goals": evaluation.goals, "own_goals": evaluation.own_goals, "attempts": len(evaluation.attempts),
             "outcomes": [a.outcome for a in evaluation.attempts],
             "attempt_list": evaluation.attempts if keep else None}
@@ -246,7 +246,7 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
     control, where not done yet; the first imitator's attempts are kept as a dataset. Returns how
     many evaluations ran, by experiment."""
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
-    attempts = 2 * config.experiments.attempts_per_configuration
+    attempts = config.evaluation_attempts()
     seeds = evaluated_seeds(config)
     ran = {}
     for experiment in _selected(config, experiments):
@@ -254,7 +254,8 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
         for seed in seeds:
             for control in CONTROLS:
                 keep = seed == seeds[0]
-                if _evaluation_done(run, run.evaluation_path(experiment.name, seed, control), control, attempts) and (
+                evaluation = run.evaluation_path(experiment.name, seed, control)
+                if _evaluation_done(run, evaluation, control, attempts.count) and (
                         not keep or run.finished(run.attempts_path(experiment.name, control), load_demonstrations)):
                     continue
                 trial_path = run.trial_path(experiment.name, seed)
@@ -265,10 +266,9 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
         ran[experiment.name] = len(jobs)
         if not jobs:
             continue
-        inputs = EvaluationInputs(recognizer=recognizer, learning=config.learning,
-                                  attempts_per_configuration=config.experiments.attempts_per_configuration,
-                                  seed=config.seeds.evaluation, items=experiment_items(run, experiment),
-                                  field=config.field, body=config.imitator_body())
+        inputs = EvaluationInputs(recognizer=recognizer, learning=config.learning, attempts=attempts,
+                                  items=experiment_items(run, experiment), field=config.field,
+                                  body=config.imitator_body())
         with progress(total=len(jobs), desc=f"evaluate {experiment.name}", quiet=quiet) as bar:
             for _, result in runner.map(evaluation_task, inputs, jobs):
                 kept = result.pop("attempt_list")

@@ -28,9 +28,7 @@ def _practice(path: pathlib.Path, only: Sequence[str] | None, steps: int, method
                             demonstrations={g: experiment_items(run, experiments[g]) for g in groups},
                             body=config.imitator_body(), field=config.field,
                             segmenter=dataclasses.asdict(config.segmenter), steps=steps,
-                            evaluation_seed=config.seeds.evaluation,
-                            attempts_per_configuration=config.experiments.attempts_per_configuration,
-                            method=method)
+                            attempts=config.evaluation_attempts(), method=method)
     return RunPractice(run=run, groups=groups, trial_seeds=trial_seeds(config), inputs=inputs,
                        trial_path=run.trial_path)
 

@@ -204,7 +204,7 @@ def gather(run: RunDir, config: RunConfig) -> Results:
     segments = recognition.segment_table(recognizer, to_segment, **dataclasses.asdict(config.segmenter))
     experiments: dict[str, ExperimentResults] = {}
     all_trials: list[TrialResult] = []
-    attempts = 2 * config.experiments.attempts_per_configuration
+    attempts = 2 * config.experiments.sizes.attempts_per_configuration
     for name, experiment in config.all_experiments().items():
         trials = load_trials(run, config, name)
         all_trials += trials
@@ -221,10 +221,10 @@ def gather(run: RunDir, config: RunConfig) -> Results:
         "sizes": {"train_per_primitive": config.recognizer.train_per_primitive,
                   "test_per_primitive": config.recognizer.test_per_primitive,
                   "codebook_size": config.recognizer.codebook_size,
-                  "demonstrations_per_configuration": config.experiments.demonstrations_per_configuration,
-                  "trials": config.experiments.trials,
+                  "demonstrations_per_configuration": config.experiments.sizes.demonstrations_per_configuration,
+                  "trials": config.experiments.sizes.trials,
                   "evaluated_imitators": len(evaluated_seeds(config)),
-                  "attempts_per_configuration": config.experiments.attempts_per_configuration},
+                  "attempts_per_configuration": config.experiments.sizes.attempts_per_configuration},
         "primitive_stats": _primitive_stats(recognizer),
         "hmm_accuracy": {**recognition.accuracy_table(recognizer, test)},
         "hmm_log_likelihood": {m: {**row} for m, row in recognition.log_likelihood_table(recognizer, test).items()},

@@ -38,13 +38,11 @@ class RunDir(RunHouse[RunConfig]):
 
     manifest_format = MANIFEST_FORMAT
     config_type = RunConfig
+    results_name, report_name = "results", "report"
 
     def __init__(self, path: str | os.PathLike[str]) -> None:
         super().__init__(path)
         self.average_trial_path = self.models / "average_trial.json"
-        self.results_path = self.path / "results.json"
-        self.report_md_path = self.path / "report.md"
-        self.report_html_path = self.path / "report.html"
 
     def demonstrations_path(self, demonstrator: str) -> pathlib.Path:
         """A demonstrator's recordings (Parquet)."""

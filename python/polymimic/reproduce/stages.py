@@ -93,7 +93,7 @@ def _self_observe(ctx: Context) -> int:
 
 
 def _record(ctx: Context) -> int:
-    n, made = ctx.config.experiments.demonstrations_per_configuration, 0
+    n, made = ctx.config.experiments.sizes.demonstrations_per_configuration, 0
     for who in RECORDED:
         path = ctx.run.demonstrations_path(who)
         if not ctx.finished(path, load_demonstrations, count=2 * n):
@@ -113,7 +113,7 @@ def _record_own(ctx: Context, name: str, spec: DemonstratorSpec) -> int:
     """A demonstrator of the run config's. A log or a policy file is fingerprinted when its
     demonstrations are made, so that a rerun after it changed says so rather than going on with
     demonstrations of another file."""
-    n, path = ctx.config.experiments.demonstrations_per_configuration, ctx.run.demonstrations_path(name)
+    n, path = ctx.config.experiments.sizes.demonstrations_per_configuration, ctx.run.demonstrations_path(name)
     source, fingerprint = source_file(spec), path.with_name(f"{path.stem}.source.json")
     if ctx.finished(path, load_demonstrations, count=demonstrations_expected(spec, n)):
         if source is not None and source.exists() and fingerprint.exists():
@@ -143,7 +143,7 @@ def _record_average(ctx: Context) -> int:
     """The Average demonstrator: of the heterogeneous (RCB) imitators tried, driven by the thesis's
     rule, the one whose net goals lie nearest the middle of the Poor's and the Expert's (§4.4.2;
     see :func:`polymimic.average_demonstrator`)."""
-    path, n = ctx.run.demonstrations_path("average"), ctx.config.experiments.demonstrations_per_configuration
+    path, n = ctx.run.demonstrations_path("average"), ctx.config.experiments.sizes.demonstrations_per_configuration
     if ctx.finished(ctx.run.average_trial_path, TrialResult.load) and ctx.finished(path, load_demonstrations,
                                                                                    count=2 * n):
         return 0
@@ -152,7 +152,7 @@ def _record_average(ctx: Context) -> int:
     try:
         recorded = {who: load_demonstrations(ctx.run.require(ctx.run.demonstrations_path(who), "record"))
                     for who in (*HETEROGENEOUS, "poor")}
-        demos, trial = average_demonstrator(recognizer, n=settings.demonstrations_per_configuration,
+        demos, trial = average_demonstrator(recognizer, n=settings.sizes.demonstrations_per_configuration,
                                             seed=ctx.config.seeds.demonstrations,
                                             max_trials=settings.average_max_trials, config=ctx.config.learning,
                                             recorded=recorded, field_config=ctx.config.field,
@@ -177,7 +177,7 @@ def _segment(ctx: Context) -> int:
     recognizer = PrimitiveRecognizer.load(ctx.run.require(ctx.run.recognizer_path, "train"))
     made = _record_average(ctx)
     segmenter = dataclasses.asdict(ctx.config.segmenter)
-    n = ctx.config.experiments.demonstrations_per_configuration
+    n = ctx.config.experiments.sizes.demonstrations_per_configuration
     for who in (*DEMONSTRATORS, *ctx.config.demonstrators):
         path, recorded = ctx.run.segments_path(who), ctx.run.demonstrations_path(who)
         count, demos = demonstrations_expected(ctx.config.demonstrators.get(who), n), None

@@ -7,11 +7,11 @@ Sections: ``[seeds]``, ``[field]`` (the simulated field), ``[imitator]`` (the le
 file may give only some keys; the rest take their defaults. Unknown keys and values of the wrong type are refused.
 
 >>> config = RunConfig()
->>> config.recognizer.codebook_size, config.experiments.trials
+>>> config.recognizer.codebook_size, config.experiments.sizes.trials
 (512, 100)
 >>> RunConfig.from_toml(config.to_toml()) == config
 True
->>> RunConfig.from_toml("[experiments]\\ntrials = 8\\n").experiments.trials
+>>> RunConfig.from_toml("[experiments]\\ntrials = 8\\n").experiments.sizes.trials
 8
 >>> RunConfig.from_toml("[recognizer]\\ncodebok_size = 3\\n")
 Traceback (most recent call last):
@@ -23,15 +23,17 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import math
 import os
 from collections.abc import Callable, Sequence
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
+from polymimic import _arguments
 from polymimic._native import PrimitiveRecognizer
 from polymimic._tables import Path, merged
+from polymimic._toml import documented as _doc
 from polymimic._toml import loads, write_table
 from polymimic.bodies import THESIS_BODIES, WheeledBody
+from polymimic.evaluation import Attempts
 from polymimic.field import PrimitiveSequence, check_config, default_config, primitive_set_of
 from polymimic.learning import LearningConfig
 from polymimic.runs.roster import EXPERIMENTS, Experiment
@@ -43,10 +45,14 @@ from polymimic.runs.roster_config import (
     read_bodies,
     spec_table,
 )
+from polymimic.runs.sizes import Sizes
 
-__all__ = ["IMITATOR_BODIES", "ConfigError", "ExperimentSettings", "ImitatorSettings", "RecognizerSettings",
-           "RunConfig", "SeedSettings", "SegmenterSettings", "as_table", "checked_section", "in_range", "read_config",
-           "toml_tables"]
+if TYPE_CHECKING:
+    from typing_extensions import Self
+
+__all__ = ["IMITATOR_BODIES", "ConfigError", "ConfigFile", "ExperimentSettings", "ImitatorSettings",
+           "RecognizerSettings", "RunConfig", "SeedSettings", "SegmenterSettings", "as_table", "checked_section",
+           "in_range", "read_config", "replaced_section", "section_docs", "section_table", "toml_tables"]
 
 
 Loaded = TypeVar("Loaded")
@@ -56,18 +62,35 @@ class ConfigError(ValueError):
     """A run configuration that cannot be used: an unknown key, a wrong type, a bad value."""
 
 
-def _doc(text: str, default: Any) -> Any:
-    return dataclasses.field(default=default, metadata={"doc": text})
-
-
 def in_range(section: str, name: str, value: float, low: float, high: float | None = None, *,
               exclusive_low: bool = False) -> None:
     """A :class:`ConfigError` naming ``[section] name`` unless ``value`` is a finite number in range."""
-    below = value <= low if exclusive_low else value < low
-    if not math.isfinite(value) or below or (high is not None and value > high):
-        bound = f"{'above' if exclusive_low else 'at least'} {low}"
-        bound += f" and at most {high}" if high is not None else ""
-        raise ConfigError(f"[{section}] {name} = {value!r} must be {bound}")
+    try:
+        _arguments.in_range(name, value, low, high, exclusive_low=exclusive_low)
+    except ValueError as error:
+        raise ConfigError(f"[{section}] {error}") from None
+
+
+class ConfigFile:
+    """How every application's config is read from TOML: its :meth:`from_dict` over the tables,
+    laid over a base, with the paths a file names read from the file's folder."""
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any], *, base: Self | None = None,
+                  base_dir: str | os.PathLike[str] = ".") -> Self:
+        """A config from plain tables laid over ``base``; paths in them are read from ``base_dir``."""
+        raise NotImplementedError
+
+    @classmethod
+    def from_toml(cls, text: str, *, base: Self | None = None, base_dir: str | os.PathLike[str] = ".") -> Self:
+        """A config from TOML text laid over ``base``; paths in it are read from ``base_dir``."""
+        return cls.from_dict(toml_tables(text), base=base, base_dir=base_dir)
+
+    @classmethod
+    def load(cls, path: str | os.PathLike[str], *, base: Self | None = None) -> Self:
+        """A config from a TOML file laid over ``base``; paths in it are read from the file's folder."""
+        folder = os.path.dirname(os.path.abspath(path))
+        return read_config(path, lambda text: cls.from_toml(text, base=base, base_dir=folder))
 
 
 @dataclasses.dataclass(frozen=True)
@@ -148,17 +171,14 @@ class SegmenterSettings:
 class ExperimentSettings:
     """The learning experiments and the evaluation of the imitators they train (thesis §4.4)."""
 
-    trials: int = _doc("trials per experiment", 100)
-    demonstrations_per_configuration: int = _doc("recorded attempts per demonstrator and field configuration", 25)
-    attempts_per_configuration: int = _doc("attempts per evaluated imitator and field configuration", 25)
+    sizes: Sizes = Sizes(trials=100)
     evaluated_imitators: int = _doc("imitators evaluated per experiment: the first trials'", 100)
     average_max_trials: int = _doc("heterogeneous imitators tried as the Average (the one whose net goals lie "
                                    "nearest the middle of the Poor's and the Expert's is chosen)", 10)
     lp_stride: int = _doc("LP-over-time plots keep every lp_stride-th LP change", 200)
 
     def __post_init__(self) -> None:
-        for name in ("trials", "demonstrations_per_configuration", "attempts_per_configuration",
-                     "average_max_trials", "lp_stride"):
+        for name in ("average_max_trials", "lp_stride"):
             in_range("experiments", name, getattr(self, name), 1)
         in_range("experiments", "evaluated_imitators", self.evaluated_imitators, 0)
 
@@ -180,7 +200,7 @@ _SECTIONS = {"seeds": SeedSettings, "imitator": ImitatorSettings, "recognizer": 
 
 
 @dataclasses.dataclass(frozen=True)
-class RunConfig:
+class RunConfig(ConfigFile):
     """The whole run. ``RunConfig()`` is the thesis's; :meth:`quick` a run of about a minute."""
 
     seeds: SeedSettings = dataclasses.field(default_factory=SeedSettings)
@@ -223,6 +243,15 @@ class RunConfig:
         compare."""
         return self.imitator.body == "lego"
 
+    def evaluation_attempts(self) -> Attempts:
+        """The attempts every evaluated imitator plays (``[experiments] attempts_per_configuration``
+        from each configuration, under ``[seeds] evaluation``).
+
+        >>> RunConfig().evaluation_attempts()
+        Attempts(per_configuration=25, seed=1000, starts=None)
+        """
+        return self.experiments.sizes.evaluation_attempts(seed=self.seeds.evaluation)
+
     def all_experiments(self) -> dict[str, Experiment]:
         """The thesis's three experiments, then the user's."""
         return {**EXPERIMENTS, **self.own_experiments}
@@ -232,7 +261,7 @@ class RunConfig:
         """Fewer of everything: 8 trials, 10 demonstrations per configuration, 200 self-observed
         sequences per primitive, a 128-word codebook and two evaluated imitators per experiment.
 
-        >>> RunConfig.quick().experiments.trials
+        >>> RunConfig.quick().experiments.sizes.trials
         8
         """
         thesis = cls()
@@ -240,17 +269,17 @@ class RunConfig:
             thesis,
             recognizer=dataclasses.replace(thesis.recognizer, train_per_primitive=200, test_per_primitive=68,
                                            codebook_size=128),
-            experiments=dataclasses.replace(thesis.experiments, trials=8, demonstrations_per_configuration=10,
-                                            evaluated_imitators=2))
+            experiments=dataclasses.replace(thesis.experiments, evaluated_imitators=2,
+                                            sizes=Sizes(trials=8, demonstrations_per_configuration=10)))
 
     def to_dict(self) -> dict[str, Any]:
         """Plain data, section by section (what ``manifest.json`` keeps); the user's
         demonstrators and experiments only where there are some."""
-        data = {"seeds": dataclasses.asdict(self.seeds), "field": json.loads(json.dumps(self.field)),
-                "imitator": dataclasses.asdict(self.imitator), "recognizer": dataclasses.asdict(self.recognizer),
-                "segmenter": dataclasses.asdict(self.segmenter),
+        data = {"seeds": section_table(self.seeds), "field": json.loads(json.dumps(self.field)),
+                "imitator": section_table(self.imitator), "recognizer": section_table(self.recognizer),
+                "segmenter": section_table(self.segmenter),
                 "learning": self.learning.to_dict(),
-                "experiments": {**dataclasses.asdict(self.experiments),
+                "experiments": {**section_table(self.experiments),
                                 **{n: _experiment_table(e) for n, e in self.own_experiments.items()}}}
         data["bodies"] = {name: body.to_table() for name, body in self.bodies.items()}
         if self.demonstrators:
@@ -275,8 +304,7 @@ class RunConfig:
         for name in _SECTIONS:
             if name in data:
                 current = getattr(base, name)
-                values = checked_section(name, as_table(name, data[name]), dataclasses.asdict(current))
-                changes[name] = dataclasses.replace(current, **values)
+                changes[name] = replaced_section(name, current, as_table(name, data[name]))
         try:
             bodies = {**base.bodies, **read_bodies(data["bodies"])} if "bodies" in data else base.bodies
             demonstrators = (demonstrators_from_tables(data["demonstrators"], bodies=bodies, base_dir=base_dir)
@@ -309,8 +337,7 @@ class RunConfig:
             if isinstance(section, LearningConfig):
                 write_table(lines, name, section.to_dict(), {})
             elif dataclasses.is_dataclass(section) and not isinstance(section, type):
-                docs = {f.name: f.metadata.get("doc", "") for f in dataclasses.fields(section)}
-                write_table(lines, name, dataclasses.asdict(section), docs)
+                write_table(lines, name, section_table(section), section_docs(section, per="experiment"))
             else:
                 lines.append("# The simulated field of self-observation and of every recorded demonstration.")
                 write_table(lines, name, section, {})
@@ -321,18 +348,6 @@ class RunConfig:
         for name, spec in self.demonstrators.items():
             write_table(lines, f"demonstrators.{name}", spec_table(spec), {})
         return "\n".join(lines).rstrip() + "\n"
-
-    @classmethod
-    def from_toml(cls, text: str, *, base: RunConfig | None = None,
-                  base_dir: str | os.PathLike[str] = ".") -> RunConfig:
-        """A config from TOML text laid over ``base``; paths in it are read from ``base_dir``."""
-        return cls.from_dict(toml_tables(text), base=base, base_dir=base_dir)
-
-    @classmethod
-    def load(cls, path: str | os.PathLike[str], *, base: RunConfig | None = None) -> RunConfig:
-        """A config from a TOML file laid over ``base``; paths in it are read from the file's folder."""
-        folder = os.path.dirname(os.path.abspath(path))
-        return read_config(path, lambda text: cls.from_toml(text, base=base, base_dir=folder))
 
 
 def _experiment_table(experiment: Experiment) -> dict[str, Any]:
@@ -377,6 +392,55 @@ def checked_section(section: str, values: dict[str, Any], defaults: dict[str, An
     if unknown:
         raise ConfigError(f"unknown key{'s' if len(unknown) > 1 else ''} in [{section}]: {', '.join(unknown)}")
     return {key: _typed(f"[{section}] {key}", value, defaults[key]) for key, value in values.items()}
+
+
+def section_table(settings: Any, *, order: Sequence[str] = ()) -> dict[str, Any]:
+    """A section's keys and values as its file holds them: a block's (:class:`~polymimic.runs.sizes.Sizes`)
+    flat among the section's own, lists for tuples, the keys of ``order`` first.
+
+    >>> list(section_table(ExperimentSettings()))[:4]
+    ['trials', 'demonstrations_per_configuration', 'attempts_per_configuration', 'evaluated_imitators']
+    """
+    table: dict[str, Any] = {}
+    for field in dataclasses.fields(settings):
+        value = getattr(settings, field.name)
+        if dataclasses.is_dataclass(value):
+            table.update(section_table(value))
+        else:
+            table[field.name] = list(value) if isinstance(value, tuple) else value
+    return {**{key: table[key] for key in order}, **table}
+
+
+def section_docs(settings: Any, *, per: str) -> dict[str, str]:
+    """What each key of a section means (a field's ``metadata["doc"]``), a block's ``{per}`` said
+    as ``per`` (what one learning trial belongs to)."""
+    docs: dict[str, str] = {}
+    for field in dataclasses.fields(settings):
+        value = getattr(settings, field.name)
+        if dataclasses.is_dataclass(value):
+            docs.update(section_docs(value, per=per))
+        else:
+            docs[field.name] = field.metadata.get("doc", "").replace("{per}", per)
+    return docs
+
+
+def replaced_section(section: str, settings: Loaded, table: dict[str, Any]) -> Loaded:
+    """``settings`` with the values of its file's ``[section]`` ``table``, each checked against
+    its current one's type and a block's keys given to its block; a :class:`ConfigError` naming
+    ``[section] key`` for an unknown key or a bad value."""
+    values = checked_section(section, table, section_table(settings))
+    changes: dict[str, Any] = {}
+    for field in dataclasses.fields(settings):  # type: ignore[arg-type]
+        current = getattr(settings, field.name)
+        if dataclasses.is_dataclass(current):
+            own = {key: values[key] for key in section_table(current) if key in values}
+            try:
+                changes[field.name] = dataclasses.replace(current, **own)  # type: ignore[type-var]
+            except ValueError as error:
+                raise ConfigError(f"[{section}] {error}") from None
+        elif field.name in values:
+            changes[field.name] = values[field.name]
+    return dataclasses.replace(settings, **changes)  # type: ignore[type-var]
 
 
 def _typed(where: str, value: Any, default: Any) -> Any:

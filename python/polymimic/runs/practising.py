@@ -22,6 +22,7 @@ from typing import Any, TypedDict
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelFileError, PrimitiveRecognizer
 from polymimic.bodies import WheeledBody
+from polymimic.evaluation import Attempts
 from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate
 from polymimic.plots import MeanSd
 from polymimic.practice.curve import plot_curves
@@ -54,8 +55,8 @@ class PracticeInputs:
     field: dict[str, Any]
     segmenter: dict[str, Any]
     steps: int
-    evaluation_seed: int
-    attempts_per_configuration: int
+    attempts: Attempts
+    """The run's evaluation attempts, on which every checkpoint is scored."""
     method: str = "refine"
     """How the imitators practise (:data:`polymimic.practice.methods.METHODS`)."""
 
@@ -106,13 +107,11 @@ def practice_task(inputs: PracticeInputs, job: tuple[str, int, str]) -> dict[str
     group, trial_seed, trial_json = job
     policy = ImitatorPolicy(TrialResult.from_json(trial_json), recognizer=inputs.recognizer, config=inputs.learning,
                             control="improved", demonstrations=inputs.demonstrations[group], body=inputs.body)
-    result = practise(policy, method=inputs.method, steps=inputs.steps, seed=trial_seed,
-                      evaluation_seed=inputs.evaluation_seed, evaluation_attempts=inputs.attempts_per_configuration,
+    result = practise(policy, method=inputs.method, steps=inputs.steps, seed=trial_seed, evaluation=inputs.attempts,
                       field_config=inputs.field, segmenter=inputs.segmenter)
-    final = evaluate(result.policy, attempts_per_configuration=inputs.attempts_per_configuration,
-                     seed=inputs.evaluation_seed, field_config=inputs.field)
-    return {"group": group, "trial_seed": trial_seed, "evaluation_seed": inputs.evaluation_seed,
-            "attempts": 2 * inputs.attempts_per_configuration, "budget": inputs.steps, "steps": result.steps,
+    final = evaluate(result.policy, attempts=inputs.attempts, field_config=inputs.field)
+    return {"group": group, "trial_seed": trial_seed, "evaluation_seed": inputs.attempts.seed,
+            "attempts": inputs.attempts.count, "budget": inputs.steps, "steps": result.steps,
             "method": inputs.method,
             "attempts_learned": len(result.attempts), "attempts_lost": result.attempts_lost,
             "checkpoints": [p.to_dict() for p in result.curve], "outcomes": [a.outcome for a in final.attempts]}
@@ -191,13 +190,14 @@ def summarise(saved: Sequence[SavedPractice]) -> PracticeCurve:
 FORMAT, VERSION = "polymimic.practice", 1
 
 
-def is_practice_of(saved: SavedPractice | None, group: str, trial_seed: int, *, evaluation_seed: int,
-                   attempts: int, budget: int, method: str = "refine") -> bool:
+def is_practice_of(saved: SavedPractice | None, group: str, trial_seed: int, *, evaluation: Attempts, budget: int,
+                   method: str = "refine") -> bool:
     """Whether ``saved`` (a practice file read whole, or None) is the practice asked for: of this
-    group's trial, scored on these evaluation attempts, for this budget of steps, by this method."""
+    group's trial, scored on the ``evaluation`` attempts (the file keeps their seed and count),
+    for this budget of steps, by this method."""
     return saved is not None and (saved["group"], saved["trial_seed"], saved["evaluation_seed"], saved["attempts"],
-                                  saved["budget"], saved["method"]) == (group, trial_seed, evaluation_seed, attempts,
-                                                                        budget, method)
+                                  saved["budget"], saved["method"]) == (group, trial_seed, evaluation.seed,
+                                                                        evaluation.count, budget, method)
 
 
 def practise_run(run: RunHouse[Any], folder: pathlib.Path, inputs: PracticeInputs, jobs: Sequence[tuple[str, int]],
@@ -211,8 +211,7 @@ def practise_run(run: RunHouse[Any], folder: pathlib.Path, inputs: PracticeInput
         return folder / group / f"practice_{seed}.json"
 
     def done(group: str, seed: int) -> bool:
-        return is_practice_of(run.loaded(path(group, seed), load_practice), group, seed,
-                              evaluation_seed=inputs.evaluation_seed, attempts=2 * inputs.attempts_per_configuration,
+        return is_practice_of(run.loaded(path(group, seed), load_practice), group, seed, evaluation=inputs.attempts,
                               budget=inputs.steps, method=inputs.method)
 
     todo = [(group, seed, trial_json(group, seed)) for group, seed in jobs if not done(group, seed)]
@@ -227,7 +226,7 @@ def practise_run(run: RunHouse[Any], folder: pathlib.Path, inputs: PracticeInput
     curves = {group: summarise([load_practice(path(group, seed)) for g, seed in jobs if g == group])
               for group in groups}
     summary = {"format": FORMAT, "version": VERSION, "run": kind, "steps": inputs.steps,
-               "evaluation_seed": inputs.evaluation_seed, "attempts": 2 * inputs.attempts_per_configuration,
+               "evaluation_seed": inputs.attempts.seed, "attempts": inputs.attempts.count,
                "groups": curves}
     atomic_write_text(folder / "practice.json", json.dumps(summary, indent=1) + "\n")
     rows = ["group,checkpoint,steps_mean,net_goals_mean,net_goals_sd,trials"]

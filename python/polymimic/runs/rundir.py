@@ -93,6 +93,10 @@ class RunHouse(Generic[ConfigT]):
 
     manifest_format: str
     config_type: type[ConfigT]
+    results_name: str
+    """The stem of the run's results file (``<results_name>.json``)."""
+    report_name: str
+    """The stem of its report (``<report_name>.md``, ``.html``)."""
 
     def __init__(self, path: str | os.PathLike[str]) -> None:
         self.path = pathlib.Path(path)
@@ -104,6 +108,9 @@ class RunHouse(Generic[ConfigT]):
         self.plots = self.path / "plots"
         self.manifest_path = self.path / "manifest.json"
         self.recognizer_path = self.models / "recognizer.json"
+        self.results_path = self.path / f"{self.results_name}.json"
+        self.report_md_path = self.path / f"{self.report_name}.md"
+        self.report_html_path = self.path / f"{self.report_name}.html"
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}({str(self.path)!r})"

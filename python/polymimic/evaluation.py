@@ -14,6 +14,7 @@ from typing import Any, Protocol
 
 from polymimic import _native
 from polymimic._arguments import integer
+from polymimic.bodies import Body, BodySpec, as_body
 from polymimic.field import Demonstration, as_frames
 from polymimic.field_config import native_field_config
 
@@ -50,8 +51,8 @@ class Plays(Protocol):
     :class:`polymimic.practice.practised.PractisedPolicy`)."""
 
     @property
-    def body(self) -> str:
-        """The name of the body it drives."""
+    def body(self) -> Body:
+        """The body it drives."""
 
     def evaluate(self, attempts_per_configuration: int, *, seed: int = 0, field_config: str | None = None,
                  starts: Sequence[int | Mapping[str, Any]] | None = None) -> list[dict[str, Any]]:
@@ -125,9 +126,10 @@ def evaluate(policy: Plays, *, attempts_per_configuration: int = 25, seed: int =
 
 
 def attempts_as_demonstrations(raw: list[dict[str, Any]], demonstrator: str, *,
-                               body: str = "lego") -> list[Demonstration]:
+                               body: BodySpec = "lego") -> list[Demonstration]:
     """Native attempts (as :meth:`ImitatorPolicy.evaluate` returns them) as ``demonstrator``'s
     demonstrations on ``body``; an attempt from a chosen start has configuration 0."""
+    body = as_body(body)
     return [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator=demonstrator,
                           configuration=a["configuration"] or 0, seed=a["seed"], body=body) for a in raw]
 

@@ -29,6 +29,7 @@ import os
 from typing import Any
 
 from polymimic._toml import write_table, write_value
+from polymimic.bodies import Body
 from polymimic.crowds import PROFILES, Crowd
 from polymimic.practice.methods import DEFAULT_METHOD as DEFAULT_PRACTICE
 from polymimic.practice.methods import METHODS as PRACTICE_METHODS
@@ -182,8 +183,8 @@ class BenchmarkConfig:
         """The learning constants (``[learning]``)."""
         return self.run.learning
 
-    def imitator_body(self) -> Any:
-        """The imitator's body (``[imitator] body``), as the library takes it."""
+    def imitator_body(self) -> Body:
+        """The imitator's :class:`polymimic.Body` (``[imitator] body``)."""
         return self.run.imitator_body()
 
     def trial_seeds(self) -> list[int]:

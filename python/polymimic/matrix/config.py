@@ -28,7 +28,7 @@ import os
 from typing import Any
 
 from polymimic._toml import write_table
-from polymimic.bodies import Field, WheeledBody
+from polymimic.bodies import Body, Field, WheeledBody
 from polymimic.crowds import PROFILES
 from polymimic.runs.config import (
     IMITATOR_BODIES,
@@ -215,9 +215,9 @@ class MatrixConfig:
         """The run's seeds (``[seeds]``)."""
         return self.run.seeds
 
-    def body(self, row: str) -> str | WheeledBody:
-        """The imitator ``row`` as the library takes it."""
-        return row if row in IMITATOR_BODIES else self.run.bodies[row]
+    def body(self, row: str) -> Body:
+        """The body named ``row``: a built-in one, or the config's ``[bodies.<row>]``."""
+        return Body(row if row in IMITATOR_BODIES else self.run.bodies[row])
 
     def trial_seeds(self) -> list[int]:
         """The seeds of polymimic's trials in every cell."""

@@ -130,7 +130,8 @@ def test_a_wheeled_body_round_trips(tiny, own_body, tmp_path):
     policy = learning.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=batch,
                                      body=own_body)
     again = _round_trip(policy, tmp_path / "own.zip")
-    assert again.body.name == "tiny_on_file"
+    assert again.body.name == "tiny_on_file" and again.body.description == own_body
+    assert policy.body.description is own_body
     assert imitator_file.read_policy_file(tmp_path / "own.zip").body.description == own_body
     _assert_same_play(policy, again)
 

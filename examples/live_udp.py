@@ -35,7 +35,7 @@ from polymimic import live, recognition
 READINGS_PER_S = 30
 
 
-def field_side(to: tuple[str, int], commands: live.UdpSource, body: str, *, seconds: float,
+def field_side(to: tuple[str, int], commands: live.UdpSource, body: polymimic.Body, *, seconds: float,
                chaos: bool) -> dict[str, Any]:
     """Play episodes in real time for ``seconds``, one reading every 1/30 s."""
     send = live.UdpSink(*to)

@@ -118,7 +118,7 @@ def report(demonstrations: dict[str, list[polymimic.Demonstration]], trial, play
              "| demonstrator | body | demonstrations | goals | own goals | final LP |",
              "| --- | --- | ---: | ---: | ---: | ---: |"]
     for who, demos in demonstrations.items():
-        lines.append(f"| {who} | {demos[0].body} | {len(demos)} | {_count(demos, 'goal')} | "
+        lines.append(f"| {who} | {demos[0].body.name} | {len(demos)} | {_count(demos, 'goal')} | "
                      f"{_count(demos, 'own_goal')} | {trial.models[who].lp:.2f} |")
     attempts = len(played.attempts)
     lines += ["", f"The imitator (Lego body, improved control) scored {played.goals} goals and "

@@ -64,7 +64,7 @@ def main():
     for rate_hz in (60, 45, 20):
         found, frames_same, outcome_same = [], 0, 0
         for body in BODY_NAMES:
-            group = [d for d in demos if d.body == body]
+            group = [d for d in demos if d.body.name == body]
             for a, b in zip(group, round_trip(group, folder / f"{body}_{rate_hz}.csv", rate_hz)):
                 frames_same += len(a.frames) == len(b.frames)
                 outcome_same += a.outcome == b.outcome

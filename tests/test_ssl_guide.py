@@ -9,6 +9,7 @@ import pytest
 
 from polymimic import cli
 from polymimic.datasets import load_demonstrations
+from polymimic.runs.config import RunConfig
 
 pytest.importorskip("sklearn")
 
@@ -34,7 +35,8 @@ def test_one_config_and_three_commands(tmp_path, capsys, monkeypatch):
     assert capsys.readouterr().out.splitlines() == [
         "3 episodes from ssl_vision.csv: 3 demonstrations (2 dropped readings filled in, 1 gap bridged), 0 invalid; "
         "written to ssl_log.parquet", "  episode 0: 2 dropped readings filled in", "  episode 1: 1 gap bridged"]
-    assert {d.body for d in load_demonstrations(tmp_path / "ssl_log.parquet")} == {"ssl_bot"}
+    bodies = RunConfig.load(tmp_path / "ssl.toml").bodies
+    assert {d.body.name for d in load_demonstrations(tmp_path / "ssl_log.parquet", bodies=bodies)} == {"ssl_bot"}
 
     assert cli.main(["reproduce", "--config", "ssl.toml", "--quick", "--run-dir", "runs/ssl", "--quiet"]) == 0
     results = json.loads((tmp_path / "runs" / "ssl" / "results.json").read_text())

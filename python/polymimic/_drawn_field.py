@@ -10,7 +10,7 @@ from __future__ import annotations
 import dataclasses
 from typing import TYPE_CHECKING
 
-from polymimic.bodies import THESIS_BODIES, WheeledBody, as_body, resolve
+from polymimic.bodies import BodySpec, as_body
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
@@ -35,17 +35,11 @@ class Scene:
     robot_width_mm: float
 
 
-def scene_of(body: str | WheeledBody) -> Scene:
-    """The field ``body`` plays on and its footprint: a built-in body by its name, a
-    :class:`~polymimic.bodies.WheeledBody`, or the name of one made in this process (else a
-    ``ValueError`` saying to give the body)."""
-    try:
-        known = resolve(body)
-    except ValueError:
-        raise ValueError(f"body {body!r} is not known in this process: give it as body= (its WheeledBody, whose "
-                         f"field the picture draws)") from None
-    field = as_body(body).field
-    wheeled = known if isinstance(known, WheeledBody) else THESIS_BODIES.get(known)
+def scene_of(body: BodySpec) -> Scene:
+    """The field ``body`` plays on and its footprint: a :class:`polymimic.Body`, a built-in body
+    by its name, or a :class:`~polymimic.bodies.WheeledBody`."""
+    known = as_body(body)
+    field, wheeled = known.field, known.description
     length_mm, width_mm = (wheeled.length_mm, wheeled.width_mm) if wheeled is not None else HUMANOID_FOOTPRINT_MM
     return Scene(field.length_mm, field.width_mm, float(field.goal_mouth_mm or 0.0), field.ball_diameter_mm,
                  float(length_mm), float(width_mm))

@@ -602,8 +602,8 @@ class EpisodeBatch:
         cls, n: int, *, frames_per_action: int = 30, config: str | None = None, body: _Body = "lego"
     ) -> EpisodeBatch: ...
     @property
-    def body(self) -> str:
-        """The name of the body every slot drives."""
+    def body(self) -> Body:
+        """The body every slot drives, a :class:`polymimic.Body`."""
     def __len__(self) -> int: ...
     def reset(
         self, index: int, *, configuration: int | None = None, seed: int, start: int | Mapping[str, Any] | None = None
@@ -1172,8 +1172,8 @@ class ImitatorPolicy:
     def control(self) -> str:
         """`"thesis"` or `"improved"`."""
     @property
-    def body(self) -> str:
-        """The name of the body the imitator drives."""
+    def body(self) -> Body:
+        """The body the imitator drives, a :class:`polymimic.Body` (the one it was made with)."""
     def for_trial(self, trial: TrialResult) -> ImitatorPolicy:
         """The same control driving ``trial``'s imitator, with what this one learned from the
         demonstrations (the improved control's ball response, state values and routes) shared

@@ -14,8 +14,8 @@ with: a body equal to one of them is that body, bit for bit.
 >>> rover.primitives_mm_s["forward"], rover.primitives_mm_s["left"]
 ((60.0, 60.0), (-52.5, 52.5))
 >>> demos = polymimic.record("poor", body=rover, configuration=1, n=1, seed=0)
->>> demos[0].demonstrator, demos[0].body
-('poor', 'rover')
+>>> demos[0].demonstrator, demos[0].body.name, demos[0].body.description is rover
+('poor', 'rover', True)
 
 In a TOML file, each body is a table (see :func:`bodies_from_tables`)::
 
@@ -32,8 +32,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import threading
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from typing import Any, Union
 
 import numpy as np
@@ -43,8 +42,8 @@ from polymimic import _native
 from polymimic.body_parts import Field, Slip
 from polymimic.body_parts import number_in as _number_in
 
-__all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "Body", "Field", "Slip", "WheeledBody", "as_body",
-           "bodies_from_tables", "onto_field"]
+__all__ = ["FIELDS", "THESIS_BODIES", "THESIS_BODY_FIELDS", "BodiesGiven", "Body", "BodySpec", "Field", "Slip",
+           "WheeledBody", "as_body", "bodies_by_name", "bodies_from_tables", "body_named", "onto_field"]
 
 Body = _native.Body
 
@@ -129,7 +128,19 @@ class WheeledBody:
             object.__setattr__(self, "slip", self._checked_slip())
         except ValueError as error:
             raise ValueError(f"body {self.name!r}: {error}") from None
-        _describe(self)
+        self._check_not_a_thesis_body_renamed()
+
+    def _check_not_a_thesis_body_renamed(self) -> None:
+        """A thesis body's name stands for the thesis's constants alone: were it to stand for
+        others too, what a file of that body's demonstrations holds would depend on who reads it."""
+        if _building_thesis_bodies or self.name not in THESIS_BODY_FIELDS:
+            return
+        thesis = THESIS_BODIES.get(self.name)
+        if thesis is None:
+            raise ValueError(f"body name {self.name!r} is the thesis's; give your body a name of its own")
+        if thesis != self:
+            raise ValueError(f"body {self.name!r} is already described with other constants; give this one "
+                             f"another name")
 
     def _check_fits_its_field(self) -> None:
         """The robot must fit between its start and the ball: a third of the field's length
@@ -283,6 +294,14 @@ class WheeledBody:
                    fresh_slip_frames=c["traction_refresh_frames"])
 
 
+BodySpec = Union[str, WheeledBody, Body]
+"""A body as every function asks for one: a :class:`polymimic.Body`, a built-in body's name, or
+a :class:`WheeledBody`."""
+BodiesGiven = Union[Iterable[Union[WheeledBody, Body]], Mapping[str, Union[WheeledBody, Body]]]
+"""The bodies of one's own a reader of files is given: the bodies, or a mapping from their
+names to them (as a run config's ``bodies``)."""
+
+
 def _thesis_field(name: str) -> Field:
     """A thesis field's sizes (``"large"`` or ``"small"``): the field its body plays on."""
     return Body("lego" if name == "large" else "tiny").field
@@ -338,32 +357,15 @@ def _thesis_bodies() -> dict[str, WheeledBody]:
     return out
 
 
-_described: dict[str, WheeledBody] = {}
-_lock = threading.Lock()
-_building_thesis_bodies = True
-
-
-def _describe(body: WheeledBody) -> None:
-    """Remember which field a body plays on, so that what is learned from its demonstrations is
-    read on the right field. One name, one body: were a name to stand for whichever body was
-    made last, what a run learns would depend on the order things were made in."""
-    with _lock:
-        known = _described.get(body.name)
-        if known is not None and known != body:
-            raise ValueError(f"body {body.name!r} is already described with other constants; give this one "
-                             f"another name")
-        if known is None and body.name in THESIS_BODY_FIELDS and not _building_thesis_bodies:
-            raise ValueError(f"body name {body.name!r} is the thesis's; give your body a name of its own")
-        _described[body.name] = body
-
+_building_thesis_bodies = True  # while THESIS_BODIES are made, the check of a thesis body's name waits for them
 
 THESIS_BODIES: dict[str, WheeledBody] = _thesis_bodies()
 """The thesis's two wheeled bodies, ``lego`` and ``tiny``, as data."""
 _building_thesis_bodies = False
 
 
-def onto_field(observations: npt.ArrayLike, *, recorded_by: str | WheeledBody,
-               imitator: str | WheeledBody = "lego") -> npt.NDArray[np.float64]:
+def onto_field(observations: npt.ArrayLike, *, recorded_by: BodySpec,
+               imitator: BodySpec = "lego") -> npt.NDArray[np.float64]:
     """Observations ``(n, 5)`` (robot x, y (mm), heading (rad), ball x, y (mm)) of a demonstration
     by the body ``recorded_by`` on its field, as an imitator of body ``imitator`` sees them on its
     own: the learner's one correspondence, which every part of polymimic that learns from a
@@ -388,11 +390,10 @@ def onto_field(observations: npt.ArrayLike, *, recorded_by: str | WheeledBody,
                                      as_body(imitator, what="imitator"))
 
 
-def as_body(body: str | WheeledBody | Body, *, what: str = "body") -> Body:
-    """``body`` as a :class:`polymimic.Body`: itself, a built-in body by its name, a
-    :class:`WheeledBody` (or the name of one made in this process) made one. A ``ValueError``
-    names ``what`` for a name no body has, listing the built-in ones and how to describe a body
-    of one's own.
+def as_body(body: BodySpec, *, what: str = "body") -> Body:
+    """``body`` as a :class:`polymimic.Body`: itself, a built-in body by its name, or a
+    :class:`WheeledBody` made one. Any other name is a ``ValueError`` naming ``what``, listing
+    the built-in bodies and how to describe a body of one's own.
 
     >>> as_body("tiny").field.length_mm
     560.0
@@ -403,45 +404,62 @@ def as_body(body: str | WheeledBody | Body, *, what: str = "body") -> Body:
     """
     if isinstance(body, Body):
         return body
-    if isinstance(body, str) and body not in THESIS_BODY_FIELDS:
-        with _lock:
-            known = _described.get(body)
-        body = body if known is None else known
     try:
         return Body(body)
     except (TypeError, ValueError) as error:
         raise type(error)(f"{what}: {error}") from None
 
-def resolve(body: str | WheeledBody | Body) -> str | WheeledBody:
-    """``body`` as the field takes it: a thesis body's name as it is, a :class:`WheeledBody`
-    made in this process by its name, a :class:`polymimic.Body` by its name or description; a
-    ``ValueError`` for a name no body has.
 
-    >>> resolve("tiny"), resolve(Body("humanoid"))
-    ('tiny', 'humanoid')
+def bodies_by_name(bodies: BodiesGiven, *, what: str = "bodies") -> dict[str, Body]:
+    """``bodies`` (each a :class:`polymimic.Body` or a :class:`WheeledBody`; or a mapping from
+    each one's name to it) by name. Two bodies under one name must be the same body: a
+    ``ValueError`` naming ``what`` otherwise, or for a mapping's key that is not its body's name.
+
+    >>> twin = WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
+    >>> sorted(bodies_by_name([twin, THESIS_BODIES["tiny"]]))
+    ['tiny', 'twin']
+    >>> bodies_by_name([twin, dataclasses.replace(twin, field="small")])
+    Traceback (most recent call last):
+    ...
+    ValueError: bodies: two bodies are named 'twin', with other constants; give each a name of its own
     """
-    if isinstance(body, Body):
-        return body.name if body.description is None else native_body(body.description)
-    if isinstance(body, WheeledBody):
-        return native_body(body)
-    if body in THESIS_BODY_FIELDS:
-        return body
-    with _lock:
-        known = _described.get(body) if isinstance(body, str) else None
+    if isinstance(bodies, (str, bytes)):
+        raise TypeError(f"{what} must be bodies (polymimic.Body or polymimic.bodies.WheeledBody) or a mapping "
+                        f"from their names to them, got {bodies!r}")
+    pairs = bodies.items() if isinstance(bodies, Mapping) else ((None, body) for body in bodies)
+    out: dict[str, Body] = {}
+    for key, given in pairs:
+        if not isinstance(given, (Body, WheeledBody)):
+            raise TypeError(f"{what}: expected a polymimic.Body or a polymimic.bodies.WheeledBody, got {given!r}")
+        body = as_body(given, what=what)
+        if key is not None and key != body.name:
+            raise ValueError(f"{what}: key {key!r} holds the body named {body.name!r}; a body is given under its "
+                             f"own name")
+        if out.get(body.name, body) != body:
+            raise ValueError(f"{what}: two bodies are named {body.name!r}, with other constants; give each a name of "
+                             f"its own")
+        out[body.name] = body
+    return out
+
+
+def body_named(name: str, bodies: Mapping[str, Body], *, where: str) -> Body:
+    """The body ``name`` names: a built-in body, or one of ``bodies`` (the bodies of one's own
+    given, by name, as :func:`bodies_by_name` gives them). A ``ValueError`` names ``where`` and
+    the body, and says how to give it.
+
+    >>> body_named("tiny", {}, where="demos.parquet").field.length_mm
+    560.0
+    >>> body_named("rover", {}, where="demos.parquet")
+    Traceback (most recent call last):
+    ...
+    ValueError: demos.parquet: body 'rover' is not built in (lego, tiny, humanoid) and was not given: pass its ...
+    """
+    if name in THESIS_BODY_FIELDS:
+        return Body(name)
+    known = bodies.get(name)
     if known is None:
-        raise ValueError(f"unknown body {body!r}: one of {', '.join(THESIS_BODY_FIELDS)} or a "
-                         f"polymimic.bodies.WheeledBody")
-    return native_body(known)
-
-
-def native_body(body: str | WheeledBody) -> str | WheeledBody:
-    """What the field takes for ``body``: a thesis body by its name (so that it is that body,
-    bit for bit), any other as its constants."""
-    if isinstance(body, WheeledBody) and THESIS_BODIES.get(body.name) == body:
-        return body.name
-    return body
-
-
-def body_name(body: str | WheeledBody) -> str:
-    """The name a demonstration records for ``body``."""
-    return body.name if isinstance(body, WheeledBody) else body
+        given = f" (given: {', '.join(sorted(bodies))})" if bodies else ""
+        raise ValueError(f"{where}: body {name!r} is not built in ({', '.join(THESIS_BODY_FIELDS)}) and was not "
+                         f"given{given}: pass its description with bodies= (a polymimic.bodies.WheeledBody or a "
+                         f"polymimic.Body, or a run config's [bodies.{name}] table)")
+    return known

@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 
+from polymimic.bodies import Body
 from polymimic.field import BODIES, DEMONSTRATORS, Demonstration, record
 
 __all__ = ["FLOOR", "PROFILES", "Crowd", "Member", "controller_skill", "member_seed", "profile", "record_crowd"]
@@ -58,7 +59,7 @@ class Member:
 
     @property
     def body(self) -> str:
-        """The body the member's controller drives."""
+        """The name of the body the member's controller drives."""
         return BODIES[self.controller]
 
 
@@ -214,7 +215,7 @@ def record_crowd(crowd: Crowd, *, n: int = 25, seed: int = 0,
     configuration-1 ones first), each under the member's name and body.
 
     >>> demos = record_crowd(PROFILES["half"], n=1, seed=3)
-    >>> len(demos), demos[0].demonstrator, demos[-1].body
+    >>> len(demos), demos[0].demonstrator, demos[-1].body.name
     (20, 'expert_00', 'lego')
     """
     out: list[Demonstration] = []
@@ -222,5 +223,5 @@ def record_crowd(crowd: Crowd, *, n: int = 25, seed: int = 0,
         for configuration in (1, 2):
             for demo in record(member.controller, configuration=configuration, n=n,
                                seed=member_seed(seed, index), config=config, lapse=member.lapse):
-                out.append(dataclasses.replace(demo, demonstrator=member.name, body=member.body))
+                out.append(dataclasses.replace(demo, demonstrator=member.name, body=Body(member.body)))
     return out

@@ -39,6 +39,7 @@ import numpy as np
 from polymimic import _native
 from polymimic._atomic import atomic_path
 from polymimic._native import ModelFileError
+from polymimic.bodies import BodiesGiven, Body, bodies_by_name, body_named
 from polymimic.field import FRAME_DTYPE, OUTCOMES, PRIMITIVE_SETS, Demonstration, PrimitiveSequence
 
 __all__ = ["load_demonstrations", "load_self_observation", "save_demonstrations", "save_self_observation"]
@@ -105,18 +106,26 @@ def save_demonstrations(demos: Sequence[Demonstration], path: str | os.PathLike[
         "configuration": _repeat([d.configuration for d in items], lengths, "int8"),
         "seed": _repeat([d.seed for d in items], lengths, "uint64"),
         "outcome": _repeat([d.outcome for d in items], lengths, object),
-        "body": _repeat([d.body for d in items], lengths, object),
+        "body": _repeat([d.body.name for d in items], lengths, object),
     }
     _write(columns, _DEMONSTRATION_TYPES, DEMONSTRATIONS, path)
 
 
-def load_demonstrations(path: str | os.PathLike[str]) -> list[Demonstration]:
+def load_demonstrations(path: str | os.PathLike[str], *, bodies: BodiesGiven = ()) -> list[Demonstration]:
     """Read the demonstrations that :func:`save_demonstrations` wrote, in their order.
+
+    The file names each demonstration's body; a built-in body is known by its name, a body of
+    your own must be given in ``bodies`` (:class:`polymimic.Body` or
+    :class:`polymimic.bodies.WheeledBody` values, or a mapping from their names to them, as a
+    run config's ``bodies``).
 
     Raises
     ------
     FileNotFoundError
         If there is no file at ``path``.
+    ValueError
+        If the file names a body neither built in nor in ``bodies`` (the message names the file,
+        the body and how to give it), or ``bodies`` holds two bodies of one name.
     polymimic.ModelFileError
         If the file is not Parquet, is damaged, holds another kind of data or a foreign schema,
         or was written by a later format version; the message names the file and the problem.
@@ -137,13 +146,15 @@ def load_demonstrations(path: str | os.PathLike[str]) -> list[Demonstration]:
     meta = {name: _per_group(columns, name, starts, stops, path, "episode") for name in names}
     _check_values(meta["outcome"], OUTCOMES, "outcome", path)
     _check_values(meta["configuration"], (1, 2), "configuration", path)
+    body_of: dict[str, Body] = {}
     if "body" in meta:
         _check_names(meta["body"], "body", path)
+        body_of = _bodies_named(meta["body"], bodies, path)
     frames = _frames(columns)
     try:
         return [Demonstration(frames=frames[a:b].copy(), outcome=str(meta["outcome"][i]),
                               demonstrator=str(meta["demonstrator"][i]), configuration=int(meta["configuration"][i]),
-                              seed=int(meta["seed"][i]), body=str(meta["body"][i]) if "body" in meta else "")
+                              seed=int(meta["seed"][i]), body=body_of[str(meta["body"][i])] if "body" in meta else "")
                 for i, (a, b) in enumerate(zip(starts, stops))]
     except ValueError as error:
         raise ModelFileError(f"{os.fspath(path)}: {error}") from None
@@ -166,23 +177,24 @@ def save_self_observation(seqs: Sequence[PrimitiveSequence], path: str | os.Path
     items = _checked_items(seqs, PrimitiveSequence, "self-observation sequences", "PrimitiveSequence")
     for i, seq in enumerate(items):
         _check_frames(seq.frames, f"sequence {i}")
-        own = PRIMITIVE_SETS["humanoid" if seq.body == "humanoid" else "wheeled"]
+        own = PRIMITIVE_SETS[seq.body.primitive_set]
         if seq.primitive not in own:
-            raise ValueError(f"sequence {i} has primitive {seq.primitive!r}; a {seq.body} body's are "
+            raise ValueError(f"sequence {i} has primitive {seq.primitive!r}; a {seq.body.name} body's are "
                              f"{', '.join(own)}")
     lengths = [len(s.frames) for s in items]
     columns = {
         "sequence": _repeat(np.arange(len(items)), lengths, "int32"),
         **_frame_columns([s.frames for s in items]),
         "primitive": _repeat([s.primitive for s in items], lengths, object),
-        "body": _repeat([s.body for s in items], lengths, object),
+        "body": _repeat([s.body.name for s in items], lengths, object),
     }
     _write(columns, _SELF_OBSERVATION_TYPES, SELF_OBSERVATION, path)
 
 
-def load_self_observation(path: str | os.PathLike[str]) -> list[PrimitiveSequence]:
-    """Read the sequences that :func:`save_self_observation` wrote, in their order; a missing or
-    damaged file raises as in :func:`load_demonstrations`.
+def load_self_observation(path: str | os.PathLike[str], *, bodies: BodiesGiven = ()) -> list[PrimitiveSequence]:
+    """Read the sequences that :func:`save_self_observation` wrote, in their order; a body of
+    your own is given in ``bodies``, and a missing or damaged file or a body not given raises,
+    as in :func:`load_demonstrations`.
 
     Examples
     --------
@@ -198,12 +210,14 @@ def load_self_observation(path: str | os.PathLike[str]) -> list[PrimitiveSequenc
                                    "sequence")
     primitives = _per_group(columns, "primitive", starts, stops, path, "sequence")
     _check_values(primitives, PRIMITIVE_SETS["humanoid"], "primitive", path)
-    bodies = _per_group(columns, "body", starts, stops, path, "sequence") if "body" in columns else None
-    if bodies is not None:
-        _check_names(bodies, "body", path)
+    names = _per_group(columns, "body", starts, stops, path, "sequence") if "body" in columns else None
+    body_of: dict[str, Body] = {}
+    if names is not None:
+        _check_names(names, "body", path)
+        body_of = _bodies_named(names, bodies, path)
     frames = _frames(columns)
     return [PrimitiveSequence(primitive=str(p), frames=frames[a:b].copy(),
-                              body=str(bodies[i]) if bodies is not None else "lego")
+                              body=body_of[str(names[i])] if names is not None else "lego")
             for i, (p, a, b) in enumerate(zip(primitives, starts, stops))]
 
 
@@ -348,6 +362,13 @@ def _check_names(values: np.ndarray, name: str, where: str | os.PathLike[str]) -
     for value in values:
         if not isinstance(value, str) or not value.isidentifier():
             raise ModelFileError(f"{os.fspath(where)}: column {name!r} holds {value!r}; expected a name")
+
+
+def _bodies_named(names: np.ndarray, bodies: BodiesGiven, where: str | os.PathLike[str]) -> dict[str, Body]:
+    """The body each name of the file's ``body`` column names: a built-in body, or one of
+    ``bodies``; a ``ValueError`` naming the file for any other."""
+    given = bodies_by_name(bodies)
+    return {name: body_named(name, given, where=os.fspath(where)) for name in dict.fromkeys(map(str, names))}
 
 
 def _check_values(values: np.ndarray, allowed: tuple[Any, ...], name: str, where: str | os.PathLike[str]) -> None:

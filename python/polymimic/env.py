@@ -50,7 +50,7 @@ import numpy as np
 
 from polymimic._arguments import integer
 from polymimic._native import Episode, FieldRunError
-from polymimic.bodies import WheeledBody, body_name, resolve
+from polymimic.bodies import BodySpec, as_body
 from polymimic.field import OUTCOME_REWARDS, PRIMITIVE_SETS, PRIMITIVES, primitive_command
 from polymimic.field_config import native_field_config
 from polymimic.plots import state_image
@@ -83,8 +83,9 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         Tracker frames (1/30 s each) one action is held for.
     config : dict or str, optional
         Field configuration overrides (see :func:`polymimic.field.default_config`).
-    body : str or polymimic.bodies.WheeledBody, default "lego"
-        The imitator's body: a built-in body's name or a described wheeled body; it plays on its
+    body : polymimic.Body, str or polymimic.bodies.WheeledBody, default "lego"
+        The imitator's body (a :class:`polymimic.Body`, a built-in body's name or a described
+        wheeled body; the env's ``body`` is it as a :class:`polymimic.Body`); it plays on its
         own field, which the observation space spans.
     render_mode : {None, "rgb_array"}
         ``"rgb_array"``: :meth:`render` returns a picture of the field now.
@@ -102,7 +103,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
     metadata: ClassVar[dict[str, Any]] = {"render_modes": ["rgb_array"], "render_fps": 1}
 
     def __init__(self, *, configuration: int | str = "random", frames_per_action: int = 30,
-                 config: dict[str, Any] | str | None = None, body: str | WheeledBody = "lego",
+                 config: dict[str, Any] | str | None = None, body: BodySpec = "lego",
                  render_mode: str | None = None) -> None:
         if gymnasium is None:
             raise ModuleNotFoundError("PenaltyKickEnv needs gymnasium: pip install \"polymimic[gym]\"")
@@ -117,11 +118,11 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         self.frames_per_action = int(frames_per_action)
         self.render_mode = render_mode
         self._config = native_field_config(config)
-        self.body, self._body = body_name(body), resolve(body)
-        self.primitives = PRIMITIVE_SETS["humanoid" if self.body == "humanoid" else "wheeled"]
-        self._commands = [primitive_command(p, self._body) for p in PRIMITIVES]
+        self.body = as_body(body)
+        self.primitives = PRIMITIVE_SETS[self.body.primitive_set]
+        self._commands = [primitive_command(p, self.body) for p in PRIMITIVES]
         # Fails now on a bad config, and tells the body's field.
-        field_mm = Episode(self._body, configuration=1, seed=0, config=self._config).observation()["field"]
+        field_mm = Episode(self.body, configuration=1, seed=0, config=self._config).observation()["field"]
         self.observation_space = observation_space(field_mm)
         self.action_space = spaces.Discrete(len(self.primitives))
         self._episode_seed = 0
@@ -148,7 +149,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
                 configuration = int(self.np_random.integers(1, 3))
         drawn = int(self.np_random.integers(0, 2**63))
         self._episode_seed = drawn if episode_seed is None else integer("episode_seed", episode_seed, 0, 2**64 - 1)
-        self._episode = Episode(self._body, configuration=configuration, seed=self._episode_seed,
+        self._episode = Episode(self.body, configuration=configuration, seed=self._episode_seed,
                                 config=self._config, start=start)
         return self._observation(), self._info()
 
@@ -176,7 +177,7 @@ class PenaltyKickEnv(_Base):  # type: ignore[misc]
         if self.render_mode is None or self._episode is None:
             return None
         seen = self._episode.observation()
-        return state_image(self._body, seen["robot"], seen["ball"], f"t = {seen['t_s']:.1f} s")
+        return state_image(self.body, seen["robot"], seen["ball"], f"t = {seen['t_s']:.1f} s")
 
     def _observation(self) -> np.ndarray:
         assert self._episode is not None

@@ -15,6 +15,7 @@ from typing import Any, Protocol, Union
 
 from polymimic import _native
 from polymimic._arguments import integer
+from polymimic.bodies import Body, BodySpec, as_body
 from polymimic.field import Demonstration, as_frames
 from polymimic.field_config import native_field_config
 
@@ -162,8 +163,8 @@ class Plays(Protocol):
     :class:`polymimic.practice.practised.PractisedPolicy`)."""
 
     @property
-    def body(self) -> str:
-        """The name of the body it drives."""
+    def body(self) -> Body:
+        """The body it drives."""
 
     def evaluate(self, attempts_per_configuration: int, *, seed: int = 0, field_config: str | None = None,
                  starts: Sequence[int | Mapping[str, Any]] | None = None) -> list[dict[str, Any]]:
@@ -242,9 +243,10 @@ def evaluate(policy: Plays, *, attempts: Attempts | None = None, attempts_per_co
 
 
 def attempts_as_demonstrations(raw: list[dict[str, Any]], demonstrator: str, *,
-                               body: str = "lego") -> list[Demonstration]:
+                               body: BodySpec = "lego") -> list[Demonstration]:
     """Native attempts (as :meth:`ImitatorPolicy.evaluate` returns them) as ``demonstrator``'s
     demonstrations on ``body``; an attempt from a chosen start has configuration 0."""
+    body = as_body(body)
     return [Demonstration(frames=as_frames(a["frames"]), outcome=a["outcome"], demonstrator=demonstrator,
                           configuration=a["configuration"] or 0, seed=a["seed"], body=body) for a in raw]
 

@@ -175,8 +175,8 @@ def to_minari(demonstrations: Sequence[Demonstration], dataset_id: str, *, actio
     for i, demo in enumerate(demonstrations):
         if not isinstance(demo, Demonstration):
             raise TypeError(f"demonstration {i} is a {type(demo).__name__}, not a polymimic.Demonstration")
-        if demo.body not in SIMULATED_BODIES:
-            raise ValueError(f"demonstration {i} ({demo.demonstrator}) is of the {demo.body} body; "
+        if demo.body.kind not in SIMULATED_BODIES:
+            raise ValueError(f"demonstration {i} ({demo.demonstrator}) is of the {demo.body.name} body; "
                              f"{ENV_ID} simulates the Lego robot only")
     lapse_of = _checked_lapses(lapses, {d.demonstrator for d in demonstrations})
     exists = dataset_id in minari.list_local_datasets()
@@ -200,7 +200,7 @@ def to_minari(demonstrations: Sequence[Demonstration], dataset_id: str, *, actio
                                      "polymimic_labels": labels if actions == "recognizer" else "commands",
                                      "step_frames": step_frames})
     dataset.storage.update_episode_metadata(
-        [{"demonstrator": d.demonstrator, "body": d.body, "lapse": lapse_of.get(d.demonstrator, 0.0),
+        [{"demonstrator": d.demonstrator, "body": d.body.name, "lapse": lapse_of.get(d.demonstrator, 0.0),
           "configuration": d.configuration, "episode_seed": str(d.seed), "outcome": d.outcome}
          for d in demonstrations],
         range(len(demonstrations)))

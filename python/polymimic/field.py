@@ -26,7 +26,7 @@ import numpy as np
 
 from polymimic import _native
 from polymimic._arguments import integer, probability
-from polymimic.bodies import WheeledBody, body_name, native_body
+from polymimic.bodies import Body, BodySpec, WheeledBody, as_body
 from polymimic.field_config import check_config as check_config
 from polymimic.field_config import default_config as default_config
 from polymimic.field_config import native_field_config
@@ -81,19 +81,19 @@ BODY_NAMES = ("lego", "tiny", "humanoid")
 """The bodies of the simulated field; the small field is the ``tiny`` body's."""
 
 
-@dataclasses.dataclass(frozen=True, eq=False)
+@dataclasses.dataclass(frozen=True, eq=False, init=False)
 class Demonstration:
     """One recorded attempt at a penalty kick.
 
-    ``body`` is the demonstrator's body's name (one of :data:`BODY_NAMES`, or a
-    :class:`polymimic.bodies.WheeledBody`'s); left empty, it is the body :func:`body_of` knows
-    for ``demonstrator``, so a demonstrator of another name (a crowd's member, your own) names
-    its body.
+    ``body`` is the demonstrator's :class:`polymimic.Body`, given as one, as a built-in body's
+    name (one of :data:`BODY_NAMES`) or as a :class:`polymimic.bodies.WheeledBody`; left empty,
+    it is the body :func:`body_of` knows for ``demonstrator``, so a demonstrator of another name
+    (a crowd's member, your own) names its body.
 
     >>> import numpy as np
     >>> frames = np.zeros(2, dtype=FRAME_DTYPE)
     >>> Demonstration(frames, "goal", "tiny", 1, 0).body
-    'tiny'
+    Body('tiny')
     >>> Demonstration(frames, "goal", "tiny_03", 1, 0, body="tiny").demonstrator
     'tiny_03'
     >>> Demonstration(frames, "goal", "alice", 1, 0)
@@ -107,17 +107,19 @@ class Demonstration:
     demonstrator: str
     configuration: int
     seed: int
-    body: str = ""
+    body: Body
 
-    def __post_init__(self) -> None:
-        if self.body == "":
-            if self.demonstrator not in BODIES:
-                raise ValueError(f"unknown demonstrator {self.demonstrator!r}: give its body (one of "
+    def __init__(self, frames: np.ndarray, outcome: str, demonstrator: str, configuration: int, seed: int,
+                 body: BodySpec = "") -> None:
+        if body == "":
+            if demonstrator not in BODIES:
+                raise ValueError(f"unknown demonstrator {demonstrator!r}: give its body (one of "
                                  f"{', '.join(BODY_NAMES)}) with body=")
-            object.__setattr__(self, "body", BODIES[self.demonstrator])
-        elif not isinstance(self.body, str) or not self.body.isidentifier():
-            raise ValueError(f"demonstration of {self.demonstrator!r} has body {self.body!r}; expected a body's name "
-                             f"(one of {', '.join(BODY_NAMES)} or a polymimic.bodies.WheeledBody's)")
+            body = BODIES[demonstrator]
+        for name, value in (("frames", frames), ("outcome", outcome), ("demonstrator", demonstrator),
+                            ("configuration", configuration), ("seed", seed),
+                            ("body", as_body(body, what=f"demonstration of {demonstrator!r}"))):
+            object.__setattr__(self, name, value)
 
     def __repr__(self) -> str:
         return (f"Demonstration({self.demonstrator}, configuration={self.configuration}, "
@@ -131,7 +133,7 @@ class Demonstration:
                    for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm", "ball_y_mm"))
 
 
-@dataclasses.dataclass(frozen=True, eq=False)
+@dataclasses.dataclass(frozen=True, eq=False, init=False)
 class PrimitiveSequence:
     """One second of an imitator executing one primitive, as the tracker saw it, and the body
     that executed it.
@@ -144,13 +146,19 @@ class PrimitiveSequence:
     frames : numpy structured array of shape (30,)
         The tracker's frames in :data:`FRAME_DTYPE`: ``t_s``, ``robot_x_mm``, ``robot_y_mm``,
         ``robot_theta_rad``, ``ball_x_mm``, ``ball_y_mm`` and ``command``.
-    body : str
-        The body that executed it.
+    body : polymimic.Body
+        The body that executed it (given as a Body, a built-in body's name or a
+        :class:`polymimic.bodies.WheeledBody`; the Lego robot by default).
     """
 
     primitive: str
     frames: np.ndarray
-    body: str = "lego"
+    body: Body
+
+    def __init__(self, primitive: str, frames: np.ndarray, body: BodySpec = "lego") -> None:
+        object.__setattr__(self, "primitive", primitive)
+        object.__setattr__(self, "frames", frames)
+        object.__setattr__(self, "body", as_body(body, what=f"sequence of {primitive!r}"))
 
 
 def body_of(demonstrator: str) -> str:
@@ -168,7 +176,7 @@ def body_of(demonstrator: str) -> str:
 
 
 def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0, lapse: float = 0.0,
-           config: dict[str, Any] | str | None = None, body: str | WheeledBody | None = None, name: str | None = None,
+           config: dict[str, Any] | str | None = None, body: BodySpec | None = None, name: str | None = None,
            decision_hz: float | None = None, timeout_s: float | None = 10.0) -> list[Demonstration]:
     """``n`` valid demonstrations of ``demonstrator`` from field ``configuration`` (1 or 2).
 
@@ -202,11 +210,11 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
         controller's own demonstrations, bit for bit.
     config : dict or str, optional
         Field parameters laid over the default world (see :func:`default_config`).
-    body : str or polymimic.bodies.WheeledBody, optional
-        Puts a built-in controller on another body (one of :data:`BODY_NAMES` or a
-        :class:`polymimic.bodies.WheeledBody`: Poor's and Tiny's primitives drive any wheeled
-        body, the Expert's wheel speeds one that takes them, the humanoid's only the humanoid);
-        a policy's body, required.
+    body : polymimic.Body, str or polymimic.bodies.WheeledBody, optional
+        Puts a built-in controller on another body (a :class:`polymimic.Body`, one of
+        :data:`BODY_NAMES` or a :class:`polymimic.bodies.WheeledBody`: Poor's and Tiny's
+        primitives drive any wheeled body, the Expert's wheel speeds one that takes them, the
+        humanoid's only the humanoid); a policy's body, required.
     name : str, optional
         The name the demonstrations carry (a built-in's own by default; required for a policy).
     decision_hz : float, optional
@@ -220,7 +228,7 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     -------
     list of Demonstration
         The demonstrations, each with its frames (30 a second), outcome, configuration, seed,
-        demonstrator and body.
+        demonstrator and body (a :class:`polymimic.Body`).
 
     Raises
     ------
@@ -250,7 +258,7 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
     ...     error = math.remainder(bearing - reading.robot_theta_rad, math.tau)
     ...     return "forward" if abs(error) < 0.3 else ("left" if error > 0 else "right")
     >>> mine = record(chase, body="lego", name="chaser", configuration=1, n=2, seed=3, decision_hz=10)
-    >>> [(d.demonstrator, d.body) for d in mine]
+    >>> [(d.demonstrator, d.body.name) for d in mine]
     [('chaser', 'lego'), ('chaser', 'lego')]
     """
     configuration, n = integer("configuration", configuration, 1, 2), integer("n", n, 1)
@@ -266,25 +274,25 @@ def record(demonstrator: str | Any, *, configuration: int, n: int, seed: int = 0
                          f"or a Python policy")
     if decision_hz is not None:
         raise ValueError(f"decision_hz= is for a Python policy; the built-in {demonstrator!r} decides every frame")
-    if body is not None:
-        _check_body(body)
+    driven = None if body is None else _checked_body(body)
     raw = _native.record_demonstrations(demonstrator, configuration=configuration, n=n, seed=seed, lapse=lapse,
-                                        config=native_field_config(config),
-                                        body=None if body is None else native_body(body))
+                                        config=native_field_config(config), body=driven)
     who = demonstrator if name is None else _own_name(name, demonstrator)
-    return _demonstrations(raw, who, "" if body is None else body_name(body))
+    return _demonstrations(raw, who, BODIES[demonstrator] if driven is None else driven)
 
 
-def _demonstrations(raw: list[dict[str, Any]], demonstrator: str, body: str) -> list[Demonstration]:
+def _demonstrations(raw: list[dict[str, Any]], demonstrator: str, body: BodySpec) -> list[Demonstration]:
     """What the native recorders return, as demonstrations of ``demonstrator`` on ``body``."""
+    body = as_body(body)
     return [Demonstration(frames=as_frames(d["frames"]), outcome=d["outcome"], demonstrator=demonstrator,
                           configuration=d["configuration"], seed=d["seed"], body=body) for d in raw]
 
 
-def _check_body(body: Any) -> None:
-    if not isinstance(body, WheeledBody) and body not in BODY_NAMES:
-        raise ValueError(f"body must be one of {', '.join(BODY_NAMES)} or a polymimic.bodies.WheeledBody; "
-                         f"got {body!r}")
+def _checked_body(body: Any) -> Body:
+    if not isinstance(body, (Body, WheeledBody)) and body not in BODY_NAMES:
+        raise ValueError(f"body must be one of {', '.join(BODY_NAMES)} (built in), a polymimic.Body or a "
+                         f"polymimic.bodies.WheeledBody; got {body!r}")
+    return as_body(body)
 
 
 def _own_name(name: Any, demonstrator: str) -> str:
@@ -298,42 +306,43 @@ def _own_name(name: Any, demonstrator: str) -> str:
 
 
 def _record_imitator(policy: _native.ImitatorPolicy, *, configuration: int, n: int, seed: int, lapse: float,
-                     config: dict[str, Any] | str | None, body: str | WheeledBody | None, name: str | None,
+                     config: dict[str, Any] | str | None, body: BodySpec | None, name: str | None,
                      decision_hz: float | None) -> list[Demonstration]:
     """A trained imitator's attempts, recorded in Rust as a demonstrator's (its own body)."""
     if lapse != 0.0:
         raise ValueError("lapse= is for the built-in demonstrators; an imitator plays as it learned to")
     if decision_hz is not None:
         raise ValueError("decision_hz= is for a Python policy; an imitator holds each primitive for a second")
-    if body is not None and body_name(body) != policy.body:
-        raise ValueError(f"body={body_name(body)!r}, but the imitator drives the {policy.body!r} body; leave body= out")
+    if body is not None and as_body(body) != policy.body:
+        raise ValueError(f"body={as_body(body).name!r}, but the imitator drives the {policy.body.name!r} body; leave "
+                         f"body= out")
     who = "imitator" if name is None else _own_name(name, "imitator")
     raw = policy.record(configuration=configuration, n=n, seed=seed, field_config=native_field_config(config))
     return _demonstrations(raw, who, policy.body)
 
 
 def _record_policy(policy: Any, *, configuration: int, n: int, seed: int, lapse: float,
-                   config: dict[str, Any] | str | None, body: str | WheeledBody | None, name: str | None,
+                   config: dict[str, Any] | str | None, body: BodySpec | None, name: str | None,
                    decision_hz: float | None, timeout_s: float | None) -> list[Demonstration]:
     parts = policy_parts(policy, decision_hz=decision_hz, name=name, reserved=tuple(BODIES))
     if body is None:
         raise ValueError(f"a Python demonstrator needs its body: body= one of {', '.join(BODY_NAMES)} or a "
                          f"polymimic.bodies.WheeledBody")
-    _check_body(body)
+    driven = _checked_body(body)
     if lapse != 0.0:
         raise ValueError("lapse= is for the built-in demonstrators; a Python policy lapses as it is written to")
     if timeout_s is not None and (isinstance(timeout_s, bool) or not isinstance(timeout_s, numbers.Real)):
         raise TypeError(f"timeout_s must be a number of seconds or None, got {timeout_s!r}")
-    raw = _native.record_python_policy(parts.act, parts.reset, name=parts.name, body=native_body(body),
+    raw = _native.record_python_policy(parts.act, parts.reset, name=parts.name, body=driven,
                                        configuration=configuration,
                                        n=n, seed=seed, decision_hz=parts.decision_hz,
                                        timeout_s=None if timeout_s is None else float(timeout_s),
                                        config=native_field_config(config))
-    return _demonstrations(raw, parts.name, body_name(body))
+    return _demonstrations(raw, parts.name, driven)
 
 
 def self_observation(n_per_primitive: int, *, seed: int = 0, config: dict[str, Any] | str | None = None,
-                     body: str | WheeledBody = "lego",
+                     body: BodySpec = "lego",
                      primitives: Literal["wheeled", "own"] = "wheeled") -> list[PrimitiveSequence]:
     """An imitator alone on its body's field executing random one-second primitives: exactly
     ``n_per_primitive`` valid sequences of each of forward, backward, left, right and stop.
@@ -356,7 +365,7 @@ def self_observation(n_per_primitive: int, *, seed: int = 0, config: dict[str, A
         Any integer in ``[0, 2**64)``.
     config : dict or str, optional
         Field parameters laid over the default world (see :func:`default_config`).
-    body : str or polymimic.bodies.WheeledBody
+    body : polymimic.Body, str or polymimic.bodies.WheeledBody
         The imitator's body.
     primitives : {"wheeled", "own"}
         The wheeled five, or the body's own set.
@@ -369,20 +378,20 @@ def self_observation(n_per_primitive: int, *, seed: int = 0, config: dict[str, A
     Examples
     --------
     >>> sequences = self_observation(1, seed=0, body="tiny")
-    >>> sorted(s.primitive for s in sequences), sequences[0].body
+    >>> sorted(s.primitive for s in sequences), sequences[0].body.name
     (['backward', 'forward', 'left', 'right', 'stop'], 'tiny')
     >>> own = self_observation(1, seed=0, body="humanoid", primitives="own")
     >>> sorted(s.primitive for s in own)
     ['backward', 'forward', 'kick', 'left', 'right', 'sidestep_left', 'sidestep_right', 'stop']
     """
-    _check_body(body)
+    driven = _checked_body(body)
     if primitives not in ("wheeled", "own"):
         raise ValueError(f"primitives must be 'wheeled' or 'own', got {primitives!r}")
     frames, primitives_run = _native.record_self_observation(integer("n_per_primitive", n_per_primitive, 1),
                                                              seed=integer("seed", seed, 0, 2**64 - 1),
-                                                             config=native_field_config(config), body=native_body(body),
+                                                             config=native_field_config(config), body=driven,
                                                              primitives=primitives)
-    return [PrimitiveSequence(primitive=p, frames=as_frames(f), body=body_name(body))
+    return [PrimitiveSequence(primitive=p, frames=as_frames(f), body=driven)
             for f, p in zip(frames, primitives_run)]
 
 
@@ -412,14 +421,14 @@ def command_table() -> list[dict[str, Any]]:
     return list(_native.commands())
 
 
-def primitive_command(primitive: str, body: str | WheeledBody = "lego") -> str:
+def primitive_command(primitive: str, body: BodySpec = "lego") -> str:
     """The name of the command that has ``body`` execute ``primitive``: the primitive itself on
     a wheeled body, its walking, turning or waiting equivalent on the humanoid.
 
     >>> primitive_command("left"), primitive_command("left", "humanoid"), primitive_command("stop", "humanoid")
     ('left', 'Turn Left', 'Wait')
     """
-    return _native.primitive_command(primitive, native_body(body))
+    return _native.primitive_command(primitive, as_body(body))
 
 
 def command_primitives() -> np.ndarray:

@@ -60,7 +60,7 @@ from polymimic._atomic import atomic_path
 from polymimic._native import ModelFileError, PrimitiveRecognizer, SegmentedDemonstrations, TrialResult
 from polymimic._segments_parquet import read_segments, write_segments
 from polymimic._toml import dumps, loads, write_table
-from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, bodies_from_tables
+from polymimic.bodies import THESIS_BODY_FIELDS, Body, WheeledBody, bodies_from_tables
 
 __all__ = ["CONTROLS", "FORMAT", "FORMAT_VERSION", "PolicyInputs", "read_policy_file", "write_policy_file"]
 
@@ -84,7 +84,7 @@ _WRITTEN_AT = (1980, 1, 1, 0, 0, 0)
 @dataclasses.dataclass(frozen=True)
 class PolicyInputs:
     """What an :class:`~polymimic.ImitatorPolicy` is made from, as its file keeps it: the
-    constructor's arguments, ``body`` a thesis body's name or a body of your own,
+    constructor's arguments, ``body`` the :class:`polymimic.Body` it drives,
     ``demonstrations`` (segmented) only for the improved control, and ``practice`` (its own
     attempts, segmented) only for a policy that practised."""
 
@@ -92,7 +92,7 @@ class PolicyInputs:
     recognizer: PrimitiveRecognizer
     config: _native.LearningConfig
     control: str
-    body: str | WheeledBody
+    body: Body
     demonstrations: SegmentedDemonstrations | None = None
     practice: SegmentedDemonstrations | None = None
     practice_weight: float = 1.0
@@ -103,9 +103,9 @@ class PolicyInputs:
 
 def write_policy_file(path: str | os.PathLike[str], inputs: PolicyInputs) -> None:
     """Write ``inputs`` to ``path`` as one policy file, atomically."""
-    body_name = inputs.body.name if isinstance(inputs.body, WheeledBody) else inputs.body
+    body = inputs.body
     header = {"format": FORMAT, "version": FORMAT_VERSION, "writer": f"polymimic {_native.__version__}",
-              "control": inputs.control, "body": body_name}
+              "control": inputs.control, "body": body.name}
     if inputs.practice is not None:
         header["practice_weight"] = inputs.practice_weight
         if inputs.practice_refines is not None:
@@ -114,9 +114,9 @@ def write_policy_file(path: str | os.PathLike[str], inputs: PolicyInputs) -> Non
     parts: dict[str, str | bytes] = {HEADER: json.dumps(header, indent=2) + "\n", TRIAL: inputs.trial.to_json(),
                                      RECOGNIZER: inputs.recognizer.__reduce__()[1][0],
                                      LEARNING: dumps(inputs.config.to_dict())}
-    if isinstance(inputs.body, WheeledBody):
+    if body.kind == "wheeled" and (description := body.description) is not None:
         lines: list[str] = []
-        write_table(lines, f"bodies.{body_name}", inputs.body.to_table(), {})
+        write_table(lines, f"bodies.{body.name}", description.to_table(), {})
         parts[BODY] = "\n".join(lines)
     for name, batch in ((DEMONSTRATIONS, inputs.demonstrations), (PRACTICE, inputs.practice)):
         if batch is not None:
@@ -152,9 +152,8 @@ def read_policy_file(path: str | os.PathLike[str]) -> PolicyInputs:
         trial = _checked(where, TRIAL, lambda: TrialResult.from_json(part(TRIAL)))
         recognizer = _checked(where, RECOGNIZER, lambda: PrimitiveRecognizer._from_json(part(RECOGNIZER)))
         config = _checked(where, LEARNING, lambda: _native.LearningConfig(**loads(part(LEARNING))))
-        body: str | WheeledBody = body_name
-        if body_name not in THESIS_BODY_FIELDS:
-            body = _checked(where, BODY, lambda: _body(loads(part(BODY)), body_name))
+        body = (Body(body_name) if body_name in THESIS_BODY_FIELDS
+                else _checked(where, BODY, lambda: Body(_body(loads(part(BODY)), body_name))))
         demonstrations = practice = None
         if control == "improved":
             demonstrations = read_segments(io.BytesIO(_part(archive, DEMONSTRATIONS, where)),

@@ -26,7 +26,7 @@ from polymimic import _native
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelFileError, ModelResult, SegmentedDemonstrations, TrialResult
 from polymimic._toml import dumps, loads
-from polymimic.bodies import WheeledBody, as_body, body_name, resolve
+from polymimic.bodies import BodySpec, as_body
 from polymimic.evaluation import Evaluation, Plays, attempts_as_demonstrations, evaluate, net_goals, spare_attempts
 from polymimic.field import Demonstration, record
 from polymimic.field_config import native_field_config
@@ -169,7 +169,7 @@ def segmented(demonstrations: Sequence[Demonstration], recognizer: _native.Primi
     segments = recognizer.segment_many([d.frames for d in demonstrations], **segmenter)
     return SegmentedDemonstrations(
         [{"demonstrator": d.demonstrator, "outcome": d.outcome, "segments": s,
-          "body": as_body(d.body)}
+          "body": d.body}
          for d, s in zip(demonstrations, segments)],
         frame_counts=[len(d.frames) for d in demonstrations])
 
@@ -192,7 +192,7 @@ def as_segmented(demonstrations: Demonstrations, recognizer: _native.PrimitiveRe
 
 def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRecognizer, ordering: Sequence[str],
               config: LearningConfig | None = None, phase_one: str = "by-model", seed: int = 0,
-              body: str | WheeledBody = "lego") -> TrialResult:
+              body: BodySpec = "lego") -> TrialResult:
     """One learning trial: phase 1 (each demonstrator's model learns its own demonstrations;
     ``phase_one="interleaved"`` mixes them at random), phase 2 (every demonstration, in random
     order, to every demonstrator's model and then to the imitator's), and the final pruning.
@@ -219,7 +219,7 @@ def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRe
         Whether phase one shows each model its demonstrations in turn, or all of them mixed.
     seed : int
         The trial's seed, in ``[0, 2**64)``: the trial depends on it alone.
-    body : str or polymimic.bodies.WheeledBody
+    body : polymimic.Body, str or polymimic.bodies.WheeledBody
         The imitator's body, whose setting the trial learns in.
 
     Returns
@@ -237,12 +237,13 @@ def run_trial(demonstrations: Demonstrations, *, recognizer: _native.PrimitiveRe
     if len(demonstrations) == 0:
         raise ValueError("no demonstrations: a trial needs at least one")
     return _native.learning_trial(as_segmented(demonstrations, recognizer), list(ordering), recognizer,
-                                  config=config, phase_one=phase_one, seed=seed, body=resolve(body))
+                                  config=config, phase_one=phase_one, seed=seed, body=as_body(body))
 
 
 class ImitatorPolicy(_native.ImitatorPolicy):
-    """The imitator's final model driving ``body`` (by default the thesis's Lego robot; any
-    built-in body's name or a :class:`polymimic.bodies.WheeledBody`) on that body's field.
+    """The imitator's final model driving ``body`` (by default the thesis's Lego robot; a
+    :class:`polymimic.Body`, any built-in body's name or a :class:`polymimic.bodies.WheeledBody`)
+    on that body's field; the policy's ``body`` is that :class:`polymimic.Body`.
 
     ``control="thesis"`` is the thesis's rule (§3.4): behaviours whose preconditions hold
     (else all) predict their outcome with their own ball statistics, and the best by the
@@ -282,7 +283,7 @@ class ImitatorPolicy(_native.ImitatorPolicy):
     >>> path = pathlib.Path(tempfile.mkdtemp()) / "imitator.zip"
     >>> policy.save(path)
     >>> again = ImitatorPolicy.load(path)
-    >>> again.control, again.body
+    >>> again.control, again.body.name
     ('improved', 'lego')
     >>> played = [evaluate(p, attempts_per_configuration=1, seed=3).attempts for p in (policy, again)]
     >>> all(a.frames.tobytes() == b.frames.tobytes() for a, b in zip(*played))
@@ -296,19 +297,19 @@ class ImitatorPolicy(_native.ImitatorPolicy):
     def __new__(cls, trial: TrialResult, *, recognizer: _native.PrimitiveRecognizer,
                 config: LearningConfig | None = None, control: str = "thesis",
                 demonstrations: Demonstrations | None = None,
-                body: str | WheeledBody = "lego", practice: SegmentedDemonstrations | None = None,
+                body: BodySpec = "lego", practice: SegmentedDemonstrations | None = None,
                 practice_weight: float = 1.0, refines: Sequence[str] | None = None) -> ImitatorPolicy:
         batch = None
         if demonstrations is not None and control == "improved":
             batch = as_segmented(demonstrations, recognizer)
         if practice is not None and control != "improved":
             raise ValueError(f"practice refines the improved control's world model; control={control!r} has none")
-        resolved = resolve(body)
+        driven = as_body(body)
         policy = super().__new__(cls, trial, recognizer=recognizer, config=config, control=control,
-                                 demonstrations=batch, body=resolved, practice=practice,
+                                 demonstrations=batch, body=driven, practice=practice,
                                  practice_weight=practice_weight, refines=None if refines is None else list(refines))
         policy._made_from = PolicyInputs(trial=trial, recognizer=recognizer, config=config or LearningConfig(),
-                                         control=control, body=resolved, demonstrations=batch, practice=practice,
+                                         control=control, body=driven, demonstrations=batch, practice=practice,
                                          practice_weight=float(practice_weight),
                                          practice_refines=None if refines is None else tuple(refines))
         policy._players = []
@@ -392,7 +393,7 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
                          recorded: Mapping[str, Sequence[Demonstration]] | None = None,
                          field_config: dict[str, Any] | str | None = None,
                          segmenter: dict[str, Any] | None = None,
-                         body: str | WheeledBody = "lego") -> tuple[list[Demonstration], TrialResult]:
+                         body: BodySpec = "lego") -> tuple[list[Demonstration], TrialResult]:
     """The thesis's Average demonstrator (§4.4.2): an imitator trained in the heterogeneous
     experiment (Expert, Tiny, Humanoid; ordering RCB) and driven by the thesis's control rule.
 
@@ -427,5 +428,5 @@ def average_demonstrator(recognizer: _native.PrimitiveRecognizer, *, n: int = 25
     trial, raw = _native.average_demonstrator(
         batch, recognizer, ordering=ordering, poor_net_goals=net_goals(recorded["poor"]),
         expert_net_goals=net_goals(recorded["expert"]), per_configuration=n, first_seed=seed, max_trials=max_trials,
-        config=config, field_config=native_field_config(field_config), body=resolve(body))
-    return attempts_as_demonstrations(raw, "average", body=body_name(body)), trial
+        config=config, field_config=native_field_config(field_config), body=as_body(body))
+    return attempts_as_demonstrations(raw, "average", body=body), trial

@@ -30,7 +30,7 @@ import numpy as np
 
 from polymimic._atomic import atomic_path
 from polymimic._drawn_field import Scene, draw_field, scene_of
-from polymimic.bodies import WheeledBody
+from polymimic.bodies import BodySpec
 from polymimic.field import Demonstration
 
 if TYPE_CHECKING:
@@ -51,7 +51,7 @@ _BALL_COLOUR = "tab:orange"
 
 
 def plot_demonstration(demo: Demonstration, *, ax: Axes | None = None,
-                       path: str | os.PathLike[str] | None = None, body: WheeledBody | None = None) -> Figure:
+                       path: str | os.PathLike[str] | None = None) -> Figure:
     """Draw a demonstration on its field: the robot's path coloured by time, its heading every
     second, the ball's path, and where both started (hollow) and ended (filled).
 
@@ -66,9 +66,6 @@ def plot_demonstration(demo: Demonstration, *, ax: Axes | None = None,
     path : str or path-like, optional
         Also save the figure there (format from the extension, e.g. ``.png``, ``.svg``),
         atomically.
-    body : polymimic.bodies.WheeledBody, optional
-        The demonstration's body, for one described in another process (a file's demonstrations);
-        its name must be ``demo.body``. Without it the body is looked up by that name.
 
     Returns
     -------
@@ -85,7 +82,7 @@ def plot_demonstration(demo: Demonstration, *, ax: Axes | None = None,
     """
     from matplotlib.collections import LineCollection
 
-    scene = _scene(demo, body)
+    scene = _scene(demo)
     frames = demo.frames
     figure, ax = _figure_and_axes(ax, (7.5, 5.6))
     draw_field(ax, scene)
@@ -157,7 +154,7 @@ def animate_demonstration(demo: Demonstration, path: str | os.PathLike[str], *, 
     from matplotlib.figure import Figure
     from matplotlib.patches import Circle
 
-    scene = _scene(demo, None)
+    scene = _scene(demo)
     frames = demo.frames
     aspect = (1.1 * scene.field_width_mm) / (1.2 * scene.field_length_mm)
     figure = Figure(figsize=(6.0, 6.0 * aspect + 0.7), layout="constrained")
@@ -189,7 +186,7 @@ def animate_demonstration(demo: Demonstration, path: str | os.PathLike[str], *, 
             writer.grab_frame()
 
 
-def state_image(body: str | WheeledBody, robot: tuple[float, float, float], ball: tuple[float, float] | None,
+def state_image(body: BodySpec, robot: tuple[float, float, float], ball: tuple[float, float] | None,
                  title: str) -> np.ndarray:
     """An ``(H, W, 3)`` uint8 picture of ``body``'s field with the robot at pose ``robot`` and the ball."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -219,16 +216,12 @@ def _drawn_frames(n_frames: int, stride: int) -> list[int]:
     return drawn if drawn[-1] == n_frames - 1 else [*drawn, n_frames - 1]
 
 
-def _scene(demo: Demonstration, body: WheeledBody | None) -> Scene:
+def _scene(demo: Demonstration) -> Scene:
     if not isinstance(demo, Demonstration):
         raise TypeError(f"expected a Demonstration, got {type(demo).__name__}")
     if len(demo.frames) == 0:
         raise ValueError("the demonstration has no frames to draw")
-    if body is None:
-        return scene_of(demo.body)
-    if not isinstance(body, WheeledBody) or body.name != demo.body:
-        raise ValueError(f"body must be the demonstration's body, a WheeledBody named {demo.body!r}; got {body!r}")
-    return scene_of(body)
+    return scene_of(demo.body)
 
 
 def _robot_outline(scene: Scene, x_mm: float, y_mm: float, theta_rad: float) -> np.ndarray:

@@ -28,7 +28,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from polymimic._native import EpisodeBatch
-from polymimic.bodies import WheeledBody, as_body, body_name, resolve
+from polymimic.bodies import BodySpec, as_body
 from polymimic.env import _check_configuration, observation_space
 from polymimic.field import OUTCOMES, PRIMITIVE_SETS
 from polymimic.field_config import native_field_config
@@ -63,7 +63,7 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
         "autoreset_mode": AutoresetMode.NEXT_STEP if gymnasium is not None else None, "render_modes": []}
 
     def __init__(self, num_envs: int = 8, *, configuration: int | str = "random", frames_per_action: int = 30,
-                 config: dict[str, Any] | str | None = None, body: str | WheeledBody = "lego") -> None:
+                 config: dict[str, Any] | str | None = None, body: BodySpec = "lego") -> None:
         if gymnasium is None:
             raise ModuleNotFoundError("PenaltyKickVectorEnv needs gymnasium: pip install \"polymimic[gym]\"")
         if not isinstance(num_envs, (int, np.integer)) or isinstance(num_envs, bool) or num_envs < 1:
@@ -71,13 +71,13 @@ class PenaltyKickVectorEnv(_Base):  # type: ignore[misc]
         _check_configuration(configuration)
         self.num_envs = int(num_envs)
         self.configuration = configuration
+        self.body = as_body(body)
         self._batch = EpisodeBatch(self.num_envs, frames_per_action=frames_per_action,
-                                   config=native_field_config(config), body=resolve(body))
-        self.body = body_name(body)
+                                   config=native_field_config(config), body=self.body)
         self.frames_per_action = int(frames_per_action)
-        field = as_body(body).field
+        field = self.body.field
         self.single_observation_space = observation_space((field.length_mm, field.width_mm))
-        self.primitives = PRIMITIVE_SETS["humanoid" if self.body == "humanoid" else "wheeled"]
+        self.primitives = PRIMITIVE_SETS[self.body.primitive_set]
         self.single_action_space = gymnasium.spaces.Discrete(len(self.primitives))
         self.observation_space = batch_space(self.single_observation_space, self.num_envs)
         self.action_space = batch_space(self.single_action_space, self.num_envs)

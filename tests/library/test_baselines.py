@@ -346,6 +346,22 @@ def test_a_policy_saves_and_loads_back_identically(tmp_path, forward_demos):
         assert loaded.frames_per_action == policy.frames_per_action
 
 
+def test_a_policy_saved_with_its_bodys_name_loads_with_that_body(tmp_path):
+    from polymimic.baselines.policy_file import write_policy_file
+
+    for name, loads in (("tiny", True), ("rover", False)):
+        policy = random_primitive.fit(seed=9)
+        policy.body = name  # as a policy kept its body before bodies were values
+        path = tmp_path / f"{name}.pmp"
+        write_policy_file(path, {"kind": "random", "method": "random", "seed": 9, "body": name,
+                                 "frames_per_action": 30}, policy)
+        if loads:
+            assert baselines.load_policy(path).body == polymimic.Body("tiny")
+        else:
+            with pytest.raises(polymimic.ModelFileError, match="names its body 'rover', which is not built in"):
+                baselines.load_policy(path)
+
+
 @pytest.mark.parametrize("damage", ["truncate", "flip", "header", "empty"])
 def test_a_damaged_policy_file_is_refused_by_name(tmp_path, forward_demos, damage):
     path = tmp_path / "policy.pmp"

@@ -12,7 +12,7 @@ import pytest
 import polymimic
 from polymimic import record
 from polymimic._toml import loads
-from polymimic.bodies import THESIS_BODIES, Slip, WheeledBody, as_body, bodies_from_tables
+from polymimic.bodies import THESIS_BODIES, Slip, WheeledBody, as_body, bodies_by_name, bodies_from_tables
 from polymimic.datasets import load_demonstrations, save_demonstrations
 from polymimic.field import check_config
 
@@ -27,7 +27,7 @@ def test_the_thesis_bodies_as_data_are_those_bodies_bit_for_bit():
         theirs = record(demonstrator, configuration=2, n=2, seed=3)
         assert [d.seed for d in ours] == [d.seed for d in theirs]
         for a, b in zip(ours, theirs):
-            assert a.body == f"{name}_as_data" and b.body == name
+            assert a.body.name == f"{name}_as_data" and b.body.name == name
             assert a.frames.tobytes() == b.frames.tobytes()
 
 
@@ -73,10 +73,11 @@ def test_python_policies_and_built_in_controllers_drive_a_new_body(tmp_path):
     rover = WheeledBody("rover_test", length_mm=200, width_mm=180, wheel_base_mm=160, top_wheel_speed_mm_s=150)
     mine = record(lambda r: "forward", body=rover, name="straight", configuration=1, n=2, seed=1)
     poor = record("poor", body=rover, name="poor_rover", configuration=2, n=2, seed=1)
-    assert {(d.demonstrator, d.body) for d in mine + poor} == {("straight", "rover_test"), ("poor_rover", "rover_test")}
+    assert {(d.demonstrator, d.body.name) for d in mine + poor} == {("straight", "rover_test"),
+                                                                    ("poor_rover", "rover_test")}
     save_demonstrations(mine + poor, tmp_path / "rover.parquet")
-    assert [d.body for d in load_demonstrations(tmp_path / "rover.parquet")] == ["rover_test"] * 4
-    assert as_body("rover_test").field == as_body("lego").field
+    assert [d.body for d in load_demonstrations(tmp_path / "rover.parquet", bodies=[rover])] == [as_body(rover)] * 4
+    assert as_body(rover).field == as_body("lego").field
     with pytest.raises(ValueError, match="the expert controller cannot drive the rover_test body"):
         record("expert", body=rover, configuration=1, n=1)
 
@@ -156,12 +157,13 @@ def test_bad_body_tables_are_refused_naming_the_table_and_key(table, message):
         WheeledBody.from_table("bad", {**base, **table})
 
 
-def test_names_are_one_body_each_and_the_thesis_names_are_the_thesis_bodies():
-    WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
-    WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)  # the same: fine
-    with pytest.raises(ValueError, match="body 'twin' is already described with other constants"):
-        WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50, field="small")
-    assert as_body("twin").field == as_body("lego").field, "the first description stands"
+def test_a_name_is_no_body_and_the_thesis_names_are_the_thesis_bodies():
+    twin = WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50)
+    small = WheeledBody("twin", length_mm=50, width_mm=50, wheel_base_mm=40, top_wheel_speed_mm_s=50, field="small")
+    assert (as_body(twin).field.length_mm, as_body(small).field.length_mm) == (1020.0, 560.0), "each is itself"
+    with pytest.raises(ValueError, match="bodies: two bodies are named 'twin', with other constants"):
+        bodies_by_name([twin, small])
+    assert bodies_by_name([twin, dataclasses.replace(twin), polymimic.Body(twin)]) == {"twin": as_body(twin)}
     assert dataclasses.replace(THESIS_BODIES["lego"]) == THESIS_BODIES["lego"]
     with pytest.raises(ValueError, match="body 'lego' is already described with other constants"):
         dataclasses.replace(THESIS_BODIES["lego"], wheel_base_mm=100)
@@ -172,6 +174,8 @@ def test_names_are_one_body_each_and_the_thesis_names_are_the_thesis_bodies():
     with pytest.raises(ValueError, match='unknown body "never_made": the built-in bodies are lego, tiny, humanoid; '
                                          'describe a body of your own'):
         as_body("never_made")
+    with pytest.raises(ValueError, match='unknown body "twin"'):
+        as_body("twin")  # made above, and still only a name
 
 
 def test_a_field_of_ones_own_sets_where_the_goals_are():
@@ -191,7 +195,7 @@ def test_a_field_of_ones_own_sets_where_the_goals_are():
         last = d.frames[-1]
         if d.outcome == "goal":
             assert last["ball_x_mm"] > 750 - 5 and abs(last["ball_y_mm"]) <= 150 + 5
-    assert as_body("wide_field_rover").field == pitch
+    assert as_body(wide).field == pitch
     assert WheeledBody.from_table("wide_field_rover", wide.to_table()) == wide
 
 

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import polymimic
+from polymimic._native import EpisodeBatch
 from polymimic.bodies import THESIS_BODIES, Field, WheeledBody, as_body, onto_field
 from polymimic.learning import SegmentedDemonstrations
 
@@ -95,3 +96,11 @@ def test_a_segmented_demonstration_given_its_body_has_that_bodys_field_and_reach
     with pytest.raises(TypeError, match="demonstration 0: imitating must be True or False, got 'yes'"):
         SegmentedDemonstrations([{"demonstrator": "tiny", "outcome": "goal", "segments": segments,
                                   "body": polymimic.Body("tiny"), "imitating": "yes"}])
+
+
+def test_a_native_body_of_ones_own_hands_back_its_description():
+    batch = EpisodeBatch(1, body=ROVER)  # the vector environment's engine
+    assert batch.body == polymimic.Body(ROVER) and batch.body.name == "rover_value"
+    # Made again from the constants the field holds: the same body, its slip given per primitive.
+    assert polymimic.Body(batch.body.description) == polymimic.Body(ROVER)
+    assert batch.body.description.slip_of("left") == ROVER.slip_of("left")

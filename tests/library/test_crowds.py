@@ -10,6 +10,7 @@ import pytest
 
 import polymimic
 from polymimic import recognition
+from polymimic.bodies import WheeledBody
 from polymimic.crowds import PROFILES, Crowd, Member, controller_skill, member_seed, profile, record_crowd
 from polymimic.field import FRAME_DTYPE, Demonstration
 from polymimic.learning import segmented
@@ -109,25 +110,29 @@ def test_a_crowd_of_lapse_zero_records_its_controllers_own_demonstrations():
     own = polymimic.record("tiny", configuration=1, n=2, seed=member_seed(5, 1))
     mine = [d for d in demos if d.demonstrator == "tiny_01" and d.configuration == 1]
     assert [d.frames.tobytes() for d in mine] == [d.frames.tobytes() for d in own]
-    assert {d.body for d in mine} == {"tiny"}
+    assert {d.body.name for d in mine} == {"tiny"}
 
 
 def test_a_demonstration_of_an_unknown_demonstrator_names_its_body():
     frames = np.zeros(3, dtype=FRAME_DTYPE)
-    assert Demonstration(frames, "goal", "alice", 1, 0, body="tiny").body == "tiny"
+    assert Demonstration(frames, "goal", "alice", 1, 0, body="tiny").body.name == "tiny"
     with pytest.raises(ValueError, match="give its body"):
         Demonstration(frames, "goal", "alice", 1, 0)
-    with pytest.raises(ValueError, match="body 'two wheels'; expected a body's name"):
+    with pytest.raises(ValueError, match="demonstration of 'alice': unknown body \"two wheels\""):
         Demonstration(frames, "goal", "alice", 1, 0, body="two wheels")
-    # Any body's name is taken (a WheeledBody's too); learning asks for the body's field.
-    assert Demonstration(frames, "goal", "alice", 1, 0, body="wheels").body == "wheels"
+    # A body of one's own is given as itself: its name alone says nothing of its field.
+    with pytest.raises(ValueError, match="unknown body \"wheels\": the built-in bodies are lego, tiny, humanoid; "
+                                         "describe a body of your own"):
+        Demonstration(frames, "goal", "alice", 1, 0, body="wheels")
+    wheels = WheeledBody("wheels", length_mm=100, width_mm=100, wheel_base_mm=90, top_wheel_speed_mm_s=100)
+    assert Demonstration(frames, "goal", "alice", 1, 0, body=wheels).body == polymimic.Body(wheels)
 
 
 def test_a_crowds_bodies_survive_a_dataset_round_trip(tmp_path):
     demos = record_crowd(PROFILES["mixed_bodies"], n=1, seed=1)
     polymimic.save_demonstrations(demos, tmp_path / "crowd.parquet")
     again = polymimic.load_demonstrations(tmp_path / "crowd.parquet")
-    assert [(d.demonstrator, d.body) for d in again] == [(d.demonstrator, d.body) for d in demos]
+    assert [(d.demonstrator, d.body.name) for d in again] == [(d.demonstrator, d.body.name) for d in demos]
 
 
 def test_a_version_1_dataset_without_bodies_reads_with_the_known_ones(tmp_path):
@@ -137,7 +142,7 @@ def test_a_version_1_dataset_without_bodies_reads_with_the_known_ones(tmp_path):
     header = json.loads(table.schema.metadata[b"polymimic"])
     header["version"] = 1
     pq.write_table(table.replace_schema_metadata({b"polymimic": json.dumps(header).encode()}), path)
-    assert [d.body for d in polymimic.load_demonstrations(path)] == ["tiny"]
+    assert [d.body.name for d in polymimic.load_demonstrations(path)] == ["tiny"]
 
 
 def test_the_small_field_follows_the_body_not_the_name():

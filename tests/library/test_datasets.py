@@ -2,6 +2,7 @@
 
 import dataclasses
 import json
+import re
 
 import numpy as np
 import pyarrow as pa
@@ -9,6 +10,7 @@ import pyarrow.parquet as pq
 import pytest
 
 import polymimic
+from polymimic.bodies import THESIS_BODIES, WheeledBody
 from polymimic.datasets import (
     load_demonstrations,
     load_self_observation,
@@ -62,14 +64,59 @@ def test_another_bodys_self_observation_keeps_its_body_and_an_older_file_is_the_
     path = tmp_path / "tiny.parquet"
     save_self_observation(tiny, path)
     again = load_self_observation(path)
-    assert [s.body for s in again] == ["tiny"] * 5
+    assert [s.body.name for s in again] == ["tiny"] * 5
     assert all(a.frames.tobytes() == s.frames.tobytes() for a, s in zip(again, tiny))
     # A version-2 file, written before self-observation recorded its body, was always the Lego's.
     table = pq.read_table(path)
     header = json.loads(table.schema.metadata[b"polymimic"])
     older = table.drop(["body"]).replace_schema_metadata({"polymimic": json.dumps({**header, "version": 2})})
     pq.write_table(older, tmp_path / "v2.parquet")
-    assert {s.body for s in load_self_observation(tmp_path / "v2.parquet")} == {"lego"}
+    assert {s.body.name for s in load_self_observation(tmp_path / "v2.parquet")} == {"lego"}
+
+
+ROVER = WheeledBody("rover_on_file", length_mm=200, width_mm=180, wheel_base_mm=160, top_wheel_speed_mm_s=150)
+
+
+def test_a_body_of_ones_own_is_read_as_the_bodies_given(tmp_path):
+    demos = polymimic.record("poor", body=ROVER, configuration=1, n=2, seed=5)
+    sequences = polymimic.self_observation(1, seed=5, body=ROVER)
+    save_demonstrations(demos, tmp_path / "rover.parquet")
+    save_self_observation(sequences, tmp_path / "rover_self.parquet")
+    # The file holds the body's name, as before bodies were values.
+    assert set(pq.read_table(tmp_path / "rover.parquet").column("body").to_pylist()) == {"rover_on_file"}
+    for given in ([ROVER], {"rover_on_file": ROVER}, [polymimic.Body(ROVER)], (ROVER, ROVER)):
+        again = load_demonstrations(tmp_path / "rover.parquet", bodies=given)
+        assert [d.body for d in again] == [polymimic.Body(ROVER)] * 2
+        assert [d.body.field.length_mm for d in again] == [1020.0] * 2
+        assert_same_demonstrations(again, demos)
+    own = load_self_observation(tmp_path / "rover_self.parquet", bodies=[ROVER])
+    assert {s.body.name for s in own} == {"rover_on_file"} and {s.body.kind for s in own} == {"wheeled"}
+
+
+def test_a_body_not_given_is_refused_naming_the_file_and_how_to_give_it(tmp_path):
+    save_demonstrations(polymimic.record("poor", body=ROVER, configuration=1, n=1, seed=5), tmp_path / "rover.parquet")
+    save_self_observation(polymimic.self_observation(1, seed=5, body=ROVER), tmp_path / "rover_self.parquet")
+    for load, path in ((load_demonstrations, tmp_path / "rover.parquet"),
+                       (load_self_observation, tmp_path / "rover_self.parquet")):
+        expected = (rf"^{re.escape(str(path))}: body 'rover_on_file' is not built in \(lego, tiny, humanoid\) and "
+                    r"was not given: pass its description with bodies=")
+        with pytest.raises(ValueError, match=expected):
+            load(path)
+        with pytest.raises(ValueError, match=r"body 'rover_on_file' is not built in .* \(given: tiny\)"):
+            load(path, bodies=[THESIS_BODIES["tiny"]])
+
+
+def test_two_bodies_of_one_name_are_refused(tmp_path):
+    save_demonstrations(polymimic.record("poor", body=ROVER, configuration=1, n=1, seed=5), tmp_path / "rover.parquet")
+    other = dataclasses.replace(ROVER, field="small", length_mm=20, width_mm=20)
+    with pytest.raises(ValueError, match="bodies: two bodies are named 'rover_on_file', with other constants; give "
+                                         "each a name of its own"):
+        load_demonstrations(tmp_path / "rover.parquet", bodies=[ROVER, other])
+    with pytest.raises(ValueError, match="bodies: key 'rover' holds the body named 'rover_on_file'"):
+        load_demonstrations(tmp_path / "rover.parquet", bodies={"rover": ROVER})
+    with pytest.raises(TypeError, match="bodies: expected a polymimic.Body or a polymimic.bodies.WheeledBody, got "
+                                        "'rover_on_file'"):
+        load_demonstrations(tmp_path / "rover.parquet", bodies=["rover_on_file"])
 
 
 def test_self_observation_round_trips_exactly(tmp_path, sequences):

@@ -97,7 +97,7 @@ def test_a_step_is_one_second_of_one_primitive():
 def test_the_imitator_may_be_another_body_on_its_own_field():
     tiny = PenaltyKickEnv(configuration=1, body="tiny")
     start, _ = tiny.reset(seed=1)
-    assert tiny.body == "tiny" and tiny.observation_space.high[0] == pytest.approx(0.75 * 560.0)
+    assert tiny.body.name == "tiny" and tiny.observation_space.high[0] == pytest.approx(0.75 * 560.0)
     assert start[0] == pytest.approx(-560.0 / 6, abs=5.0)  # a sixth of the small field behind the centre
     # The humanoid takes no primitives: forward is its walk forward, the same episode to the bit.
     humanoid = PenaltyKickEnv(configuration=1, body="humanoid")
@@ -109,7 +109,7 @@ def test_the_imitator_may_be_another_body_on_its_own_field():
     assert walked.tolist() == np.array([*episode.observation()["robot"], *episode.observation()["ball"]],
                                        dtype=np.float32).tolist()
     assert walked[0] > stood[0] + 10  # it walked toward the ball
-    with pytest.raises(ValueError, match="unknown body 'tinny'"):
+    with pytest.raises(ValueError, match='unknown body "tinny"'):
         PenaltyKickEnv(body="tinny")
 
 

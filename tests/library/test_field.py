@@ -72,7 +72,7 @@ def _travel_mm(sequence):
 def test_any_body_observes_itself_on_its_own_field(body, half_length_mm):
     sequences = polymimic.self_observation(4, seed=3, body=body)
     assert sorted(s.primitive for s in sequences) == sorted(PRIMITIVES * 4)
-    assert {s.body for s in sequences} == {body}
+    assert {s.body.name for s in sequences} == {body}
     for s in sequences:
         assert (np.abs(s.frames["robot_x_mm"]) < half_length_mm).all()
         # Each frame records the command the body was sent: its own language's on the humanoid.
@@ -87,7 +87,8 @@ def test_any_body_observes_itself_on_its_own_field(body, half_length_mm):
 
 def test_the_lego_is_the_default_imitator_bit_for_bit():
     default, lego = polymimic.self_observation(2, seed=4), polymimic.self_observation(2, seed=4, body="lego")
-    assert all(a.frames.tobytes() == b.frames.tobytes() and a.body == b.body == "lego" for a, b in zip(default, lego))
+    assert all(a.frames.tobytes() == b.frames.tobytes() and a.body.name == b.body.name == "lego"
+               for a, b in zip(default, lego))
     with pytest.raises(ValueError, match="body must be one of lego, tiny, humanoid .*got 'lgeo'"):
         polymimic.self_observation(1, body="lgeo")
 

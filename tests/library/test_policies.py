@@ -116,8 +116,8 @@ def test_recordings_save_and_load_with_their_name_and_body(tmp_path):
     demos = record(chase, body="tiny", name="my_tiny", configuration=1, n=2, seed=1, decision_hz=6)
     save_demonstrations(demos, tmp_path / "mine.parquet")
     back = load_demonstrations(tmp_path / "mine.parquet")
-    assert [(d.demonstrator, d.body, d.seed, d.outcome) for d in back] == \
-        [(d.demonstrator, d.body, d.seed, d.outcome) for d in demos]
+    assert [(d.demonstrator, d.body.name, d.seed, d.outcome) for d in back] == \
+        [(d.demonstrator, d.body.name, d.seed, d.outcome) for d in demos]
 
 
 def test_a_policy_that_raises_surfaces_with_the_attempt_and_time():

@@ -85,7 +85,7 @@ def test_a_tiny_policy_plays_the_same_episodes_once_loaded(tiny, tmp_path, contr
     recognizer, batch, trial = tiny
     policy = learning.ImitatorPolicy(trial, recognizer=recognizer, control=control, demonstrations=batch, body="tiny")
     again = _round_trip(policy, tmp_path / "tiny.zip")
-    assert again.body == "tiny"
+    assert again.body.name == "tiny"
     _assert_same_play(policy, again)
     with zipfile.ZipFile(tmp_path / "tiny.zip") as archive:
         assert "body.toml" not in archive.namelist()  # a thesis body is named, not described
@@ -130,8 +130,9 @@ def test_a_wheeled_body_round_trips(tiny, own_body, tmp_path):
     policy = learning.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=batch,
                                      body=own_body)
     again = _round_trip(policy, tmp_path / "own.zip")
-    assert again.body == "tiny_on_file"
-    assert imitator_file.read_policy_file(tmp_path / "own.zip").body == own_body
+    assert again.body.name == "tiny_on_file" and again.body.description == own_body
+    assert policy.body.description is own_body
+    assert imitator_file.read_policy_file(tmp_path / "own.zip").body.description == own_body
     _assert_same_play(policy, again)
 
 
@@ -142,7 +143,7 @@ def test_a_wheeled_body_loads_in_a_process_that_never_described_it(tiny, own_bod
     digest = ("import hashlib, sys; from polymimic import learning; "
               "p = learning.ImitatorPolicy.load(sys.argv[1]); "
               "a = learning.evaluate(p, attempts_per_configuration=2, seed=11).attempts; "
-              "print(p.body, hashlib.sha256(b''.join(x.frames.tobytes() for x in a)).hexdigest())")
+              "print(p.body.name, hashlib.sha256(b''.join(x.frames.tobytes() for x in a)).hexdigest())")
     out = subprocess.run([sys.executable, "-c", digest, str(tmp_path / "own.zip")], capture_output=True, text=True,
                          check=True, env={**os.environ, "PYTHONWARNINGS": "error"}).stdout.split()
     here = hashlib.sha256(b"".join(x.frames.tobytes() for x in _played(policy).attempts)).hexdigest()

@@ -34,10 +34,10 @@ def test_a_field_in_proportion_is_seen_alike_by_a_body_in_proportion():
 
 def test_ppo_trains_and_plays_the_tiny_on_its_own_field_and_its_file_keeps_the_body(tmp_path):
     policy = ppo.fit(imitator="tiny", **SMALL_PPO)
-    assert policy.body == "tiny"
-    assert policy.model.get_env().envs[0].unwrapped.body == "tiny"
+    assert policy.body.name == "tiny"
+    assert policy.model.get_env().envs[0].unwrapped.body.name == "tiny"
     played = evaluate_policy(policy, attempts_per_configuration=2, seed=3)
-    assert {attempt.body for attempt in played.attempts} == {"tiny"}
+    assert {attempt.body.name for attempt in played.attempts} == {"tiny"}
     # Each attempt starts where the tiny's field puts the robot, a sixth of 560 mm from the centre.
     starts = [abs(float(attempt.frames["robot_x_mm"][0])) for attempt in played.attempts]
     assert np.allclose(starts, TINY_FIELD_LENGTH_MM / 6, atol=2.0), starts
@@ -46,14 +46,14 @@ def test_ppo_trains_and_plays_the_tiny_on_its_own_field_and_its_file_keeps_the_b
     observations = played.attempts[0].frames[["robot_x_mm", "robot_y_mm", "robot_theta_rad", "ball_x_mm",
                                                "ball_y_mm"]]
     observations = np.column_stack([observations[name] for name in observations.dtype.names])
-    assert loaded.body == "tiny"
+    assert loaded.body.name == "tiny"
     assert (loaded.predict(observations) == policy.predict(observations)).all()
 
 
 def test_ppo_drives_the_humanoid():
     policy, curve, played = ppo.learning_curve(imitator="humanoid", eval_every=128,
                                                evaluation=polymimic.Attempts(per_configuration=1), **SMALL_PPO)
-    assert policy.body == "humanoid" and {a.body for a in played.attempts} == {"humanoid"}
+    assert policy.body.name == "humanoid" and {a.body.name for a in played.attempts} == {"humanoid"}
     assert [c.env_steps for c in curve][0] == 0 and all(c.attempts == 2 for c in curve)
 
 
@@ -62,7 +62,7 @@ def test_ppo_bc_clones_the_tiny_controller_for_a_tiny_imitator_as_well_as_bc_doe
     held_out = [d for c in (1, 2) for d in polymimic.record("tiny", configuration=c, n=3, seed=7)]
     cloned = ppo_bc.pretrained(demos, ppo_bc.Pretraining(100, 1e-3), seed=0, imitator="tiny")
     bc = baselines.fit("bc", demos, seed=0, imitator="tiny")
-    assert cloned.body == "tiny"
+    assert cloned.body.name == "tiny"
     ours = ppo_bc.agreement(cloned, held_out, imitator="tiny")
     theirs = ppo_bc.agreement(bc, held_out, imitator="tiny")
     assert ours >= theirs, (ours, theirs)

@@ -115,7 +115,7 @@ def test_a_primitive_is_held_for_a_second_and_a_lost_reading_stands_on_the_last_
 
 def test_an_imitator_demonstrates_and_another_learns_from_it(recognizer, policy):
     shown = polymimic.record(policy, configuration=1, n=2, seed=5)
-    assert [(d.demonstrator, d.body, d.configuration) for d in shown] == [("imitator", "lego", 1)] * 2
+    assert [(d.demonstrator, d.body.name, d.configuration) for d in shown] == [("imitator", "lego", 1)] * 2
     # The same episodes as its player recorded through the Python-policy path.
     again = polymimic.record(policy.player(), configuration=1, n=2, seed=5, body="lego", name="player")
     assert [d.frames.tobytes() for d in shown] == [d.frames.tobytes() for d in again]

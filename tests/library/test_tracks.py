@@ -78,7 +78,7 @@ def test_other_rates_keep_every_frame_and_outcome_within_a_measured_error(sample
                                                                           bound_deg):
     errors, agree = [], 0
     for body in polymimic.field.BODY_NAMES:
-        demos = [d for d in sample if d.body == body]
+        demos = [d for d in sample if d.body.name == body]
         imported = _round_trip(demos, tmp_path / f"{body}.csv", rate_hz, include=())  # episodes cut by the gaps
         assert imported.episodes == len(demos)
         for original, again in zip(demos, imported.demonstrations):
@@ -94,7 +94,7 @@ def test_other_rates_keep_every_frame_and_outcome_within_a_measured_error(sample
 def test_without_the_line_tolerance_jitter_ends_some_episodes_early(sample, tmp_path):
     # Why the tolerance: a ball pushed slowly over the line sits on it, and the tracker's
     # jitter puts a reading past it early, or the final reading back inside.
-    demos = [d for d in sample if d.body == "lego"]
+    demos = [d for d in sample if d.body.name == "lego"]
     write_tracks(demos, tmp_path / "log.csv", include=("episode",))
     strict = import_tracks(tmp_path / "log.csv", demonstrator="x", line_tolerance_mm=0.0).demonstrations
     tolerant = import_tracks(tmp_path / "log.csv", demonstrator="x").demonstrations

@@ -85,7 +85,7 @@ def test_readings_off_the_field_name_the_field_and_how_to_give_another(tmp_path)
                 "a [bodies.<name>] table named by the demonstrator's body = in a run config"):
         assert fix in message
     imported = import_tracks(path, demonstrator="x", body=SSL_BOT)  # on its own field it reads
-    assert len(imported.demonstrations) == 1 and imported.demonstrations[0].body == "ssl_bot_repairs"
+    assert len(imported.demonstrations) == 1 and imported.demonstrations[0].body.name == "ssl_bot_repairs"
 
 
 def test_readings_too_small_for_the_field_name_it_too(tmp_path):

@@ -45,7 +45,7 @@ def test_the_same_as_sync_vector_env_step_by_step_through_autoresets(configurati
 def test_another_body_is_the_same_as_its_single_environments(body):
     n = 3
     ours, theirs = PenaltyKickVectorEnv(n, body=body), _sync(n, body=body)
-    assert ours.body == body and ours.single_observation_space == theirs.single_observation_space
+    assert ours.body.name == body and ours.single_observation_space == theirs.single_observation_space
     a_obs, _ = ours.reset(seed=2)
     b_obs, _ = theirs.reset(seed=2)
     np.testing.assert_array_equal(a_obs, b_obs)

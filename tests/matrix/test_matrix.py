@@ -108,7 +108,7 @@ def test_each_row_learns_from_the_columns_demonstrators():
     assert sets["mixed_bodies"].names[:3] == ("expert_00", "expert_01", "expert_02")
     assert len(sets["mixed_bodies"].names) == 9
     assert demonstrator_sets("wagon")["own_body"].members == (("tiny_wagon", "tiny", "wagon", 0.0),)
-    assert MatrixConfig().body("wagon") == WAGON
+    assert MatrixConfig().body("wagon").description == WAGON
 
 
 @pytest.mark.parametrize("toml, match", [

@@ -93,7 +93,7 @@ def test_the_lego_rows_attempt_is_drawn_on_the_legos_field(finished):
     # The attempt is the first of the saved evaluation of the first trial, learning from the log.
     attempt = one_attempt(pictured_attempt_path(run, config, "lego"))
     saved = load_cell_evaluation(run.evaluation_path("lego", "ssl_log", "polymimic", config.trial_seeds()[0]))
-    assert (attempt.body, attempt.configuration, attempt.outcome) == ("lego", 1, saved["outcomes"][0])
+    assert (attempt.body.name, attempt.configuration, attempt.outcome) == ("lego", 1, saved["outcomes"][0])
     assert words.startswith(f"lego learning from ssl log, trial seed {config.trial_seeds()[0]} ({attempt.outcome}")
 
 

@@ -53,7 +53,7 @@ def test_practice_stays_within_its_checkpoints_and_learns_its_own_attempts(pract
     assert practised.curve[-1].steps > 400 - 61
     assert sum(steps_of(a) for a in practised.attempts) <= practised.steps
     assert practised.curve[-1].attempts_learned == len(practised.attempts) > 0
-    assert all(a.demonstrator == "imitator" and a.body == "lego" for a in practised.attempts)
+    assert all(a.demonstrator == "imitator" and a.body.name == "lego" for a in practised.attempts)
     assert practised.policy.made_from.practice is not None and len(practised.policy.made_from.practice) == len(
         practised.attempts)
 
@@ -111,8 +111,8 @@ def test_the_curve_as_csv_and_json(practised, tmp_path):
 def test_any_imitator_body_practises():
     tiny = _policy("tiny", ("tiny",))
     result = practice(tiny, steps=150, checkpoints=[0, 150], **SMALL)
-    assert result.attempts and all(a.body == "tiny" for a in result.attempts)
-    assert result.policy.body == "tiny"
+    assert result.attempts and all(a.body.name == "tiny" for a in result.attempts)
+    assert result.policy.body.name == "tiny"
 
 
 @pytest.mark.parametrize(("arguments", "message"), [

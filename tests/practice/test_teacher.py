@@ -112,7 +112,7 @@ def test_the_practised_policy_saves_loads_and_plays_through_evaluate_predict_and
     policy = PractisedPolicy(practised.policy.guide, practised.policy.actor, handover=3)
     policy.save(tmp_path / "practised.zip")
     again = PractisedPolicy.load(tmp_path / "practised.zip")
-    assert (again.handover, again.body, again.method) == (3, "lego", "jsrl")
+    assert (again.handover, again.body.name, again.method) == (3, "lego", "jsrl")
     played = [evaluate(p, attempts_per_configuration=2, seed=4).attempts for p in (policy, again)]
     assert [a.frames.tobytes() for a in played[0]] == [a.frames.tobytes() for a in played[1]]
     env = gymnasium.make("PenaltyKick-v0")

@@ -4,6 +4,7 @@ import json
 
 import pytest
 
+from polymimic.bodies import Body
 from polymimic.datasets import load_demonstrations, load_self_observation
 from polymimic.reproduce.rundir import RunDir
 from polymimic.reproduce.stages import Context, reproduce
@@ -23,11 +24,11 @@ def tiny_imitator_run(tiny_run_toml, tmp_path_factory):
 
 def test_the_imitator_observes_itself_learns_and_plays_as_the_tiny(tiny_imitator_run):
     run, config = tiny_imitator_run
-    assert {s.body for s in load_self_observation(run.self_observation_path("train"))} == {"tiny"}
+    assert {s.body.name for s in load_self_observation(run.self_observation_path("train"))} == {"tiny"}
     average = load_demonstrations(run.demonstrations_path("average"))
-    assert {d.body for d in average} == {"tiny"}, "the Average is an imitator: it has the imitator's body"
+    assert {d.body.name for d in average} == {"tiny"}, "the Average is an imitator: it has the imitator's body"
     attempts = load_demonstrations(run.attempts_path("varying_skill", "improved"))
-    assert {a.body for a in attempts} == {"tiny"}
+    assert {a.body.name for a in attempts} == {"tiny"}
     # The tiny's field is 560 mm long: every attempt's ball starts on it.
     assert all(abs(a.frames["ball_x_mm"][0]) < 280.0 for a in attempts)
     results = json.loads(run.results_path.read_text())
@@ -57,7 +58,8 @@ def test_an_imitator_no_body_has_is_refused_naming_it(toml, match):
 def test_an_imitator_of_a_described_body_is_that_body():
     config = RunConfig.from_toml('[bodies.van]\nlength_mm = 160\nwidth_mm = 150\nwheel_base_mm = 140\n'
                                  'top_wheel_speed_mm_s = 140\n[imitator]\nbody = "van"\n')
-    assert config.imitator_body() == config.bodies["van"] and not config.thesis_imitator
+    assert config.imitator_body() == Body(config.bodies["van"]) and not config.thesis_imitator
+    assert config.imitator_body().description is config.bodies["van"]
     assert RunConfig.from_toml(config.to_toml()) == config
 
 

@@ -8,6 +8,7 @@ import pytest
 
 import polymimic
 from polymimic import cli
+from polymimic.cli.import_options import body_file
 from polymimic.datasets import load_demonstrations
 from polymimic.runs.config import ConfigError, RunConfig
 from polymimic.runs.roster_config import LogDemonstrator, record_demonstrator
@@ -86,7 +87,8 @@ def test_import_tracks_takes_a_body_file_without_a_run(tmp_path, capsys):
     assert "field of body 'lego'" in capsys.readouterr().err
     assert cli.main([*argv, "--body", str(tmp_path / "bot.toml")]) == 0
     assert capsys.readouterr().out.startswith("1 episode from log.csv: 1 demonstration, 0 invalid; written to")
-    assert {d.body for d in load_demonstrations(out)} == {"pitch_bot"}
+    bot = body_file(str(tmp_path / "bot.toml"))
+    assert {d.body.name for d in load_demonstrations(out, bodies=[bot])} == {"pitch_bot"}
 
 
 def test_import_tracks_reads_a_configs_log_table_without_a_run(tmp_path, capsys):

@@ -89,11 +89,11 @@ def test_the_config_reads_and_round_trips(own_run):
 def test_every_own_demonstrator_is_recorded_and_segmented(own_run):
     run, config, logged = own_run
     n = config.experiments.sizes.demonstrations_per_configuration
-    cart = load_demonstrations(run.demonstrations_path("cart_poor"))
-    straight = load_demonstrations(run.demonstrations_path("straight"))
-    imported = load_demonstrations(run.demonstrations_path("logged"))
+    cart = load_demonstrations(run.demonstrations_path("cart_poor"), bodies=config.bodies)
+    straight = load_demonstrations(run.demonstrations_path("straight"), bodies=config.bodies)
+    imported = load_demonstrations(run.demonstrations_path("logged"), bodies=config.bodies)
     assert len(cart) == len(straight) == 2 * n and len(imported) == len(logged)
-    assert {d.body for d in cart + straight} == {"van"} and {d.demonstrator for d in imported} == {"logged"}
+    assert {d.body.name for d in cart + straight} == {"van"} and {d.demonstrator for d in imported} == {"logged"}
     assert [d.outcome for d in imported] == [d.outcome for d in logged]
     for who in ("cart_poor", "straight", "logged"):
         assert run.segments_path(who).exists()
@@ -204,7 +204,8 @@ def test_import_tracks_takes_the_body_the_runs_config_gives(tmp_path, capsys):
     assert cli.main([*base, "--as", "bob", "--body", "tiny"]) == 2
     assert "--body 'tiny': the run's [demonstrators.bob] says body = 'van'" in capsys.readouterr().err
     assert cli.main([*base, "--as", "bob"]) == 0
-    assert {d.body for d in load_demonstrations(run.demonstrations_path("bob"))} == {"van"}
+    bodies = RunConfig.from_toml(roster).bodies
+    assert {d.body.name for d in load_demonstrations(run.demonstrations_path("bob"), bodies=bodies)} == {"van"}
     assert cli.main([*base, "--as", "carol", "--body", "kart"]) == 2
     error = capsys.readouterr().err
     assert "--body 'kart': one of lego, tiny, humanoid, van (the thesis's and the run's [bodies])" in error

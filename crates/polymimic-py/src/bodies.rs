@@ -37,6 +37,37 @@ impl<'a, 'py> FromPyObject<'a, 'py> for Body {
     }
 }
 
+/// The body argument of the native functions that keep the body to hand back (a policy's
+/// `body`): a `polymimic.Body` as it is (so a body of one's own keeps the description it was
+/// made from), a built-in body's name or a described wheeled body made one.
+#[derive(Debug)]
+pub struct BodyValue(pub Py<PyBody>);
+
+impl<'a, 'py> FromPyObject<'a, 'py> for BodyValue {
+    type Error = PyErr;
+
+    fn extract(obj: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        if let Ok(body) = obj.cast::<PyBody>() {
+            return Ok(Self(body.to_owned().unbind()));
+        }
+        let body =
+            if obj.hasattr("_native_body")? { PyBody::new(&obj.to_owned())? } else { PyBody::of(obj.extract::<Body>()?.0) };
+        Ok(Self(Py::new(obj.py(), body)?))
+    }
+}
+
+impl BodyValue {
+    /// The Lego robot, the default body.
+    pub fn lego(py: Python<'_>) -> PyResult<Self> {
+        Ok(Self(Py::new(py, PyBody::of(BodyKind::Lego))?))
+    }
+
+    /// The body's kind, as the field and the learner take it.
+    pub fn kind(&self) -> BodyKind {
+        self.0.get().kind
+    }
+}
+
 /// The built-in body `name`, or a `ValueError` listing the known ones and how to describe one's own.
 fn built_in(name: &str) -> PyResult<BodyKind> {
     BUILT_IN.iter().find(|(n, _)| *n == name).map(|(_, kind)| *kind).ok_or_else(|| {
@@ -69,8 +100,9 @@ pub struct PyBody {
 }
 
 impl PyBody {
-    /// A built-in body.
-    const fn built_in(kind: BodyKind) -> Self {
+    /// The body of `kind`: a built-in one, or a body of one's own whose description is made
+    /// again from its constants when asked for.
+    pub(crate) const fn of(kind: BodyKind) -> Self {
         Self { kind, description: None }
     }
 }
@@ -88,7 +120,7 @@ impl PyBody {
             });
         }
         if let Ok(name) = body.cast::<PyString>() {
-            return Ok(Self::built_in(built_in(&name.to_cow()?)?));
+            return Ok(Self::of(built_in(&name.to_cow()?)?));
         }
         let Ok(native) = body.getattr("_native_body") else {
             return Err(PyTypeError::new_err(format!(

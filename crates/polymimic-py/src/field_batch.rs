@@ -7,7 +7,7 @@ use polymimic_field::{BodyKind, EpisodeBatch, Outcome};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use crate::bodies::Body;
+use crate::bodies::{Body, PyBody};
 use crate::convert::{matrix, non_negative};
 use crate::errors::field_error;
 use crate::field::{configuration, field_config};
@@ -59,10 +59,10 @@ impl PyEpisodeBatch {
         Ok(Self { batch: Mutex::new(batch) })
     }
 
-    /// The name of the body every slot drives.
+    /// The body every slot drives, a :class:`polymimic.Body`.
     #[getter]
-    fn body(&self) -> &'static str {
-        self.with(|b| b.body().name())
+    fn body(&self) -> PyBody {
+        PyBody::of(self.with(|b| b.body()))
     }
 
     fn __len__(&self) -> usize {

@@ -21,13 +21,13 @@ from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import IMITATOR_BODY, Labelled, command_labels
 from polymimic.baselines.policy import ClonedPolicy
 from polymimic.baselines.training import train
-from polymimic.bodies import WheeledBody
+from polymimic.bodies import BodySpec
 from polymimic.field import Demonstration
 
 __all__ = ["fit", "labelled"]
 
 
-def labelled(demonstrations: Sequence[Demonstration], *, imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
+def labelled(demonstrations: Sequence[Demonstration], *, imitator: BodySpec = IMITATOR_BODY) -> list[Labelled]:
     """The demonstrations with every frame labelled by its command's primitive, seen on the
     field of body ``imitator``."""
     return command_labels(demonstrations, imitator=imitator)

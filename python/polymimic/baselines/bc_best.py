@@ -17,7 +17,7 @@ from polymimic.baselines.hyperparameters import DEFAULT, Hyperparameters
 from polymimic.baselines.labels import IMITATOR_BODY, Labelled, check_demonstrations, command_labels
 from polymimic.baselines.policy import ClonedPolicy
 from polymimic.baselines.training import train
-from polymimic.bodies import WheeledBody
+from polymimic.bodies import BodySpec
 from polymimic.field import Demonstration
 
 __all__ = ["fit", "labelled", "member_demonstrations"]
@@ -37,7 +37,7 @@ def member_demonstrations(demonstrations: Sequence[Demonstration], member: str |
 
 
 def labelled(demonstrations: Sequence[Demonstration], *, member: str | Sequence[str],
-             imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
+             imitator: BodySpec = IMITATOR_BODY) -> list[Labelled]:
     """``member``'s demonstrations with every frame labelled by its command's primitive, seen
     on the field of body ``imitator``."""
     return command_labels(member_demonstrations(demonstrations, member), imitator=imitator)

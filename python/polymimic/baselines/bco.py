@@ -57,7 +57,7 @@ from polymimic.baselines.labels import (
 )
 from polymimic.baselines.policy import ClonedPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, sample_rows, train
-from polymimic.bodies import WheeledBody, body_name
+from polymimic.bodies import BodySpec, as_body
 from polymimic.field import Demonstration
 from polymimic.window_names import segmenter_settings, window_settings
 
@@ -80,7 +80,7 @@ def check_recognizer(recognizer: Any) -> PrimitiveRecognizer:
 def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecognizer | None = None,
              segmenter: Mapping[str, Any] | None = None, labels: str = "steps",
              max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0,
-             imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
+             imitator: BodySpec = IMITATOR_BODY) -> list[Labelled]:
     """The demonstrations labelled by the recogniser (``recognizer``): by the window (the second of motion)
     from each frame (``labels="steps"``; only the frames a fit of at most ``max_samples`` decision samples
     under ``seed`` takes are named, :func:`~polymimic.baselines.training.sample_rows`) or every
@@ -90,12 +90,12 @@ def labelled(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRe
     recogniser should have learned from."""
     if labels not in LABELS:
         raise ValueError(f"unknown labels {labels!r}; expected one of {', '.join(map(repr, LABELS))}")
-    settings = segmenter_settings(segmenter)
+    settings, imitator = segmenter_settings(segmenter), as_body(imitator, what="imitator")
     if labels == "segments":
         return segment_labels(demonstrations, check_recognizer(recognizer), imitator=imitator, **settings)
     demos = check_demonstrations(demonstrations)
     rows = sample_rows([(d.demonstrator, len(d.frames)) for d in demos], max_samples=max_samples, seed=seed,
-                       first_frames=[starts_as_imitator(d.body, body_name(imitator)) for d in demos])
+                       first_frames=[starts_as_imitator(d.body, imitator) for d in demos])
     if labels == "inverse_dynamics":
         return inverse_dynamics_labels(demos, learn(imitator, seed=INVERSE_DYNAMICS_SEED), frames=rows)
     return window_labels(demos, check_recognizer(recognizer), frames=rows, imitator=imitator,

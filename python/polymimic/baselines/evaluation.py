@@ -28,7 +28,7 @@ from threadpoolctl import threadpool_limits  # type: ignore[import-untyped, unus
 
 from polymimic import _native
 from polymimic.baselines.policy import Policy
-from polymimic.bodies import resolve
+from polymimic.bodies import as_body
 from polymimic.evaluation import Attempts, attempts_given
 from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, Demonstration, as_frames, primitive_command
 from polymimic.field_config import native_field_config
@@ -67,17 +67,17 @@ def attempts_of(attempts_per_configuration: int, *, seed: int) -> list[tuple[int
 def play(policy: Policy, attempts: list[tuple[int, int]], *,
          field_config: dict[str, Any] | str | None = None) -> Evaluation:
     """``policy`` on the given (configuration, episode seed) attempts, all stepped together,
-    with the body the policy drives (its ``body``: the Lego robot if it names none)."""
+    with the body the policy drives (its ``body``, a :class:`polymimic.Body` or a built-in
+    body's name: the Lego robot if it has none)."""
     if not isinstance(policy, Policy):
         raise ValueError(f"policy must have frames_per_action, predict, reset and save; got {type(policy).__name__}")
     config = native_field_config(field_config)
-    body = str(getattr(policy, "body", "lego"))
-    driven = resolve(body)
-    episodes = [_native.Episode(driven, configuration=c, seed=s, config=config) for c, s in attempts]
+    body = as_body(getattr(policy, "body", "lego"), what="policy.body")
+    episodes = [_native.Episode(body, configuration=c, seed=s, config=config) for c, s in attempts]
     policy.reset()
     with threadpool_limits(limits=1):  # a batch of ≤ 50 rows gains nothing from threads, and loses on a busy node
-        own = PRIMITIVE_SETS["humanoid" if body == "humanoid" else "wheeled"]
-        executed = _step_together(policy, episodes, [primitive_command(p, driven) for p in PRIMITIVES], own)
+        own = PRIMITIVE_SETS[body.primitive_set]
+        executed = _step_together(policy, episodes, [primitive_command(p, body) for p in PRIMITIVES], own)
     demos = [Demonstration(frames=as_frames(e.frames), outcome=str(e.outcome), demonstrator=_name(policy),
                            configuration=c, seed=s, body=body) for e, (c, s) in zip(episodes, attempts)]
     return Evaluation(goals=sum(d.outcome == "goal" for d in demos),

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from polymimic.bodies import WheeledBody, as_body
+from polymimic.bodies import BodySpec, as_body
 
 __all__ = ["FEATURE_NAMES", "FEATURE_SETS", "OBSERVATION_SIZE", "TARGET_GOAL_MM", "check_observations", "features",
            "target_goal_of"]
@@ -55,9 +55,9 @@ def check_observations(observations: object, *, name: str = "observations") -> n
     return array
 
 
-def target_goal_of(body: str | WheeledBody) -> tuple[float, float]:
-    """The target goal's centre (mm) on the field ``body`` (a body's name, or a described
-    wheeled body) plays on.
+def target_goal_of(body: BodySpec) -> tuple[float, float]:
+    """The target goal's centre (mm) on the field ``body`` (a :class:`polymimic.Body`, a built-in
+    body's name, or a described wheeled body) plays on.
 
     >>> target_goal_of("lego"), target_goal_of("tiny")
     ((510.0, 0.0), (280.0, 0.0))

@@ -56,7 +56,7 @@ from polymimic.baselines.labels import (
     check_demonstrations,
     observations_of,
 )
-from polymimic.bodies import WheeledBody, body_name, native_body, resolve
+from polymimic.bodies import Body, BodySpec, WheeledBody, as_body
 from polymimic.field import PRIMITIVES, Demonstration, as_frames, primitive_command
 from polymimic.window_names import repeat_last_good
 
@@ -90,7 +90,7 @@ class InverseDynamics:
 
     Attributes
     ----------
-    imitator : str or polymimic.bodies.WheeledBody
+    imitator : polymimic.Body
         The body whose exploration it learned from.
     window_frames : int
         Frames of motion it reads from a window's first frame.
@@ -98,7 +98,7 @@ class InverseDynamics:
         Maps :func:`transition_features` to indices into :data:`polymimic.field.PRIMITIVES`.
     """
 
-    imitator: str | WheeledBody
+    imitator: Body
     window_frames: int
     classifier: Any
 
@@ -141,12 +141,12 @@ def _check_seed(seed: Any) -> int:
     return int(seed)
 
 
-def _check_imitator(imitator: Any) -> str | WheeledBody:
-    """``imitator`` if a body of that name (or that body) exists, else a ValueError naming it."""
-    if not isinstance(imitator, (str, WheeledBody)):
-        raise ValueError(f"imitator must be a body's name or a polymimic.bodies.WheeledBody, got {imitator!r}")
-    resolve(imitator)  # a ValueError naming a body no one described
-    return imitator
+def _check_imitator(imitator: Any) -> Body:
+    """``imitator`` as a :class:`polymimic.Body`, else a ValueError naming it."""
+    if not isinstance(imitator, (str, WheeledBody, Body)):
+        raise ValueError(f"imitator must be a body's name, a polymimic.Body or a polymimic.bodies.WheeledBody, got "
+                         f"{imitator!r}")
+    return as_body(imitator, what="imitator")
 
 
 def _checked_starts(starts: Sequence[int] | np.ndarray, n_frames: int) -> np.ndarray:
@@ -203,12 +203,12 @@ def transition_features(poses: np.ndarray, starts: np.ndarray, *, window_frames:
     return np.column_stack(columns)
 
 
-def explore(imitator: str | WheeledBody = IMITATOR_BODY, *, episodes: int = EXPLORATION_EPISODES,
+def explore(imitator: BodySpec = IMITATOR_BODY, *, episodes: int = EXPLORATION_EPISODES,
             seed: int = 0) -> list[tuple[np.ndarray, np.ndarray]]:
     """``episodes`` exploration episodes of body ``imitator`` (see the module's documentation):
     per episode, its tracker frames and the primitive (an index into
     :data:`~polymimic.field.PRIMITIVES`) executed in each. Deterministic given ``seed``."""
-    body = native_body(_check_imitator(imitator))
+    body = _check_imitator(imitator)
     rng = np.random.default_rng(_check_seed(seed))
     commands = [primitive_command(p, body) for p in PRIMITIVES]
     low, high = np.log(_HOLD_FRAMES[0]), np.log(_HOLD_FRAMES[1] + 1)
@@ -228,7 +228,7 @@ def explore(imitator: str | WheeledBody = IMITATOR_BODY, *, episodes: int = EXPL
     return explored
 
 
-def learn(imitator: str | WheeledBody = IMITATOR_BODY, *, seed: int = 0, episodes: int = EXPLORATION_EPISODES,
+def learn(imitator: BodySpec = IMITATOR_BODY, *, seed: int = 0, episodes: int = EXPLORATION_EPISODES,
           window_frames: int = WINDOW_FRAMES) -> InverseDynamics:
     """The inverse dynamics model of body ``imitator`` (the Lego robot by default) reading
     windows of ``window_frames`` frames, learned from ``episodes`` exploration episodes drawn
@@ -246,7 +246,7 @@ def learn(imitator: str | WheeledBody = IMITATOR_BODY, *, seed: int = 0, episode
 
 
 @functools.lru_cache(maxsize=8)
-def _learned(imitator: str | WheeledBody, seed: int, episodes: int, window_frames: int) -> InverseDynamics:
+def _learned(imitator: Body, seed: int, episodes: int, window_frames: int) -> InverseDynamics:
     features, executed = [], []
     for frames, primitives in explore(imitator, episodes=episodes, seed=seed):
         if len(frames) < window_frames + BEFORE_FRAMES:
@@ -255,8 +255,8 @@ def _learned(imitator: str | WheeledBody, seed: int, episodes: int, window_frame
         features.append(transition_features(_poses(frames), starts, window_frames=window_frames))
         executed.append(primitives[starts])
     if not features:
-        raise ValueError(f"no exploration episode of {body_name(imitator)!r} lasted a window of {window_frames} "
-                         f"frames; explore more episodes")
+        raise ValueError(f"no exploration episode of {imitator.name!r} lasted a window of {window_frames} frames; "
+                         f"explore more episodes")
     model = make_classifier("hist_gradient_boosting", {"max_iter": 100}, seed=seed % 2**32)
     with threadpool_limits(limits=1):  # ten times faster than contending threads on a busy node
         model.fit(np.concatenate(features), np.concatenate(executed))
@@ -293,5 +293,5 @@ def inverse_dynamics_labels(demonstrations: Sequence[Demonstration], model: Inve
             labels = np.full(n, NO_LABEL, dtype=np.int64)
             labels[rows] = names
         labelled.append(Labelled(demo.demonstrator, observations_of(demo, model.imitator), labels, demo.body,
-                                 body_name(model.imitator)))
+                                 model.imitator))
     return labelled

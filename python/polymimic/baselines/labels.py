@@ -55,7 +55,7 @@ from typing import Any
 import numpy as np
 
 from polymimic._native import PrimitiveRecognizer
-from polymimic.bodies import WheeledBody, as_body, body_name, onto_field
+from polymimic.bodies import Body, BodySpec, as_body, onto_field
 from polymimic.field import (
     PRIMITIVES,
     WHEELED_EQUIVALENT,
@@ -99,29 +99,32 @@ class Labelled:
         imitator's field.
     labels : ndarray of int, shape (n_frames,)
         Index into :data:`polymimic.field.PRIMITIVES` per frame, or :data:`NO_LABEL`.
-    body : str, default the imitator's
-        The demonstrator's body's name.
-    imitator : str, default :data:`IMITATOR_BODY`
-        The name of the body the observations are on the field of, the one that learns.
+    body : polymimic.Body, default the imitator's
+        The demonstrator's body (given as a Body, a built-in body's name or a
+        :class:`polymimic.bodies.WheeledBody`).
+    imitator : polymimic.Body, default :data:`IMITATOR_BODY`
+        The body the observations are on the field of, the one that learns (given as ``body``).
     """
 
     demonstrator: str
     observations: np.ndarray
     labels: np.ndarray
-    body: str = IMITATOR_BODY
-    imitator: str = IMITATOR_BODY
+    body: Body = Body(IMITATOR_BODY)
+    imitator: Body = Body(IMITATOR_BODY)
 
     def __post_init__(self) -> None:
         if self.observations.shape != (len(self.labels), 5):
             raise ValueError(f"observations must be ({len(self.labels)}, 5) for {len(self.labels)} labels, "
                              f"got {self.observations.shape}")
+        object.__setattr__(self, "body", as_body(self.body))
+        object.__setattr__(self, "imitator", as_body(self.imitator, what="imitator"))
 
 
-def starts_as_imitator(body: str, imitator: str = IMITATOR_BODY) -> bool:
+def starts_as_imitator(body: BodySpec, imitator: BodySpec = IMITATOR_BODY) -> bool:
     """Whether a demonstrator of ``body`` starts its attempts as an imitator of body
     ``imitator`` starts its own: from the same state, deciding as the same body would (only the
     imitator's own body does)."""
-    return body == imitator
+    return as_body(body) == as_body(imitator, what="imitator")
 
 
 def check_demonstrations(demonstrations: Sequence[Demonstration]) -> list[Demonstration]:
@@ -148,7 +151,7 @@ def check_weights(weights: Mapping[str, float], demonstrations: Sequence[Demonst
     return checked
 
 
-def observations_of(demo: Demonstration, imitator: str | WheeledBody = IMITATOR_BODY) -> np.ndarray:
+def observations_of(demo: Demonstration, imitator: BodySpec = IMITATOR_BODY) -> np.ndarray:
     """The ``(n, 5)`` observations of a demonstration's frames: NaN readings (lost tracking,
     a ball out of sight) repeat the last good one, on the imitator's field: as recorded from a
     field no longer than it, else the ball brought across by :func:`polymimic.bodies.onto_field`
@@ -156,7 +159,7 @@ def observations_of(demo: Demonstration, imitator: str | WheeledBody = IMITATOR_
     frames = demo.frames
     obs = repeat_last_good(np.column_stack([frames[c] for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad",
                                                                  "ball_x_mm", "ball_y_mm")]).astype(np.float64))
-    if as_body(demo.body).field.length_mm <= as_body(imitator).field.length_mm:
+    if demo.body.field.length_mm <= as_body(imitator, what="imitator").field.length_mm:
         return obs
     mapped = onto_field(obs, recorded_by=demo.body, imitator=imitator)
     mapped[:, [0, 1]] = mapped[:, [3, 4]] + (obs[:, [0, 1]] - obs[:, [3, 4]])
@@ -174,7 +177,7 @@ def cloning_primitives() -> np.ndarray:
 
 
 def command_labels(demonstrations: Sequence[Demonstration], *,
-                   imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
+                   imitator: BodySpec = IMITATOR_BODY) -> list[Labelled]:
     """Each frame labelled with the imitator's primitive for the command sent (privileged):
     :func:`cloning_primitives`; observations on the field of body ``imitator``."""
     index = cloning_primitives()
@@ -182,11 +185,11 @@ def command_labels(demonstrations: Sequence[Demonstration], *,
     for d in demos:
         primitives_sent(d)  # refuses a demonstration whose commands were never recorded
     return [Labelled(d.demonstrator, observations_of(d, imitator), index[d.frames["command"].astype(np.int64)],
-                     d.body, body_name(imitator)) for d in demos]
+                     d.body, as_body(imitator, what="imitator")) for d in demos]
 
 
 def segment_labels(demonstrations: Sequence[Demonstration], recognizer: PrimitiveRecognizer, *,
-                   imitator: str | WheeledBody = IMITATOR_BODY, **segmenter: Any) -> list[Labelled]:
+                   imitator: BodySpec = IMITATOR_BODY, **segmenter: Any) -> list[Labelled]:
     """Each frame labelled with the primitive of the recogniser's segment covering it (none in
     a gap or outside every segment; the humanoid's own side-steps and kick by their wheeled
     equivalents, :data:`polymimic.field.WHEELED_EQUIVALENT`, as window names have them);
@@ -200,7 +203,7 @@ def segment_labels(demonstrations: Sequence[Demonstration], recognizer: Primitiv
         for label, first, last in zip(segments["label"], segments["first_frame"], segments["last_frame"]):
             labels[int(first):int(last) + 1] = _SEGMENT_LABELS.get(WHEELED_EQUIVALENT.get(label, label), NO_LABEL)
         labelled.append(Labelled(demo.demonstrator, observations_of(demo, imitator), labels, demo.body,
-                                 body_name(imitator)))
+                                 as_body(imitator, what="imitator")))
     return labelled
 
 
@@ -208,7 +211,7 @@ def window_labels(demonstrations: Sequence[Demonstration], recognizer: Primitive
                 window_frames: int = WINDOW_FRAMES, stride_frames: int = WINDOW_STRIDE_FRAMES,
                 frames: Sequence[np.ndarray] | None = None, stop_distance_mm: float = 1.0,
                 stop_rotation_deg: float = 20.0, gap_margin: float = 2.0,
-                imitator: str | WheeledBody = IMITATOR_BODY) -> list[Labelled]:
+                imitator: BodySpec = IMITATOR_BODY) -> list[Labelled]:
     """Frames labelled with the primitive of the ``window_frames`` frames from them (from the
     demonstration's last full window near its end), named as the segmenter names a segment
     (:func:`polymimic.window_names.name_windows`): a stop if the robot ends the window within
@@ -239,5 +242,5 @@ def window_labels(demonstrations: Sequence[Demonstration], recognizer: Primitive
             labels = np.full(n, NO_LABEL, dtype=np.int64)
             labels[starts] = named
         labelled.append(Labelled(demo.demonstrator, observations_of(demo, imitator), labels, demo.body,
-                                 body_name(imitator)))
+                                 as_body(imitator, what="imitator")))
     return labelled

@@ -25,7 +25,7 @@ from polymimic.baselines.hyperparameters import DEFAULT, LABELS, Hyperparameters
 from polymimic.baselines.labels import IMITATOR_BODY, Labelled, check_demonstrations, check_weights
 from polymimic.baselines.policy import ClonedPolicy, RandomPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_fit_seed, check_max_samples, train
-from polymimic.bodies import WheeledBody, body_name, resolve
+from polymimic.bodies import Body, BodySpec, as_body
 from polymimic.field import Demonstration
 
 __all__ = ["METHODS", "Prepared", "check_method", "fit", "fit_prepared", "prepare"]
@@ -55,7 +55,7 @@ class Prepared:
     seed: int
     max_samples: int
     weights: dict[str, float] | None = None
-    imitator: str = IMITATOR_BODY
+    imitator: Body = Body(IMITATOR_BODY)
     by_labels: dict[str, list[Labelled]] = dataclasses.field(default_factory=dict)
 
     def labelled_for(self, hyperparameters: Hyperparameters) -> list[Labelled]:
@@ -72,7 +72,7 @@ def prepare(method: str, demonstrations: Sequence[Demonstration], *,
             recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
             member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
             max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0,
-            imitator: str | WheeledBody = IMITATOR_BODY, labels: Sequence[str] = ("steps",)) -> Prepared:
+            imitator: BodySpec = IMITATOR_BODY, labels: Sequence[str] = ("steps",)) -> Prepared:
     """Label the demonstrations as ``method`` does (reading them once with the recogniser, for
     ``bco``, at the frames fits of at most ``max_samples`` decision samples under ``seed`` take),
     for an imitator of body ``imitator`` (its field, its first frames; the policy drives it).
@@ -86,17 +86,17 @@ def prepare(method: str, demonstrations: Sequence[Demonstration], *,
     method = check_method(method)
     check_max_samples(max_samples)
     check_fit_seed(seed)
-    body = body_name(resolve(imitator))  # refuses a body no one described
+    imitator = as_body(imitator, what="imitator")
     if method == "random":
-        return Prepared(method, [], seed, max_samples, imitator=body)
+        return Prepared(method, [], seed, max_samples, imitator=imitator)
     demos = check_demonstrations(demonstrations)
     if method == "bc":
-        return Prepared(method, bc_labelled(demos, imitator=imitator), seed, max_samples, imitator=body)
+        return Prepared(method, bc_labelled(demos, imitator=imitator), seed, max_samples, imitator=imitator)
     if method == "bc_best":
         if member is None:
             raise ValueError("bc_best needs member: the name of the demonstrator to clone")
         return Prepared(method, bc_best_labelled(demos, member=member, imitator=imitator), seed, max_samples,
-                        imitator=body)
+                        imitator=imitator)
     wanted = list(dict.fromkeys([labels] if isinstance(labels, str) else labels))
     if not wanted:
         raise ValueError(f"labels is empty: {method} needs at least one way to label (one of {', '.join(LABELS)})")
@@ -106,10 +106,10 @@ def prepare(method: str, demonstrations: Sequence[Demonstration], *,
                                     max_samples=max_samples, seed=seed, imitator=imitator) for name in wanted}
     first = by_labels[wanted[0]]
     if method == "bco":
-        return Prepared(method, first, seed, max_samples, imitator=body, by_labels=by_labels)
+        return Prepared(method, first, seed, max_samples, imitator=imitator, by_labels=by_labels)
     if weights is None:
         raise ValueError("bco_lp needs weights: a weight in [0, 1] for every demonstrator (e.g. its final LP)")
-    return Prepared(method, first, seed, max_samples, check_weights(weights, demos), imitator=body,
+    return Prepared(method, first, seed, max_samples, check_weights(weights, demos), imitator=imitator,
                     by_labels=by_labels)
 
 
@@ -130,7 +130,7 @@ def fit(method: str, demonstrations: Sequence[Demonstration], *, hyperparameters
         seed: int = 0, recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
         member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
         max_samples: int = MAX_DECISION_SAMPLES,
-        imitator: str | WheeledBody = IMITATOR_BODY) -> ClonedPolicy | RandomPolicy:
+        imitator: BodySpec = IMITATOR_BODY) -> ClonedPolicy | RandomPolicy:
     """Fit baseline ``method`` (one of :data:`METHODS`) on ``demonstrations``.
 
     The same as the method's own ``fit`` (:func:`polymimic.baselines.bc.fit`, …), by name.

@@ -32,7 +32,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from polymimic.baselines.labels import NO_LABEL, Labelled
-from polymimic.bodies import WheeledBody, as_body
+from polymimic.bodies import BodySpec, as_body
 from polymimic.field import Demonstration
 from polymimic.window_names import repeat_last_good
 
@@ -50,7 +50,7 @@ stops at the frame the ball (or the robot) crosses, read with the tracker's nois
 every body, the last readings of goals lay from 0.3 mm short of the line to 0.6 mm past it)."""
 
 
-def outcome_read(frames: np.ndarray, *, body: str | WheeledBody) -> str:
+def outcome_read(frames: np.ndarray, *, body: BodySpec) -> str:
     """The outcome of an episode read off its tracker ``frames`` on the field of ``body`` (the
     last readings of its ball and robot; a lost reading repeats the last good one): ``"goal"``,
     ``"own_goal"``, ``"ball_out"``, ``"robot_out"`` or ``"time_up"`` (both still on the field).

@@ -51,7 +51,7 @@ from polymimic.baselines.policy_file import write_policy_file
 from polymimic.baselines.ppo import scaled
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_fit_seed, check_max_samples
 from polymimic.baselines.tuning import best_on_validation, validation_attempts_apart
-from polymimic.bodies import WheeledBody, body_name, resolve
+from polymimic.bodies import Body, BodySpec, as_body
 from polymimic.evaluation import Attempts
 from polymimic.field import PRIMITIVES, Demonstration
 
@@ -70,13 +70,13 @@ def _require() -> None:
 
 class OfflineRLPolicy:
     """A d3rlpy Q-learning algorithm fitted offline, playing the action of highest value for
-    each observation of its ``body``'s field (the name of the imitator's body)."""
+    each observation of its ``body``'s field (the imitator's :class:`polymimic.Body`)."""
 
-    def __init__(self, algo: Any, hyperparameters: OfflineHyperparameters, *, body: str = IMITATOR_BODY) -> None:
+    def __init__(self, algo: Any, hyperparameters: OfflineHyperparameters, *, body: BodySpec = IMITATOR_BODY) -> None:
         self.method = "offline_rl"
         self.algo = algo
         self.hyperparameters = hyperparameters
-        self.body = body
+        self.body = as_body(body)
 
     @property
     def frames_per_action(self) -> int:
@@ -103,7 +103,7 @@ class OfflineRLPolicy:
     def save(self, path: str | os.PathLike[str]) -> None:
         """Writes the policy (its network, body and hyperparameters) to ``path``;
         :func:`polymimic.baselines.load_policy` reads it back (with d3rlpy installed)."""
-        write_policy_file(path, {"kind": "offline_rl", "method": self.method, "body": self.body,
+        write_policy_file(path, {"kind": "offline_rl", "method": self.method, "body": self.body.name,
                                  "hyperparameters": self.hyperparameters.to_dict()}, self)
 
     def __getstate__(self) -> dict[str, Any]:
@@ -127,7 +127,7 @@ class OfflineRLPolicy:
         self.__dict__.update(state)
 
     def __repr__(self) -> str:
-        body = "" if self.body == IMITATOR_BODY else f", body={self.body!r}"
+        body = "" if self.body == Body(IMITATOR_BODY) else f", body={self.body.name!r}"
         return f"OfflineRLPolicy({self.hyperparameters}{body})"
 
 
@@ -142,7 +142,7 @@ class Prepared:
     by_labels: dict[str, list[Labelled]]
     seed: int
     max_samples: int
-    imitator: str
+    imitator: Body
 
     def transitions_for(self, hyperparameters: OfflineHyperparameters) -> Transitions:
         """The episodes a fit with ``hyperparameters`` learns from."""
@@ -155,14 +155,14 @@ class Prepared:
 def prepare(demonstrations: Sequence[Demonstration], *, recognizer: PrimitiveRecognizer | None = None,
             segmenter: Mapping[str, Any] | None = None, labels: Sequence[str] = ("inverse_dynamics",),
             max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0,
-            imitator: str | WheeledBody = IMITATOR_BODY) -> Prepared:
+            imitator: BodySpec = IMITATOR_BODY) -> Prepared:
     """Label the demonstrations as ``bco`` does, in each way of ``labels``, once
     (:func:`polymimic.baselines.bco.labelled`: the same frames, the same labels); the
     ``"steps"`` labelling needs ``recognizer``."""
     demos = check_demonstrations(demonstrations)
     check_max_samples(max_samples)
     check_fit_seed(seed)
-    body = body_name(resolve(imitator))
+    body = as_body(imitator, what="imitator")
     wanted = list(dict.fromkeys([labels] if isinstance(labels, str) else labels))
     if not wanted:
         raise ValueError("labels is empty: offline_rl needs at least one way to label (steps or inverse_dynamics)")
@@ -216,7 +216,7 @@ def _quiet() -> Iterator[None]:
 
 def fit(demonstrations: Sequence[Demonstration], *, hyperparameters: OfflineHyperparameters = DEFAULT_CQL,
         seed: int = 0, recognizer: PrimitiveRecognizer | None = None, segmenter: Mapping[str, Any] | None = None,
-        max_samples: int = MAX_DECISION_SAMPLES, imitator: str | WheeledBody = IMITATOR_BODY) -> OfflineRLPolicy:
+        max_samples: int = MAX_DECISION_SAMPLES, imitator: BodySpec = IMITATOR_BODY) -> OfflineRLPolicy:
     """d3rlpy's discrete CQL or BCQ (``hyperparameters.algorithm``) fitted on ``demonstrations``.
 
     Parameters
@@ -263,7 +263,7 @@ def tune(demonstrations: Sequence[Demonstration], *, candidates: Sequence[Offlin
          evaluation: Attempts = Attempts(), seed: int = 0,
          recognizer: PrimitiveRecognizer | None = None, segmenter: Mapping[str, Any] | None = None,
          field_config: dict[str, Any] | str | None = None, max_samples: int = MAX_DECISION_SAMPLES,
-         imitator: str | WheeledBody = IMITATOR_BODY) -> OfflineTuning:
+         imitator: BodySpec = IMITATOR_BODY) -> OfflineTuning:
     """Choose ``offline_rl``'s hyperparameters on validation attempts, as
     :func:`polymimic.baselines.tune` chooses a cloner's: ``budget`` candidates (default
     :func:`~polymimic.baselines.offline_hyperparameters.candidates` of ``candidate_seed``), each

@@ -28,6 +28,7 @@ from polymimic._native import ModelFileError
 from polymimic.baselines.features import check_observations, features, target_goal_of
 from polymimic.baselines.hyperparameters import Hyperparameters
 from polymimic.baselines.policy_file import read_policy_file, write_policy_file
+from polymimic.bodies import Body, BodySpec, as_body
 from polymimic.field import PRIMITIVES
 
 __all__ = ["ClonedPolicy", "Policy", "RandomPolicy", "load_policy"]
@@ -72,17 +73,18 @@ class ClonedPolicy:
     classifier : fitted scikit-learn classifier
         Maps ``features(observations, feature_set=hyperparameters.feature_set)`` (on the body's
         field) to indices into :data:`polymimic.field.PRIMITIVES`.
-    body : str, default "lego"
-        The name of the body the policy drives, on that body's field.
+    body : polymimic.Body, str or polymimic.bodies.WheeledBody, default "lego"
+        The body the policy drives, on that body's field (kept as a :class:`polymimic.Body`).
     """
 
-    body = "lego"  # what a policy saved before bodies were named drives
+    body = Body("lego")  # what a policy saved before bodies were named drives
 
-    def __init__(self, method: str, hyperparameters: Hyperparameters, classifier: Any, *, body: str = "lego") -> None:
+    def __init__(self, method: str, hyperparameters: Hyperparameters, classifier: Any, *,
+                 body: BodySpec = "lego") -> None:
         self.method = method
         self.hyperparameters = hyperparameters
         self.classifier = classifier
-        self.body = body
+        self.body = as_body(body)
 
     @property
     def frames_per_action(self) -> int:
@@ -109,11 +111,11 @@ class ClonedPolicy:
         """Writes the policy (its method, body, hyperparameters and fitted classifier) to ``path``;
         :func:`polymimic.baselines.load_policy` reads it back.
         """
-        write_policy_file(path, {"kind": "cloned", "method": self.method, "body": self.body,
+        write_policy_file(path, {"kind": "cloned", "method": self.method, "body": self.body.name,
                                  "hyperparameters": self.hyperparameters.to_dict()}, self)
 
     def __repr__(self) -> str:
-        body = "" if self.body == "lego" else f", body={self.body!r}"
+        body = "" if self.body == Body("lego") else f", body={self.body.name!r}"
         return f"ClonedPolicy({self.method}, {self.hyperparameters}{body})"
 
 
@@ -125,20 +127,20 @@ class RandomPolicy:
     seed : int, default 0
     frames_per_action : int, default 30
         The environment's step: one primitive a second.
-    body : str, default "lego"
-        The name of the body the policy drives.
+    body : polymimic.Body, str or polymimic.bodies.WheeledBody, default "lego"
+        The body the policy drives (kept as a :class:`polymimic.Body`).
     """
 
-    body = "lego"  # what a policy saved before bodies were named drives
+    body = Body("lego")  # what a policy saved before bodies were named drives
 
-    def __init__(self, *, seed: int = 0, frames_per_action: int = 30, body: str = "lego") -> None:
+    def __init__(self, *, seed: int = 0, frames_per_action: int = 30, body: BodySpec = "lego") -> None:
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
             raise ValueError(f"seed must be an integer ≥ 0, got {seed!r}")
         if isinstance(frames_per_action, bool) or not isinstance(frames_per_action, (int, np.integer)) \
                 or frames_per_action < 1:
             raise ValueError(f"frames_per_action must be an integer ≥ 1, got {frames_per_action!r}")
         self.method = "random"
-        self.body = body
+        self.body = as_body(body)
         self.seed = int(seed)
         self._frames_per_action = int(frames_per_action)
         self.reset()
@@ -159,7 +161,7 @@ class RandomPolicy:
 
     def save(self, path: str | os.PathLike[str]) -> None:
         """Writes the policy (its seed, body and step length) to ``path``."""
-        write_policy_file(path, {"kind": "random", "method": "random", "seed": self.seed, "body": self.body,
+        write_policy_file(path, {"kind": "random", "method": "random", "seed": self.seed, "body": self.body.name,
                                  "frames_per_action": self._frames_per_action}, self)
 
     def __repr__(self) -> str:
@@ -178,7 +180,20 @@ def load_policy(path: str | os.PathLike[str]) -> Policy:
     header, policy = read_policy_file(path)
     if header.get("kind") not in _KINDS or not isinstance(policy, Policy):
         raise ModelFileError(f"{os.fspath(path)}: holds no baseline policy")
+    _body_made_a_value(policy, path)
     return policy
+
+
+def _body_made_a_value(policy: Any, path: str | os.PathLike[str]) -> None:
+    """A policy saved while it kept its body's name drives that body: a built-in one, as a
+    :class:`polymimic.Body`; the name of a body of one's own says nothing of it."""
+    named = getattr(policy, "body", None)
+    if isinstance(named, str):
+        try:
+            policy.body = as_body(named)
+        except ValueError:
+            raise ModelFileError(f"{os.fspath(path)}: the policy names its body {named!r}, which is not built in, "
+                                 f"and holds no description of it") from None
 
 
 _KINDS = ("cloned", "random", "ppo", "offline_rl")

@@ -5,7 +5,7 @@ stated budget of environment steps (``total_timesteps``; one step is one primiti
 ``frames_per_action`` frames). Two environments run side by side, one per field configuration.
 The network sees the ``feature_set`` features of the observation, scaled to about ±1
 (:data:`FEATURE_SCALE` on the Lego's field, in proportion on another). The imitator may be any body
-(``imitator=``: a built-in body's name, a :class:`~polymimic.bodies.WheeledBody`, or the humanoid);
+(``imitator=``: a :class:`polymimic.Body`, a built-in body's name or a :class:`~polymimic.bodies.WheeledBody`);
 it plays on its own field, and the policy remembers its body. stable-baselines3 and torch are
 needed to fit and to load a PPO policy (``pip install "polymimic[rl]"``), not to import this
 module.
@@ -33,7 +33,7 @@ import numpy as np
 
 from polymimic.baselines.features import FEATURE_NAMES, check_observations, features, target_goal_of
 from polymimic.baselines.policy_file import write_policy_file
-from polymimic.bodies import WheeledBody, as_body, body_name
+from polymimic.bodies import Body, BodySpec, as_body
 from polymimic.evaluation import Attempts, thesis_attempts
 
 __all__ = ["FEATURE_SCALE", "Checkpoint", "PPOPolicy", "available", "fit", "learning_curve", "new_model", "scaled",
@@ -94,7 +94,7 @@ def steps_to_reach(curve: list[Checkpoint] | list[dict[str, Any]], net_goals: fl
     return None
 
 
-def scaled(observations: np.ndarray, feature_set: str, imitator: str | WheeledBody = IMITATOR_BODY) -> np.ndarray:
+def scaled(observations: np.ndarray, feature_set: str, imitator: BodySpec = IMITATOR_BODY) -> np.ndarray:
     """The ``feature_set`` features of observations on ``imitator``'s field as the network sees
     them: millimetres over :data:`FEATURE_SCALE` (in proportion to the field's length), as
     float32.
@@ -113,14 +113,14 @@ def scaled(observations: np.ndarray, feature_set: str, imitator: str | WheeledBo
 
 class PPOPolicy:
     """A trained stable-baselines3 PPO model, acting deterministically on observation batches
-    of its ``body``'s field (the name of the imitator's body)."""
+    of its ``body``'s field (the imitator's :class:`polymimic.Body`)."""
 
-    body = IMITATOR_BODY  # what a policy saved before bodies were named drives
+    body = Body(IMITATOR_BODY)  # what a policy saved before bodies were named drives
 
     def __init__(self, model: Any, *, feature_set: str, frames_per_action: int, total_timesteps: int,
-                 method: str = "ppo", body: str = IMITATOR_BODY) -> None:
+                 method: str = "ppo", body: BodySpec = IMITATOR_BODY) -> None:
         self.method = method
-        self.body = body
+        self.body = as_body(body)
         self.model = model
         self.feature_set = feature_set
         self.total_timesteps = int(total_timesteps)
@@ -154,7 +154,7 @@ class PPOPolicy:
 
     def save(self, path: str | os.PathLike[str]) -> None:
         """Writes the policy (its network, body and features) to ``path``."""
-        write_policy_file(path, {"kind": "ppo", "method": self.method, "body": self.body,
+        write_policy_file(path, {"kind": "ppo", "method": self.method, "body": self.body.name,
                                  "feature_set": self.feature_set,
                                  "frames_per_action": self._frames_per_action,
                                  "total_timesteps": self.total_timesteps}, self)
@@ -177,7 +177,7 @@ class PPOPolicy:
 def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_set: str = "goal_relative",
         seed: int = 0, field_config: dict[str, Any] | str | None = None, callback: Any = None,
         before_learning: Callable[[Any], None] | None = None, method: str = "ppo",
-        imitator: str | WheeledBody = IMITATOR_BODY, **ppo_kwargs: Any) -> PPOPolicy:
+        imitator: BodySpec = IMITATOR_BODY, **ppo_kwargs: Any) -> PPOPolicy:
     """PPO (``stable_baselines3.PPO("MlpPolicy", …)``) trained for ``total_timesteps`` steps,
     driving ``imitator`` on its own field.
 
@@ -202,11 +202,11 @@ def fit(*, total_timesteps: int = 200_000, frames_per_action: int = 30, feature_
         before_learning(model)
     model.learn(total_timesteps=int(total_timesteps), callback=callback)
     return PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
-                     total_timesteps=total_timesteps, method=method, body=body_name(imitator))
+                     total_timesteps=total_timesteps, method=method, body=as_body(imitator, what="imitator"))
 
 
 def new_model(*, frames_per_action: int = 30, feature_set: str = "goal_relative", seed: int = 0,
-              field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
+              field_config: dict[str, Any] | str | None = None, imitator: BodySpec = IMITATOR_BODY,
               wrap: Callable[[Any], Any] | None = None, **ppo_kwargs: Any) -> Any:
     """A new, untrained ``stable_baselines3.PPO`` on ``PenaltyKick-v0`` with ``imitator``'s
     body, one environment per field configuration, seeing the scaled ``feature_set`` features.
@@ -296,7 +296,7 @@ def learning_curve(*, total_timesteps: int, eval_every: int, evaluation: Attempt
                    field_config: dict[str, Any] | str | None = None,
                    on_checkpoint: Callable[[list[Checkpoint]], None] | None = None,
                    before_learning: Callable[[Any], None] | None = None, method: str = "ppo",
-                   imitator: str | WheeledBody = IMITATOR_BODY,
+                   imitator: BodySpec = IMITATOR_BODY,
                    **ppo_kwargs: Any) -> tuple[PPOPolicy, list[Checkpoint], Any]:
     """PPO trained as :func:`fit` trains it, driving ``imitator``, and played on the
     ``evaluation`` attempts (an :class:`~polymimic.Attempts` from the thesis's configurations:
@@ -334,7 +334,7 @@ def learning_curve(*, total_timesteps: int, eval_every: int, evaluation: Attempt
 
     def evaluate(model: Any) -> None:
         policy = PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action,
-                           total_timesteps=model.num_timesteps, method=method, body=body_name(imitator))
+                           total_timesteps=model.num_timesteps, method=method, body=as_body(imitator, what="imitator"))
         played = evaluate_policy(policy, attempts=scored_on, field_config=field_config)
         latest[:] = [played]
         curve.append(Checkpoint(env_steps=int(model.num_timesteps), goals=played.goals, own_goals=played.own_goals,

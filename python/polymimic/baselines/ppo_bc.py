@@ -27,7 +27,7 @@ from polymimic.baselines.evaluation import play
 from polymimic.baselines.labels import IMITATOR_BODY, command_labels
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, decision_samples
 from polymimic.baselines.tuning import validation_attempts_apart, validation_rank
-from polymimic.bodies import WheeledBody, body_name
+from polymimic.bodies import BodySpec, as_body
 from polymimic.evaluation import Attempts
 from polymimic.field import Demonstration
 
@@ -54,7 +54,7 @@ PRETRAINING_CANDIDATES = (Pretraining(10, 1e-3), Pretraining(30, 1e-3), Pretrain
 
 
 def cloning_samples(demonstrations: Sequence[Demonstration], *, feature_set: str = "goal_relative",
-                    imitator: str | WheeledBody = IMITATOR_BODY, max_samples: int = MAX_DECISION_SAMPLES,
+                    imitator: BodySpec = IMITATOR_BODY, max_samples: int = MAX_DECISION_SAMPLES,
                     seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
     """``bc``'s decision samples (the commands sent, as its labels read them) as PPO's network
     sees them: scaled features ``(n, k)`` and primitive indices ``(n,)``."""
@@ -88,7 +88,7 @@ def clone_into(model: Any, features: np.ndarray, labels: np.ndarray, pretraining
 
 def pretrained(demonstrations: Sequence[Demonstration], pretraining: Pretraining, *, seed: int = 0,
                feature_set: str = "goal_relative", frames_per_action: int = 30,
-               field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
+               field_config: dict[str, Any] | str | None = None, imitator: BodySpec = IMITATOR_BODY,
                max_samples: int = MAX_DECISION_SAMPLES) -> ppo.PPOPolicy:
     """A new PPO network under ``seed`` that has cloned the demonstrations and not yet learned
     from the reward."""
@@ -98,10 +98,10 @@ def pretrained(demonstrations: Sequence[Demonstration], pretraining: Pretraining
                                        max_samples=max_samples, seed=seed)
     clone_into(model, features, labels, pretraining, seed=seed)
     return ppo.PPOPolicy(model, feature_set=feature_set, frames_per_action=frames_per_action, total_timesteps=0,
-                         method="ppo_bc", body=body_name(imitator))
+                         method="ppo_bc", body=as_body(imitator, what="imitator"))
 
 
-def agreement(policy: Any, demonstrations: Sequence[Demonstration], *, imitator: str | WheeledBody = IMITATOR_BODY,
+def agreement(policy: Any, demonstrations: Sequence[Demonstration], *, imitator: BodySpec = IMITATOR_BODY,
               max_samples: int = MAX_DECISION_SAMPLES, seed: int = 0) -> float:
     """The share of the demonstrations' decision samples where ``policy`` (anything with
     ``predict(observations)``) names the primitive of the command sent."""
@@ -121,7 +121,7 @@ class PretrainingChoice:
 def tune_pretraining(demonstrations: Sequence[Demonstration], *, budget: int = 6, validation_seed: int = 0,
                      attempts_per_configuration: int = 50, evaluation: Attempts = Attempts(), seed: int = 0,
                      feature_set: str = "goal_relative", frames_per_action: int = 30,
-                     field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
+                     field_config: dict[str, Any] | str | None = None, imitator: BodySpec = IMITATOR_BODY,
                      max_samples: int = MAX_DECISION_SAMPLES) -> PretrainingChoice:
     """The first ``budget`` of :data:`PRETRAINING_CANDIDATES`, each cloned under ``seed`` and
     played (before any reward) on the validation attempts of ``validation_seed``; the best by net
@@ -146,7 +146,7 @@ def tune_pretraining(demonstrations: Sequence[Demonstration], *, budget: int = 6
 def learning_curve(demonstrations: Sequence[Demonstration], pretraining: Pretraining, *, total_timesteps: int,
                    eval_every: int, evaluation: Attempts = Attempts(), seed: int = 0, frames_per_action: int = 30,
                    feature_set: str = "goal_relative",
-                   field_config: dict[str, Any] | str | None = None, imitator: str | WheeledBody = IMITATOR_BODY,
+                   field_config: dict[str, Any] | str | None = None, imitator: BodySpec = IMITATOR_BODY,
                    max_samples: int = MAX_DECISION_SAMPLES) -> tuple[ppo.PPOPolicy, list[ppo.Checkpoint], Any]:
     """:func:`polymimic.baselines.ppo.learning_curve` with the network cloned first, played on
     the ``evaluation`` attempts: its first checkpoint (0 steps) is the cloned network's."""

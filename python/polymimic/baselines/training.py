@@ -164,8 +164,8 @@ def train(method: str, labelled: Sequence[Labelled], *, hyperparameters: Hyperpa
     model = make_classifier(hyperparameters.classifier, dict(hyperparameters.params), seed=seed)
     imitators = {item.imitator for item in labelled}
     if len(imitators) != 1:
-        raise ValueError(f"{method}: the demonstrations are labelled for imitators {sorted(imitators)}; one policy "
-                         f"has one body")
+        names = sorted(body.name for body in imitators)
+        raise ValueError(f"{method}: the demonstrations are labelled for imitators {names}; one policy has one body")
     policy = ClonedPolicy(method, hyperparameters, model, body=imitators.pop())
     policy.classifier = fit_weighted(model, policy.features(X), y, w)
     return policy

@@ -40,7 +40,7 @@ from polymimic.baselines.labels import IMITATOR_BODY
 from polymimic.baselines.methods import check_method, fit_prepared, prepare
 from polymimic.baselines.policy import ClonedPolicy, Policy, RandomPolicy
 from polymimic.baselines.training import MAX_DECISION_SAMPLES, check_max_samples
-from polymimic.bodies import WheeledBody
+from polymimic.bodies import BodySpec
 from polymimic.evaluation import Attempts, thesis_attempts
 from polymimic.field import Demonstration
 
@@ -150,7 +150,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
          recognizer: PrimitiveRecognizer | None = None, weights: Mapping[str, float] | None = None,
          member: str | Sequence[str] | None = None, segmenter: Mapping[str, Any] | None = None,
          field_config: dict[str, Any] | str | None = None, max_samples: int = MAX_DECISION_SAMPLES,
-         imitator: str | WheeledBody = IMITATOR_BODY) -> Tuning:
+         imitator: BodySpec = IMITATOR_BODY) -> Tuning:
     """Choose ``method``'s hyperparameters on validation attempts.
 
     Parameters
@@ -178,7 +178,7 @@ def tune(method: str, demonstrations: Sequence[Demonstration], *, candidates: Se
         The field of the validation attempts.
     max_samples : int, default :data:`~polymimic.baselines.training.MAX_DECISION_SAMPLES`
         The most decision samples each fit takes.
-    imitator : str or polymimic.bodies.WheeledBody, default "lego"
+    imitator : polymimic.Body, str or polymimic.bodies.WheeledBody, default "lego"
         The body the tuned policy drives, on its own field (validation attempts included).
 
     Raises

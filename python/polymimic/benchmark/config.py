@@ -30,6 +30,7 @@ from typing import Any
 
 from polymimic._toml import documented as _doc
 from polymimic._toml import write_table, write_value
+from polymimic.bodies import Body
 from polymimic.crowds import PROFILES, Crowd
 from polymimic.evaluation import Attempts
 from polymimic.practice.methods import DEFAULT_METHOD as DEFAULT_PRACTICE
@@ -184,8 +185,8 @@ class BenchmarkConfig(ConfigFile):
         """The learning constants (``[learning]``)."""
         return self.run.learning
 
-    def imitator_body(self) -> Any:
-        """The imitator's body (``[imitator] body``), as the library takes it."""
+    def imitator_body(self) -> Body:
+        """The imitator's :class:`polymimic.Body` (``[imitator] body``)."""
         return self.run.imitator_body()
 
     def evaluation_attempts(self) -> Attempts:

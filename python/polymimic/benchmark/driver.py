@@ -31,6 +31,7 @@ from __future__ import annotations
 import dataclasses
 import functools
 import json
+import pathlib
 import time
 from typing import Any
 
@@ -70,7 +71,7 @@ from polymimic.benchmark.tasks import (
 from polymimic.benchmark.weighing import chosen_world_weighting, is_weighed
 from polymimic.crowds import Crowd, controller_skill, record_crowd
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
-from polymimic.field import PRIMITIVES, self_observation
+from polymimic.field import PRIMITIVES, PrimitiveSequence, self_observation
 from polymimic.learning import TrialResult, segmented
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.config import ConfigError
@@ -148,12 +149,16 @@ class Benchmark(Staged):
             return 0
         settings, path = self.config.recognizer, self.run.self_observation_path("train")
         count = len(PRIMITIVES) * settings.train_per_primitive
-        if not self.run.finished(path, lambda p: counted(load_self_observation(p), count)):
+        if not self.run.finished(path, lambda p: counted(self._self_observation(p), count)):
             save_self_observation(self_observation(settings.train_per_primitive,
                                                    seed=self.config.seeds.self_observation_train,
                                                    config=self.config.field, body=self.config.imitator_body()), path)
-        settings.train(load_self_observation(path)).save(self.run.recognizer_path)
+        settings.train(self._self_observation(path)).save(self.run.recognizer_path)
         return 1
+
+    def _self_observation(self, path: pathlib.Path) -> list[PrimitiveSequence]:
+        """The self-observation of the file ``path``, the imitator's body read as the config describes it."""
+        return load_self_observation(path, bodies=self.config.run.bodies)
 
     # 2. The crowds.
 
@@ -164,7 +169,8 @@ class Benchmark(Staged):
         with progress(total=len(crowds), desc="record", quiet=self.quiet) as bar:
             for crowd in crowds:
                 path = self.run.crowd_path(crowd.name)
-                if not self.run.finished(path, functools.partial(each_member_recorded, names=crowd.names, n=n)):
+                if not self.run.finished(path, functools.partial(each_member_recorded, names=crowd.names, n=n,
+                                                                    bodies=self.config.run.bodies)):
                     save_demonstrations(record_crowd(crowd, n=n, seed=self.config.seeds.demonstrations,
                                                      config=self.config.field), path)
                     made += 1
@@ -182,7 +188,8 @@ class Benchmark(Staged):
         segmenter = dataclasses.asdict(self.config.segmenter)
         profiles = {}
         for crowd in self.config.crowds():
-            demos = load_demonstrations(self.run.require(self.run.crowd_path(crowd.name), "benchmark"))
+            demos = load_demonstrations(self.run.require(self.run.crowd_path(crowd.name), "benchmark"),
+                                        bodies=self.config.run.bodies)
             profiles[crowd.name] = ProfileInputs(crowd, demos, segmented(demos, recognizer, **segmenter))
         skill = load_controller_skill(self.run.require(self.run.controller_skill_path, "benchmark"))
         return Shared(self.config, recognizer, profiles, skill)

@@ -37,11 +37,11 @@ def export_crowds(run: BenchmarkDir, config: BenchmarkConfig, *, prefix: str, ac
     paths = [run.require(run.crowd_path(crowd.name), "benchmark") for crowd in crowds]
     written, left_out = [], {}
     for crowd, path in zip(crowds, paths):
-        demos = load_demonstrations(path)
+        demos = load_demonstrations(path, bodies=config.run.bodies)
         simulated = [m for m in crowd.members if m.body in export.SIMULATED_BODIES]
         if len(simulated) < len(crowd.members):
             left_out[crowd.name] = [m.name for m in crowd.members if m not in simulated]
-        kept = [d for d in demos if d.body in export.SIMULATED_BODIES]
+        kept = [d for d in demos if d.body.kind in export.SIMULATED_BODIES]
         if not kept:
             continue
         dataset_id = f"{prefix}-{crowd.name}-v0"

@@ -25,7 +25,8 @@ def _practice(path: pathlib.Path, only: Sequence[str] | None, steps: int, method
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "benchmark"))
     segmenter = dataclasses.asdict(config.segmenter)
     groups = chosen_groups(list(config.benchmark.profiles), only, "profile")
-    demos = {g: segmented(load_demonstrations(run.require(run.crowd_path(g), "benchmark")), recognizer, **segmenter)
+    demos = {g: segmented(load_demonstrations(run.require(run.crowd_path(g), "benchmark"), bodies=config.run.bodies),
+                          recognizer, **segmenter)
              for g in groups}
     inputs = PracticeInputs(recognizer=recognizer, learning=config.learning, demonstrations=demos,
                             body=config.imitator_body(), field=config.field, segmenter=segmenter, steps=steps,

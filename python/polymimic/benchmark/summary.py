@@ -274,7 +274,7 @@ def _practice_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str,
 
 def _profile(run: BenchmarkDir, config: BenchmarkConfig, crowd: Crowd, ppo_curves: Sequence[Mapping[str, Any]] | None,
              controllers: Mapping[str, float]) -> ProfileSummary:
-    demos = load_demonstrations(run.require(run.crowd_path(crowd.name), "benchmark"))
+    demos = load_demonstrations(run.require(run.crowd_path(crowd.name), "benchmark"), bodies=config.run.bodies)
     trials = [TrialResult.load(run.require(run.trial_path(crowd.name, s), "benchmark")) for s in config.trial_seeds()]
     lps = [final_lps(t) for t in trials]
     net: dict[str, float] = {}

@@ -45,7 +45,7 @@ def _replay(args: argparse.Namespace) -> int:
         source = run.require(run.attempts_path(args.experiment, args.control), "evaluate")
     else:
         source = run.require(run.demonstrations_path(args.who), "record" if args.who != "average" else "segment")
-    episodes = load_demonstrations(source)
+    episodes = load_demonstrations(source, bodies=config.bodies)
     if not 0 <= args.episode < len(episodes):
         raise RunError(f"{source} holds episodes 0 to {len(episodes) - 1}; there is no episode {args.episode}")
     out = args.out or run.plots / f"replay_{args.who}_{args.episode}.gif"

@@ -29,7 +29,7 @@ from typing import Any
 
 from polymimic._toml import documented as _doc
 from polymimic._toml import write_table
-from polymimic.bodies import Field, WheeledBody
+from polymimic.bodies import Body, Field, WheeledBody
 from polymimic.crowds import PROFILES
 from polymimic.evaluation import Attempts
 from polymimic.runs.config import (
@@ -208,9 +208,9 @@ class MatrixConfig(ConfigFile):
         """The run's seeds (``[seeds]``)."""
         return self.run.seeds
 
-    def body(self, row: str) -> str | WheeledBody:
-        """The imitator ``row`` as the library takes it."""
-        return row if row in IMITATOR_BODIES else self.run.bodies[row]
+    def body(self, row: str) -> Body:
+        """The body named ``row``: a built-in one, or the config's ``[bodies.<row>]``."""
+        return Body(row if row in IMITATOR_BODIES else self.run.bodies[row])
 
     def evaluation_attempts(self) -> Attempts:
         """The attempts both methods play in every cell (``[matrix] attempts_per_configuration``

@@ -133,8 +133,10 @@ class Matrix(Staged):
         with progress(total=len(unique), desc="record", quiet=self.quiet) as bar:
             for name, chosen in unique.items():
                 path = self.run.set_path(name)
-                whole = (functools.partial(each_member_recorded, names=chosen.names, n=n) if chosen.spec is None
-                         or demonstrations_expected(chosen.spec, n) is not None else load_demonstrations)
+                bodies = self.config.run.bodies
+                whole = (functools.partial(each_member_recorded, names=chosen.names, n=n, bodies=bodies)
+                         if chosen.spec is None or demonstrations_expected(chosen.spec, n) is not None
+                         else functools.partial(load_demonstrations, bodies=bodies))
                 if not self.run.finished(path, whole):
                     save_demonstrations(self._recorded(chosen, n), path)
                     made += 1
@@ -163,7 +165,8 @@ class Matrix(Staged):
         """What every task reads: the rows' recognisers, the sets' demonstrations, the sets."""
         recognizers = {row: PrimitiveRecognizer.load(self.run.require(self.run.recognizer_of(row), "matrix"))
                        for row in self.rows()}
-        demonstrations = {name: load_demonstrations(self.run.require(self.run.set_path(name), "matrix"))
+        demonstrations = {name: load_demonstrations(self.run.require(self.run.set_path(name), "matrix"),
+                                                    bodies=self.config.run.bodies)
                           for name in self._unique_sets()}
         return Shared(self.config, recognizers, demonstrations, self.sets())
 
@@ -212,7 +215,8 @@ class Matrix(Staged):
     def attempts(self, shared: Shared) -> int:
         """Stage: each row's pictured attempt, played again and saved; returns those played now."""
         jobs = [(row, *pictured_trial(self.run, self.config, row)) for row in self.rows()
-                if not self.run.finished(pictured_attempt_path(self.run, self.config, row), one_attempt)]
+                if not self.run.finished(pictured_attempt_path(self.run, self.config, row),
+                                         functools.partial(one_attempt, bodies=self.config.run.bodies))]
         with progress(total=len(jobs), desc="attempts", quiet=self.quiet) as bar:
             for _, result in self.runner.map(attempt_task, shared, jobs):
                 row, column, seed = result["row"], result["column"], result["seed"]

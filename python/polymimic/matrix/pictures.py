@@ -24,7 +24,7 @@ import pathlib
 from typing import TYPE_CHECKING
 
 from polymimic._drawn_field import scene_of
-from polymimic.bodies import WheeledBody
+from polymimic.bodies import BodiesGiven
 from polymimic.datasets import load_demonstrations
 from polymimic.field import Demonstration
 from polymimic.matrix.config import MatrixConfig, demonstrator_sets, stored_column
@@ -97,15 +97,15 @@ def pictured_attempt_path(run: MatrixDir, config: MatrixConfig, row: str) -> pat
     return run.attempt_path(row, *pictured_trial(run, config, row))
 
 
-def one_attempt(path: pathlib.Path) -> Demonstration:
-    """The one attempt saved at ``path``."""
-    return counted(load_demonstrations(path), 1)[0]
+def one_attempt(path: pathlib.Path, *, bodies: BodiesGiven = ()) -> Demonstration:
+    """The one attempt saved at ``path`` (a body of one's own read as ``bodies`` describes it)."""
+    return counted(load_demonstrations(path, bodies=bodies), 1)[0]
 
 
 def set_figure(run: MatrixDir, config: MatrixConfig, name: str) -> tuple[Figure, str]:
     """The set ``name``'s first demonstration (from its recordings in the run) drawn on its
     demonstrator's own field, and words saying whose it is and which field."""
-    demo = load_demonstrations(run.require(run.set_path(name), "matrix"))[0]
+    demo = load_demonstrations(run.require(run.set_path(name), "matrix"), bodies=config.run.bodies)[0]
     columns = ", ".join(pictured_sets(config)[name])
     figure, field = _drawn(demo, config, f"{columns}: {demo.demonstrator}, configuration {demo.configuration}")
     return figure, f"{columns}: {demo.demonstrator} ({demo.outcome.replace('_', ' ')}), {field}"
@@ -114,7 +114,7 @@ def set_figure(run: MatrixDir, config: MatrixConfig, name: str) -> tuple[Figure,
 def attempt_figure(run: MatrixDir, config: MatrixConfig, row: str) -> tuple[Figure, str]:
     """The row's pictured attempt (saved by the run's ``attempts`` step) drawn on the row's own
     field, and words saying whose it is and which field."""
-    attempt = one_attempt(run.require(pictured_attempt_path(run, config, row), "matrix"))
+    attempt = one_attempt(run.require(pictured_attempt_path(run, config, row), "matrix"), bodies=config.run.bodies)
     label = f"{row} learning from {pictured_column(config).replace('_', ' ')}, trial seed {config.trial_seeds()[0]}"
     figure, field = _drawn(attempt, config, f"{label}: configuration {attempt.configuration}")
     return figure, f"{label} ({attempt.outcome.replace('_', ' ')}), {field}"
@@ -134,10 +134,8 @@ def draw_pictures(run: MatrixDir, config: MatrixConfig) -> list[Picture]:
 def _drawn(demo: Demonstration, config: MatrixConfig, title: str) -> tuple[Figure, str]:
     """``demo`` drawn on its body's own field, titled ``title`` and its outcome; the words that say
     which field."""
-    described = config.run.bodies.get(demo.body)
-    body = described if isinstance(described, WheeledBody) else None
-    figure = plot_demonstration(demo, body=body)
+    figure = plot_demonstration(demo)
     figure.axes[0].set_title(f"{title}: {demo.outcome.replace('_', ' ')}\n{len(demo.frames)} frames, "
-                             f"{demo.frames['t_s'][-1]:.1f} s, on the {demo.body}'s field", fontsize="medium")
-    scene = scene_of(body or demo.body)
-    return figure, f"on the {demo.body}'s {scene.field_length_mm:g} × {scene.field_width_mm:g} mm field"
+                             f"{demo.frames['t_s'][-1]:.1f} s, on the {demo.body.name}'s field", fontsize="medium")
+    scene = scene_of(demo.body)
+    return figure, f"on the {demo.body.name}'s {scene.field_length_mm:g} × {scene.field_width_mm:g} mm field"

@@ -80,11 +80,11 @@ def gather(run: MatrixDir, config: MatrixConfig) -> dict[str, Any]:
     cells: dict[str, dict[str, Any]] = {}
     for row in settings.imitators:
         body = config.body(row)
-        field = as_body(body).field
+        field = body.field
         imitators[row] = {"field": {"length_mm": field.length_mm, "width_mm": field.width_mm,
                                     "goal_mouth_mm": field.goal_mouth_mm, "ball_diameter_mm": field.ball_diameter_mm},
-                          "pitch": _pitch(field), "reach_mm": as_body(body).imitating_reach_mm,
-                          "primitives": own_set if body == "humanoid" else "wheeled"}
+                          "pitch": _pitch(field), "reach_mm": body.imitating_reach_mm,
+                          "primitives": own_set if body.kind == "humanoid" else "wheeled"}
         cells[row] = {column: _cell(run, config, row, column) for column in config.columns()}
         own_cell = cells[row].get("own_body")  # no transfer ratio where the own-body column is left out
         own = {m: None if own_cell is None else own_cell[m]["net_goals"]["mean"] for m in ("polymimic", "bco")}

@@ -44,10 +44,6 @@ class Shared:
     def cell(self, row: str, column: str, draw: int) -> tuple[DemonstratorSet, list[Demonstration]]:
         """A cell's demonstrator set and the demonstrations of its draw ``draw`` (trial or fit
         ``draw`` learns from them)."""
-        # A worker unpickles the config's bodies without making them, so their names are unknown
-        # there until each is made once: the demonstrations of a body of the config's name it.
-        for body in self.config.run.bodies.values():
-            dataclasses.replace(body)
         chosen = self.sets[row][column]
         return chosen, drawn(self.demonstrations[chosen.name], names=chosen.names, spec=chosen.spec, draw=draw,
                              per_configuration=self.config.matrix.sizes.demonstrations_per_configuration,

@@ -30,7 +30,6 @@ from typing import Any
 import numpy as np
 
 from polymimic.baselines.evaluation import ball_as_read
-from polymimic.bodies import as_body
 from polymimic.env import PenaltyKickEnv
 from polymimic.evaluation import Attempts, thesis_attempts
 from polymimic.learning import ImitatorPolicy
@@ -131,7 +130,7 @@ def _dagger(teacher: ImitatorPolicy, model: Any, counter: _Counter, until: int, 
     from polymimic.baselines import ppo
 
     body = teacher.body
-    length_mm = as_body(body).field.length_mm
+    length_mm = body.field.length_mm
     while counter.steps < until:
         configuration = 1 + int(rng.integers(2))
         env = PenaltyKickEnv(configuration=configuration, config=field_config, body=body)

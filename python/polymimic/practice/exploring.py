@@ -14,7 +14,6 @@ from typing import Any
 import numpy as np
 
 from polymimic import _native
-from polymimic.bodies import as_body, resolve
 from polymimic.field import PRIMITIVE_SETS, Demonstration, as_frames, primitive_command
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.playing import play_episode
@@ -32,10 +31,9 @@ def explored_attempts(policy: ImitatorPolicy, *, attempts_per_configuration: int
     if not 0.0 <= epsilon <= 1.0:
         raise ValueError(f"epsilon must be a probability in [0, 1], got {epsilon!r}")
     body = policy.body
-    driven = resolve(body)
-    near_mm = 4.0 * as_body(body).imitating_reach_mm if near_ball_mm is None else float(near_ball_mm)
-    own = PRIMITIVE_SETS["humanoid" if body == "humanoid" else "wheeled"]
-    commands = [primitive_command(p, driven) for p in own[:5]]
+    near_mm = 4.0 * body.imitating_reach_mm if near_ball_mm is None else float(near_ball_mm)
+    own = PRIMITIVE_SETS[body.primitive_set]
+    commands = [primitive_command(p, body) for p in own[:5]]
     out = []
     for configuration, episode_seed in _native.attempt_seeds(attempts_per_configuration, seed=seed):
         rng = np.random.default_rng([episode_seed, _EXPLORATION_STREAM])
@@ -47,7 +45,7 @@ def explored_attempts(policy: ImitatorPolicy, *, attempts_per_configuration: int
                 return commands[index] if index < len(commands) else str(episode.command_for(own[index]))
             return chosen
 
-        episode = play_episode(policy.player(), driven, configuration=configuration, seed=episode_seed,
+        episode = play_episode(policy.player(), body, configuration=configuration, seed=episode_seed,
                                field_config=field_config, instead=instead)
         out.append(Demonstration(frames=as_frames(episode.frames), outcome=str(episode.outcome),
                                  demonstrator="imitator", configuration=configuration, seed=episode_seed,

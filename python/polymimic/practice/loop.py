@@ -30,7 +30,7 @@ from typing import Any
 
 from polymimic import _native
 from polymimic._native import SegmentedDemonstrations
-from polymimic.bodies import as_body
+from polymimic.bodies import Body
 from polymimic.evaluation import Attempts, thesis_attempts
 from polymimic.field import Demonstration
 from polymimic.field_config import native_field_config
@@ -111,8 +111,8 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     marks = _checkpoints(checkpoints, budget)
     scored_on = thesis_attempts(evaluation, name="evaluation")
     made_from = _trained(policy)
-    field = as_body(made_from.body).field
-    body_name = policy.body
+    body = made_from.body
+    field = body.field
     learned: list[Demonstration] = []
     own: SegmentedDemonstrations | None = None
     lost = played_steps = round_index = 0
@@ -150,10 +150,10 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
                     if not attempt.tracked_throughout:
                         lost += 1
                         continue
-                    new.append(_as_tracked(attempt, field, body_name))
+                    new.append(_as_tracked(attempt, field, body))
                 if new:
                     learned += new
-                    batch = SegmentedDemonstrations(_segmented(new, made_from.recognizer, body_name, segmenter))
+                    batch = SegmentedDemonstrations(_segmented(new, made_from.recognizer, body, segmenter))
                     own = batch if own is None else own + batch
                     refined = policy.practised(own, weight=weight, refines=refines)
             score(mark)
@@ -168,7 +168,7 @@ def _bar(total: int, quiet: bool) -> Any:
                 disable=quiet or not sys.stderr.isatty())
 
 
-def _as_tracked(attempt: Demonstration, field: Any, body: str) -> Demonstration:
+def _as_tracked(attempt: Demonstration, field: Any, body: Body) -> Demonstration:
     """The attempt as the tracker showed it: cut where it shows the ball or robot leaving the
     field, with the outcome read off the frames."""
     outcome, keep = outcome_of(attempt.frames, field)
@@ -176,13 +176,12 @@ def _as_tracked(attempt: Demonstration, field: Any, body: str) -> Demonstration:
                          configuration=attempt.configuration, seed=attempt.seed, body=body)
 
 
-def _segmented(attempts: list[Demonstration], recognizer: Any, body: str,
+def _segmented(attempts: list[Demonstration], recognizer: Any, body: Body,
                segmenter: dict[str, Any] | None) -> list[dict[str, Any]]:
     """Its own attempts as the world model learns them: segmented by its own recogniser, played on
     its own field with its own reach as an imitator."""
     found = recognizer.segment_many([a.frames for a in attempts], **(segmenter or {}))
-    imitator = as_body(body)
-    return [{"demonstrator": "imitator", "outcome": a.outcome, "segments": s, "body": imitator, "imitating": True}
+    return [{"demonstrator": "imitator", "outcome": a.outcome, "segments": s, "body": body, "imitating": True}
             for a, s in zip(attempts, found)]
 
 

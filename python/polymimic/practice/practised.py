@@ -25,7 +25,7 @@ import numpy.typing as npt
 from polymimic import _native
 from polymimic._atomic import atomic_path
 from polymimic._native import ModelFileError
-from polymimic.bodies import as_body, resolve
+from polymimic.bodies import Body
 from polymimic.field import PRIMITIVE_SETS, primitive_command
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.playing import play_episode
@@ -54,8 +54,8 @@ class PractisedPolicy:
         self._players: list[PractisedPlayer] = []
 
     @property
-    def body(self) -> str:
-        """The name of the body it drives (the guide's)."""
+    def body(self) -> Body:
+        """The body it drives (the guide's)."""
         return self.guide.body
 
     @property
@@ -73,7 +73,7 @@ class PractisedPolicy:
         episode seeds and dicts), stepped by :meth:`player` in Python."""
         if starts is not None:
             raise ValueError("a practised policy plays the thesis's two configurations; starts= is for an imitator")
-        driven = resolve(self.body)
+        driven = self.body
         out = []
         for configuration, episode_seed in _native.attempt_seeds(attempts_per_configuration, seed=seed):
             player = self.player()
@@ -130,7 +130,7 @@ class PractisedPolicy:
         return cls(guide, actor, handover=about["handover"], method=about["method"], steps=about["steps"])
 
     def __repr__(self) -> str:
-        return f"PractisedPolicy(method={self.method!r}, body={self.body!r}, handover={self.handover})"
+        return f"PractisedPolicy(method={self.method!r}, body={self.body.name!r}, handover={self.handover})"
 
 
 class PractisedPlayer:
@@ -142,10 +142,10 @@ class PractisedPlayer:
     def __init__(self, policy: PractisedPolicy) -> None:
         self._policy = policy
         self._guide = policy.guide.player()
-        self._primitives = PRIMITIVE_SETS["humanoid" if policy.body == "humanoid" else "wheeled"]
-        driven = resolve(policy.body)
-        self._commands = [primitive_command(p, driven) for p in self._primitives[:5]]
-        self._length_mm = as_body(policy.body).field.length_mm
+        body = policy.body
+        self._primitives = PRIMITIVE_SETS[body.primitive_set]
+        self._commands = [primitive_command(p, body) for p in self._primitives[:5]]
+        self._length_mm = body.field.length_mm
         self._reset_state()
 
     def _reset_state(self) -> None:

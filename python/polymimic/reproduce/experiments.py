@@ -15,6 +15,7 @@ where it stopped and a finished one is never redone. Who takes part is in
 from __future__ import annotations
 
 import dataclasses
+import functools
 import json
 import os
 import pathlib
@@ -24,7 +25,7 @@ from typing import Any, TypedDict
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ImitatorPolicy as CompiledPolicy
 from polymimic._native import ModelFileError, PrimitiveRecognizer
-from polymimic.bodies import WheeledBody
+from polymimic.bodies import Body, BodySpec
 from polymimic.datasets import load_demonstrations, save_demonstrations
 from polymimic.evaluation import Attempts
 from polymimic.field import OUTCOMES
@@ -60,7 +61,7 @@ def evaluated_seeds(config: RunConfig) -> list[int]:
 
 def imitator_policy(trial: TrialResult, *, recognizer: PrimitiveRecognizer, config: LearningConfig,
                     control: str, demonstrations: SegmentedDemonstrations,
-                    body: str | WheeledBody = "lego") -> ImitatorPolicy:
+                    body: BodySpec = "lego") -> ImitatorPolicy:
     """The trial's imitator driving ``body`` by ``control``; the improved control also learns
     from the (segmented) ``demonstrations`` the imitator watched."""
     if control not in CONTROLS:
@@ -80,7 +81,7 @@ class TrialInputs:
     ordering: tuple[str, ...]
     phase_one: str
     learning: LearningConfig
-    body: str | WheeledBody = "lego"
+    body: Body = Body("lego")
     """The imitator's body, on whose setting the trial learns."""
 
 
@@ -102,7 +103,7 @@ class EvaluationInputs:
     """The experiment's segmented demonstrations: what its imitators watched."""
     field: dict[str, Any]
     """The field the imitators play on (the run's)."""
-    body: str | WheeledBody = "lego"
+    body: Body = Body("lego")
     """The imitators' body."""
 
 
@@ -256,7 +257,8 @@ def evaluate_imitators(run: RunDir, config: RunConfig, runner: TaskRunner, *,
                 keep = seed == seeds[0]
                 evaluation = run.evaluation_path(experiment.name, seed, control)
                 if _evaluation_done(run, evaluation, control, attempts.count) and (
-                        not keep or run.finished(run.attempts_path(experiment.name, control), load_demonstrations)):
+                        not keep or run.finished(run.attempts_path(experiment.name, control),
+                                                 functools.partial(load_demonstrations, bodies=config.bodies))):
                     continue
                 trial_path = run.trial_path(experiment.name, seed)
                 if not run.finished(trial_path, TrialResult.load):

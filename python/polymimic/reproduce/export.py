@@ -27,7 +27,7 @@ def export_run(run: RunDir, config: RunConfig, *, prefix: str, actions: str = "r
     written = []
     for who in (w for w in DEMONSTRATORS if body_of(w) == "lego"):
         demos = load_demonstrations(run.require(run.demonstrations_path(who), "record" if who != "average"
-                                                else "segment"))
+                                                else "segment"), bodies=config.bodies)
         dataset_id = f"{prefix}-{who}-v0"
         export.to_minari(demos, dataset_id, actions=actions, recognizer=recognizer, labels=labels,
                          segmenter=dataclasses.asdict(config.segmenter), overwrite=overwrite, **minari_info)

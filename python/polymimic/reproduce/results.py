@@ -193,14 +193,15 @@ def gather(run: RunDir, config: RunConfig) -> Results:
 
     recognizer = PrimitiveRecognizer.load(run.require(run.recognizer_path, "train"))
     demos = {who: load_demonstrations(run.require(run.demonstrations_path(who), "record" if who != "average"
-                                                  else "segment"))
+                                                  else "segment"), bodies=config.bodies)
              for who in (*DEMONSTRATORS, *config.demonstrators)}
     # Table 4.5 measures segments against the commands sent: not for a log that recorded none.
     to_segment = [d for who in demos for d in demos[who] if commands_recorded(d)]
     imitator_attempts = run.attempts_path("varying_skill", "thesis")
     if imitator_attempts.exists():  # the thesis's VaryingSkillTrained row of Table 4.5
         # As for every demonstrator, only attempts the tracker followed throughout.
-        to_segment += [a for a in load_demonstrations(imitator_attempts) if a.tracked_throughout]
+        to_segment += [a for a in load_demonstrations(imitator_attempts, bodies=config.bodies)
+                       if a.tracked_throughout]
     segments = recognition.segment_table(recognizer, to_segment, **dataclasses.asdict(config.segmenter))
     experiments: dict[str, ExperimentResults] = {}
     all_trials: list[TrialResult] = []
@@ -212,7 +213,7 @@ def gather(run: RunDir, config: RunConfig) -> Results:
                   for control in ("improved", "thesis")}
         experiments[name] = {**summarize_experiment(experiment, trials, lp_stride=config.experiments.lp_stride),
                              "imitator": scores["improved"], "imitator_thesis_control": scores["thesis"]}
-    test = load_self_observation(run.require(run.self_observation_path("test"), "self-observe"))
+    test = load_self_observation(run.require(run.self_observation_path("test"), "self-observe"), bodies=config.bodies)
     results: Results = {
         "format": FORMAT,
         "version": FORMAT_VERSION,

@@ -32,7 +32,7 @@ from polymimic import _native
 from polymimic._atomic import atomic_write_text
 from polymimic._native import PrimitiveRecognizer
 from polymimic.datasets import load_demonstrations, load_self_observation, save_demonstrations, save_self_observation
-from polymimic.field import PRIMITIVES, record, self_observation
+from polymimic.field import PRIMITIVES, Demonstration, PrimitiveSequence, record, self_observation
 from polymimic.learning import TrialResult, average_demonstrator
 from polymimic.reproduce.experiments import evaluate_imitators, learn
 from polymimic.reproduce.report import write_report
@@ -79,13 +79,21 @@ class Context:
             return loaded
         return self.run.finished(path, checked)
 
+    def demonstrations(self, path: pathlib.Path) -> list[Demonstration]:
+        """The demonstrations of the file ``path``, a body of the run's own read as its config describes it."""
+        return load_demonstrations(path, bodies=self.config.bodies)
+
+    def self_observation(self, path: pathlib.Path) -> list[PrimitiveSequence]:
+        """The self-observation of the file ``path``, the imitator's body read as the config describes it."""
+        return load_self_observation(path, bodies=self.config.bodies)
+
 
 def _self_observe(ctx: Context) -> int:
     settings, seeds, made = ctx.config.recognizer, ctx.config.seeds, 0
     for split, n, seed in (("train", settings.train_per_primitive, seeds.self_observation_train),
                            ("test", settings.test_per_primitive, seeds.self_observation_test)):
         path = ctx.run.self_observation_path(split)
-        if not ctx.finished(path, load_self_observation, count=len(PRIMITIVES) * n):
+        if not ctx.finished(path, ctx.self_observation, count=len(PRIMITIVES) * n):
             save_self_observation(self_observation(n, seed=seed, config=ctx.config.field,
                                                    body=ctx.config.imitator_body()), path)
             made += 1
@@ -96,7 +104,7 @@ def _record(ctx: Context) -> int:
     n, made = ctx.config.experiments.sizes.demonstrations_per_configuration, 0
     for who in RECORDED:
         path = ctx.run.demonstrations_path(who)
-        if not ctx.finished(path, load_demonstrations, count=2 * n):
+        if not ctx.finished(path, ctx.demonstrations, count=2 * n):
             demos = [d for configuration in (1, 2)
                      for d in record(who, configuration=configuration, n=n, seed=ctx.config.seeds.demonstrations,
                                      config=ctx.config.field)]
@@ -115,7 +123,7 @@ def _record_own(ctx: Context, name: str, spec: DemonstratorSpec) -> int:
     demonstrations of another file."""
     n, path = ctx.config.experiments.sizes.demonstrations_per_configuration, ctx.run.demonstrations_path(name)
     source, fingerprint = source_file(spec), path.with_name(f"{path.stem}.source.json")
-    if ctx.finished(path, load_demonstrations, count=demonstrations_expected(spec, n)):
+    if ctx.finished(path, ctx.demonstrations, count=demonstrations_expected(spec, n)):
         if source is not None and source.exists() and fingerprint.exists():
             recorded = json.loads(fingerprint.read_text(encoding="utf-8")).get("sha256")
             if recorded != file_digest(source):
@@ -144,13 +152,13 @@ def _record_average(ctx: Context) -> int:
     rule, the one whose net goals lie nearest the middle of the Poor's and the Expert's (§4.4.2;
     see :func:`polymimic.average_demonstrator`)."""
     path, n = ctx.run.demonstrations_path("average"), ctx.config.experiments.sizes.demonstrations_per_configuration
-    if ctx.finished(ctx.run.average_trial_path, TrialResult.load) and ctx.finished(path, load_demonstrations,
+    if ctx.finished(ctx.run.average_trial_path, TrialResult.load) and ctx.finished(path, ctx.demonstrations,
                                                                                    count=2 * n):
         return 0
     recognizer = PrimitiveRecognizer.load(ctx.run.require(ctx.run.recognizer_path, "train"))
     settings = ctx.config.experiments
     try:
-        recorded = {who: load_demonstrations(ctx.run.require(ctx.run.demonstrations_path(who), "record"))
+        recorded = {who: ctx.demonstrations(ctx.run.require(ctx.run.demonstrations_path(who), "record"))
                     for who in (*HETEROGENEOUS, "poor")}
         demos, trial = average_demonstrator(recognizer, n=settings.sizes.demonstrations_per_configuration,
                                             seed=ctx.config.seeds.demonstrations,
@@ -168,7 +176,7 @@ def _record_average(ctx: Context) -> int:
 def _train(ctx: Context) -> int:
     if ctx.finished(ctx.run.recognizer_path, PrimitiveRecognizer.load):
         return 0
-    sequences = load_self_observation(ctx.run.require(ctx.run.self_observation_path("train"), "self-observe"))
+    sequences = ctx.self_observation(ctx.run.require(ctx.run.self_observation_path("train"), "self-observe"))
     ctx.config.recognizer.train(sequences).save(ctx.run.recognizer_path)  # atomically
     return 1
 
@@ -182,10 +190,10 @@ def _segment(ctx: Context) -> int:
         path, recorded = ctx.run.segments_path(who), ctx.run.demonstrations_path(who)
         count, demos = demonstrations_expected(ctx.config.demonstrators.get(who), n), None
         if count is None:  # as many segmented as there are demonstrations, read once for both
-            demos = load_demonstrations(ctx.run.require(recorded, "record"))
+            demos = ctx.demonstrations(ctx.run.require(recorded, "record"))
             count = len(demos)
         if not ctx.finished(path, load_segments, count=count):
-            demos = demos if demos is not None else load_demonstrations(ctx.run.require(recorded, "record"))
+            demos = demos if demos is not None else ctx.demonstrations(ctx.run.require(recorded, "record"))
             save_segments(segment_demonstrations(demos, recognizer, **segmenter), path)
             made += 1
     return made

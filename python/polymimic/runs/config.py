@@ -32,7 +32,7 @@ from polymimic._native import PrimitiveRecognizer
 from polymimic._tables import Path, merged
 from polymimic._toml import documented as _doc
 from polymimic._toml import loads, write_table
-from polymimic.bodies import THESIS_BODIES, WheeledBody
+from polymimic.bodies import THESIS_BODIES, Body, WheeledBody
 from polymimic.evaluation import Attempts
 from polymimic.field import PrimitiveSequence, check_config, default_config, primitive_set_of
 from polymimic.learning import LearningConfig
@@ -227,15 +227,15 @@ class RunConfig(ConfigFile):
                               + (f" or of the run's [bodies.<name>] tables ({', '.join(own)})" if own else
                                  ", or describe it in a [bodies.<name>] table"))
 
-    def imitator_body(self) -> str | WheeledBody:
-        """The imitator's body as the library takes it: a built-in body's name, or the run's
-        :class:`~polymimic.bodies.WheeledBody` of that name.
+    def imitator_body(self) -> Body:
+        """The imitator's :class:`polymimic.Body`: a built-in body, or the one the run's
+        ``[bodies.<name>]`` table of that name describes.
 
         >>> RunConfig().imitator_body()
-        'lego'
+        Body('lego')
         """
         name = self.imitator.body
-        return name if name in IMITATOR_BODIES else self.bodies[name]
+        return Body(name if name in IMITATOR_BODIES else self.bodies[name])
 
     @property
     def thesis_imitator(self) -> bool:

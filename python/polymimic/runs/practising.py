@@ -21,7 +21,7 @@ from typing import Any, TypedDict
 
 from polymimic._atomic import atomic_write_text
 from polymimic._native import ModelFileError, PrimitiveRecognizer
-from polymimic.bodies import WheeledBody
+from polymimic.bodies import Body
 from polymimic.evaluation import Attempts
 from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate
 from polymimic.plots import MeanSd
@@ -51,7 +51,7 @@ class PracticeInputs:
     recognizer: PrimitiveRecognizer
     learning: LearningConfig
     demonstrations: Mapping[str, SegmentedDemonstrations]
-    body: str | WheeledBody
+    body: Body
     field: dict[str, Any]
     segmenter: dict[str, Any]
     steps: int

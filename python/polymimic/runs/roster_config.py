@@ -57,7 +57,7 @@ from collections.abc import Mapping, Sequence
 from typing import Any, Union
 
 from polymimic import field, tracks
-from polymimic.bodies import THESIS_BODY_FIELDS, WheeledBody, bodies_from_tables
+from polymimic.bodies import THESIS_BODY_FIELDS, BodySpec, WheeledBody, bodies_from_tables
 from polymimic.policies import DECISION_RATES_HZ
 from polymimic.runs.log_table import check_log_table
 from polymimic.runs.roster import DEMONSTRATORS, EXPERIMENTS, Experiment
@@ -288,7 +288,7 @@ def record_demonstrator(spec: DemonstratorSpec, *, n: int, seed: int, field_conf
     if isinstance(spec, ImportedDemonstrator):
         raise RosterError(f"[demonstrators.{spec.name}] is imported: bring its log in with `polymimic import-tracks "
                           f"FILE --as {spec.name} --run-dir <this run>` before recording")
-    body: str | WheeledBody = bodies.get(spec.body, spec.body)
+    body: BodySpec = bodies.get(spec.body, spec.body)
     if isinstance(spec, LogDemonstrator):
         imported = tracks.import_tracks(spec.log, demonstrator=spec.name, body=body, **spec.import_options())
         return imported.demonstrations, imported.summary()

@@ -17,6 +17,7 @@ import time
 from collections.abc import Callable, Sequence, Sized
 from typing import Any, TypeVar
 
+from polymimic.bodies import BodiesGiven
 from polymimic.datasets import load_demonstrations
 from polymimic.field import Demonstration
 from polymimic.runs.rundir import RunHouse
@@ -33,9 +34,11 @@ def counted(items: Items, count: int) -> Items:
     return items
 
 
-def each_member_recorded(path: pathlib.Path, *, names: Sequence[str], n: int) -> list[Demonstration]:
-    """The demonstrations at ``path``, if they are ``n`` per configuration of each member named."""
-    demos = counted(load_demonstrations(path), 2 * n * len(names))
+def each_member_recorded(path: pathlib.Path, *, names: Sequence[str], n: int,
+                         bodies: BodiesGiven = ()) -> list[Demonstration]:
+    """The demonstrations at ``path`` (a body of one's own read as ``bodies`` describes it), if
+    they are ``n`` per configuration of each member named."""
+    demos = counted(load_demonstrations(path, bodies=bodies), 2 * n * len(names))
     found = [d.demonstrator for d in demos]
     for name in names:
         if found.count(name) != 2 * n:

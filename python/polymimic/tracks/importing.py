@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from polymimic.bodies import WheeledBody, as_body, body_name
+from polymimic.bodies import BodySpec, as_body
 from polymimic.field import FRAME_DTYPE, OUTCOMES, UNKNOWN_COMMAND, Demonstration, command_table
 from polymimic.tracks.episodes import (
     Stretch,
@@ -96,7 +96,7 @@ MIN_READINGS = 2
 
 def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: Mapping[str, str] | None = None,
                   units: Mapping[str, str] | None = None, rate_hz: float | None = None,
-                  body: str | WheeledBody = "lego",
+                  body: BodySpec = "lego",
                   configuration: int | None = None, ignore: Collection[str] = (),
                   line_tolerance_mm: float = LINE_TOLERANCE_MM, max_gap_s: float | None = None) -> ImportedTracks:
     """Demonstrations from a tracker log: a CSV or Parquet table of timed readings.
@@ -121,9 +121,8 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
     rate_hz : float, optional
         The log's nominal rate, checked against its timestamps (the median interval within 10 %);
         without it the median interval is the nominal period.
-    body : {"lego", "tiny", "humanoid"} or polymimic.bodies.WheeledBody
-        The demonstrator's body (or a described body's name); its field (size, goals) is the one
-        the outcomes are read on.
+    body : polymimic.Body, {"lego", "tiny", "humanoid"} or polymimic.bodies.WheeledBody
+        The demonstrator's body; its field (size, goals) is the one the outcomes are read on.
     configuration : {1, 2}, optional
         Every episode's field configuration; else the log's configuration column, else read
         from each episode's first reading (the robot behind the ball toward −x is 1, else 2).
@@ -194,7 +193,8 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
     """
     max_gap_s = _max_gap_s(max_gap_s)
     checked = checked_units(units)
-    field = as_body(body).field
+    body = as_body(body)
+    field = body.field
     if not isinstance(demonstrator, str) or not demonstrator:
         raise ValueError(f"demonstrator must be a non-empty name, got {demonstrator!r}")
     rate_hz = _rate(rate_hz)
@@ -204,7 +204,7 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
     if configuration is not None and (isinstance(configuration, bool) or configuration not in (1, 2)):
         raise ValueError(f"configuration must be 1, 2 or None, got {configuration!r}")
     log = read_log(path, columns=columns, units=checked, ignore=ignore)
-    check_scale(log, field, checked, body=body_name(body))
+    check_scale(log, field, checked, body=body.name)
     stretches = split_episodes(log, field_length_mm=field.length_mm)
     check_headings(log, stretches, checked)
     period_s = nominal_period_s(log, stretches, rate_hz, checked["time"])
@@ -235,7 +235,7 @@ def import_tracks(path: str | os.PathLike[str], *, demonstrator: str, columns: M
             outcome = str(logged_outcome)
         demos.append(Demonstration(frames=frames, outcome=outcome, demonstrator=demonstrator,
                                    configuration=logged_configuration or configuration_of(frames), seed=index,
-                                   body=body_name(body)))
+                                   body=body))
         gaps_bridged.append(bridged)
         dropped.append(dropped_readings(log, stretch, period_s))
         episode_ids.append(stretch.episode)

@@ -16,7 +16,7 @@ use super::motion_table;
 use super::player::PyImitatorPlayer;
 use super::segments::batch;
 use super::trial::PyTrialResult;
-use crate::bodies::Body;
+use crate::bodies::{BodyValue, PyBody};
 use crate::convert::{Seed, non_negative, one_of};
 use crate::perceive::PyPrimitiveRecognizer;
 use crate::starts::{StartArg, start_dict};
@@ -60,7 +60,8 @@ pub struct PyImitatorPolicy {
     motion: MotionTable,
     config: LearningConfig,
     mode: ControlMode,
-    body: BodyKind,
+    /// The body as it was given (a body of one's own keeps its description).
+    body: Py<PyBody>,
     /// Shared by the policies [`Self::for_trial`] makes from this one.
     world: Option<Arc<WorldModel>>,
 }
@@ -69,7 +70,7 @@ pub struct PyImitatorPolicy {
 impl PyImitatorPolicy {
     #[new]
     #[pyo3(
-        signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None, body=Body(BodyKind::Lego),
+        signature = (trial, *, recognizer, config=None, control="thesis", demonstrations=None, body=None,
                      practice=None, practice_weight=1.0, refines=None, unlearned=None),
         text_signature = "(trial, *, recognizer, config=None, control='thesis', demonstrations=None, body='lego', practice=None, practice_weight=1.0, refines=None, unlearned=None)"
     )]
@@ -81,13 +82,17 @@ impl PyImitatorPolicy {
         config: Option<&Bound<'_, PyLearningConfig>>,
         control: &str,
         demonstrations: Option<&Bound<'_, PyAny>>,
-        body: Body,
+        body: Option<BodyValue>,
         practice: Option<&Bound<'_, PyAny>>,
         practice_weight: f64,
         refines: Option<Vec<String>>,
         unlearned: Option<Vec<String>>,
     ) -> PyResult<Self> {
-        let body = body.0;
+        let body_value = match body {
+            Some(given) => given,
+            None => BodyValue::lego(py)?,
+        };
+        let body = body_value.kind();
         let (unlearned, own_behaviours_only) = unlearned_parts(unlearned.as_deref().unwrap_or(&[]))?;
         let pitch = Pitch::of_body(body);
         let mode =
@@ -133,7 +138,7 @@ impl PyImitatorPolicy {
                 })))
             }
         };
-        Ok(Self { model, motion, config, mode, body, world })
+        Ok(Self { model, motion, config, mode, body: body_value.0, world })
     }
 
     /// Attempts from each start (by default the thesis's configurations 1 and 2; a chosen
@@ -200,7 +205,7 @@ impl PyImitatorPolicy {
     /// arguments would make, sooner. Under ``imitator_weighting="lp"`` or ``"lp_gain"`` what the
     /// improved control learns depends on the trial's LPs, so that is a ``ValueError``: make a
     /// new policy.
-    fn for_trial(&self, trial: &PyTrialResult) -> PyResult<Self> {
+    fn for_trial(&self, py: Python<'_>, trial: &PyTrialResult) -> PyResult<Self> {
         if self.world.is_some() && self.config.imitator_weighting != ImitatorWeighting::Even {
             return Err(PyValueError::new_err(format!(
                 "for_trial: under imitator_weighting=\"{}\" the improved control learns from the demonstrations by the trial's LPs; make a new ImitatorPolicy for each trial",
@@ -212,7 +217,7 @@ impl PyImitatorPolicy {
             motion: self.motion.clone(),
             config: self.config.clone(),
             mode: self.mode,
-            body: self.body,
+            body: self.body.clone_ref(py),
             world: self.world.clone(),
         })
     }
@@ -226,10 +231,10 @@ impl PyImitatorPolicy {
         }
     }
 
-    /// The name of the body the imitator drives.
+    /// The body the imitator drives, a :class:`polymimic.Body` (the one it was made with).
     #[getter]
-    fn body(&self) -> &'static str {
-        self.body.name()
+    fn body(&self, py: Python<'_>) -> Py<PyBody> {
+        self.body.clone_ref(py)
     }
 
     /// How many behaviours the model holds.
@@ -249,20 +254,25 @@ impl PyImitatorPolicy {
             model: &self.model,
             motion: &self.motion,
             config: &self.config,
-            body: self.body,
+            body: self.body_kind(),
             mode: self.mode,
             world: self.world.as_deref(),
         }
     }
 
     /// The body the imitator drives.
-    pub(crate) const fn body_kind(&self) -> BodyKind {
-        self.body
+    pub(crate) fn body_kind(&self) -> BodyKind {
+        self.body.get().kind
     }
 
     /// Control, body and size, as the reprs show them.
     pub(crate) fn describe(&self) -> String {
-        format!("control={:?}, body={:?}, behaviours={}", self.control(), self.body(), self.model.behaviours.len())
+        format!(
+            "control={:?}, body={:?}, behaviours={}",
+            self.control(),
+            self.body_kind().name(),
+            self.model.behaviours.len()
+        )
     }
 }
 

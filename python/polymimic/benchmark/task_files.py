@@ -9,7 +9,14 @@ from typing import Any, TypedDict
 
 from polymimic._native import ModelFileError
 from polymimic.benchmark.config import METHODS, TRIAL_INDEPENDENT, WORLD_WEIGHTINGS
-from polymimic.runs.checked_json import checked_outcomes, checked_tuning, integer_key, json_object, name_key
+from polymimic.runs.checked_json import (
+    checked_checkpoints,
+    checked_outcomes,
+    checked_tuning,
+    integer_key,
+    json_object,
+    name_key,
+)
 
 __all__ = ["SavedMethodEvaluation", "SavedPPOCurve", "SavedTuning", "load_controller_skill", "load_method_evaluation",
            "load_ppo_bc_curve", "load_ppo_bc_tuning", "load_ppo_curve", "load_tuning", "load_weighing"]
@@ -85,16 +92,13 @@ def load_ppo_curve(path: str | os.PathLike[str]) -> SavedPPOCurve:
     each one's goals and own goals within its attempts and its net goals their difference."""
     where, data = os.fspath(path), json_object(path, "ppo curve")
     attempts, total = integer_key(data, "attempts", where, 1), integer_key(data, "total_timesteps", where, 1)
-    checkpoints = data.get("checkpoints")
-    if not isinstance(checkpoints, list) or not checkpoints or not all(isinstance(c, dict) for c in checkpoints):
-        raise ModelFileError(f"{where}: key 'checkpoints' must list objects, got {checkpoints!r}")
+    checkpoints = checked_checkpoints(data, where, attempts)
     steps = []
     for index, point in enumerate(checkpoints):
         at = f"{where}: checkpoint {index}"
         steps.append(integer_key(point, "env_steps", at, 0))
-        goals, own = integer_key(point, "goals", at, 0, attempts), integer_key(point, "own_goals", at, 0, attempts)
-        if point.get("attempts") != attempts or point.get("net_goals") != goals - own or goals + own > attempts:
-            raise ModelFileError(f"{at}: its attempts, goals, own goals and net goals disagree ({point!r})")
+        if point.get("attempts") != attempts:
+            raise ModelFileError(f"{at}: key 'attempts' must be the curve's {attempts}, got {point.get('attempts')!r}")
     if steps[0] != 0 or steps != sorted(set(steps)) or steps[-1] < total:
         raise ModelFileError(f"{where}: the checkpoints' env_steps must rise from 0 to at least {total}, got {steps}")
     return SavedPPOCurve(seed=integer_key(data, "seed", where, 0),

@@ -21,7 +21,7 @@ from typing import Any
 from polymimic._native import ModelFileError
 from polymimic.field import OUTCOMES
 
-__all__ = ["checked_outcomes", "checked_tuning", "integer_key", "json_object", "name_key"]
+__all__ = ["checked_checkpoints", "checked_outcomes", "checked_tuning", "integer_key", "json_object", "name_key"]
 
 
 def json_object(path: str | os.PathLike[str], what: str) -> dict[str, Any]:
@@ -52,6 +52,29 @@ def name_key(data: dict[str, Any], key: str, where: str, allowed: tuple[str, ...
         expected = f"one of {', '.join(allowed)}" if allowed else "a string"
         raise ModelFileError(f"{where}: key {key!r} must be {expected}, got {value!r}")
     return value
+
+
+def checked_checkpoints(data: dict[str, Any], where: str, attempts: int) -> list[dict[str, Any]]:
+    """A learning curve's checkpoints (a practice's, a ppo curve's): a list of objects, each with
+    its goals and own goals within its ``attempts`` and its net goals their difference.
+
+    >>> checked_checkpoints({"checkpoints": [{"goals": 3, "own_goals": 1, "net_goals": 2}]}, "curve.json", 5)
+    [{'goals': 3, 'own_goals': 1, 'net_goals': 2}]
+    >>> checked_checkpoints({"checkpoints": [{"goals": 3, "own_goals": 1, "net_goals": 4}]}, "curve.json", 5)
+    Traceback (most recent call last):
+    ...
+    polymimic.ModelFileError: curve.json: checkpoint 0: its goals, own goals and net goals disagree ...
+    """
+    checkpoints = data.get("checkpoints")
+    if not isinstance(checkpoints, list) or not checkpoints or not all(isinstance(c, dict) for c in checkpoints):
+        raise ModelFileError(f"{where}: key 'checkpoints' must list objects, got {checkpoints!r}")
+    for index, point in enumerate(checkpoints):
+        at = f"{where}: checkpoint {index}"
+        goals, own = integer_key(point, "goals", at, 0, attempts), integer_key(point, "own_goals", at, 0, attempts)
+        net = point.get("net_goals")
+        if goals + own > attempts or type(net) is not int or net != goals - own:
+            raise ModelFileError(f"{at}: its goals, own goals and net goals disagree ({point!r})")
+    return checkpoints
 
 
 def checked_outcomes(data: dict[str, Any], where: str) -> tuple[int, list[str], int, int]:

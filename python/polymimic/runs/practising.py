@@ -28,7 +28,7 @@ from polymimic.plots import MeanSd
 from polymimic.practice.curve import plot_curves
 from polymimic.practice.methods import METHODS, practise
 from polymimic.runs.backends import TaskRunner
-from polymimic.runs.checked_json import integer_key, json_object, name_key
+from polymimic.runs.checked_json import checked_checkpoints, integer_key, json_object, name_key
 from polymimic.runs.config import ConfigError
 from polymimic.runs.progress import progress
 from polymimic.runs.rundir import RunHouse
@@ -139,16 +139,15 @@ def load_practice(path: str | os.PathLike[str]) -> SavedPractice:
     difference."""
     where, data = os.fspath(path), json_object(path, "practice")
     attempts, budget = integer_key(data, "attempts", where, 1), integer_key(data, "budget", where, 1)
-    checkpoints = data.get("checkpoints")
-    if not isinstance(checkpoints, list) or not checkpoints or not all(isinstance(c, dict) for c in checkpoints):
-        raise ModelFileError(f"{where}: key 'checkpoints' must list objects, got {checkpoints!r}")
+    checkpoints = checked_checkpoints(data, where, attempts)
     marks = []
     for index, point in enumerate(checkpoints):
         at = f"{where}: checkpoint {index}"
-        values = {key: integer_key(point, key, at, 0) for key in CHECKPOINT_KEYS}
-        if values["steps"] > values["checkpoint"] or values["goals"] + values["own_goals"] > attempts or \
-                values["net_goals"] != values["goals"] - values["own_goals"]:
-            raise ModelFileError(f"{at}: its steps, goals, own goals and net goals disagree ({point!r})")
+        # net goals may be negative; checked_checkpoints checked them against the goals
+        values = {key: integer_key(point, key, at, 0) for key in CHECKPOINT_KEYS if key != "net_goals"}
+        if values["steps"] > values["checkpoint"]:
+            raise ModelFileError(f"{at}: it played {values['steps']} steps, beyond its checkpoint "
+                                 f"{values['checkpoint']}")
         marks.append(values["checkpoint"])
     if marks[0] != 0 or marks != sorted(set(marks)) or marks[-1] != budget:
         raise ModelFileError(f"{where}: the checkpoints must rise from 0 to the budget {budget}, got {marks}")

@@ -30,6 +30,9 @@ def runtime_doc(path: list[str]) -> str | None:
         value = inspect.getattr_static(value, part, None)
         if value is None:
             return None
+        if isinstance(value, (staticmethod, classmethod)):
+            # the function's own docstring, not the wrapper's (CPython's own text, which differs by release)
+            value = value.__func__
     doc = getattr(value, "__doc__", None)
     return inspect.cleandoc(doc) if isinstance(doc, str) and doc.strip() else None
 

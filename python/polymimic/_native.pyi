@@ -880,24 +880,10 @@ class SegmentedDemonstrations:
     ) -> SegmentedDemonstrations: ...
     @staticmethod
     def concat(batches: Sequence[SegmentedDemonstrations]) -> SegmentedDemonstrations:
-        """staticmethod(function) -> method
+        """The batches one after another.
 
-        Convert a function to be a static method.
-
-        A static method does not receive an implicit first argument.
-        To declare a static method, use this idiom:
-
-             class C:
-                 @staticmethod
-                 def f(arg1, arg2, argN):
-                     ...
-
-        It can be called either on the class (e.g. C.f()) or on an instance
-        (e.g. C().f()). Both the class and the instance are ignored, and
-        neither is passed implicitly as the first argument to the method.
-
-        Static methods in Python are similar to those found in Java or C++.
-        For a more advanced concept, see the classmethod builtin.
+        >>> len(SegmentedDemonstrations.concat([SegmentedDemonstrations([]), SegmentedDemonstrations([])]))
+        0
         """
     def __add__(self, other: SegmentedDemonstrations, /) -> SegmentedDemonstrations: ...
     def __len__(self) -> int: ...

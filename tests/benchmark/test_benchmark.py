@@ -45,6 +45,11 @@ def _polymimic_on_pair() -> str:
             .replace(f"methods = {json.dumps(TINY_METHODS)}", 'methods = ["polymimic"]'))
 
 
+def _tiny_naming_its_own_methods() -> str:
+    """The tiny benchmark without its methods line, for a variant that names its own."""
+    return TINY.replace(f"methods = {json.dumps(TINY_METHODS)}\n", "", 1)
+
+
 @pytest.fixture(scope="module")
 def tiny_toml(tmp_path_factory):
     path = tmp_path_factory.mktemp("config") / "tiny.toml"
@@ -311,14 +316,14 @@ ppo_runs = 2
 """
 
 
-def test_ppo_learns_the_tiny_imitators_policy_as_the_library_does(tiny_toml, tmp_path):
+def test_ppo_learns_the_tiny_imitators_policy_as_the_library_does(tmp_path):
     pytest.importorskip("stable_baselines3")
     from polymimic.baselines import ppo
 
     path = tmp_path / "tiny_ppo.toml"
     settings = ('methods = ["polymimic", "ppo"]\nprofiles = ["pair"]\n'
                 "ppo_timesteps = 2048\nppo_eval_every = 2048\nppo_runs = 1\n")
-    config = tiny_toml.read_text().replace("[benchmark]\n", "[benchmark]\n" + settings, 1)
+    config = _tiny_naming_its_own_methods().replace("[benchmark]\n", "[benchmark]\n" + settings, 1)
     path.write_text('[imitator]\nbody = "tiny"\n' + config.replace('profiles = ["pair", "duo"]\n', ""))
     run = tmp_path / "run"
     assert main(["benchmark", "--config", str(path), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0
@@ -332,10 +337,10 @@ def test_ppo_learns_the_tiny_imitators_policy_as_the_library_does(tiny_toml, tmp
     assert ran["checkpoints"] == [{k: v for k, v in c.to_dict().items() if k != "wall_s"} for c in curve]
 
 
-def test_ppo_runs_once_for_every_profile_and_reports_the_steps_it_took(tiny_toml, tmp_path, capsys):
+def test_ppo_runs_once_for_every_profile_and_reports_the_steps_it_took(tmp_path, capsys):
     pytest.importorskip("stable_baselines3")
     path = tmp_path / "ppo.toml"
-    path.write_text(tiny_toml.read_text().replace("[benchmark]\n", PPO.strip() + "\n", 1))
+    path.write_text(_tiny_naming_its_own_methods().replace("[benchmark]\n", PPO.strip() + "\n", 1))
     one, two = tmp_path / "one", tmp_path / "two"
     for run, workers in ((one, "1"), (two, "2")):
         assert main(["benchmark", "--config", str(path), "--run-dir", str(run), "--quiet", "--workers", workers]) == 0
@@ -474,17 +479,16 @@ def test_export_reads_the_config_asked_for_as_the_benchmark_does(benchmarked, ti
 PPO_BC = """
 [benchmark]
 methods = ["polymimic", "polymimic_practice", "ppo_bc"]
-practice_method = "refine"
 ppo_timesteps = 4096
 ppo_eval_every = 4096
 ppo_runs = 1
 """
 
 
-def test_ppo_bc_clones_each_crowd_then_learns_and_stands_beside_practice(tiny_toml, tmp_path, capsys):
+def test_ppo_bc_clones_each_crowd_then_learns_and_stands_beside_practice(tmp_path, capsys):
     pytest.importorskip("stable_baselines3")
     path = tmp_path / "ppo_bc.toml"
-    path.write_text(tiny_toml.read_text().replace("[benchmark]\n", PPO_BC.strip() + "\n", 1))
+    path.write_text(_tiny_naming_its_own_methods().replace("[benchmark]\n", PPO_BC.strip() + "\n", 1))
     run_dir = tmp_path / "run"
     assert main(["benchmark", "--config", str(path), "--run-dir", str(run_dir), "--quiet", "--workers", "2"]) == 0
     run, summary = BenchmarkDir(run_dir), _summary(run_dir)

@@ -315,9 +315,9 @@ def test_ppo_learns_the_tiny_imitators_policy_as_the_library_does(tiny_toml, tmp
     from polymimic.baselines import ppo
 
     path = tmp_path / "tiny_ppo.toml"
-    settings = ('methods = ["polymimic", "ppo"]\nprofiles = ["pair"]\n'
-                "ppo_timesteps = 2048\nppo_eval_every = 2048\nppo_runs = 1\n")
-    config = tiny_toml.read_text().replace("[benchmark]\n", "[benchmark]\n" + settings, 1)
+    settings = 'profiles = ["pair"]\nppo_timesteps = 2048\nppo_eval_every = 2048\nppo_runs = 1\n'
+    config = (tiny_toml.read_text().replace("[benchmark]\n", "[benchmark]\n" + settings, 1)
+              .replace(f"methods = {json.dumps(TINY_METHODS)}", 'methods = ["polymimic", "ppo"]'))
     path.write_text('[imitator]\nbody = "tiny"\n' + config.replace('profiles = ["pair", "duo"]\n', ""))
     run = tmp_path / "run"
     assert main(["benchmark", "--config", str(path), "--run-dir", str(run), "--quiet", "--workers", "1"]) == 0

@@ -27,6 +27,7 @@ from typing import Any
 from _benchmark_run import imitators
 from polymimic import Attempts
 from polymimic._atomic import atomic_write_text
+from polymimic.baselines.tuning import VALIDATION_SEED_BASE
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.practice.methods import METHODS, practise
 
@@ -54,8 +55,9 @@ def main() -> None:
                     continue
                 started = time.perf_counter()
                 result = practise(policy, method=method, steps=options.steps, seed=trial_seed,
+                                  # the validation's episodes, as tuning draws them: apart from the evaluation's
                                   evaluation=Attempts(per_configuration=settings.tuning.validation_attempts_per_configuration,
-                                                      seed=settings.tuning.validation_seed),
+                                                      seed=VALIDATION_SEED_BASE + settings.tuning.validation_seed),
                                   field_config=config.field, segmenter=segmenter)
                 curve = [[p.checkpoint, p.steps, p.net_goals] for p in result.curve]
                 done[key] = {"curve": curve, "seconds": round(time.perf_counter() - started, 1)}

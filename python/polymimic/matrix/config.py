@@ -210,7 +210,7 @@ class MatrixConfig(ConfigFile):
 
     def body(self, row: str) -> Body:
         """The body named ``row``: a built-in one, or the config's ``[bodies.<row>]``."""
-        return Body(row if row in IMITATOR_BODIES else self.run.bodies[row])
+        return self.run.body(row)
 
     def evaluation_attempts(self) -> Attempts:
         """The attempts both methods play in every cell (``[matrix] attempts_per_configuration``

@@ -234,7 +234,10 @@ class RunConfig(ConfigFile):
         >>> RunConfig().imitator_body()
         Body('lego')
         """
-        name = self.imitator.body
+        return self.body(self.imitator.body)
+
+    def body(self, name: str) -> Body:
+        """The body ``name`` names: a built-in one, or the run's ``[bodies.<name>]``."""
         return Body(name if name in IMITATOR_BODIES else self.bodies[name])
 
     @property

@@ -307,6 +307,37 @@ def practice_targets() -> str | None:
     return "\n".join(lines) + "\n\n" + measured_by("practice_vs_ppo.json")
 
 
+PRACTICE_STUDY = DOCS.parent / "studies" / "which_practice_wins_on_validation.json"
+"""The study that chose practice's default: its curves on validation attempts, per method,
+profile and trial (``studies/which_practice_wins_on_validation.py``)."""
+
+
+def practice_validation_table() -> str | None:
+    """Each practice method's net goals before → after per profile and trial, its mean after, and
+    its deepest dip below the start; the highest mean after is in bold (the default)."""
+    if not PRACTICE_STUDY.is_file():
+        return None
+    done: dict[str, Any] = json.loads(PRACTICE_STUDY.read_text())
+    curves: dict[str, dict[tuple[str, int], list[list[float]]]] = {}
+    for key, value in done.items():
+        method, profile, trial, _steps = key.split("/")
+        curves.setdefault(method, {})[(profile, int(trial))] = value["curve"]
+    columns = sorted({column for by_trial in curves.values() for column in by_trial},
+                     key=lambda c: (c[0] != "one_good", c))
+    means = {m: statistics.fmean(c[-1][2] for c in by_trial.values()) for m, by_trial in curves.items()}
+    best = max(means.values())
+    lines = ["| method | " + " | ".join(f"`{p}` trial {t}" for p, t in columns) + " | mean after | deepest dip |",
+             "| --- " * (len(columns) + 3) + "|"]
+    for method, by_trial in curves.items():
+        cells = [f"{by_trial[c][0][2]:.0f} → {by_trial[c][-1][2]:.0f}" if c in by_trial else "—" for c in columns]
+        dip = min(min(point[2] for point in c) - c[0][2] for c in by_trial.values())
+        mean = f"{means[method]:.1f}"
+        lines.append(f"| `{method}` | " + " | ".join(cells)
+                     + f" | {f'**{mean}**' if means[method] == best else mean} | {signed(dip, 0) if dip else '0'} |")
+    return "\n".join(lines) + ("\n\nWritten by `docs/write_results.py` from "
+                               "`studies/which_practice_wins_on_validation.json`.")
+
+
 def _thousands(steps: int | None) -> str:
     return "never" if steps is None else f"{steps:,}".replace(",", " ")
 
@@ -426,6 +457,7 @@ TABLES: dict[str, tuple[str, Callable[[], str | None]]] = {
     "benchmark_skill": ("results/benchmark.md", skill_table),
     "practice_vs_ppo": ("results/practice.md", practice_vs_ppo_table),
     "practice_targets": ("results/practice.md", practice_targets),
+    "practice_validation": ("guides/practice.md", practice_validation_table),
 }
 """Each table's name, the page it sits in, and what writes it."""
 

@@ -10,7 +10,7 @@ written at once to ``--out`` (JSON), so a rerun goes on where it stopped; the su
 method's mean net goals per checkpoint and its lowest point below where it started.
 
 Run: ``python studies/which_practice_wins_on_validation.py RUN_DIR [--steps 50000] [--trials 2]
-[--out FILE]`` (``jsrl`` and ``distil`` need ``polymimic[rl]``; about an hour at full size).
+[--out FILE]`` (``jsrl`` and ``distil`` need ``polymimic[rl]``; about ten minutes at full size on two cores).
 """
 
 from __future__ import annotations

@@ -46,3 +46,21 @@ def test_the_reproduction_table_reads_the_default_world_from_results_json():
     column = MODULE.reproduction_column(results)
     results["demonstrators"]["expert"]["goals"] += 1
     assert MODULE.reproduction_column(results)[6] != column[6]
+
+
+def test_the_practice_default_is_the_method_the_validation_study_puts_first(tmp_path, monkeypatch):
+    """The default of practice is the study's winner, and the table's bold follows the file."""
+    from polymimic.practice.methods import DEFAULT_METHOD
+
+    table = MODULE.practice_validation_table()
+    assert f"| `{DEFAULT_METHOD}` |" in table and table.count("**") == 2
+    assert next(line for line in table.splitlines() if "**" in line).startswith(f"| `{DEFAULT_METHOD}` |")
+    study = json.loads(MODULE.PRACTICE_STUDY.read_text())
+    for key, value in study.items():
+        if not key.startswith(f"{DEFAULT_METHOD}/"):
+            value["curve"][-1][2] += 50  # every other method ends far above
+    moved = tmp_path / "study.json"
+    moved.write_text(json.dumps(study))
+    monkeypatch.setattr(MODULE, "PRACTICE_STUDY", moved)
+    assert not next(line for line in MODULE.practice_validation_table().splitlines()
+                    if "**" in line).startswith(f"| `{DEFAULT_METHOD}` |")

@@ -1,6 +1,8 @@
-"""Which practice method earns the default: each of :data:`polymimic.practice.methods.METHODS`
+"""Which practice method earns the default: each of :data:`polymimic.practice.methods.METHODS`,
+and ``refine`` (replaying its own policy, refining the ball's response and the states' values:
+``practice(..., explore=0, refines=None)``, which this study found earns no method of its own),
 practises the ``polymimic`` imitators of a finished benchmark run, scored on the run's
-validation attempts (its ``validation_seed``, disjoint from the evaluation's), never on the
+validation attempts (drawn as tuning draws them, apart from the evaluation's), never on the
 evaluation's.
 
 For each of ``--profiles`` (default ``one_good`` and ``half``), each of the first ``--trials``
@@ -29,14 +31,17 @@ from polymimic import Attempts
 from polymimic._atomic import atomic_write_text
 from polymimic.baselines.tuning import VALIDATION_SEED_BASE
 from polymimic.benchmark.rundir import BenchmarkDir
+from polymimic.practice import practice
 from polymimic.practice.methods import METHODS, practise
+
+STUDIED = ("refine", *METHODS)
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("run_dir", help="a finished `polymimic benchmark` run directory")
     parser.add_argument("--profiles", nargs="+", default=["one_good", "half"])
-    parser.add_argument("--methods", nargs="+", default=list(METHODS), choices=METHODS)
+    parser.add_argument("--methods", nargs="+", default=list(STUDIED), choices=STUDIED)
     parser.add_argument("--trials", type=int, default=2)
     parser.add_argument("--steps", type=int, default=50_000)
     parser.add_argument("--out", type=pathlib.Path, default=pathlib.Path("practice_on_validation.json"))
@@ -54,11 +59,15 @@ def main() -> None:
                 if key in done:
                     continue
                 started = time.perf_counter()
-                result = practise(policy, method=method, steps=options.steps, seed=trial_seed,
-                                  # the validation's episodes, as tuning draws them: apart from the evaluation's
-                                  evaluation=Attempts(per_configuration=settings.tuning.validation_attempts_per_configuration,
-                                                      seed=VALIDATION_SEED_BASE + settings.tuning.validation_seed),
-                                  field_config=config.field, segmenter=segmenter)
+                # the validation's episodes, as tuning draws them: apart from the evaluation's
+                validation = Attempts(per_configuration=settings.tuning.validation_attempts_per_configuration,
+                                      seed=VALIDATION_SEED_BASE + settings.tuning.validation_seed)
+                if method == "refine":
+                    result = practice(policy, steps=options.steps, seed=trial_seed, evaluation=validation,
+                                      field_config=config.field, segmenter=segmenter, explore=0.0, refines=None)
+                else:
+                    result = practise(policy, method=method, steps=options.steps, seed=trial_seed,
+                                      evaluation=validation, field_config=config.field, segmenter=segmenter)
                 curve = [[p.checkpoint, p.steps, p.net_goals] for p in result.curve]
                 done[key] = {"curve": curve, "seconds": round(time.perf_counter() - started, 1)}
                 atomic_write_text(options.out, json.dumps(done, indent=1) + "\n")

@@ -31,7 +31,7 @@ tuning_budget = 1
 methods = {methods}
 practice_steps = 300
 practice_trials = 1
-practice_method = "refine"
+practice_method = "explore"
 [profiles.pair]
 members = [{ controller = "expert", lapse = 0.0, name = "good" }, { controller = "expert", lapse = 1.0, name = "bad" }]
 [profiles.duo]
@@ -166,6 +166,7 @@ def test_practice_is_polymimics_imitator_after_the_first_trial_practising(benchm
     assert saved["checkpoints"][-1]["net_goals"] == practised["goals"] - practised["own_goals"]
     assert pair["methods"]["polymimic_practice"]["net_goals"]["mean"] == saved["checkpoints"][-1]["net_goals"]
     assert pair["methods"]["polymimic_practice"]["hyperparameters"]["practice_steps"] == 300
+    assert pair["methods"]["polymimic_practice"]["hyperparameters"]["practice_method"] == "explore"
     # The tiny config's recogniser learned from 40 one-second sequences of each of the 5 primitives.
     assert pair["practice"]["self_observation_steps"] == 200
     text = (benchmarked / "benchmark.md").read_text()
@@ -266,12 +267,21 @@ def test_bad_names_are_one_line_usage_errors(argv, message, tiny_toml, tmp_path,
     ("[benchmark]\nmax_decision_samples = 0\n", "max_decision_samples = 0"),
     ("[benchmark]\nbaseline_fits = 0\n", "baseline_fits = 0"),
     ("[benchmark]\nrefit_baselines = true\n", "[benchmark] refit_baselines is no more: use baseline_fits"),
+    ('[benchmark]\npractice_method = "refin"\n',
+     "[benchmark] practice_method must be one of explore, jsrl, distil, got 'refin'"),
+    ('[benchmark]\nmethods = ["polymimic", "polymimic_practice"]\npractice_method = "refine"\n',
+     "[benchmark] practice_method 'refine' is retired"),
 ])
 def test_bad_crowds_and_sizes_are_named(extra, message, tmp_path, capsys):
     path = tmp_path / "bad.toml"
     path.write_text(extra)
     assert main(["benchmark", "--config", str(path), "--run-dir", str(tmp_path / "r")]) == 2
     assert message in capsys.readouterr().err
+
+
+def test_a_run_made_before_refine_retired_still_opens_where_it_does_not_practise():
+    config = BenchmarkConfig.from_toml('[benchmark]\nmethods = ["polymimic", "bc"]\npractice_method = "refine"\n')
+    assert config.benchmark.practice_method == "refine"
 
 
 def test_the_report_states_every_choice(benchmarked):

@@ -52,6 +52,15 @@ def test_a_damaged_practice_is_refused_by_name(tmp_path, checkpoints, message):
     assert str(path) in str(error.value)
 
 
+def test_a_practice_by_a_retired_method_reads_and_an_unknown_one_is_refused(tmp_path):
+    points = [_point(0, 0, 2, 1), _point(100, 100, 3, 1)]
+    older = {k: v for k, v in _practice(points).items() if k != "method"}
+    assert load_practice(_written(tmp_path, older))["method"] == "refine"  # before there was a choice
+    assert load_practice(_written(tmp_path, {**older, "method": "refine"}))["method"] == "refine"
+    with pytest.raises(ModelFileError, match="key 'method' must be one of explore, jsrl, distil, got 'refin'"):
+        load_practice(_written(tmp_path, {**older, "method": "refin"}))
+
+
 def _ppo_point(steps, goals, own, attempts=50):
     return {"env_steps": steps, "goals": goals, "own_goals": own, "net_goals": goals - own, "attempts": attempts}
 

@@ -58,6 +58,21 @@ def test_practice_stays_within_its_checkpoints_and_learns_its_own_attempts(pract
         practised.attempts)
 
 
+def test_by_default_it_explores_around_the_ball_and_learns_physics_alone(lego, practised):
+    """The first round is the exploring play of the policy as it was, cut where the tracker
+    shows the field left; only the ball's response learns from it."""
+    from polymimic.practice.exploring import EXPLORE_RATE, explored_attempts
+
+    explored = explored_attempts(lego, attempts_per_configuration=3, seed=round_seed(5, 0), epsilon=EXPLORE_RATE)
+    plain = learning.evaluate(lego, attempts_per_configuration=3, seed=round_seed(5, 0)).attempts
+    by_seed = {a.seed: a for a in practised.attempts}  # the tracker may have lost some: left out
+    first = [(by_seed[e.seed], e, p) for e, p in zip(explored, plain) if e.seed in by_seed]
+    assert len(first) >= 3  # the round ends where its next attempt would pass the checkpoint
+    assert all(a.frames.tobytes() == e.frames[:len(a.frames)].tobytes() for a, e, _ in first)
+    assert any(a.frames.tobytes() != p.frames[:len(a.frames)].tobytes() for a, _, p in first)
+    assert practised.policy.made_from.practice_refines == ("ball_response",)
+
+
 def test_own_attempts_outcomes_are_read_off_the_frames(practised):
     from polymimic.bodies import as_body
     from polymimic.tracks.outcomes import outcome_of
@@ -123,6 +138,10 @@ def test_any_imitator_body_practises():
     ({"steps": 100, "checkpoints": [10, 50]}, "checkpoints must start at 0"),
     ({"steps": 100, "checkpoints": [0, 200]}, "checkpoint 200 lies beyond the budget of 100 steps"),
     ({"steps": 100, "attempts_per_round": 0}, "attempts_per_round must be an integer of at least 1"),
+    ({"steps": 100, "explore": 1.5}, r"explore must be a probability in \[0, 1\], got 1.5"),
+    ({"steps": 100, "explore": -0.1}, r"explore must be a probability in \[0, 1\], got -0.1"),
+    ({"steps": 100, "explore": True}, r"explore must be a probability in \[0, 1\], got True"),
+    ({"steps": 100, "explore": "0.3"}, r"explore must be a probability in \[0, 1\], got '0.3'"),
     ({"steps": 100, "evaluation": polymimic.Attempts(starts=[1])},
      r"evaluation must be attempts from the thesis's configurations, got starts=\(1,\)"),
 ])

@@ -55,12 +55,12 @@ def benchmarked(tmp_path_factory):
 
 def _practise(run, *extra, workers="1"):
     return cli.main(["practice", "--run-dir", str(run), "--steps", "150", "--trials", "1", "--quiet",
-                     "--workers", workers, *(extra or ("--method", "refine"))])
+                     "--workers", workers, *(extra or ("--method", "explore"))])
 
 
 def test_a_reproductions_improved_imitators_practise_beside_its_results(reproduced, capsys):
     assert _practise(reproduced) == 0
-    folder = reproduced / "practice" / "150_steps"
+    folder = reproduced / "practice" / "150_steps_explore"
     assert capsys.readouterr().out.strip() == str(folder / "practice.json")
     summary = json.loads((folder / "practice.json").read_text())
     assert (summary["format"], summary["version"], summary["run"], summary["steps"]) == (
@@ -79,14 +79,14 @@ def test_a_reproductions_improved_imitators_practise_beside_its_results(reproduc
 
 def test_a_rerun_redoes_only_what_is_missing_or_damaged(reproduced, capsys):
     assert _practise(reproduced) == 0
-    folder = reproduced / "practice" / "150_steps"
+    folder = reproduced / "practice" / "150_steps_explore"
     before = (folder / "practice.json").read_bytes()
     first = sorted(folder.glob("*/practice_0.json"))
     first[0].unlink()
     first[1].write_text(first[1].read_text()[:-20])
     capsys.readouterr()
     assert cli.main(["practice", "--run-dir", str(reproduced), "--steps", "150", "--trials", "1",
-                     "--workers", "1", "--method", "refine"]) == 0
+                     "--workers", "1", "--method", "explore"]) == 0
     err = capsys.readouterr().err
     assert "practised 2 imitators" in err and "is damaged" in err and "making it again" in err
     assert (folder / "practice.json").read_bytes() == before
@@ -94,7 +94,7 @@ def test_a_rerun_redoes_only_what_is_missing_or_damaged(reproduced, capsys):
 
 def test_a_benchmarks_imitators_practise_and_two_workers_give_the_same_bits(benchmarked, tmp_path):
     assert _practise(benchmarked) == 0
-    folder = benchmarked / "practice" / "150_steps"
+    folder = benchmarked / "practice" / "150_steps_explore"
     one = (folder / "practice.json").read_bytes()
     assert json.loads(one)["run"] == "benchmark" and list(json.loads(one)["groups"]) == ["pair"]
     for path in folder.glob("*/practice_*.json"):
@@ -108,7 +108,7 @@ def test_a_benchmarks_imitators_practise_and_two_workers_give_the_same_bits(benc
     (["--trials", "3"], "--trials 3: the run has 2 trials per profile"),
 ])
 def test_bad_input_is_one_line(benchmarked, capsys, extra, message):
-    assert cli.main(["practice", "--run-dir", str(benchmarked), "--quiet", "--method", "refine", *extra]) == 2
+    assert cli.main(["practice", "--run-dir", str(benchmarked), "--quiet", "--method", "explore", *extra]) == 2
     err = capsys.readouterr().err.strip()
     assert message in err and len(err.splitlines()) == 1
 
@@ -122,7 +122,7 @@ def test_the_default_method_without_the_rl_extra_says_how_to_install_it(benchmar
     assert cli.main(["practice", "--run-dir", str(benchmarked), "--quiet"]) == 2
     err = capsys.readouterr().err.strip()
     assert err.endswith('--method distil: practice by distil needs stable-baselines3 and torch: pip install '
-                        '"polymimic[rl]" (refine and explore need neither)') and len(err.splitlines()) == 1
+                        '"polymimic[rl]" (explore needs neither)') and len(err.splitlines()) == 1
     assert not (benchmarked / "practice" / "25000_steps_distil").exists()  # refused before anything is made
 
 

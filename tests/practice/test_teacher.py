@@ -99,7 +99,7 @@ def test_practise_names_its_methods_and_refuses_others(teacher):
 
     taught = practise(teacher, method="jsrl", steps=300, evaluation=polymimic.Attempts(per_configuration=1))
     assert [p.checkpoint for p in taught.curve][-1] == 300 and taught.attempts == []
-    with pytest.raises(ValueError, match="unknown practice method 'rl'; expected one of refine, explore, jsrl, distil"):
+    with pytest.raises(ValueError, match="unknown practice method 'rl'; expected one of explore, jsrl, distil"):
         practise(teacher, method="rl", steps=10)
     for method in ("jsrl", "distil"):  # refused before any learning: a practised policy plays no starts of its own
         with pytest.raises(ValueError, match="evaluation must be attempts from the thesis's configurations"):

@@ -35,6 +35,7 @@ from polymimic.crowds import PROFILES, Crowd
 from polymimic.evaluation import Attempts
 from polymimic.practice.methods import DEFAULT_METHOD as DEFAULT_PRACTICE
 from polymimic.practice.methods import METHODS as PRACTICE_METHODS
+from polymimic.practice.methods import RETIRED_METHODS as RETIRED_PRACTICE_METHODS
 from polymimic.runs.config import (
     ConfigError,
     ConfigFile,
@@ -102,7 +103,7 @@ class BenchmarkSettings:
     practice_steps: int = _doc("environment steps polymimic_practice's imitators practise for, after learning "
                                "(polymimic.practice; scored at 0, 1000, 2500, 5000, 10000, 25000 and 50000 steps "
                                "within it)", 25_000)
-    practice_method: str = _doc("how polymimic_practice's imitators practise: distil, jsrl, refine or explore "
+    practice_method: str = _doc("how polymimic_practice's imitators practise: distil, jsrl or explore "
                                 "(polymimic.practice.methods; distil and jsrl need polymimic[rl])", DEFAULT_PRACTICE)
     practice_trials: int = _doc("trials whose polymimic imitator practises, the first ones (every trial where "
                                 "there are fewer; each practice costs practice_steps)", 5)
@@ -116,13 +117,22 @@ class BenchmarkSettings:
                               "first_trial, first_trial + 1, …: a seed draws the fit's decision samples and seeds its "
                               "classifier (bco_lp is fitted after each of the first lp_plugin_trials trials)", 3)
 
+    def _check_practice_method(self) -> None:
+        """One of practice's methods; a retired one only in a run that does not practise (a run
+        made before it retired still opens)."""
+        if self.practice_method in RETIRED_PRACTICE_METHODS:
+            if "polymimic_practice" in self.methods:
+                raise ConfigError(f"[benchmark] practice_method {self.practice_method!r} is retired (it earned no "
+                                  f"place on validation: docs/guides/practice.md); use one of "
+                                  f"{', '.join(PRACTICE_METHODS)} (explore needs no extra either)")
+        elif self.practice_method not in PRACTICE_METHODS:
+            raise ConfigError(f"[benchmark] practice_method must be one of {', '.join(PRACTICE_METHODS)}, got "
+                              f"{self.practice_method!r}")
+
     def __post_init__(self) -> None:
         for name in ("lp_plugin_trials", "baseline_fits", "offline_gradient_steps", "ppo_timesteps", "ppo_eval_every",
                      "ppo_runs", "practice_steps", "practice_trials"):
             in_range("benchmark", name, getattr(self, name), 1)
-        if self.practice_method not in PRACTICE_METHODS:
-            raise ConfigError(f"[benchmark] practice_method must be one of {', '.join(PRACTICE_METHODS)}, got "
-                              f"{self.practice_method!r}")
         for name in ("profiles", "methods", "world_weightings"):
             value = getattr(self, name)
             if not isinstance(value, (list, tuple)) or not value:
@@ -130,6 +140,7 @@ class BenchmarkSettings:
             if len(set(value)) != len(value):
                 raise ConfigError(f"[benchmark] {name} names {next(v for v in value if value.count(v) > 1)!r} twice")
             object.__setattr__(self, name, tuple(value))
+        self._check_practice_method()
         for weighting in self.world_weightings:
             if weighting not in WORLD_WEIGHTINGS:
                 raise ConfigError(f"[benchmark] world_weightings: unknown weighting {weighting!r}; expected one of "

@@ -216,7 +216,7 @@ def _method_summary(run: BenchmarkDir, config: BenchmarkConfig, profile: str, me
             chosen["world_weighting"] = config.learning.world_weighting
         if method == PRACTISED:
             chosen.update(practice_steps=config.benchmark.practice_steps, practice_trials=len(saved),
-                          refines="the ball's response and the states' values, from its own attempts")
+                          practice_method=config.benchmark.practice_method)
         chosen["tuned"] = "no: the thesis's constants"
         if method == WEIGHED:
             weighting, scores = chosen_world_weighting(run, config, profile)

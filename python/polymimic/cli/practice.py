@@ -3,8 +3,7 @@
 On a benchmark run, polymimic's imitator of each profile; on a reproduction, the improved
 imitator of each experiment: those of the first ``--trials`` trials practise for ``--steps``
 environment steps each and are scored on the run's evaluation attempts at every checkpoint. The
-curves are written beside the run's results, under ``practice/<steps>_steps_<method>/``
-(``practice/<steps>_steps/`` for ``refine``).
+curves are written beside the run's results, under ``practice/<steps>_steps_<method>/``.
 """
 
 from __future__ import annotations
@@ -35,8 +34,8 @@ def add(commands: Any, *, sources: Sequence[PracticeSource]) -> None:
     practice.add_argument("--method", choices=METHODS, default=DEFAULT_METHOD,
                           help="distil: distil the imitator into an RL actor and fine-tune it, the actor replacing "
                                "it only once a check shows it no worse (default; needs polymimic[rl]); jsrl: guide "
-                               "an RL learner (needs polymimic[rl]); refine: replay its own play, refine its world "
-                               "model; explore: play exploring around the ball, learn its physics")
+                               "an RL learner (needs polymimic[rl]); explore: play exploring around the ball, learn "
+                               "its physics (needs neither)")
     practice.add_argument("--trials", type=positive, default=5,
                           help="how many trials' imitators practise, the first ones (default 5)")
     practice.add_argument("--only", nargs="+", metavar="NAME",
@@ -80,7 +79,7 @@ def _practice(args: argparse.Namespace, sources: Sequence[PracticeSource]) -> in
         path = run.require(ready.trial_path(group, seed), "learn")
         return str(path.read_text(encoding="utf-8"))
 
-    folder = run.path / "practice" / (f"{args.steps}_steps" + ("" if args.method == "refine" else f"_{args.method}"))
+    folder = run.path / "practice" / f"{args.steps}_steps_{args.method}"
     with run.lock("polymimic practice"), TaskRunner(backend=args.backend, workers=args.workers,
                                                     address=args.address) as runner:
         summary, ran = practise_run(run, folder, ready.inputs, [(g, s) for g in ready.groups for s in seeds],

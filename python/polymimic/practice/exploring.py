@@ -18,7 +18,10 @@ from polymimic.field import PRIMITIVE_SETS, Demonstration, as_frames, primitive_
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.playing import play_episode
 
-__all__ = ["explored_attempts"]
+__all__ = ["EXPLORE_RATE", "explored_attempts"]
+
+EXPLORE_RATE = 0.3
+"""Practice's rate of random primitives with the ball near (``practice``'s default ``explore``)."""
 
 _EXPLORATION_STREAM = 0x6578706C  # apart from every stream the field draws from
 

@@ -36,7 +36,7 @@ from polymimic.field import Demonstration
 from polymimic.field_config import native_field_config
 from polymimic.learning import ImitatorPolicy, evaluate
 from polymimic.practice.curve import DEFAULT_CHECKPOINTS, CurvePoint
-from polymimic.practice.exploring import explored_attempts
+from polymimic.practice.exploring import EXPLORE_RATE, explored_attempts
 from polymimic.practice.practised import PractisedPolicy
 from polymimic.practice.seeds import MAX_ROUNDS, check_apart, round_seed
 from polymimic.tracks.outcomes import outcome_of
@@ -75,7 +75,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
              checkpoints: Sequence[int] | None = None, attempts_per_round: int = 10,
              evaluation: Attempts = Attempts(), field_config: Any = None,
              segmenter: dict[str, Any] | None = None, weight: float = 1.0, quiet: bool = True,
-             explore: float = 0.0, refines: Sequence[str] | None = None) -> Practice:
+             explore: float = EXPLORE_RATE, refines: Sequence[str] | None = ("ball_response",)) -> Practice:
     """Practise ``policy`` (an improved-control :class:`~polymimic.ImitatorPolicy` made with its
     constructor) for a budget of ``steps`` environment steps under practice ``seed``.
 
@@ -89,10 +89,12 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     weighting); ``quiet=False`` shows a progress bar of steps. Zero steps return the policy as it
     was, bit for bit.
 
-    ``explore`` above 0 plays each round's attempts exploring around the ball at that rate
-    (:func:`~polymimic.practice.exploring.explored_attempts`) instead of as the policy chooses;
+    ``explore`` plays each round's attempts exploring around the ball at that rate
+    (:func:`~polymimic.practice.exploring.explored_attempts`; 0: as the policy chooses);
     ``refines`` names the parts of the world model its own attempts refine (default: the ball's
-    response and the states' values; exploring play is physics, ``["ball_response"]``).
+    response alone, physics; None: the ball's response and the states' values). The defaults are
+    the ``explore`` method; ``explore=0, refines=None`` replays its own policy and refines both,
+    which did not earn a method of its own on validation attempts (docs/guides/practice.md).
 
     >>> import polymimic
     >>> from polymimic import learning, recognition
@@ -108,6 +110,8 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     budget = _whole("steps", steps, 0)
     seed = _whole("seed", seed, 0, 2**62 - 1)
     per_round = _whole("attempts_per_round", attempts_per_round, 1)
+    if isinstance(explore, bool) or not isinstance(explore, numbers.Real) or not 0.0 <= explore <= 1.0:
+        raise ValueError(f"explore must be a probability in [0, 1], got {explore!r}")
     marks = _checkpoints(checkpoints, budget)
     scored_on = thesis_attempts(evaluation, name="evaluation")
     made_from = _trained(policy)

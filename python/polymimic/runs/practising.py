@@ -26,7 +26,7 @@ from polymimic.evaluation import Attempts
 from polymimic.learning import ImitatorPolicy, LearningConfig, SegmentedDemonstrations, TrialResult, evaluate
 from polymimic.plots import MeanSd
 from polymimic.practice.curve import plot_curves
-from polymimic.practice.methods import METHODS, practise
+from polymimic.practice.methods import DEFAULT_METHOD, METHODS, RETIRED_METHODS, practise
 from polymimic.runs.backends import TaskRunner
 from polymimic.runs.checked_json import checked_checkpoints, integer_key, json_object, name_key
 from polymimic.runs.config import ConfigError
@@ -57,7 +57,7 @@ class PracticeInputs:
     steps: int
     attempts: Attempts
     """The run's evaluation attempts, on which every checkpoint is scored."""
-    method: str = "refine"
+    method: str = DEFAULT_METHOD
     """How the imitators practise (:data:`polymimic.practice.methods.METHODS`)."""
 
 
@@ -130,7 +130,8 @@ class SavedPractice(TypedDict):
     attempts_lost: int
     checkpoints: list[dict[str, int]]
     method: str
-    """How it practised (files from before there was a choice: ``"refine"``)."""
+    """How it practised: one of :data:`~polymimic.practice.methods.METHODS`, or ``"refine"``
+    (:data:`~polymimic.practice.methods.RETIRED_METHODS`) in a file from before the method had to earn its place."""
 
 
 def load_practice(path: str | os.PathLike[str]) -> SavedPractice:
@@ -161,7 +162,7 @@ def load_practice(path: str | os.PathLike[str]) -> SavedPractice:
 
 def _method(data: dict[str, Any], where: str) -> str:
     method = data.get("method", "refine")
-    if method not in METHODS:
+    if method not in METHODS + RETIRED_METHODS:
         raise ModelFileError(f"{where}: key 'method' must be one of {', '.join(METHODS)}, got {method!r}")
     return str(method)
 
@@ -190,7 +191,7 @@ FORMAT, VERSION = "polymimic.practice", 1
 
 
 def is_practice_of(saved: SavedPractice | None, group: str, trial_seed: int, *, evaluation: Attempts, budget: int,
-                   method: str = "refine") -> bool:
+                   method: str = DEFAULT_METHOD) -> bool:
     """Whether ``saved`` (a practice file read whole, or None) is the practice asked for: of this
     group's trial, scored on the ``evaluation`` attempts (the file keeps their seed and count),
     for this budget of steps, by this method."""

@@ -319,6 +319,10 @@ def practice_validation_table() -> str | None:
         return None
     done: dict[str, Any] = json.loads(PRACTICE_STUDY.read_text())
     curves: dict[str, dict[tuple[str, int], list[list[float]]]] = {}
+    budgets = {key.split("/")[3] for key in done}
+    if len(budgets) != 1:
+        raise SystemExit(f"{PRACTICE_STUDY.name} holds practices of {len(budgets)} budgets ({sorted(budgets)}); "
+                         f"the table compares one")
     for key, value in done.items():
         method, profile, trial, _steps = key.split("/")
         curves.setdefault(method, {})[(profile, int(trial))] = value["curve"]
@@ -331,7 +335,7 @@ def practice_validation_table() -> str | None:
     for method, by_trial in curves.items():
         cells = [f"{by_trial[c][0][2]:.0f} → {by_trial[c][-1][2]:.0f}" if c in by_trial else "—" for c in columns]
         dip = min(min(point[2] for point in c) - c[0][2] for c in by_trial.values())
-        mean = f"{means[method]:.1f}"
+        mean = f"{means[method]:.2f}"  # two profiles of two trials: quarters, shown exactly
         lines.append(f"| `{method}` | " + " | ".join(cells)
                      + f" | {f'**{mean}**' if means[method] == best else mean} | {signed(dip, 0) if dip else '0'} |")
     return "\n".join(lines) + ("\n\nWritten by `docs/write_results.py` from "

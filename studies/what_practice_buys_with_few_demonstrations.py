@@ -27,7 +27,9 @@ def main() -> None:
     for trial_seed in range(options.trials):
         trial = learning.run_trial(batch, recognizer=recognizer, ordering=[options.who], seed=trial_seed)
         policy = learning.ImitatorPolicy(trial, recognizer=recognizer, control="improved", demonstrations=batch)
-        result = practice(policy, steps=options.steps, seed=trial_seed, evaluation=polymimic.Attempts())
+        # replaying its own play, refining the ball's response and the states' values: what this study measured
+        result = practice(policy, steps=options.steps, seed=trial_seed, evaluation=polymimic.Attempts(),
+                          explore=0.0, refines=None)
         print(options.who, options.n, trial_seed, [(p.checkpoint, p.net_goals) for p in result.curve], flush=True)
 
 

@@ -355,7 +355,8 @@ class ImitatorPolicy(_native.ImitatorPolicy):
         its own recogniser) beside the demonstrations: what :func:`polymimic.practice` makes
         after each round. ``weight`` is what every sample of its own attempts weighs;
         ``refines`` the parts they refine (``"ball_response"``, ``"state_value"``,
-        ``"push_region"``; default the first two)."""
+        ``"push_region"``; None: the first two; ``practice`` passes ``("ball_response",)`` by
+        default)."""
         made = self._made_from
         return type(self)(made.trial, recognizer=made.recognizer, config=LearningConfig(**made.config.to_dict()),
                           control=made.control, demonstrations=made.demonstrations, body=made.body,

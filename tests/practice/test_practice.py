@@ -73,6 +73,16 @@ def test_by_default_it_explores_around_the_ball_and_learns_physics_alone(lego, p
     assert practised.policy.made_from.practice_refines == ("ball_response",)
 
 
+def test_replaying_its_own_play_learns_the_states_values_too(lego):
+    """``explore=0, refines=None``: the first round is the policy's own play, as evaluate plays it."""
+    replayed = practice(lego, steps=200, checkpoints=[0, 200], seed=5, explore=0, refines=None, **SMALL)
+    plain = {a.seed: a for a in learning.evaluate(lego, attempts_per_configuration=3, seed=round_seed(5, 0)).attempts}
+    first = [(a, plain[a.seed]) for a in replayed.attempts if a.seed in plain]
+    assert len(first) >= 3
+    assert all(a.frames.tobytes() == p.frames[:len(a.frames)].tobytes() for a, p in first)
+    assert replayed.policy.made_from.practice_refines is None
+
+
 def test_own_attempts_outcomes_are_read_off_the_frames(practised):
     from polymimic.bodies import as_body
     from polymimic.tracks.outcomes import outcome_of

@@ -101,6 +101,8 @@ def test_practise_names_its_methods_and_refuses_others(teacher):
     assert [p.checkpoint for p in taught.curve][-1] == 300 and taught.attempts == []
     with pytest.raises(ValueError, match="unknown practice method 'rl'; expected one of explore, jsrl, distil"):
         practise(teacher, method="rl", steps=10)
+    with pytest.raises(ValueError, match=r"practice method 'refine' is retired .* explore=0, refines=None"):
+        practise(teacher, method="refine", steps=10)
     for method in ("jsrl", "distil"):  # refused before any learning: a practised policy plays no starts of its own
         with pytest.raises(ValueError, match="evaluation must be attempts from the thesis's configurations"):
             practise(teacher, method=method, steps=10, evaluation=polymimic.Attempts(starts=[1]))

@@ -123,8 +123,9 @@ class BenchmarkSettings:
         if self.practice_method in RETIRED_PRACTICE_METHODS:
             if "polymimic_practice" in self.methods:
                 raise ConfigError(f"[benchmark] practice_method {self.practice_method!r} is retired (it earned no "
-                                  f"place on validation: docs/guides/practice.md); use one of "
-                                  f"{', '.join(PRACTICE_METHODS)} (explore needs no extra either)")
+                                  f"place on validation: docs/guides/practice.md), so polymimic_practice cannot "
+                                  f"practise by it; use one of {', '.join(PRACTICE_METHODS)} (explore needs no extra "
+                                  f"either)")
         elif self.practice_method not in PRACTICE_METHODS:
             raise ConfigError(f"[benchmark] practice_method must be one of {', '.join(PRACTICE_METHODS)}, got "
                               f"{self.practice_method!r}")

@@ -3,15 +3,16 @@ from what the tracker showed of them.
 
 Each round the policy plays ``attempts_per_round`` attempts from each field configuration, from
 practice seeds (:mod:`polymimic.practice.seeds`), watched by the same tracker as any
-demonstrator. An attempt the tracker lost the robot or the ball in is left out and counted, as
+demonstrator; by default it explores around the ball as it plays
+(:mod:`polymimic.practice.exploring`). An attempt the tracker lost the robot or the ball in is left out and counted, as
 §3.2.1 leaves out a demonstration; every other is cut where the tracker shows the ball or the
 robot leaving the field, its outcome read off its frames (:func:`polymimic.tracks.outcomes.outcome_of`,
 never the simulator's), and segmented by the imitator's own recogniser. The policy is then made
 again with all its own attempts so far beside the demonstrations
-(:meth:`polymimic.ImitatorPolicy.practised`): what the improved control learns of its own body's
-pushes, how the ball answered each primitive and how the states it passed through ended, now
-also comes from its own play. Where the demonstrators pushed from stays theirs: the imitator's own
-pushes, many of them corrections, widen that region and cost goals.
+(:meth:`polymimic.ImitatorPolicy.practised`): how the ball answered each of its own body's
+primitives now also comes from its own play (and, with ``refines=None``, how the states it passed
+through ended). Where the demonstrators pushed from stays theirs: the imitator's own pushes, many
+of them corrections, widen that region and cost goals.
 
 One environment step is one second of play (an attempt of 35.2 s costs 36 steps). The attempts
 of a round are played together; at a checkpoint only the round's leading attempts that fit within

@@ -49,6 +49,10 @@ def practise(policy: ImitatorPolicy, *, method: str = DEFAULT_METHOD, steps: int
     :class:`~polymimic.practice.practised.PractisedPolicy` and learns from no attempts of its
     own (``attempts`` empty). A ``ModuleNotFoundError`` says how to install the ``rl`` extra a
     method through the teacher needs where stable-baselines3 is missing."""
+    if method in RETIRED_METHODS:
+        raise ValueError(f"practice method {method!r} is retired (it earned no place on validation: "
+                         f"docs/guides/practice.md); practice(policy, ..., explore=0, refines=None) still plays it, "
+                         f"or use one of {', '.join(METHODS)}")
     if method not in METHODS:
         raise ValueError(f"unknown practice method {method!r}; expected one of {', '.join(METHODS)}")
     needs_rl_extra(method)

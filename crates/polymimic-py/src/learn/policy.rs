@@ -276,8 +276,8 @@ impl PyImitatorPolicy {
     }
 }
 
-/// The parts of the world model practice refines, by name (default: the ball's response and
-/// the states' values).
+/// The parts of the world model practice refines, by name (None: the ball's response and the
+/// states' values).
 fn refined_parts(names: Option<&[String]>) -> PyResult<Refines> {
     let Some(names) = names else {
         return Ok(Refines { ball_response: true, state_value: true, push_region: false });

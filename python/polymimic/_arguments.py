@@ -7,7 +7,7 @@ import math
 import numbers
 from typing import Any
 
-__all__ = ["in_range", "integer", "probability"]
+__all__ = ["in_range", "integer", "probability", "whole"]
 
 
 def integer(name: str, value: Any, low: int, high: int | None = None) -> int:
@@ -21,13 +21,19 @@ def integer(name: str, value: Any, low: int, high: int | None = None) -> int:
     ...
     TypeError: n must be an integer, got True
     """
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
-        raise TypeError(f"{name} must be an integer, got {value!r}")
-    number = int(value)
+    number = whole(name, value)
     if number < low or (high is not None and number > high):
         allowed = f"at least {low}" if high is None else f"in {low}..{high}"
         raise ValueError(f"{name} must be {allowed}, got {number}")
     return number
+
+
+def whole(name: str, value: Any) -> int:
+    """``value`` as an int; a ``TypeError`` naming ``name`` for a bool or a non-integer (its range
+    is the caller's to check, in the caller's words)."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be an integer, got {value!r}")
+    return int(value)
 
 
 def in_range(name: str, value: float, low: float, high: float | None = None, *, exclusive_low: bool = False) -> None:

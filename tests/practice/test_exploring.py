@@ -22,7 +22,7 @@ def test_exploring_practice_explores_near_the_ball_and_refines_only_what_it_is_t
     assert [a.frames.tobytes() for a in wild] != [a.frames.tobytes() for a in plain]
     assert [a.frames.tobytes() for a in wild] == \
         [a.frames.tobytes() for a in explored_attempts(teacher, attempts_per_configuration=2, seed=6, epsilon=1.0)]
-    with pytest.raises(ValueError, match=r"epsilon must be a probability in \[0, 1\]"):
+    with pytest.raises(ValueError, match=r"epsilon must be a number in \[0, 1\], got 1.5"):
         explored_attempts(teacher, attempts_per_configuration=1, seed=6, epsilon=1.5)
     from polymimic.practice import practice
 

@@ -132,7 +132,8 @@ def evaluate_policy(policy: Policy, *, attempts: Attempts | None = None, attempt
         seed = None if seed is None else _check_seed(seed, low=0, high=VALIDATION_SEED_BASE,
                                                      what="seeds from 2**62 are validation's")
     chosen = attempts_given(attempts, attempts_per_configuration=attempts_per_configuration, seed=seed)
-    _check_seed(chosen.seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's")
+    if attempts is not None:  # the keyword's seed was checked above
+        _check_seed(chosen.seed, low=0, high=VALIDATION_SEED_BASE, what="seeds from 2**62 are validation's")
     return play(policy, chosen.episodes(), field_config=field_config)
 
 

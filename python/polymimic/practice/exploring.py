@@ -14,6 +14,7 @@ from typing import Any
 import numpy as np
 
 from polymimic import _native
+from polymimic._arguments import probability
 from polymimic.field import PRIMITIVE_SETS, Demonstration, as_frames, primitive_command
 from polymimic.learning import ImitatorPolicy
 from polymimic.practice.playing import play_episode
@@ -31,8 +32,7 @@ def explored_attempts(policy: ImitatorPolicy, *, attempts_per_configuration: int
     """``attempts_per_configuration`` attempts from each configuration under ``seed`` (the
     episodes :func:`polymimic.evaluate` would play), exploring at rate ``epsilon`` whenever the
     ball is within ``near_ball_mm`` of the robot (default: four times the body's reach)."""
-    if not 0.0 <= epsilon <= 1.0:
-        raise ValueError(f"epsilon must be a probability in [0, 1], got {epsilon!r}")
+    epsilon = probability("epsilon", epsilon)
     body = policy.body
     near_mm = 4.0 * body.imitating_reach_mm if near_ball_mm is None else float(near_ball_mm)
     own = PRIMITIVE_SETS[body.primitive_set]

@@ -30,6 +30,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from polymimic import _native
+from polymimic._arguments import probability
 from polymimic._native import SegmentedDemonstrations
 from polymimic.bodies import Body
 from polymimic.evaluation import Attempts, thesis_attempts
@@ -111,8 +112,7 @@ def practice(policy: ImitatorPolicy, *, steps: int = 25_000, seed: int = 0,
     budget = _whole("steps", steps, 0)
     seed = _whole("seed", seed, 0, 2**62 - 1)
     per_round = _whole("attempts_per_round", attempts_per_round, 1)
-    if isinstance(explore, bool) or not isinstance(explore, numbers.Real) or not 0.0 <= explore <= 1.0:
-        raise ValueError(f"explore must be a probability in [0, 1], got {explore!r}")
+    explore = probability("explore", explore)
     marks = _checkpoints(checkpoints, budget)
     scored_on = thesis_attempts(evaluation, name="evaluation")
     made_from = _trained(policy)

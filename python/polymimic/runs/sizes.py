@@ -20,9 +20,8 @@ ValueError: trials = 0 must be at least 1
 from __future__ import annotations
 
 import dataclasses
-from typing import Any
 
-from polymimic._arguments import in_range
+from polymimic._arguments import in_range, whole
 from polymimic._toml import documented
 from polymimic.evaluation import Attempts
 
@@ -42,7 +41,9 @@ class Sizes:
 
     def __post_init__(self) -> None:
         for field in dataclasses.fields(self):
-            in_range(field.name, _integer(field.name, getattr(self, field.name)), 1)
+            value = whole(field.name, getattr(self, field.name))
+            in_range(field.name, value, 1)
+            object.__setattr__(self, field.name, value)  # a numpy integer kept as the int it stands for
 
     def evaluation_attempts(self, *, seed: int) -> Attempts:
         """The attempts every evaluated policy plays: ``attempts_per_configuration`` from each of
@@ -67,14 +68,9 @@ class TuningSizes:
 
     def __post_init__(self) -> None:
         for field in dataclasses.fields(self):
-            value = _integer(field.name, getattr(self, field.name))
+            value = whole(field.name, getattr(self, field.name))
             if field.name == "validation_seed":
                 in_range(field.name, value, 0, 2**62 - 1)
             else:
                 in_range(field.name, value, 1)
-
-
-def _integer(name: str, value: Any) -> int:
-    if isinstance(value, bool) or not isinstance(value, int):
-        raise TypeError(f"{name} must be an integer, got {value!r}")
-    return value
+            object.__setattr__(self, field.name, value)

@@ -50,8 +50,11 @@ impl<'a, 'py> FromPyObject<'a, 'py> for BodyValue {
         if let Ok(body) = obj.cast::<PyBody>() {
             return Ok(Self(body.to_owned().unbind()));
         }
-        let body =
-            if obj.hasattr("_native_body")? { PyBody::new(&obj.to_owned())? } else { PyBody::of(obj.extract::<Body>()?.0) };
+        let body = if obj.hasattr("_native_body")? {
+            PyBody::new(&obj.to_owned())?
+        } else {
+            PyBody::of(obj.extract::<Body>()?.0)
+        };
         Ok(Self(Py::new(obj.py(), body)?))
     }
 }

@@ -16,7 +16,7 @@ use crate::bodies::Body;
 use crate::command::parse_command;
 use crate::convert::{Seed, matrix, non_negative};
 use crate::errors::{field_error, field_param_error};
-use crate::starts::StartArg;
+use crate::starts::{StartArg, configuration_number};
 use polymimic_learn::StartAt;
 
 /// Columns of the frame arrays handed to Python.
@@ -38,21 +38,6 @@ pub(crate) fn field_config(json: Option<&str>) -> PyResult<FieldConfig> {
     };
     config.check().map_err(|e| PyValueError::new_err(format!("field config: {e}")))?;
     Ok(config)
-}
-
-pub(crate) fn configuration(number: i64) -> PyResult<Configuration> {
-    match number {
-        1 => Ok(Configuration::One),
-        2 => Ok(Configuration::Two),
-        other => Err(PyValueError::new_err(format!("configuration must be 1 or 2, got {other}"))),
-    }
-}
-
-pub(crate) fn configuration_number(configuration: Configuration) -> u8 {
-    match configuration {
-        Configuration::One => 1,
-        Configuration::Two => 2,
-    }
 }
 
 pub(crate) fn positive(name: &str, value: i64) -> PyResult<usize> {
@@ -80,7 +65,7 @@ pub fn record_demonstrations<'py>(
 ) -> PyResult<Bound<'py, PyList>> {
     let who = Demonstrator::from_name(demonstrator).map_err(|e| PyValueError::new_err(e.to_string()))?;
     let body = body.map_or(who.body(), |b| b.0);
-    let (configuration, n) = (self::configuration(configuration)?, positive("n", n)?);
+    let (configuration, n) = (crate::starts::configuration(configuration)?, positive("n", n)?);
     let (lapse, config) = (LapseRate::new(lapse).map_err(field_param_error)?, field_config(config)?);
     let demonstrations =
         py.detach(|| record_on(who, body, configuration, n, seed.0, lapse, &config)).map_err(field_error)?;
@@ -237,7 +222,7 @@ impl PyEpisode {
                 EpisodeSetup::starting(body, start, &config).map_err(field_param_error)?
             }
             (Some(StartArg(StartAt::Configuration(c))), _) => EpisodeSetup::configuration(body, c, &config),
-            (None, Some(number)) => EpisodeSetup::configuration(body, self::configuration(number)?, &config),
+            (None, Some(number)) => EpisodeSetup::configuration(body, crate::starts::configuration(number)?, &config),
             (None, None) => EpisodeSetup::alone(body),
         };
         let episode = Episode::new(&setup, &config, seed.0).map_err(field_error)?;

@@ -10,8 +10,9 @@ use pyo3::prelude::*;
 use crate::bodies::{Body, PyBody};
 use crate::convert::{matrix, non_negative};
 use crate::errors::field_error;
-use crate::field::{configuration, field_config};
+use crate::field::field_config;
 use crate::starts::StartArg;
+use crate::starts::configuration;
 use polymimic_learn::StartAt;
 
 /// An outcome's index in `polymimic.field.OUTCOMES`.

@@ -15,7 +15,8 @@ use crate::bodies::Body;
 use crate::command::parse_command;
 use crate::convert::Seed;
 use crate::errors::{PolicyError, field_error, field_param_error};
-use crate::field::{configuration, configuration_number, field_config, positive, recording};
+use crate::field::{field_config, positive, recording};
+use crate::starts::{configuration, configuration_number};
 use crate::watchdog::Watchdog;
 
 /// The shortest and longest a policy may be given to answer, s.

@@ -8,10 +8,25 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyTuple};
 
-use crate::field::configuration;
-
 const EXPECTED: &str =
     "1 or 2 (the thesis's configurations) or {\"robot\": (x_mm, y_mm, theta_rad), \"ball\": (x_mm, y_mm)}";
+
+/// One of the thesis's two configurations, by its number.
+pub(crate) fn configuration(number: i64) -> PyResult<Configuration> {
+    match number {
+        1 => Ok(Configuration::One),
+        2 => Ok(Configuration::Two),
+        other => Err(PyValueError::new_err(format!("configuration must be 1 or 2, got {other}"))),
+    }
+}
+
+/// A configuration's number, as Python writes it.
+pub(crate) fn configuration_number(configuration: Configuration) -> u8 {
+    match configuration {
+        Configuration::One => 1,
+        Configuration::Two => 2,
+    }
+}
 
 /// A start as Python wrote it, named `what` in errors.
 pub struct StartArg(pub StartAt);

@@ -161,7 +161,7 @@ pub fn attempt_seeds(attempts_per_configuration: i64, seed: u64) -> PyResult<Vec
     let n = non_negative("attempts_per_configuration", attempts_per_configuration)?;
     Ok(polymimic_learn::attempt_seeds(n, seed)
         .into_iter()
-        .map(|(configuration, s)| (crate::field::configuration_number(configuration), s))
+        .map(|(configuration, s)| (crate::starts::configuration_number(configuration), s))
         .collect())
 }
 

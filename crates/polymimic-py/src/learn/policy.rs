@@ -29,7 +29,7 @@ pub(crate) fn attempt_list<'py>(py: Python<'py>, attempts: &[Attempt]) -> PyResu
         let item = PyDict::new(py);
         item.set_item("frames", crate::field::frames_array(py, &attempt.frames)?)?;
         item.set_item("outcome", attempt.outcome.name())?;
-        item.set_item("configuration", attempt.configuration.map(crate::field::configuration_number))?;
+        item.set_item("configuration", attempt.configuration.map(crate::starts::configuration_number))?;
         item.set_item("start", start_dict(py, attempt.configuration, &attempt.start)?)?;
         item.set_item("seed", attempt.seed)?;
         item.set_item("behaviours", attempt.behaviours.clone())?;
@@ -181,7 +181,7 @@ impl PyImitatorPolicy {
         seed: Seed,
         field_config: Option<&str>,
     ) -> PyResult<Bound<'py, PyList>> {
-        let (configuration, n) = (crate::field::configuration(configuration)?, crate::field::positive("n", n)?);
+        let (configuration, n) = (crate::starts::configuration(configuration)?, crate::field::positive("n", n)?);
         let field = crate::field::field_config(field_config)?;
         let policy = self.view();
         let recorded =

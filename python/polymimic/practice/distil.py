@@ -54,7 +54,8 @@ __all__ = ["distil"]
 def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
            evaluation: Attempts = Attempts(), dagger_rounds: int = 3,
            dagger_steps: int = 2000, warmup_steps: int = 4000, teacher_weight: float = 1.0,
-           tolerance: float = 0.02, gate: Gate | None = None, field_config: Any = None,
+           tolerance: float = 0.02, confidence_z: float = 2.0, gate: Gate | None = None,
+           field_config: Any = None,
            **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by distilling it into a PPO actor and fine-tuning, for ``steps``
     environment steps under ``seed``, scored on the ``evaluation`` attempts (an
@@ -62,8 +63,9 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
     starts of its own) at each of ``checkpoints`` (default: every fifth of the budget); the
     actor replaces the teacher once a check (``gate``: by default every 10 000 steps, on 100
     practice attempts) shows it no worse than the teacher alone on the same attempts, to within
-    ``tolerance`` net goals per attempt with confidence, and a later actor replaces it when a
-    check shows the same and nets more on the check's attempts."""
+    ``tolerance`` net goals per attempt with confidence (less ``confidence_z`` standard errors),
+    and a later actor replaces it when a check shows the same and nets more on the check's
+    attempts."""
     from stable_baselines3.common.callbacks import BaseCallback  # type: ignore[import-not-found, unused-ignore]
 
     from polymimic.baselines import ppo
@@ -74,7 +76,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
     counter = _Counter()
     checks = gate if gate is not None else Gate()
     _, reference = _teacher_alone(teacher, seed, field_config, checks)
-    earning = Curriculum(stages=(0,), reference=reference, tolerance=tolerance)
+    earning = Curriculum(stages=(0,), reference=reference, tolerance=tolerance, confidence_z=confidence_z)
     ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,
                           wrap=lambda env: _RollIn(env, teacher, lambda: 0, counter), **ppo_kwargs)

@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import numbers
 import pickle
 from collections.abc import Callable, Sequence
 from typing import Any
@@ -88,6 +89,10 @@ class Curriculum:
             raise ValueError(f"stages must be decreasing handovers ≥ 0, got {self.stages}")
         if not self.reference:
             raise ValueError("reference must hold the teacher's return on at least one attempt")
+        for name in ("tolerance", "confidence_z"):
+            value = getattr(self, name)
+            if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0.0 <= float(value) < math.inf:
+                raise ValueError(f"{name} must be a finite number of at least 0, got {value!r}")
         self.reference = tuple(float(r) for r in self.reference)
 
     @classmethod
@@ -251,8 +256,8 @@ class TeacherPractice:
 
 def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Sequence[int] | None = None,
          evaluation: Attempts = Attempts(), stages: int = 8,
-         handover_start: int | None = None, tolerance: float = 0.02, gate: Gate | None = None,
-         field_config: Any = None,
+         handover_start: int | None = None, tolerance: float = 0.02, confidence_z: float = 2.0,
+         gate: Gate | None = None, field_config: Any = None,
          on_checkpoint: Callable[[list[CurvePoint]], None] | None = None, **ppo_kwargs: Any) -> TeacherPractice:
     """Practise ``teacher`` by jump-start RL for ``steps`` environment steps under ``seed`` (the
     learner's network, its environments' episodes and the practice attempts), scored on the
@@ -262,8 +267,8 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     ``handover_start`` decisions (default: the teacher's median scoring attempt) down to 0, each
     earned when a check (:class:`Gate`: by default every 10 000 steps, on 100 practice attempts)
     shows the practised policy no worse than the teacher alone on the same attempts, to within
-    ``tolerance`` net goals per attempt with confidence (:meth:`Curriculum.lower_bound`).
-    ``ppo_kwargs`` go to stable-baselines3's PPO.
+    ``tolerance`` net goals per attempt with confidence (:meth:`Curriculum.lower_bound`, less
+    ``confidence_z`` standard errors). ``ppo_kwargs`` go to stable-baselines3's PPO.
     """
     from polymimic.baselines import ppo
 
@@ -272,7 +277,7 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
     checks = gate if gate is not None else Gate()
     typical, reference = _teacher_alone(teacher, seed, field_config, checks)
     schedule = Curriculum.stepping_down(handover_start if handover_start is not None else typical, stages,
-                                        reference=reference, tolerance=tolerance)
+                                        reference=reference, tolerance=tolerance, confidence_z=confidence_z)
     counter = _Counter()
     ppo_kwargs = {"n_steps": 256, "batch_size": 64, **ppo_kwargs}
     model = ppo.new_model(seed=seed, field_config=field_config, imitator=teacher.body,

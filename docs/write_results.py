@@ -307,39 +307,82 @@ def practice_targets() -> str | None:
     return "\n".join(lines) + "\n\n" + measured_by("practice_vs_ppo.json")
 
 
-PRACTICE_STUDY = DOCS.parent / "studies" / "which_practice_wins_on_validation.json"
+STUDIES = DOCS.parent / "studies"
+PRACTICE_STUDY = STUDIES / "which_practice_wins_on_validation.json"
 """The study that chose practice's default: its curves on validation attempts, per method,
 profile and trial (``studies/which_practice_wins_on_validation.py``)."""
+CHECK_STUDY = STUDIES / "which_check_keeps_distil_safe.json"
+"""The study that chose ``distil``'s check, on the same validation attempts
+(``studies/which_check_keeps_distil_safe.py``)."""
+
+Curves = dict[str, dict[tuple[str, int], list[list[float]]]]
+"""A study's curves: per variant (a method, a check), per (profile, trial), ``[checkpoint, steps,
+net goals]`` at each checkpoint."""
+
+
+def study_curves(path: pathlib.Path) -> Curves | None:
+    """A practice study's file (keys ``variant/profile/trial/steps``) as curves, or None if it is
+    not there; a file of more than one budget is refused (a table compares one)."""
+    if not path.is_file():
+        return None
+    done: dict[str, Any] = json.loads(path.read_text())
+    budgets = {key.split("/")[3] for key in done}
+    if len(budgets) != 1:
+        raise SystemExit(f"{path.name} holds practices of {len(budgets)} budgets ({sorted(budgets)}); "
+                         f"the table compares one")
+    curves: Curves = {}
+    for key, value in done.items():
+        variant, profile, trial, _steps = key.split("/")
+        curves.setdefault(variant, {})[(profile, int(trial))] = value["curve"]
+    return curves
+
+
+def _deepest_dip(curves: Curves, variant: str) -> str:
+    dip = min(min(point[2] for point in c) - c[0][2] for c in curves[variant].values())
+    return signed(dip, 0) if dip else "0"
+
+
+def _means_after(curves: Curves) -> dict[str, float]:
+    return {v: statistics.fmean(c[-1][2] for c in by_trial.values()) for v, by_trial in curves.items()}
 
 
 def practice_validation_table() -> str | None:
     """Each practice method's net goals before → after per profile and trial, its mean after, and
     its deepest dip below the start; the highest mean after is in bold (the default)."""
-    if not PRACTICE_STUDY.is_file():
+    curves = study_curves(PRACTICE_STUDY)
+    if curves is None:
         return None
-    done: dict[str, Any] = json.loads(PRACTICE_STUDY.read_text())
-    curves: dict[str, dict[tuple[str, int], list[list[float]]]] = {}
-    budgets = {key.split("/")[3] for key in done}
-    if len(budgets) != 1:
-        raise SystemExit(f"{PRACTICE_STUDY.name} holds practices of {len(budgets)} budgets ({sorted(budgets)}); "
-                         f"the table compares one")
-    for key, value in done.items():
-        method, profile, trial, _steps = key.split("/")
-        curves.setdefault(method, {})[(profile, int(trial))] = value["curve"]
     columns = sorted({column for by_trial in curves.values() for column in by_trial},
                      key=lambda c: (c[0] != "one_good", c))
-    means = {m: statistics.fmean(c[-1][2] for c in by_trial.values()) for m, by_trial in curves.items()}
+    means = _means_after(curves)
     best = max(means.values())
     lines = ["| method | " + " | ".join(f"`{p}` trial {t}" for p, t in columns) + " | mean after | deepest dip |",
              "| --- " * (len(columns) + 3) + "|"]
     for method, by_trial in curves.items():
         cells = [f"{by_trial[c][0][2]:.0f} → {by_trial[c][-1][2]:.0f}" if c in by_trial else "—" for c in columns]
-        dip = min(min(point[2] for point in c) - c[0][2] for c in by_trial.values())
         mean = f"{means[method]:.2f}"  # two profiles of two trials: quarters, shown exactly
         lines.append(f"| `{method}` | " + " | ".join(cells)
-                     + f" | {f'**{mean}**' if means[method] == best else mean} | {signed(dip, 0) if dip else '0'} |")
+                     + f" | {f'**{mean}**' if means[method] == best else mean} | {_deepest_dip(curves, method)} |")
     return "\n".join(lines) + ("\n\nWritten by `docs/write_results.py` from "
                                "`studies/which_practice_wins_on_validation.json`.")
+
+
+def practice_checks_table() -> str | None:
+    """Each check's mean net goals before and after, how many practices ended above, at and below
+    their teacher, and the deepest dip below the start."""
+    curves = study_curves(CHECK_STUDY)
+    if curves is None:
+        return None
+    means = _means_after(curves)
+    lines = ["| check | practices | mean before | mean after | above the teacher | level with it | below it "
+             "| deepest dip |", "| --- " * 8 + "|"]
+    for check, by_trial in curves.items():
+        ends = [c[-1][2] - c[0][2] for c in by_trial.values()]
+        before = statistics.fmean(c[0][2] for c in by_trial.values())
+        lines.append(f"| `{check}` | {len(ends)} | {before:.2f} | {means[check]:.2f} | {sum(e > 0 for e in ends)} | "
+                     f"{sum(e == 0 for e in ends)} | {sum(e < 0 for e in ends)} | {_deepest_dip(curves, check)} |")
+    return "\n".join(lines) + ("\n\nWritten by `docs/write_results.py` from "
+                               "`studies/which_check_keeps_distil_safe.json`.")
 
 
 def _thousands(steps: int | None) -> str:
@@ -462,6 +505,7 @@ TABLES: dict[str, tuple[str, Callable[[], str | None]]] = {
     "practice_vs_ppo": ("results/practice.md", practice_vs_ppo_table),
     "practice_targets": ("results/practice.md", practice_targets),
     "practice_validation": ("guides/practice.md", practice_validation_table),
+    "practice_checks": ("guides/practice.md", practice_checks_table),
 }
 """Each table's name, the page it sits in, and what writes it."""
 

@@ -64,3 +64,23 @@ def test_the_practice_default_is_the_method_the_validation_study_puts_first(tmp_
     monkeypatch.setattr(MODULE, "PRACTICE_STUDY", moved)
     assert not next(line for line in MODULE.practice_validation_table().splitlines()
                     if "**" in line).startswith(f"| `{DEFAULT_METHOD}` |")
+
+
+def test_distils_check_is_the_one_the_validation_study_puts_first(monkeypatch):
+    """Of the checks that never fell more than 1 below the teacher, the highest mean after 50 000
+    steps is distil's default check (its practice attempts and its standard errors)."""
+    import inspect
+
+    from polymimic.practice.distil import distil
+    from polymimic.practice.teacher import Gate
+
+    monkeypatch.syspath_prepend(str(ROOT / "studies"))
+    spec = importlib.util.spec_from_file_location("checks_study", ROOT / "studies" / "which_check_keeps_distil_safe.py")
+    assert spec is not None and spec.loader is not None
+    study = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(study)
+    curves = MODULE.study_curves(MODULE.CHECK_STUDY)
+    safe = {check: mean for check, mean in MODULE._means_after(curves).items()
+            if min(min(p[2] for p in c) - c[0][2] for c in curves[check].values()) >= -1}
+    winner = max(safe, key=safe.__getitem__)
+    assert study.CHECKS[winner] == (Gate().attempts, inspect.signature(distil).parameters["confidence_z"].default)

@@ -18,12 +18,9 @@ import dataclasses
 import json
 import os
 import pathlib
-import statistics
-import time
-from typing import Any
 
 from _benchmark_run import imitators
-from polymimic._atomic import atomic_write_text
+from _practice_curves import CurveFile
 from polymimic.benchmark.rundir import BenchmarkDir
 from polymimic.practice.methods import METHODS, practise
 
@@ -41,33 +38,23 @@ def main() -> None:
     run = BenchmarkDir(options.run_dir)
     config = run.open(None)
     segmenter = dataclasses.asdict(config.segmenter)
-    per_configuration = config.benchmark.sizes.attempts_per_configuration
-    done: dict[str, Any] = json.loads(options.out.read_text()) if options.out.exists() else {}
+    evaluation = config.evaluation_attempts()
+    curves = CurveFile(options.out)
     profiles = options.profiles or list(config.benchmark.profiles)
     for profile in profiles:
         for trial_seed, policy in imitators(run, config, profile, options.trials):
             key = f"{options.method}/{profile}/{trial_seed}/{options.steps}"
-            if key in done:
+            if key in curves:
                 continue
-            started = time.perf_counter()
-            result = practise(policy, method=options.method, steps=options.steps, seed=trial_seed,
-                              evaluation=config.evaluation_attempts(), field_config=config.field, segmenter=segmenter)
-            done[key] = {"curve": [[p.checkpoint, p.steps, p.net_goals] for p in result.curve],
-                         "seconds": round(time.perf_counter() - started, 1)}
-            atomic_write_text(options.out, json.dumps(done, indent=1) + "\n")
-            curve = done[key]["curve"]
-            print(f"{key}: {curve[0][2]:+.0f} -> {curve[-1][2]:+.0f} of {2 * per_configuration} "
-                  f"({done[key]['seconds']:.0f} s)", flush=True)
+
+            def played(policy=policy, seed=trial_seed):
+                return practise(policy, method=options.method, steps=options.steps, seed=seed, evaluation=evaluation,
+                                field_config=config.field, segmenter=segmenter)
+            curves.practise(key, played, scored_on=evaluation.count)
     for profile in profiles:
-        curves = [v["curve"] for k, v in done.items()
-                  if k.startswith(f"{options.method}/{profile}/") and k.endswith(f"/{options.steps}")]
-        if not curves:
-            continue
-        means = [round(statistics.fmean(c[i][2] for c in curves), 2) for i in range(len(curves[0]))]
-        print(json.dumps({"profile": profile, "method": options.method, "trials": len(curves),
-                          "checkpoints": [p[0] for p in curves[0]], "mean_net_goals": means,
-                          "gain": round(means[-1] - means[0], 2),
-                          "deepest_dip": min(min(p[2] for p in c) - c[0][2] for c in curves)}), flush=True)
+        summary = curves.summary(options.method, options.steps, profile)
+        if summary is not None:
+            print(json.dumps(summary), flush=True)
 
 
 if __name__ == "__main__":

@@ -4,6 +4,8 @@ import pathlib
 import subprocess
 import sys
 
+import pytest
+
 from polymimic import cli, demo
 
 
@@ -117,3 +119,18 @@ def test_the_command_needs_no_optional_extra(tmp_path):
                            capture_output=True, text=True, check=False)
     assert bench.returncode == 2
     assert bench.stderr.strip().splitlines()[-1].endswith("pip install \"polymimic[baselines]\"")
+
+
+@pytest.mark.parametrize(("argv", "message"), [
+    (["practice", "--run-dir", "r", "--method", "refine"], "polymimic practice: error: argument --method: invalid "
+                                                           "choice: 'refine'"),
+    (["practice"], "polymimic practice: error: the following arguments are required: --run-dir"),
+    (["benchmark", "--workers", "0"], "polymimic benchmark: error: argument --workers"),
+    (["nope"], "polymimic: error: argument command: invalid choice: 'nope'"),
+])
+def test_argument_errors_are_one_line_with_exit_code_2(argv, message, capsys):
+    with pytest.raises(SystemExit) as exit_:
+        cli.main(argv)
+    err = capsys.readouterr().err
+    assert exit_.value.code == 2 and err.startswith(message) and len(err.strip().splitlines()) == 1, err
+    assert err.strip().endswith("--help)")

@@ -17,6 +17,7 @@ import argparse
 import functools
 import sys
 import time
+from typing import NoReturn
 
 from polymimic import __version__
 from polymimic._native import PolymimicError
@@ -32,9 +33,17 @@ EXIT_USAGE = 2
 EXIT_INTERRUPTED = 130
 
 
+class _OneLineParser(argparse.ArgumentParser):
+    """argparse's parser, answering bad arguments with one line and exit code 2 (its usage is a
+    ``--help`` away); the subcommands' parsers are of the same class."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(EXIT_USAGE, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The ``polymimic`` command's argument parser, one subcommand per module of :mod:`polymimic.cli`."""
-    parser = argparse.ArgumentParser(prog="polymimic", description=__doc__,
+    parser = _OneLineParser(prog="polymimic", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)

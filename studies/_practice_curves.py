@@ -18,9 +18,11 @@ from polymimic.baselines.tuning import VALIDATION_SEED_BASE
 from polymimic.benchmark.rundir import BenchmarkDir
 
 
-def on_validation(doc: str, *, variants: str, choices: Sequence[str], out: str) -> tuple[argparse.Namespace, Any, Any]:
+def on_validation(doc: str, *, variants: str, choices: Sequence[str],
+                  out: pathlib.Path) -> tuple[argparse.Namespace, Any, Any]:
     """The command line of a study that practises a run's imitators on its validation attempts,
-    one curve per ``variants`` choice (``--<variants>``), profile and trial; then the run and its
+    one curve per ``variants`` choice (``--<variants>``), profile and trial, kept in ``out`` by
+    default (the study's committed file, so that a rerun goes on from it); then the run and its
     config."""
     parser = argparse.ArgumentParser(description=doc.split("\n\n")[0])
     parser.add_argument("run_dir", help="a finished `polymimic benchmark` run directory")
@@ -28,7 +30,7 @@ def on_validation(doc: str, *, variants: str, choices: Sequence[str], out: str) 
     parser.add_argument(f"--{variants}", nargs="+", default=list(choices), choices=choices)
     parser.add_argument("--trials", type=int, default=2)
     parser.add_argument("--steps", type=int, default=50_000)
-    parser.add_argument("--out", type=pathlib.Path, default=pathlib.Path(out))
+    parser.add_argument("--out", type=pathlib.Path, default=out, help=f"default: {out.name} beside the study")
     options = parser.parse_args()
     os.environ.setdefault("OMP_NUM_THREADS", "1")  # torch on a small machine: one thread learns fastest
     run = BenchmarkDir(options.run_dir)

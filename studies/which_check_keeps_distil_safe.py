@@ -7,16 +7,19 @@ evaluation's), never on the evaluation's.
 For each of ``--profiles`` (default ``one_good`` and ``half``), each of the first ``--trials``
 trials (its seed is the practice's) and each of ``--checks``: the trial's imitator practises by
 ``distil`` for ``--steps`` environment steps, scored at the default checkpoints. Each finished
-curve is written at once to ``--out`` (JSON), so a rerun goes on where it stopped; the summary
-prints each check's mean net goals per checkpoint and its lowest point below the start.
+curve is written at once to ``--out`` (JSON; by default the committed file beside this script),
+so a rerun goes on where it stopped; the summary prints each check's mean net goals per
+checkpoint and its lowest point below the start.
 
 Run: ``python studies/which_check_keeps_distil_safe.py RUN_DIR [--steps 50000] [--trials 2]
-[--out FILE]`` (needs ``polymimic[rl]``; about a quarter of an hour on two cores).
+[--checks ...] [--profiles ...] [--out FILE]`` (needs ``polymimic[rl]``; about twelve minutes on
+two cores at the default two trials, half an hour at five).
 """
 
 from __future__ import annotations
 
 import json
+import pathlib
 
 from _practice_curves import CurveFile, on_validation, validation_attempts
 from polymimic.practice.curve import DEFAULT_CHECKPOINTS
@@ -33,7 +36,7 @@ CHECKS = {
 
 def main() -> None:
     options, run, config = on_validation(__doc__, variants="checks", choices=list(CHECKS),
-                                         out="distil_checks_on_validation.json")
+                                         out=pathlib.Path(__file__).with_suffix(".json"))
     validation = validation_attempts(config)
     marks = [c for c in DEFAULT_CHECKPOINTS if c < options.steps] + [options.steps]
     curves = CurveFile(options.out)

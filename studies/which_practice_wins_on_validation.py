@@ -8,17 +8,20 @@ evaluation's.
 For each of ``--profiles`` (default ``one_good`` and ``half``), each of the first ``--trials``
 trials (its seed is the practice's) and each of ``--methods``: the trial's imitator practises
 for ``--steps`` environment steps, scored at the default checkpoints. Each finished curve is
-written at once to ``--out`` (JSON), so a rerun goes on where it stopped; the summary prints each
-method's mean net goals per checkpoint and its lowest point below where it started.
+written at once to ``--out`` (JSON; by default the committed file beside this script), so a
+rerun goes on where it stopped; the summary prints each method's mean net goals per checkpoint
+and its lowest point below where it started.
 
 Run: ``python studies/which_practice_wins_on_validation.py RUN_DIR [--steps 50000] [--trials 2]
-[--out FILE]`` (``jsrl`` and ``distil`` need ``polymimic[rl]``; about ten minutes at full size on two cores).
+[--methods ...] [--profiles ...] [--out FILE]`` (``jsrl`` and ``distil`` need ``polymimic[rl]``;
+about ten minutes at full size on two cores).
 """
 
 from __future__ import annotations
 
 import dataclasses
 import json
+import pathlib
 
 from _practice_curves import CurveFile, on_validation, validation_attempts
 from polymimic.practice import practice
@@ -29,7 +32,7 @@ STUDIED = ("refine", *METHODS)
 
 def main() -> None:
     options, run, config = on_validation(__doc__, variants="methods", choices=STUDIED,
-                                         out="practice_on_validation.json")
+                                         out=pathlib.Path(__file__).with_suffix(".json"))
     segmenter = dataclasses.asdict(config.segmenter)
     validation = validation_attempts(config)
     curves = CurveFile(options.out)

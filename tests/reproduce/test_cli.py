@@ -134,3 +134,9 @@ def test_argument_errors_are_one_line_with_exit_code_2(argv, message, capsys):
     err = capsys.readouterr().err
     assert exit_.value.code == 2 and err.startswith(message) and len(err.strip().splitlines()) == 1, err
     assert err.strip().endswith("--help)")
+
+
+def test_an_address_without_ray_is_one_line_naming_the_command(capsys):
+    assert cli.main(["practice", "--run-dir", "r", "--address", "auto"]) == 2
+    err = capsys.readouterr().err
+    assert err == "polymimic practice: error: --address is for the Ray backend: add --backend ray\n"

@@ -11,8 +11,7 @@ use crate::bodies::{Body, PyBody};
 use crate::convert::{matrix, non_negative};
 use crate::errors::field_error;
 use crate::field::field_config;
-use crate::starts::StartArg;
-use crate::starts::configuration;
+use crate::starts::{StartArg, configuration};
 use polymimic_learn::StartAt;
 
 /// An outcome's index in `polymimic.field.OUTCOMES`.

@@ -44,7 +44,7 @@ class _OneLineParser(argparse.ArgumentParser):
 def build_parser() -> argparse.ArgumentParser:
     """The ``polymimic`` command's argument parser, one subcommand per module of :mod:`polymimic.cli`."""
     parser = _OneLineParser(prog="polymimic", description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+                            formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"polymimic {__version__}")
     commands = parser.add_subparsers(dest="command", required=True)
     practice_on_runs = functools.partial(practice.add, sources=(REPRODUCTION_PRACTICE, BENCHMARK_PRACTICE))
@@ -61,7 +61,8 @@ def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
     if getattr(args, "address", None) is not None and args.backend != "ray":
-        parser.error("--address is for the Ray backend: add --backend ray")
+        print(f"polymimic {args.command}: error: --address is for the Ray backend: add --backend ray", file=sys.stderr)
+        return EXIT_USAGE
     started = time.perf_counter()
     try:
         return int(args.handler(args))

@@ -46,6 +46,7 @@ from polymimic.practice.teacher import (
     _RollIn,
     _scored,
     _teacher_alone,
+    check_confidence,
 )
 
 __all__ = ["distil"]
@@ -73,6 +74,7 @@ def distil(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: S
 
     marks = _checkpoints(checkpoints, steps)
     scored_on = thesis_attempts(evaluation, name="evaluation")
+    check_confidence(tolerance, confidence_z)  # before the teacher plays
     counter = _Counter()
     checks = gate if gate is not None else Gate()
     _, reference = _teacher_alone(teacher, seed, field_config, checks)

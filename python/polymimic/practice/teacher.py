@@ -89,10 +89,7 @@ class Curriculum:
             raise ValueError(f"stages must be decreasing handovers ≥ 0, got {self.stages}")
         if not self.reference:
             raise ValueError("reference must hold the teacher's return on at least one attempt")
-        for name in ("tolerance", "confidence_z"):
-            value = getattr(self, name)
-            if isinstance(value, bool) or not isinstance(value, numbers.Real) or not 0.0 <= float(value) < math.inf:
-                raise ValueError(f"{name} must be a finite number of at least 0, got {value!r}")
+        check_confidence(self.tolerance, self.confidence_z)
         self.reference = tuple(float(r) for r in self.reference)
 
     @classmethod
@@ -144,6 +141,16 @@ class Curriculum:
         self.earned = self.stages[self.stage]
         self.stage = min(self.stage + 1, len(self.stages) - 1)
         return True
+
+
+def check_confidence(tolerance: Any, confidence_z: Any) -> None:
+    """A ``ValueError`` naming the argument unless ``tolerance`` is a finite number (below 0 the
+    practised policy must beat the teacher by that much) and ``confidence_z`` a finite number of
+    at least 0."""
+    for name, value, at_least_0 in (("tolerance", tolerance, False), ("confidence_z", confidence_z, True)):
+        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) \
+                or (at_least_0 and value < 0):
+            raise ValueError(f"{name} must be a finite number{' of at least 0' if at_least_0 else ''}, got {value!r}")
 
 
 @dataclasses.dataclass
@@ -274,6 +281,7 @@ def jsrl(teacher: ImitatorPolicy, *, steps: int, seed: int = 0, checkpoints: Seq
 
     marks = _checkpoints(checkpoints, steps)
     scored_on = thesis_attempts(evaluation, name="evaluation")
+    check_confidence(tolerance, confidence_z)  # before the teacher plays
     checks = gate if gate is not None else Gate()
     typical, reference = _teacher_alone(teacher, seed, field_config, checks)
     schedule = Curriculum.stepping_down(handover_start if handover_start is not None else typical, stages,

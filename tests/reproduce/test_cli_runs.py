@@ -114,11 +114,13 @@ def test_bad_configs_and_options_are_usage_errors(tmp_path, capsys):
     (tmp_path / "stuff" / "notes.txt").write_text("mine")
     code, err = _error(capsys, ["self-observe", "--run-dir", str(tmp_path / "stuff")])
     assert code == 2 and "is not empty and holds no manifest.json" in err
-    for argv in (["learn", "--address", "auto"], ["learn", "--workers", "0"], ["learn", "--backend", "spark"]):
+    code, err = _error(capsys, ["learn", "--address", "auto"])
+    assert code == 2 and err.strip() == "polymimic learn: error: --address is for the Ray backend: add --backend ray"
+    for argv in (["learn", "--workers", "0"], ["learn", "--backend", "spark"]):
         with pytest.raises(SystemExit) as exit_:
             cli.main(argv)
         assert exit_.value.code == 2
-        capsys.readouterr()
+        assert len(capsys.readouterr().err.strip().splitlines()) == 1
 
 
 def test_export_writes_minari_datasets_of_the_runs_lego_demonstrators(reproduced, capsys, tmp_path, monkeypatch):

@@ -7,7 +7,7 @@ import math
 import numbers
 from typing import Any
 
-__all__ = ["in_range", "integer", "probability", "whole"]
+__all__ = ["finite", "in_range", "integer", "probability", "whole"]
 
 
 def integer(name: str, value: Any, low: int, high: int | None = None) -> int:
@@ -51,6 +51,22 @@ def in_range(name: str, value: float, low: float, high: float | None = None, *, 
         bound = f"{'above' if exclusive_low else 'at least'} {low}"
         bound += f" and at most {high}" if high is not None else ""
         raise ValueError(f"{name} = {value!r} must be {bound}")
+
+
+def finite(name: str, value: Any, *, low: float | None = None) -> float:
+    """``value`` as a float if it is a finite real number (at least ``low`` where given); a
+    ``ValueError`` naming ``name``, the value and what is allowed for anything else (a bool
+    included).
+
+    >>> finite("gap_margin", -1.0, low=0)
+    Traceback (most recent call last):
+    ...
+    ValueError: gap_margin must be a finite number ≥ 0, got -1.0
+    """
+    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) or \
+            (low is not None and value < low):
+        raise ValueError(f"{name} must be a finite number{'' if low is None else f' ≥ {low:g}'}, got {value!r}")
+    return float(value)
 
 
 def probability(name: str, value: Any) -> float:

@@ -21,13 +21,12 @@ Examples
 
 from __future__ import annotations
 
-import math
-import numbers
 from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
 
+from polymimic._arguments import finite
 from polymimic._native import PrimitiveRecognizer
 from polymimic.field import PRIMITIVE_SETS, PRIMITIVES, WHEELED_EQUIVALENT
 
@@ -104,7 +103,7 @@ def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Se
         raise ValueError(f"window_frames must be an integer ≥ 2, got {window_frames!r}")
     for name, value in (("stop_distance_mm", stop_distance_mm), ("stop_rotation_deg", stop_rotation_deg),
                         ("gap_margin", gap_margin)):
-        _check_non_negative(name, value)
+        finite(name, value, low=0)
     n = len(frames)
     poses = repeat_last_good(np.column_stack([np.asarray(frames[c], dtype=np.float64)
                                               for c in ("robot_x_mm", "robot_y_mm", "robot_theta_rad")]))
@@ -124,11 +123,6 @@ def name_windows(frames: np.ndarray, recognizer: PrimitiveRecognizer, starts: Se
             close = ~np.isfinite(best_two[:, 1]) | (best_two[:, 1] - best_two[:, 0] < gap_margin)
         named[moving] = np.where(close, NO_NAME, as_wheeled[scores.argmax(axis=1)])
     return named
-
-
-def _check_non_negative(name: str, value: Any) -> None:
-    if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) or value < 0:
-        raise ValueError(f"{name} must be a finite number ≥ 0, got {value!r}")
 
 
 def _checked_starts(starts: Sequence[int] | np.ndarray, n_frames: int) -> np.ndarray:

@@ -71,9 +71,9 @@ def test_a_stage_is_earned_only_when_a_check_shows_the_policy_no_worse_than_the_
     with pytest.raises(ValueError, match="a check plays the reference's 8 attempts, got 2 returns"):
         curriculum.checked((1, 1))
     for name, value, allowed in (("tolerance", float("inf"), "a finite number"),
-                                 ("confidence_z", -0.5, "a finite number of at least 0"),
-                                 ("confidence_z", float("nan"), "a finite number of at least 0"),
-                                 ("confidence_z", True, "a finite number of at least 0")):
+                                 ("confidence_z", -0.5, "a finite number ≥ 0"),
+                                 ("confidence_z", float("nan"), "a finite number ≥ 0"),
+                                 ("confidence_z", True, "a finite number ≥ 0")):
         with pytest.raises(ValueError, match=f"{name} must be {allowed}, got {value!r}"):
             Curriculum(stages=(0,), reference=(0.5,), **{name: value})
     assert Curriculum(stages=(0,), reference=(0.5,), tolerance=-5.0).tolerance == -5.0  # must beat the teacher

@@ -26,13 +26,13 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import numbers
 import pickle
 from collections.abc import Callable, Sequence
 from typing import Any
 
 import numpy as np
 
+from polymimic._arguments import finite
 from polymimic.evaluation import Attempts, thesis_attempts
 from polymimic.field import OUTCOME_REWARDS
 from polymimic.learning import ImitatorPolicy, evaluate
@@ -145,12 +145,10 @@ class Curriculum:
 
 def check_confidence(tolerance: Any, confidence_z: Any) -> None:
     """A ``ValueError`` naming the argument unless ``tolerance`` is a finite number (below 0 the
-    practised policy must beat the teacher by that much) and ``confidence_z`` a finite number of
-    at least 0."""
-    for name, value, at_least_0 in (("tolerance", tolerance, False), ("confidence_z", confidence_z, True)):
-        if isinstance(value, bool) or not isinstance(value, numbers.Real) or not math.isfinite(value) \
-                or (at_least_0 and value < 0):
-            raise ValueError(f"{name} must be a finite number{' of at least 0' if at_least_0 else ''}, got {value!r}")
+    practised policy must beat the teacher by that much) and ``confidence_z`` a finite number
+    ≥ 0."""
+    finite("tolerance", tolerance)
+    finite("confidence_z", confidence_z, low=0)
 
 
 @dataclasses.dataclass
